@@ -1,0 +1,16 @@
+"""linecontact_sym: closed-form solutions of two-dimensional (line) contact
+problems by Popov's (2017) superposition of flat punches, derived with SymPy,
+verified with mpmath and exported as fast numeric functions."""
+from __future__ import annotations
+
+from .symbols import x, a, P, E_star, gamma, R, b, n, c, theta
+from .errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
+                     DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError)
+from .profile import Profile
+from .derivation import Derivation, VerificationRecord
+from .contact import LineContact, profile_from_force
+from . import catalogue
+from .catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
+from .latex import to_latex
+
+__version__ = "0.1.0"

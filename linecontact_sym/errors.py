@@ -1,0 +1,46 @@
+"""Exceptions of ``linecontact_sym``.
+
+Every error the package raises on bad input is one of these, and its message
+names the profile, the broken assumption and what to do about it.
+"""
+from __future__ import annotations
+
+
+class LineContactError(Exception):
+    """Base class of every error raised by linecontact_sym."""
+
+
+class ProfileError(LineContactError, ValueError):
+    """The profile expression is not a valid input (type, symbols, f(0) != 0...)."""
+
+
+class UnknownSymbolError(ProfileError):
+    """The expression holds a free symbol that was not declared as a parameter."""
+
+
+class InadmissibleProfileError(LineContactError, ValueError):
+    """The profile breaks an assumption of the frictionless compact-contact solution
+    (pressure < 0 inside, negative gap outside, non-monotone profile, ...)."""
+
+
+class DomainError(LineContactError, ValueError):
+    """An argument lies outside the domain of a quantity (a <= 0, |x| > a, ...)."""
+
+
+class DivergentIntegralError(LineContactError, ValueError):
+    """A defining integral of the method diverges for this profile."""
+
+
+class VerificationError(LineContactError):
+    """A closed form disagreed with the independent quadrature of its defining integral."""
+
+
+class BudgetExceeded(LineContactError, TimeoutError):
+    """A symbolic step did not finish within its time budget."""
+
+
+class ClaimError(LineContactError, ValueError):
+    """A claim (file or command line) is malformed or unsafe."""
+
+
+__all__ = [name for name in dir() if name.endswith("Error") or name == "BudgetExceeded"]

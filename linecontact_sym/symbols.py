@@ -1,0 +1,51 @@
+"""Standard symbols of ``linecontact_sym``, with SymPy assumptions.
+
+Every module imports its symbols from here, so results built by different
+parts of the toolkit share the same symbols and simplify together.  Users can
+import them too::
+
+    >>> import linecontact_sym as lcs
+    >>> lcs.x, lcs.a, lcs.E_star
+    (x, a, E_star)
+
+Conventions (Popov 2017):
+
+* ``x``      -- coordinate along the surface; profiles are given for x >= 0
+  and mirrored (f(-x) = f(x)).
+* ``a``      -- contact half-width.
+* ``P``      -- normal force per unit length ("force intensity").  Real, not
+  positive: adhesive contacts carry tensile (negative) loads.
+* ``E_star`` -- reduced modulus E* = E/(1 - nu**2) (Eq. 4).
+* ``gamma``  -- work of adhesion (the paper's gamma_12).
+* ``R``, ``b``, ``n``, ``c``, ``theta`` -- the paper's profile parameters:
+  radius, flat half-width, power-law exponent, power-law coefficient c_n and
+  wedge angle.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+x = sp.Symbol("x", positive=True)
+a = sp.Symbol("a", positive=True)
+P = sp.Symbol("P", real=True)
+E_star = sp.Symbol("E_star", positive=True)
+gamma = sp.Symbol("gamma", positive=True)
+
+R = sp.Symbol("R", positive=True)
+b = sp.Symbol("b", positive=True)
+n = sp.Symbol("n", positive=True)
+c = sp.Symbol("c", positive=True)
+theta = sp.Symbol("theta", positive=True)
+
+#: Symbols the engine reserves; a profile may not use them as parameters.
+RESERVED = (a, P, E_star)
+
+#: LaTeX names in the paper's notation (used by the LaTeX views).
+LATEX_NAMES = {
+    E_star: r"E^{*}",
+    gamma: r"\gamma_{12}",
+    theta: r"\theta",
+}
+
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta",
+           "RESERVED", "LATEX_NAMES"]
