@@ -284,6 +284,13 @@ class LineContact:
                           "numeric root of P(a) = P (no closed-form inverse)", (), None,
                           time.perf_counter() - t0, tuple(notes), reference, (load, S.E_star) + self.params)
 
+    # --------------------------------------------------------------- adhesion
+    def adhesive(self, work_of_adhesion=S.gamma):
+        """The JKR-adhesive form of this contact (Eqs. 29-36), see
+        :mod:`linecontact_sym.adhesion`."""
+        from .adhesion import AdhesiveLineContact
+        return AdhesiveLineContact(self, work_of_adhesion)
+
     # --------------------------------------------------------------- numbers
     def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, **params):
         """A callable of the quantity: ``fn(a=..., x=..., E_star=..., R=...)``.
