@@ -255,10 +255,10 @@ class LineContact:
             except BudgetExceeded:
                 sols = []
                 notes.append("sympy.solve ran out of budget")
+            except (NotImplementedError, ValueError, TypeError) as exc:
+                sols = []
+                notes.append(f"sympy.solve: {exc}".splitlines()[0])
             sample = self._sampler("force")
-
-            def reference(vals, dps):
-                return solve_half_width(fd, vals, vals[load] if load in vals else S.P, self.profile, dps)
             for cand in sols:
                 rng = random.Random(7)
                 good = 0

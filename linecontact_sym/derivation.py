@@ -88,7 +88,9 @@ class Derivation:
 
     @property
     def variables_all(self):
-        return tuple(sorted(self.expr.free_symbols | set(self.variables), key=lambda s: s.name))
+        syms = set(self.variables) if (self.variables and not self.closed_form) \
+            else self.expr.free_symbols | set(self.variables)
+        return tuple(sorted(syms, key=lambda s: s.name))
 
     def summary(self) -> str:
         lines = [f"{self.quantity}: {self.expr}",

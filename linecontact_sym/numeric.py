@@ -54,7 +54,7 @@ def _to_scipy_names(expr):
     expr = expr.replace(lambda e: isinstance(e, sp.elliptic_k), lambda e: sp.Function("_ellipk")(e.args[0]))
     expr = expr.replace(lambda e: isinstance(e, sp.elliptic_e) and len(e.args) == 1,
                         lambda e: sp.Function("_ellipe")(e.args[0]))
-    expr = expr.replace(lambda e: isinstance(e, sp.struve), lambda e: sp.Function("_struve")(*e.args))
+    expr = expr.replace(lambda e: type(e).__name__ == "struve", lambda e: sp.Function("_struve")(*e.args))
     return expr
 
 

@@ -194,8 +194,12 @@ def inverse_termwise(P):
     try:
         expr, conds, notes = BetaTermwise(-1, sp.Rational(-1, 2)).run(g, s, 2 * S.a / (sp.pi * S.E_star))
     except DivergentIntegralError as exc:
-        raise DivergentIntegralError(
-            f"Eq. (9) diverges for the force law {P}: P(a) must vanish as a -> 0 ({exc})")
+        lead = sp.limit(P, S.a, 0, "+")
+        if lead != 0:
+            raise DivergentIntegralError(
+                f"Eq. (9) diverges for the force law {P}: P(0+) = {lead}, but P(a) must vanish "
+                f"as a -> 0 ({exc})")
+        raise NotApplicable(f"termwise split diverges although the sum converges ({exc})")
     return expr, conds, notes
 
 

@@ -86,6 +86,16 @@ def _mpf(v):
     return mpmath.mpf(sp.N(v, mpmath.mp.dps + 10)) if not isinstance(v, mpmath.mpf) else v
 
 
+def quad0(f, pts):
+    """mpmath tanh-sinh quadrature over the points ``pts`` (pts[0] == 0), with
+    u**4 = t on the first interval: an algebraic or logarithmic endpoint
+    singularity at 0 (power laws with n < 1, the wedge) is then integrated to
+    full precision instead of losing the tail below the smallest node."""
+    first = mpmath.quad(lambda u: 4 * u**3 * f(u**4), [0, mpmath.root(pts[1], 4)], maxdegree=10)
+    rest = mpmath.quad(f, pts[1:], maxdegree=10) if len(pts) > 2 else 0
+    return first + rest
+
+
 def force_quad(profile, values: dict, dps: int = 50):
     """Eq. (10*) by tanh-sinh quadrature after t = a sin(phi), split at the
     breakpoints: E* a int_0^{pi/2} sin(phi) f'(a sin(phi)) dphi."""
@@ -98,7 +108,8 @@ def force_quad(profile, values: dict, dps: int = 50):
         for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
             fn = fns[i]
             p0, p1 = mpmath.asin(lo / A), mpmath.asin(hi / A)
-            total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)), [p0, p1])
+            integrand = lambda ph, fn=fn: mpmath.sin(ph) * fn(A * mpmath.sin(ph))  # noqa: E731
+            total += quad0(integrand, [p0, p1]) if i == 0 else mpmath.quad(integrand, [p0, p1], maxdegree=10)
         return +(E * A * total)
 
 
@@ -114,7 +125,7 @@ def pressure_quad(dP, breaks, values: dict, dps: int = 50):
         def integrand(w):
             sv = mpmath.sqrt(X**2 + w**2)
             return dP(sv) / sv
-        return +(mpmath.quad(integrand, pts) / mpmath.pi)
+        return +(quad0(integrand, pts) / mpmath.pi)
 
 
 def gap_quad(f, dP, breaks, values: dict, dps: int = 50):
@@ -123,7 +134,7 @@ def gap_quad(f, dP, breaks, values: dict, dps: int = 50):
         A, X = _mpf(values[S.a]), abs(_mpf(values[S.x]))
         E = _mpf(values.get(S.E_star, 1))
         pts = [mpmath.mpf(0)] + [bp for bp in breaks if bp < A] + [A]
-        I = mpmath.quad(lambda sv: mpmath.acosh(X / sv) * dP(sv), pts)
+        I = quad0(lambda sv: mpmath.acosh(X / sv) * dP(sv), pts)
         return +(f(X) - 2 * I / (mpmath.pi * E))
 
 
@@ -133,5 +144,5 @@ def profile_quad(Pfn, breaks, values: dict, dps: int = 50):
         A = _mpf(values[S.a])
         E = _mpf(values.get(S.E_star, 1))
         pts = [mpmath.mpf(0)] + [mpmath.asin(bp / A) for bp in breaks if bp < A] + [mpmath.pi / 2]
-        I = mpmath.quad(lambda ph: Pfn(A * mpmath.sin(ph)) / mpmath.sin(ph), pts)
+        I = quad0(lambda ph: Pfn(A * mpmath.sin(ph)) / mpmath.sin(ph), pts)
         return +(2 * I / (mpmath.pi * E))
