@@ -156,11 +156,22 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     return expr
 
 
+def _solve_for_a(cond):
+    """monomial(a) < 1  ->  a < root, for positive symbols (e.g. a**2/R**2 < 1 -> a < R)."""
+    if isinstance(cond, (sp.StrictLessThan, sp.LessThan)) and cond.rhs == 1 and S.a in cond.lhs.free_symbols:
+        lhs = cond.lhs.func(*cond.lhs.args) if not isinstance(cond.lhs, sp.Abs) else cond.lhs.args[0]
+        coef, dep = lhs.as_independent(S.a, as_Add=False)
+        base, e = dep.as_base_exp()
+        if base == S.a and e.is_positive and coef.is_positive:
+            return cond.func(S.a, (1 / coef)**(1 / e))
+    return cond
+
+
 def tidy_conditions(conds) -> tuple:
     out = []
     for c in conds:
         try:
-            c2 = sp.simplify(c)
+            c2 = _solve_for_a(sp.simplify(c))
         except Exception:
             c2 = c
         if c2 == sp.true:
