@@ -316,6 +316,12 @@ class LineContact:
             values = {**values, "x": xv}
         return self.derivation(quantity).evalf(dps=dps, **values)
 
+    def _mp_function(self, quantity, dps):
+        key = ("mpfun", quantity, dps)
+        if key not in self._cache:
+            self._cache[key] = self.to_numeric(quantity, backend="mpmath", dps=dps)
+        return self._cache[key]
+
     def report(self) -> str:
         return "\n".join(self.derivation(q).summary() for q in ("force", "pressure", "gap"))
 
@@ -335,23 +341,68 @@ class LineContact:
                     raise InadmissibleProfileError(
                         f"profile {self.profile.name!r} decreases at x = {float(xv):.6g} < a = {A:g}: "
                         f"the contact is not compact there (it would open and close again)")
+            pfun = self._mp_function("pressure", dps)
+            gfun = self._mp_function("gap", dps)
+            kw = {k: v for k, v in values.items() if k != "x"}
             for i in range(1, 20):
-                xv = A * i / 20
-                p = self.evaluate_at("pressure", dps=dps, **{**values, "x": xv})
+                xv = mpmath.mpf(A) * i / 20
+                p = pfun(**kw, x=xv)
                 if p < 0:
                     raise InadmissibleProfileError(
                         f"profile {self.profile.name!r}: tensile pressure p = {float(p):.3g} at "
-                        f"x = {xv:.4g} without adhesion; the frictionless solution does not hold")
-            for fac in (1.01, 1.1, 1.5, 2, 3, 5):
+                        f"x = {float(xv):.4g} without adhesion; the frictionless solution does not hold")
+            # the gap on a geometric grid out to 1000 a (points where the profile
+            # is not real, e.g. beyond a cylinder's radius, are skipped)
+            for fac in (1.01, 1.1, 1.5, 2, 3, 5, 10, 30, 100, 1000):
                 try:
-                    g = self.evaluate_at("gap", dps=dps, **{**values, "x": A * fac})
-                except DomainError:
+                    g = gfun(**kw, x=mpmath.mpf(A) * fac)
+                except (DomainError, ValueError, ZeroDivisionError):
+                    continue
+                if isinstance(g, mpmath.mpc):
                     continue
                 if g < 0:
                     raise InadmissibleProfileError(
                         f"profile {self.profile.name!r}: negative gap {float(g):.3g} at x = {A * fac:.4g}"
                         f" outside the contact: a second contact opens there")
         return True
+
+    def admissible_range(self, a_max: float = 100.0, rtol: float = 1e-6, **values):
+        """The half-widths 0 < a < a* for which the frictionless compact-contact
+        solution holds at the given parameters (keywords) -- within the
+        checks of :meth:`check_admissible` (the gap is sampled out to 1000 a) --
+        found by scanning
+        :meth:`check_admissible` on a geometric grid up to ``a_max`` and
+        bisecting the first failure to ``rtol``.  Returns ``(a_star, reason)``;
+        ``a_star = a_max`` and ``reason = None`` when no failure was found."""
+        def ok(av):
+            try:
+                self.check_admissible(**{**values, "a": sp.Float(av, 20)})
+                return True, None
+            except (InadmissibleProfileError, DomainError, ValueError, TypeError,
+                    ZeroDivisionError) as exc:
+                return False, str(exc)
+        grid = [a_max * 2.0**(-k) for k in range(30, -1, -1)]
+        good, bad, reason = None, None, None
+        for av in grid:
+            fine, why = ok(av)
+            if fine:
+                good = av
+            else:
+                bad, reason = av, why
+                break
+        if bad is None:
+            return a_max, None
+        if good is None:
+            raise InadmissibleProfileError(f"profile {self.profile.name!r} is not admissible even "
+                                           f"at a = {bad:g}: {reason}")
+        while bad - good > rtol * bad:
+            mid = 0.5 * (good + bad)
+            fine, why = ok(mid)
+            if fine:
+                good = mid
+            else:
+                bad, reason = mid, why
+        return good, reason
 
 
 def _solve_for_a(Pexpr, load):

@@ -228,3 +228,17 @@ def test_no_closed_form_is_honest_and_nothing_hangs():
     with mp.workdps(30):
         ref = indep_force(fprime, mp.mpf("0.5"), dps=30)
         assert abs(d.evalf(dps=30, a=sp.Rational(1, 2), E_star=1) - ref) < mp.mpf(10)**-25
+
+
+def test_admissible_range_of_a_cosine_bump_and_quartic():
+    """x^2/2 - x^4/4 falls below zero beyond sqrt(2): a second contact opens
+    far out (the check looks out to 1000 a); within (0, 1) it decreases
+    nowhere, so the verdict names the gap."""
+    cont = lcs.LineContact(x**2 / 2 - x**4 / 4)
+    with pytest.raises(lcs.InadmissibleProfileError, match="negative gap"):
+        cont.check_admissible(a=sp.Rational(1, 10), E_star=1)
+    a_star, why = cont.admissible_range(a_max=1, rtol=1e-3, E_star=1)
+    assert 1e-3 < a_star < 1e-2 and "negative gap" in why
+    # just below a*, the gap at 1000 a (> sqrt 2) is still >= 0; just above it is not
+    assert 1000 * a_star < 2**0.5 * 1.01
+    assert lcs.parabola().admissible_range(a_max=4, R=1, E_star=1) == (4, None)
