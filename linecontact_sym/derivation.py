@@ -21,6 +21,8 @@ from .strategies import NotApplicable
 REQUIRED_DIGITS = 30
 #: working precision of the reference quadratures
 VERIFY_DPS = 45
+#: wall-clock budget of one verification (quadratures at all points), seconds
+VERIFY_BUDGET = 120.0
 
 
 @dataclass(frozen=True)
@@ -235,9 +237,21 @@ def _holds(conds, vals) -> bool:
 
 
 def verify(expr, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
-           dps: int = VERIFY_DPS, reference_name: str = "mpmath quadrature") -> VerificationRecord:
+           dps: int = VERIFY_DPS, reference_name: str = "mpmath quadrature",
+           budget: float = VERIFY_BUDGET) -> VerificationRecord:
     """Compare ``expr`` with ``reference(values, dps)`` at ``n_points`` points
-    drawn by ``sampler(rng)`` (dicts Symbol -> Rational) where ``conditions`` hold."""
+    drawn by ``sampler(rng)`` (dicts Symbol -> Rational) where ``conditions`` hold.
+
+    Runs under ``budget`` seconds; a verification that does not finish is
+    returned as a record with no points (``passed`` is False)."""
+    try:
+        return run_with_budget(_verify, expr, reference, sampler, conditions, n_points, seed, dps,
+                               reference_name, seconds=budget)
+    except BudgetExceeded:
+        return VerificationRecord((), (), dps, reference_name + f" (did not finish in {budget:g} s)")
+
+
+def _verify(expr, reference, sampler, conditions, n_points, seed, dps, reference_name):
     rng = random.Random(seed)
     points, digits = [], []
     tries = 0
