@@ -9,6 +9,7 @@ from .errors import (LineContactError, ProfileError, UnknownSymbolError, Inadmis
 from .profile import Profile
 from .derivation import Derivation, VerificationRecord
 from .contact import LineContact, profile_from_force
+from .adhesion import AdhesiveLineContact, NoPullOffError, NoEquilibriumError
 from . import catalogue
 from .catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
 from .latex import to_latex

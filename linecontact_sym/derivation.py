@@ -84,7 +84,7 @@ class Derivation:
         vals = _values_by_name(self.variables_all, values)
         if self.closed_form:
             with mpmath.workdps(dps):
-                v = sp.N(self.expr.xreplace(vals), dps + 5)
+                v = sp.N(self.expr.xreplace(_floats(vals, dps + 20)), dps + 5)
                 return _to_mpf(v)
         return self.reference(vals, dps)
 
@@ -96,7 +96,7 @@ class Derivation:
 
     def summary(self) -> str:
         lines = [f"{self.quantity}: {self.expr}",
-                 f"  method: {self.method}" + ("" if self.closed_form else " (NO closed form: unevaluated integral)")]
+                 f"  method: {self.method}" + ("" if self.closed_form else " (no closed form)")]
         if self.conditions:
             lines.append("  holds for: " + ", ".join(map(str, self.conditions)))
         if self.verification is not None:
@@ -125,6 +125,14 @@ def _values_by_name(symbols, values):
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
     return out
+
+
+def _floats(vals: dict, digits: int) -> dict:
+    """Exact values as Floats of ``digits`` digits: an exact Rational under a
+    symbolic exponent makes SymPy factor huge integers (minutes); a Float
+    with guard digits gives the same value to the precision asked."""
+    return {k: (sp.Float(v, digits) if isinstance(v, sp.Rational) and not v.is_Integer else v)
+            for k, v in vals.items()}
 
 
 def _to_mpf(v):
@@ -268,7 +276,7 @@ def _verify(expr, reference, sampler, conditions, n_points, seed, dps, reference
             continue
         with mpmath.workdps(dps):
             try:
-                val = _to_mpf(sp.N(expr.xreplace(vals), dps + 10))
+                val = _to_mpf(sp.N(expr.xreplace(_floats(vals, dps + 30)), dps + 10))
             except (DomainError, TypeError):
                 val = mpmath.mpf("nan")
             err = abs(val - ref)
