@@ -162,7 +162,17 @@ class LineContact:
         fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x)}
         breaks = [mpmath.mpf(sp.N(b.xreplace(fixed), 60)) for b in self.profile.breakpoints]
         if fd.closed_form:
-            dP = sp.lambdify(S.a, sp.diff(fd.expr, S.a).xreplace(fixed), "mpmath")
+            names = tuple(sorted(set(fixed) & fd.expr.free_symbols, key=lambda s: s.name))
+            key = ("dP/da", names)
+            if key not in self._cache:  # lambdified once, parameters as arguments
+                args = (S.a,) + names     # dummify: a symbol named gamma must not shadow Gamma
+                self._cache[key] = (sp.lambdify(args, sp.diff(fd.expr, S.a), "mpmath", dummify=True),
+                                    args[1:])
+            fn, names = self._cache[key]
+            pv = [mpmath.mpf(sp.N(fixed[k], mpmath.mp.dps + 10)) for k in names]
+
+            def dP(sv):
+                return fn(sv, *pv)
         else:
             def dP(sv):
                 return mpmath.diff(lambda u: T.force_quad(self.profile, {**fixed, S.a: u}, mpmath.mp.dps), sv)
@@ -299,6 +309,14 @@ class LineContact:
         digits).  Keywords given here are fixed once."""
         from .numeric import make_callable
         return make_callable(self.derivation(quantity), backend, dps, params)
+
+    def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
+        """The cheapest evaluation that meets ``rtol``: float64, mpmath at a
+        sufficient precision, a cheaper model with its error bound, or with
+        ``certified=True`` an Arb ball (python-flint).  The result says which
+        path was taken and its error estimate; see :mod:`linecontact_sym.evaluate`."""
+        from .evaluate import evaluate
+        return evaluate(self, quantity, rtol=rtol, certified=certified, dps=dps, **values)
 
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
         """One high-precision value, with the domain checked (a > 0, |x| <= a

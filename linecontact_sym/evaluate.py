@@ -1,0 +1,506 @@
+"""Ask for an accuracy, get the cheapest way to it.
+
+:func:`evaluate` takes a contact, a quantity and the values of its
+arguments, and a tolerance (``rtol``) or a demand for a certified result, and
+picks the cheapest evaluation that meets it:
+
+``model:<...>``
+    "Model only what is needed": for the force law of a profile analytic at
+    x = 0 (e.g. the exact cylinder), the leading terms of the series of P(a),
+    obtained termwise from the profile's Taylor series (each term c_k x^(k+1)
+    of f contributes E* c_k (k+1) B_k a^(k+1), B_k = int_0^1 u^(k+1)/sqrt(1-u^2)),
+    when an error bound on the truncated tail meets ``rtol``.  One term is the
+    force law of the profile's leading Taylor term: for the cylinder the
+    parabola x^2/(2R), i.e. Hertz.  Used when the closed form needs special
+    functions (or a quadrature) or when ``rtol`` is beyond float64.
+``float64``
+    the stable NumPy export (:mod:`linecontact_sym.numeric`), when its error
+    estimate 8 eps max(1, kappa, cancellation) |value| meets ``rtol``.  kappa
+    is the componentwise condition number (float64 differences); the factor 8
+    is what ``tests/test_extremes.py`` checks on the extreme grid;
+    "cancellation" is the largest sum(|terms|)/|sum| over the non-polynomial
+    sums of the stable form at the point (it catches the documented weak
+    spots, e.g. the power-law gap for n -> 0).  Quantities without a closed
+    form: factor 16, plus the quadrature's own error estimate.
+``mpmath@N``
+    the stable closed form (or the quadrature of the defining integral) with
+    mpmath at N digits, N chosen from rtol and kappa, confirmed by a second
+    evaluation at N + 10 digits (raised until the two agree to rtol).
+``arb``
+    ``certified=True``: a python-flint Arb ball, a rigorous enclosure of the
+    exact value for the inputs as given (floats are exact binary numbers;
+    pass strings or Rationals for exact decimals), with ``dps`` correct digits
+    (default 15, or from rtol).
+
+The returned :class:`Evaluation` says which path was taken, with the error
+estimate (or the enclosure) and a note on why.
+
+    >>> import linecontact_sym as lcs
+    >>> from linecontact_sym.evaluate import evaluate
+    >>> c = lcs.exact_cylinder()
+    >>> evaluate(c, "force", a=1e-6, R=1.0, E_star=1.0, rtol=1e-12).path
+    'model:x**2/(2*R)'
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from . import symbols as S
+from .errors import DomainError, LineContactError
+
+EPS = float(np.finfo(float).eps)
+#: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
+#: closed forms / quadratures (what tests/test_extremes.py checks on the grid)
+FLOAT64_FACTOR = 8.0
+FLOAT64_FACTOR_QUAD = 16.0
+#: series terms generated for the model path
+MODEL_TERMS = 40
+
+
+@dataclass
+class Evaluation:
+    """The result of :func:`evaluate`.
+
+    value       float (float64 / model in float64) or mpmath.mpf
+    path        'float64', 'mpmath@<digits>', 'arb' or 'model:<cheaper model>'
+    error       absolute error estimate (arb: the radius of the enclosure)
+    rtol        the tolerance that was asked for (None for certified)
+    certified   True for a rigorous enclosure
+    enclosure   (lower, upper) as mpf for 'arb', else None
+    note        why this path, and what the estimate rests on
+    seconds     wall-clock time of the evaluation (path selection included)
+    """
+
+    quantity: str
+    value: object
+    path: str
+    error: object
+    rtol: float | None = None
+    certified: bool = False
+    enclosure: tuple | None = None
+    note: str = ""
+    seconds: float = 0.0
+    details: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def rel_error(self) -> float:
+        v = abs(self.value)
+        return float(abs(self.error) / v) if v != 0 else (0.0 if self.error == 0 else math.inf)
+
+    def __float__(self):
+        return float(self.value)
+
+    def __str__(self):
+        v = mpmath.nstr(self.value, 20) if isinstance(self.value, mpmath.mpf) else repr(self.value)
+        enc = f" in [{mpmath.nstr(self.enclosure[0], 20)}, {mpmath.nstr(self.enclosure[1], 20)}]" \
+            if self.enclosure else ""
+        return (f"{self.quantity} = {v}{enc}  via {self.path}  (error <= {float(self.error):.2e}, "
+                f"rel {self.rel_error:.1e}){': ' + self.note if self.note else ''}")
+
+
+# ----------------------------------------------------------------- helpers
+def _cache(contact):
+    return contact.__dict__.setdefault("_lcs_evaluate_cache", {})
+
+
+def _check_domain(quantity, values):
+    if "a" in values:
+        av = float(values["a"]) if not isinstance(values["a"], str) else float(sp.Rational(values["a"]))
+        if not av > 0:
+            raise DomainError(f"the half-width must be positive, got a = {values['a']}")
+        if "x" in values:
+            xv = abs(float(values["x"]) if not isinstance(values["x"], str) else float(sp.Rational(values["x"])))
+            if quantity == "pressure" and xv > av:
+                raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
+                                  f"use the 'gap' there")
+            if quantity == "gap" and xv < av:
+                raise DomainError(f"x = {values['x']} lies inside the contact; the gap is zero there")
+
+
+def _abs_x(values):
+    if "x" in values:
+        xv = values["x"]
+        if isinstance(xv, str):
+            xv = xv[1:] if xv.startswith("-") else xv
+        else:
+            xv = abs(xv)
+        values = {**values, "x": xv}
+    return values
+
+
+def _as_float(v):
+    if isinstance(v, str):
+        return float(mpmath.mpf(v))
+    return float(v)
+
+
+def _as_mpf(v):
+    """Exact for floats/ints/mpf; strings and Rationals at the working precision."""
+    if isinstance(v, mpmath.mpf):
+        return v
+    if isinstance(v, (int, float)):
+        return mpmath.mpf(v)
+    if isinstance(v, str):
+        return mpmath.mpf(v)
+    v = sp.sympify(v)
+    if v.is_Rational:
+        return mpmath.mpf(int(v.p)) / int(v.q)
+    return mpmath.mpf(sp.N(v, mpmath.mp.dps + 5))
+
+
+def _is_expensive(derivation):
+    e = derivation.expr
+    return (not derivation.closed_form or e.has(sp.Integral) or e.has(sp.elliptic_k)
+            or e.has(sp.elliptic_e) or e.has(sp.hyper)
+            or any(g.args[0].free_symbols for g in e.atoms(sp.gamma)))
+
+
+def _float64_fn(contact, quantity):
+    cache = _cache(contact)
+    key = ("f64", quantity)
+    if key not in cache:
+        from .numeric import make_callable
+        cache[key] = make_callable(contact.derivation(quantity), "numpy")
+    return cache[key]
+
+
+def _cancellation_fns(contact, quantity):
+    """For each sum in the stable form that is not a rational function of the
+    symbols (those are formed exactly or are covered by kappa): a pair of
+    float64 functions (sum of |terms|, sum).  Their ratio at a point is the
+    amplification of rounding errors by cancellation in that sum."""
+    cache = _cache(contact)
+    key = ("cancel", quantity)
+    if key not in cache:
+        from .numeric import lambdify_numpy, stable_form
+        from .stable import _is_rational_in_symbols
+        d = contact.derivation(quantity)
+        expr = stable_form(d).expr
+        syms = d.variables_all
+        fns = []
+        for node in sp.preorder_traversal(expr):
+            if isinstance(node, sp.Integral):
+                continue
+            if node.is_Add and not _is_rational_in_symbols(node) and not node.is_number \
+                    and node.free_symbols <= set(syms):
+                absum = sp.Add(*[sp.Abs(t) for t in node.args])
+                fns.append((lambdify_numpy(absum, syms, stable=False),
+                            lambdify_numpy(node, syms, stable=False)))
+        cache[key] = fns
+    return cache[key]
+
+
+def _cancellation(contact, quantity, point, names):
+    worst = 1.0
+    vals = [point[n] for n in names]
+    with np.errstate(all="ignore"):
+        for fa, fs in _cancellation_fns(contact, quantity):
+            A, Sm = float(np.asarray(fa(*vals))), float(np.asarray(fs(*vals)))
+            if math.isfinite(A) and math.isfinite(Sm) and Sm != 0:
+                worst = max(worst, A / abs(Sm))
+    return worst
+
+
+def _kappa_float(f64, point, f0):
+    """Componentwise relative condition number by float64 central differences."""
+    total = 0.0
+    h = 1e-6
+    with np.errstate(all="ignore"):
+        for k, v in point.items():
+            if v == 0:
+                continue
+            up = float(np.asarray(f64(**{**point, k: v * (1 + h)})))
+            dn = float(np.asarray(f64(**{**point, k: v * (1 - h)})))
+            if math.isfinite(up) and math.isfinite(dn):
+                d = (up - dn) / (2 * h)
+            elif math.isfinite(up):
+                d = (up - f0) / h
+            elif math.isfinite(dn):
+                d = (f0 - dn) / h
+            else:
+                continue
+            total += abs(d)
+    return total / abs(f0) if f0 != 0 else math.inf
+
+
+# ----------------------------------------------------------------- model path
+class SeriesModel:
+    """P(a) = sum_k T_k(a), T_k = E* c_k B_k a^(k+1), from f'(x) = sum_k c_k x^k.
+
+    ``bound(values, N)`` bounds the tail after the first N nonzero terms by
+    |T_N| / (1 - r), r an upper estimate of the term ratios beyond N: the
+    ratios must be nondecreasing over the computed terms and r is their
+    limit extrapolated linearly in 1/k (plus a 1e-3 relative margin) -- true
+    for series of hypergeometric type such as the cylinder's (term ratio
+    (j + 1/2)(j + 3/2)/((j + 1)(j + 2)) (a/R)^2, increasing to (a/R)^2).  The
+    model is not used if the computed terms change sign or their ratios
+    decrease anywhere past N.
+    """
+
+    def __init__(self, contact, K=MODEL_TERMS):
+        prof = contact.profile
+        if prof.is_piecewise:
+            raise LineContactError("no series model for a piecewise profile")
+        fp = prof.pieces[0].derivative
+        ser = sp.series(fp, S.x, 0, K + 1).removeO()
+        poly = sp.Poly(ser, S.x) if ser.free_symbols and S.x in ser.free_symbols else None
+        if poly is None or any(m[0] < 0 for m in poly.monoms()):
+            raise LineContactError("the profile has no Taylor series at x = 0")
+        try:
+            exact = sp.simplify(fp - ser) == 0
+        except Exception:
+            exact = False
+        if exact:
+            raise LineContactError("the profile is a polynomial: the closed form is the series")
+        coeffs = []
+        for k in range(K + 1):
+            ck = poly.coeff_monomial(S.x**k)
+            if ck == 0:
+                continue
+            Bk = sp.sqrt(sp.pi) * sp.gamma(sp.Rational(k, 2) + 1) / (2 * sp.gamma(sp.Rational(k, 2) + sp.Rational(3, 2)))
+            coeffs.append((k, sp.simplify(ck * Bk)))
+        if len(coeffs) < 6:
+            raise LineContactError("too few series terms")
+        self.coeffs = coeffs
+        self.args = (S.a, S.E_star) + tuple(prof.params)
+        self.names = [s.name for s in self.args]
+        self.terms = [S.E_star * cb * S.a ** (k + 1) for k, cb in coeffs]
+        self._mp = sp.lambdify(self.args, self.terms, "mpmath")
+        self.profile_terms = [sp.integrate(sp.Poly(ser, S.x).coeff_monomial(S.x**k) * S.x**k, (S.x, 0, S.x))
+                              for k, _ in coeffs]
+
+    def model_name(self, N):
+        return str(sp.Add(*self.profile_terms[:N]))
+
+    def expr(self, N):
+        return sp.Add(*self.terms[:N])
+
+    def term_values(self, values, dps=20):
+        with mpmath.workdps(dps):
+            return [+t for t in self._mp(*[_as_mpf(values[n]) for n in self.names])]
+
+    def choose(self, values, rtol):
+        """(N, value estimate, tail bound) for the smallest N whose tail bound is
+        <= rtol/2 * |partial sum|, or None."""
+        t = self.term_values(values)
+        if any(mpmath.sign(v) != mpmath.sign(t[0]) for v in t if v != 0):
+            return None
+        mags = [abs(v) for v in t]
+        if any(m == 0 for m in mags):
+            # exact underflow is impossible in mpmath; a zero term means a zero coefficient
+            return None
+        r = [mags[j + 1] / mags[j] for j in range(len(mags) - 1)]
+        jl = len(r) - 1
+        r_inf = r[jl] + (r[jl] - r[jl - 1]) * jl
+        partial = mpmath.mpf(0)
+        for N in range(1, len(t) - 2):
+            partial += t[N - 1]
+            tail_r = r[N:]
+            if any(tail_r[i + 1] < tail_r[i] * (1 - mpmath.mpf(10) ** -12) for i in range(len(tail_r) - 1)):
+                continue
+            rb = max(r_inf, r[-1]) * (1 + mpmath.mpf("1e-3"))
+            if rb >= 1:
+                return None
+            bound = mags[N] / (1 - rb)
+            if bound <= rtol / 2 * abs(partial):
+                return N, partial, bound, float(rb)
+        return None
+
+
+def _model(contact):
+    cache = _cache(contact)
+    if "model" not in cache:
+        try:
+            cache["model"] = SeriesModel(contact)
+        except Exception as exc:  # no model for this profile
+            cache["model"] = exc
+    m = cache["model"]
+    return None if isinstance(m, Exception) else m
+
+
+# ----------------------------------------------------------------- main
+def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool = False,
+             dps: int | None = None, model: bool = True, **values) -> Evaluation:
+    """Evaluate ``quantity`` ('force', 'pressure', 'gap') of ``contact`` at
+    ``values`` (keywords by symbol name) to relative tolerance ``rtol``
+    by the cheapest path that meets it (see the module docstring).
+
+    ``certified=True`` returns a rigorous Arb enclosure with ``dps`` digits
+    (default: 15, or -log10(rtol)).  ``dps`` without ``certified`` means
+    rtol = 10**-dps.  Neither: rtol = 1e-12.  ``model=False`` disables the
+    series-model path.
+    """
+    t0 = time.perf_counter()
+    d = contact.derivation(quantity)
+    names = [s.name for s in d.variables_all]
+    unknown = set(values) - set(names)
+    if unknown:
+        raise DomainError(f"unknown argument(s) {sorted(unknown)}; expected {names}")
+    missing = [n for n in names if n not in values]
+    if missing:
+        raise DomainError(f"missing argument(s) {missing} for {quantity}")
+    _check_domain(quantity, values)
+    values = _abs_x(values)
+
+    if certified:
+        return _certified(contact, d, quantity, values, rtol, dps, t0)
+    if rtol is None:
+        rtol = 10.0 ** -dps if dps is not None else 1e-12
+    if not rtol > 0:
+        raise ValueError("rtol must be positive")
+
+    expensive = _is_expensive(d)
+    # 1. the cheapest model that meets rtol
+    if model and quantity == "force" and (expensive or rtol < 1e-15):
+        m = _model(contact)
+        if m is not None:
+            res = _try_model(m, quantity, values, rtol, t0)
+            if res is not None:
+                return res
+    # 2. float64
+    notes = []
+    if rtol >= 4 * EPS:
+        f64 = _float64_fn(contact, quantity)
+        point = {k: _as_float(v) for k, v in values.items()}
+        with np.errstate(all="ignore"):
+            v = float(np.asarray(f64(**point)))
+        if math.isfinite(v):
+            kappa = _kappa_float(f64, point, v)
+            cancel = _cancellation(contact, quantity, point, names)
+            factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
+            est = factor * EPS * max(1.0, kappa, cancel) * abs(v)
+            qerr = 0.0
+            if not d.closed_form:
+                qerr = _quad_error(contact, quantity, point)
+                est += qerr
+            if est <= rtol * abs(v) or (v == 0 and est == 0):
+                note = (f"stable float64 export; estimate {factor:g} eps max(1, kappa, cancellation) "
+                        f"|value| with kappa = {kappa:.3g}, cancellation = {cancel:.3g}") + \
+                    (f" + quadrature {qerr:.1e}" if qerr else "")
+                return Evaluation(quantity, v, "float64", est, rtol, note=note,
+                                  seconds=time.perf_counter() - t0,
+                                  details={"kappa": kappa, "cancellation": cancel})
+            notes.append(f"float64 estimate {est / abs(v) if v else est:.1e} > rtol")
+        else:
+            notes.append(f"float64 gave {v}")
+            kappa = 1.0
+    else:
+        kappa = 1.0
+        notes.append("rtol below float64 resolution")
+    # 3. mpmath, precision from rtol and kappa, confirmed at +10 digits
+    return _mpmath_path(contact, d, quantity, values, rtol, kappa, t0, notes)
+
+
+def _try_model(m, quantity, values, rtol, t0):
+    choice = m.choose(values, max(rtol - 8 * EPS, rtol / 2) if rtol >= 1e-14 else rtol)
+    if choice is None:
+        return None
+    N, partial, bound, rb = choice
+    if rtol >= 1e-14:
+        # the N-term model in float64
+        tv = [float(t) for t in m.term_values(values, dps=17)[:N]]
+        val = math.fsum(tv)
+        err = float(bound) + 4 * N * EPS * abs(val)
+    else:
+        digits = int(-math.log10(rtol)) + 5
+        with mpmath.workdps(digits):
+            val = +mpmath.fsum(m.term_values(values, dps=digits)[:N])
+        err = bound
+    name = m.model_name(N)
+    note = (f"series of P(a) from the profile's Taylor series, {N} term(s) (the force law of the "
+            f"profile {name}); tail <= |next term|/(1 - r) = {float(bound):.2e} with term ratio "
+            f"bound r = {rb:.3g}")
+    return Evaluation(quantity, val, f"model:{name}", err, rtol, note=note,
+                      seconds=time.perf_counter() - t0, details={"terms": N, "ratio_bound": rb})
+
+
+def _quad_error(contact, quantity, point):
+    """The float64 quadrature's own error estimate (for quantities without a
+    closed form): re-evaluate with error output where possible."""
+    cache = _cache(contact)
+    key = ("qerr", quantity)
+    if key not in cache:
+        from .numeric import _VectorQuad, stable_form
+        d = contact.derivation(quantity)
+        form = stable_form(d).expr
+        ints = list(form.atoms(sp.Integral))
+        syms = d.variables_all
+        quads = [(_VectorQuad(I, conditions=()), I) for I in ints]
+        # d(form)/d(I) for the propagation of each integral's error
+        coeffs = [sp.lambdify(syms, sp.diff(form.xreplace({I: sp.Symbol("_I_")}), sp.Symbol("_I_"))
+                              .xreplace({sp.Symbol("_I_"): 0}), "numpy") for I in ints]
+        cache[key] = (quads, coeffs, [s.name for s in syms])
+    quads, coeffs, names = cache[key]
+    total = 0.0
+    with np.errstate(all="ignore"):
+        for (q, I), cf in zip(quads, coeffs):
+            vals = [point[s.name] for s in q.params]
+            _, e = q(*vals, with_error=True)
+            total += abs(float(cf(*[point[n] for n in names]))) * float(e)
+    return total
+
+
+def _mpmath_fn(contact, d, quantity):
+    cache = _cache(contact)
+    key = ("mp", quantity)
+    if key not in cache:
+        from .numeric import lambdify_mpmath, lambdify_mpmath_quad, stable_form
+        syms = d.variables_all
+        if d.closed_form:
+            f = lambdify_mpmath(stable_form(d).expr, syms, stable=False)
+        else:
+            f = lambdify_mpmath_quad(d.expr, syms)
+        cache[key] = (f, [s.name for s in syms])
+    return cache[key]
+
+
+def _mpmath_path(contact, d, quantity, values, rtol, kappa, t0, notes):
+    f, names = _mpmath_fn(contact, d, quantity)
+    want = -math.log10(rtol)
+    digits = int(math.ceil(want + 5 + math.log10(max(1.0, kappa))))
+    digits = max(digits, 20)
+    while True:
+        with mpmath.workdps(digits):
+            v1 = f(*[_as_mpf(values[n]) for n in names])
+        with mpmath.workdps(digits + 10):
+            v2 = f(*[_as_mpf(values[n]) for n in names])
+            err = abs(v2 - v1)
+            ok = err <= rtol * abs(v2) / 10 or (v2 == 0 and err == 0)
+        if ok:
+            note = "; ".join(notes + [f"confirmed against {digits + 10} digits (difference "
+                                      f"{mpmath.nstr(err, 3)})"])
+            with mpmath.workdps(digits + 10):
+                return Evaluation(quantity, +v2, f"mpmath@{digits}", err, rtol, note=note,
+                                  seconds=time.perf_counter() - t0, details={"digits": digits})
+        if digits > 5000:
+            raise LineContactError(f"mpmath did not reach rtol = {rtol:g} within 5000 digits")
+        digits *= 2
+
+
+def _certified(contact, d, quantity, values, rtol, dps, t0):
+    from .certified import arb_callable
+    from .numeric import stable_form
+    if dps is None:
+        dps = int(math.ceil(-math.log10(rtol))) if rtol else 15
+    if not d.closed_form:
+        from .certified import CertificationError
+        raise CertificationError(f"{quantity} has no closed form; certified evaluation needs one")
+    syms = d.variables_all
+    cache = _cache(contact)
+    if ("arb", quantity) not in cache:
+        cache[("arb", quantity)] = arb_callable(stable_form(d).expr, syms)
+    enc = cache[("arb", quantity)]([values[s.name] for s in syms], dps=dps)
+    lo, hi = enc.lower, enc.upper
+    with mpmath.workdps(dps + 10):
+        mid = enc.mid
+    note = (f"python-flint Arb ball at {enc.prec} bits: a rigorous enclosure of the exact value "
+            f"for the inputs as given (floats are exact binary numbers)")
+    return Evaluation(quantity, mid, "arb", enc.rad, rtol, certified=True, enclosure=(lo, hi),
+                      note=note, seconds=time.perf_counter() - t0,
+                      details={"ball": enc.ball, "prec": enc.prec, "digits": dps})
