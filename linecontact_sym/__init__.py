@@ -15,3 +15,12 @@ from .catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
 from .latex import to_latex
 
 __version__ = "0.1.0"
+
+__all__ = [
+    "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta",
+    "LineContactError", "ProfileError", "UnknownSymbolError", "InadmissibleProfileError",
+    "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
+    "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
+    "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "catalogue",
+    "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex",
+]

@@ -91,6 +91,7 @@ from . import symbols as S
 from . import transforms as T
 from .budget import run_with_budget
 from .derivation import (Derivation, VERIFY_DPS, VerificationRecord, _values_by_name, tidy,
+                         digits_agreeing, verify_many,
                          verify)
 from .errors import BudgetExceeded, DomainError, VerificationError
 from .hyperseries import NotDecomposable, decompose
@@ -160,11 +161,7 @@ def _mp(v):
 
 
 def _digits(x, ref):
-    err = abs(x - ref)
-    scale = max(abs(ref), mpmath.mpf(10)**(-mpmath.mp.dps // 2))
-    if err == 0:
-        return float(mpmath.mp.dps)
-    return min(float(-mpmath.log10(err / scale)), float(mpmath.mp.dps))
+    return digits_agreeing(x, ref)
 
 
 _phi = sp.Symbol("phi", positive=True)
@@ -595,44 +592,9 @@ def _phat_energy(A, gamma, E, dps, quadrature=True):
 # ---------------------------------------------------------------- verification
 def _verify_multi(exprs: dict, reference, sampler, conditions, n_points, dps, reference_name,
                   seed: int = 2017) -> dict:
-    """Like :func:`linecontact_sym.derivation.verify` for several closed forms
-    that share one (expensive) reference: ``reference(vals, dps)`` returns a
-    dict name -> mpf.  Same points (same seed), same digit metric; runs in a
-    budgeted child like ``verify``.  Returns name -> VerificationRecord."""
-    from .derivation import _holds, _to_mpf
-    try:
-        from .derivation import VERIFY_BUDGET as budget
-    except ImportError:  # older engine
-        budget = 120.0
-
-    def work():
-        rng = random.Random(seed)
-        points, digits = [], {k: [] for k in exprs}
-        tries = 0
-        while len(points) < n_points and tries < 20 * n_points:
-            tries += 1
-            vals = sampler(rng)
-            if vals is None or not _holds(conditions, vals):
-                continue
-            try:
-                refs = reference(vals, dps)
-            except (ZeroDivisionError, ValueError, DomainError):
-                continue
-            points.append(vals)
-            for k, e in exprs.items():
-                with mpmath.workdps(dps):
-                    try:
-                        val = _to_mpf(sp.N(e.xreplace(vals), dps + 10))
-                        digits[k].append(_digits(val, refs[k]))
-                    except (DomainError, TypeError, ValueError):
-                        digits[k].append(0.0)
-        return {k: VerificationRecord(tuple(points), tuple(digits[k]), dps, reference_name[k]
-                                      if isinstance(reference_name, dict) else reference_name)
-                for k in exprs}
-    try:
-        return run_with_budget(work, seconds=budget)
-    except BudgetExceeded:
-        return {k: VerificationRecord((), (), dps, f"did not finish in {budget:g} s") for k in exprs}
+    """Several closed forms against one shared reference (the engine's
+    :func:`~linecontact_sym.derivation.verify_many`)."""
+    return verify_many(exprs, reference, sampler, conditions, n_points, seed, dps, reference_name)
 
 
 # ---------------------------------------------------------------- symbolic helpers

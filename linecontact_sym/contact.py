@@ -14,8 +14,7 @@ from . import strategies as ST
 from . import transforms as T
 from .budget import DEFAULT_BUDGET, run_with_budget
 from .derivation import Derivation, VERIFY_DPS, try_strategies, verify, REQUIRED_DIGITS
-from .errors import (BudgetExceeded, DomainError, InadmissibleProfileError, ProfileError,
-                     VerificationError)
+from .errors import BudgetExceeded, DomainError, InadmissibleProfileError, ProfileError
 from .profile import Profile
 
 
@@ -93,7 +92,6 @@ class LineContact:
         if len(pcs) == 1:
             lo, hi = 0.05, 1.5
         av = rng.uniform(lo + 0.02 * (hi - lo), hi - 0.02 * (hi - lo))
-        d = self.profile.pieces[-1].derivative
         for _ in range(12):  # shrink into the profile's real domain
             try:
                 fp = complex(sp.N(self.profile.piece_at(av, vals).derivative.xreplace(vals).subs(S.x, av)))

@@ -13,7 +13,7 @@ import mpmath
 import sympy as sp
 
 from . import symbols as S
-from .budget import DEFAULT_BUDGET, run_with_budget
+from .budget import run_with_budget
 from .errors import BudgetExceeded, DivergentIntegralError, DomainError
 from .strategies import NotApplicable
 
@@ -244,6 +244,20 @@ def _holds(conds, vals) -> bool:
     return True
 
 
+def digits_agreeing(val, ref, dps=None) -> float:
+    """Agreeing significant digits of ``val`` and ``ref`` (capped at ``dps``,
+    default the current working precision; a reference below 10**(-dps/2)
+    is compared absolutely)."""
+    dps = mpmath.mp.dps if dps is None else dps
+    with mpmath.workdps(dps):
+        err = abs(val - ref)
+        if err == 0:
+            return float(dps)
+        scale = max(abs(ref), mpmath.mpf(10)**(-dps // 2))
+        d = float(-mpmath.log10(err / scale))
+    return 0.0 if math.isnan(d) else min(d, float(dps))
+
+
 def verify(expr, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
            dps: int = VERIFY_DPS, reference_name: str = "mpmath quadrature",
            budget: float = VERIFY_BUDGET) -> VerificationRecord:
@@ -252,16 +266,30 @@ def verify(expr, reference, sampler, conditions=(), n_points: int = 5, seed: int
 
     Runs under ``budget`` seconds; a verification that does not finish is
     returned as a record with no points (``passed`` is False)."""
+    return verify_many({"_": expr}, lambda vals, d: {"_": reference(vals, d)}, sampler, conditions,
+                       n_points, seed, dps, reference_name, budget)["_"]
+
+
+def verify_many(exprs: dict, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
+                dps: int = VERIFY_DPS, reference_name="mpmath quadrature",
+                budget: float = VERIFY_BUDGET) -> dict:
+    """:func:`verify` for several closed forms sharing one (expensive)
+    reference: ``reference(values, dps)`` returns a dict name -> mpf; the
+    same points are used for all.  ``reference_name`` may be a dict too.
+    Returns name -> :class:`VerificationRecord`."""
+    def name(k):
+        return reference_name[k] if isinstance(reference_name, dict) else reference_name
     try:
-        return run_with_budget(_verify, expr, reference, sampler, conditions, n_points, seed, dps,
-                               reference_name, seconds=budget)
+        return run_with_budget(_verify, exprs, reference, sampler, conditions, n_points, seed, dps,
+                               name, seconds=budget)
     except BudgetExceeded:
-        return VerificationRecord((), (), dps, reference_name + f" (did not finish in {budget:g} s)")
+        return {k: VerificationRecord((), (), dps, name(k) + f" (did not finish in {budget:g} s)")
+                for k in exprs}
 
 
-def _verify(expr, reference, sampler, conditions, n_points, seed, dps, reference_name):
+def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
     rng = random.Random(seed)
-    points, digits = [], []
+    points, digits = [], {k: [] for k in exprs}
     tries = 0
     while len(points) < n_points and tries < 20 * n_points:
         tries += 1
@@ -269,19 +297,18 @@ def _verify(expr, reference, sampler, conditions, n_points, seed, dps, reference
         if vals is None or not _holds(conditions, vals):
             continue
         try:
-            ref = reference(vals, dps)
+            refs = reference(vals, dps)
         except (ZeroDivisionError, ValueError, DomainError):
             continue
-        if not mpmath.isfinite(ref) or isinstance(ref, mpmath.mpc):
+        if any(not mpmath.isfinite(r) or isinstance(r, mpmath.mpc) for r in refs.values()):
             continue
-        with mpmath.workdps(dps):
-            try:
-                val = _to_mpf(sp.N(expr.xreplace(_floats(vals, dps + 30)), dps + 10))
-            except (DomainError, TypeError):
-                val = mpmath.mpf("nan")
-            err = abs(val - ref)
-            scale = max(abs(ref), mpmath.mpf(10)**(-dps // 2))
-            d = float(dps) if err == 0 else float(-mpmath.log10(err / scale))
         points.append(vals)
-        digits.append(min(d, float(dps)) if not math.isnan(d) else 0.0)
-    return VerificationRecord(tuple(points), tuple(digits), dps, reference_name)
+        fvals = _floats(vals, dps + 30)
+        for k, expr in exprs.items():
+            with mpmath.workdps(dps):
+                try:
+                    val = _to_mpf(sp.N(expr.xreplace(fvals), dps + 10))
+                except (DomainError, TypeError, ValueError):
+                    val = mpmath.mpf("nan")
+                digits[k].append(digits_agreeing(val, refs[k], dps))
+    return {k: VerificationRecord(tuple(points), tuple(digits[k]), dps, name(k)) for k in exprs}

@@ -9,7 +9,7 @@ a profile that does not decrease on (0, a).
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import cached_property
 
 import mpmath

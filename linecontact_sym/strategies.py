@@ -124,7 +124,6 @@ def pressure_sympy(P, profile=None):
     branches = []
     edges = [sp.S.Zero] + bps + [sp.oo]
     for J in range(len(edges) - 1):  # a in [edges[J], edges[J+1])
-        PJ = _piece_for(dP_of, J, bps)
         for I in range(J + 1):       # x in [edges[I], edges[I+1])
             total = sp.S.Zero
             for j in range(I, J + 1):

@@ -5,7 +5,6 @@ import mpmath
 import pytest
 import sympy as sp
 
-import linecontact_sym as lcs
 from linecontact_sym import E_star, a, x, R, b, n, c, theta
 
 mp = mpmath
