@@ -105,6 +105,10 @@ class Derivation:
         lines += ["  note: " + n for n in self.notes]
         return "\n".join(lines)
 
+    def _sympy_(self):
+        """A Derivation takes part in SymPy arithmetic as its expression."""
+        return self.expr
+
     def _repr_latex_(self):
         from .latex import to_latex
         return f"$\\displaystyle {to_latex(self.expr)}$"

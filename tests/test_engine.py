@@ -242,3 +242,12 @@ def test_admissible_range_of_a_cosine_bump_and_quartic():
     # just below a*, the gap at 1000 a (> sqrt 2) is still >= 0; just above it is not
     assert 1000 * a_star < 2**0.5 * 1.01
     assert lcs.parabola().admissible_range(a_max=4, R=1, E_star=1) == (4, None)
+
+
+def test_catalogue_equals_typed_by_hand_and_derivation_is_sympy():
+    by_hand = lcs.LineContact(x**2 / (2 * lcs.R))
+    assert by_hand.force == lcs.parabola().force
+    cyl = lcs.LineContact(lcs.R - sp.sqrt(lcs.R**2 - x**2))
+    assert cyl.force == lcs.exact_cylinder().force
+    h = by_hand.half_width(P)
+    assert sp.simplify(h - 2 * sp.sqrt(P * lcs.R / (sp.pi * E_star))) == 0
