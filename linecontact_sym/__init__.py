@@ -13,6 +13,7 @@ from .adhesion import AdhesiveLineContact, NoPullOffError, NoEquilibriumError
 from . import catalogue
 from .catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
 from .latex import to_latex
+from .parsing import parse_expr
 
 __version__ = "0.1.0"
 
@@ -22,5 +23,5 @@ __all__ = [
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
     "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "catalogue",
-    "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex",
+    "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "parse_expr",
 ]

@@ -1,0 +1,398 @@
+"""The command line ``linecontact-sym``.
+
+Verbs::
+
+    linecontact-sym paper popov2017 [--out DIR]        check a paper, write the reports
+    linecontact-sym derive PROFILE [--set R=1 ...] [--adhesion] [--format text|latex|json]
+    linecontact-sym eval PROFILE QUANTITY --at a=0.1,0.2 [x=...] --set R=1 E_star=1 [--dps 50]
+    linecontact-sym table power-law --n 1,2,3,4,5,6,10 [--latex]
+    linecontact-sym check FILE.toml | --profile PROFILE --force FORMULA ...
+
+Every verb has ``--help``; ``--json`` gives machine-readable output on
+stdout.  Errors go to stderr with a non-zero exit status (2: bad input,
+1: a claim without a verdict, 3: an internal error).  Formulas are parsed by
+the whitelisted parser of :mod:`linecontact_sym.parsing`; nothing typed on
+the command line is executed as code.
+"""
+from __future__ import annotations
+
+import argparse
+import itertools
+import json
+import os
+import sys
+import time
+import traceback
+from pathlib import Path
+
+
+from . import symbols as S
+from .errors import LineContactError
+
+EXIT_OK, EXIT_NO_VERDICT, EXIT_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with errors on stderr, exit status 2 (its default)."""
+
+
+def _emit_json(obj):
+    print(json.dumps(obj, indent=2, default=str))
+
+
+def _err(msg):
+    print(f"linecontact-sym: error: {msg}", file=sys.stderr)
+
+
+# ------------------------------------------------------------------ helpers
+def _profile(text, symbols=(), where="PROFILE"):
+    from .parsing import parse_expr
+    return parse_expr(text, symbols=list(symbols or ()), where=where)
+
+
+def _settings(items, symbols=()):
+    from .parsing import parse_assignments
+    return parse_assignments(items or [], where="--set", symbols=list(symbols or ()))
+
+
+def _contact(args, profile):
+    from .contact import LineContact
+    return LineContact(profile, budget=args.budget)
+
+
+def _derivation_dict(d, values=None):
+    from .latex import to_latex
+    expr = d.expr.xreplace(values) if values else d.expr
+    rec = d.verification
+    return {"quantity": d.quantity, "expr": str(expr), "latex": to_latex(expr),
+            "closed_form": bool(d.closed_form), "method": d.method,
+            "conditions": [str(c) for c in d.conditions],
+            "verified_digits": round(rec.min_digits, 2) if rec is not None else None,
+            "seconds": round(d.seconds, 3), "notes": list(d.notes)}
+
+
+# ------------------------------------------------------------------ paper
+def cmd_paper(args):
+    from .claims import check_paper, load_paper
+    from .report import text_table, write_paper_outputs
+    paper = load_paper(args.name)
+    out = Path(args.out or f"{paper.key}-report")
+    only = set(args.only) if args.only else None
+    if only:
+        unknown = only - {c.label for c in paper.claims}
+        if unknown:
+            raise LineContactError(f"no claim(s) {sorted(unknown)} in {paper.source}")
+    t0 = time.perf_counter()
+    if not args.quiet:
+        print(f"checking {len(only) if only else len(paper.claims)} claims of {paper.title or paper.key}",
+              file=sys.stderr, flush=True)
+
+    def progress(i, n, r):
+        if not args.quiet:
+            print(f"[{i + 1:2d}/{n}] {r.label:<10} {r.status:<24} {r.digits:5.1f} digits {r.seconds:6.1f} s",
+                  file=sys.stderr, flush=True)
+    result = check_paper(paper, budget=args.budget, progress=progress, only=only)
+    written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget)
+    if args.json:
+        d = result.to_dict()
+        d["written"] = {k: [str(p) for p in v] if isinstance(v, list) else str(v) for k, v in written.items()}
+        _emit_json(d)
+    else:
+        print(text_table(result))
+        print()
+        print(f"written to {out}/: " + ", ".join(
+            Path(p).name for v in written.values() for p in (v if isinstance(v, list) else [v])))
+        print(f"total {time.perf_counter() - t0:.0f} s")
+    return EXIT_OK if result.ok else EXIT_NO_VERDICT
+
+
+# ------------------------------------------------------------------ derive
+def cmd_derive(args):
+    from .latex import to_latex
+    prof = _profile(args.profile, args.symbols)
+    values = _settings(args.set, args.symbols)
+    prof = prof.xreplace(values)
+    c = _contact(args, prof)
+    quantities = [q.strip() for q in args.quantities.split(",") if q.strip()]
+    for q in quantities:
+        if q not in ("force", "pressure", "gap"):
+            raise LineContactError(f"unknown quantity {q!r} for derive; choose from force, pressure, gap")
+    out = {"profile": str(prof), "profile_latex": to_latex(prof),
+           "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
+    for q in quantities:
+        out["quantities"][q] = c.derivation(q)
+    if args.adhesion:
+        ad = c.adhesive(S.gamma)
+        for q in ("force", "pressure", "adhesion_force", "pull_off_half_width"):
+            try:
+                out["quantities"][f"adhesive_{q}" if q in ("force", "pressure") else q] = ad.derivation(q)
+            except LineContactError as exc:
+                out["quantities"][q] = exc
+    if args.format == "json":
+        _emit_json({**out, "quantities": {k: (_derivation_dict(v) if not isinstance(v, Exception)
+                                              else {"error": str(v)}) for k, v in out["quantities"].items()}})
+    elif args.format == "latex":
+        print(r"\begin{align*}")
+        lines = [f"f(x) &= {to_latex(prof)}"]
+        names = {"force": "P(a)", "pressure": "p(x)", "gap": "g(x)", "adhesive_force": "P_{\\mathrm{JKR}}(a)",
+                 "adhesive_pressure": "p_{\\mathrm{JKR}}(x)", "adhesion_force": "P_{\\mathrm{adh}}",
+                 "pull_off_half_width": "a_{\\mathrm{po}}"}
+        for k, v in out["quantities"].items():
+            if isinstance(v, Exception):
+                continue
+            lines.append(f"{names.get(k, k)} &= {to_latex(v.expr)}")
+        print(" \\\\\n".join(lines))
+        print(r"\end{align*}")
+    else:
+        print(f"profile f(x) = {prof}    (f'(0+) = {c.profile.slope_at_origin})")
+        for k, v in out["quantities"].items():
+            print()
+            print(f"[{k}]")
+            print(str(v) if not isinstance(v, Exception) else f"error: {v}")
+    return EXIT_OK
+
+
+# ------------------------------------------------------------------ eval
+_EVAL_QUANTITIES = ("force", "pressure", "gap", "half_width", "adhesive_force", "adhesive_pressure",
+                    "adhesion_force", "pull_off_force", "pull_off_half_width")
+
+
+def cmd_eval(args):
+    import mpmath
+    from .parsing import parse_number_list
+    prof = _profile(args.profile, args.symbols)
+    values = _settings(args.set, args.symbols)
+    q = args.quantity
+    if q not in _EVAL_QUANTITIES:
+        raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_EVAL_QUANTITIES)}")
+    grids = {}
+    for item in args.at or []:
+        if "=" not in item:
+            raise LineContactError(f"--at expects NAME=V1,V2,..., got {item!r}")
+        name, vs = item.split("=", 1)
+        grids[name.strip()] = parse_number_list(vs, where=f"--at {name.strip()}")
+    c = _contact(args, prof)
+    names = list(grids)
+    fixed = {k.name: v for k, v in values.items()}
+    rows = []
+    for combo in itertools.product(*[grids[nm] for nm in names]):
+        point = dict(zip(names, combo))
+        allv = {**fixed, **point}
+        try:
+            v = _eval_one(c, q, allv, args.dps)
+            rows.append({**{k: str(vv) for k, vv in point.items()}, "value": mpmath.nstr(v, args.dps)})
+        except LineContactError as exc:
+            rows.append({**{k: str(vv) for k, vv in point.items()}, "value": None, "error": str(exc)})
+    if args.json:
+        _emit_json({"profile": str(prof), "quantity": q, "set": {k: str(v) for k, v in fixed.items()},
+                    "dps": args.dps, "rows": rows})
+    else:
+        head = "  ".join(f"{n:>12}" for n in names) + f"  {q}"
+        print(head)
+        for r in rows:
+            print("  ".join(f"{r[n]:>12}" for n in names) + "  " + (r["value"] or f"error: {r['error']}"))
+    return EXIT_OK if all(r.get("value") is not None for r in rows) else EXIT_INPUT
+
+
+def _eval_one(c, q, values, dps):
+    if q in ("force", "pressure", "gap"):
+        return c.evaluate_at(q, dps=dps, **values)
+    if q == "half_width":
+        if "P" not in values:
+            raise LineContactError("half_width needs the load: --at P=... or --set P=...")
+        load = values.pop("P")
+        return c.half_width(load, **values)
+    ad = c.adhesive(S.gamma)
+    name = {"adhesive_force": "force", "adhesive_pressure": "pressure"}.get(q, q)
+    return ad.derivation(name).evalf(dps=dps, **values)
+
+
+# ------------------------------------------------------------------ table
+def cmd_table(args):
+    from .parsing import parse_number_list
+    from .report import power_law_latex, power_law_rows, power_law_text
+    if args.kind != "power-law":
+        raise LineContactError(f"unknown table {args.kind!r}; available: power-law")
+    ns = parse_number_list(args.n, where="--n")
+    rows, Zsym, d = power_law_rows(ns, budget=args.budget)
+    if args.json:
+        _emit_json({"Z_n": str(Zsym), "force_law": str(d.expr), "method": d.method,
+                    "rows": [{"n": str(r["n"]), "Z_n": str(r["Z"]), "Z_n_float": r["Z_float"],
+                              "force": str(r["force"])} for r in rows]})
+    elif args.latex:
+        print(power_law_latex(rows))
+    else:
+        print(f"f(x) = c x**n:  P(a) = E* c Z_n a**n,  Z_n = {Zsym}   (derived: {d.method.split(':')[0]})")
+        print(power_law_text(rows))
+    return EXIT_OK
+
+
+# ------------------------------------------------------------------ check
+_CLI_QUANTITIES = {"force": "force", "pressure": "pressure", "gap": "gap",
+                   "adhesive_force": "adhesive_force", "pull_off": "pull_off_force", "Z_n": "Z_n"}
+
+
+def cmd_check(args):
+    from .claims import Paper, check_paper, claim_from_cli, load_paper
+    from .report import text_table
+    formulas = [(q, getattr(args, q)) for q in _CLI_QUANTITIES if getattr(args, q, None)]
+    if args.quantity or args.formula:
+        if not (args.quantity and args.formula):
+            raise LineContactError("--quantity and --formula go together")
+        formulas.append(("__generic__", args.formula))
+    if args.file:
+        if formulas or args.profile:
+            raise LineContactError("give either a claims FILE or --profile with formulas, not both")
+        paper = load_paper(args.file)
+    else:
+        if not formulas:
+            raise LineContactError("nothing to check: give a claims FILE, or --profile with --force/--pressure/"
+                                   "--gap/--adhesive-force/--pull-off/--Z-n or --quantity Q --formula F")
+        ranges = {}
+        for item in args.range or []:
+            name, _, span = item.partition("=")
+            lo, _, hi = span.partition(":")
+            if not (name and lo and hi):
+                raise LineContactError(f"--range expects NAME=LOW:HIGH, got {item!r}")
+            ranges[name.strip()] = [lo, hi]
+        claims = []
+        for q, formula in formulas:
+            quantity = args.quantity if q == "__generic__" else _CLI_QUANTITIES[q]
+            claims.append(claim_from_cli(quantity, formula, args.profile, label=f"{quantity} (command line)",
+                                         assumptions=args.assume or (), ranges=ranges, symbols=args.symbols or (),
+                                         force_law=args.force_law))
+        paper = Paper("command-line", "claims from the command line", "", claims, {}, "command line")
+    result = check_paper(paper, budget=args.budget)
+    if args.json:
+        _emit_json(result.to_dict())
+    else:
+        print(text_table(result))
+        for r in result.results:
+            if r.status in ("holds", "holds under a condition"):
+                for t in r.targets:
+                    if t.derived is not None and t.derived.expr is not None:
+                        print(f"  {r.label}: derived {t.derived.expr}")
+    if not result.ok:
+        return EXIT_NO_VERDICT
+    if args.strict and any(r.status != "holds" for r in result.results):
+        return EXIT_NO_VERDICT
+    return EXIT_OK
+
+
+# ------------------------------------------------------------------ parser
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="linecontact-sym",
+                description="Closed-form line (2-D) contact laws by Popov's (2017) flat-punch superposition: "
+                            "derive, evaluate, tabulate, and check published formulas.")
+    p.add_argument("--version", action="version", version="%(prog)s 0.1.0")
+    sub = p.add_subparsers(dest="verb", metavar="VERB")
+    sub.required = True
+
+    def common(sp_, json_flag=True):
+        sp_.add_argument("--budget", type=float, default=20.0, metavar="S",
+                         help="seconds allowed to each symbolic derivation (default 20)")
+        if json_flag:
+            sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
+
+    sym_help = "extra symbol names used by the formulas (created positive)"
+
+    pp = sub.add_parser("paper", help="check every claim of a paper and write the reports",
+                        description="Derive and check every claim of a paper (a shipped name such as "
+                                    "popov2017, or a claims TOML file); print a report table and write a "
+                                    "Markdown and a LaTeX report, the LaTeX Table 1, the figures (PNG, PDF) "
+                                    "and results.json into DIR. Exit status 0 when every claim has a verdict.")
+    pp.add_argument("name", help="shipped paper (popov2017) or path to a claims .toml file")
+    pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
+    pp.add_argument("--only", nargs="+", metavar="LABEL", help="check only these claims, e.g. --only 'Eq. (10)'")
+    pp.add_argument("--no-figures", action="store_true", help="do not draw the figures")
+    pp.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+    common(pp)
+    pp.set_defaults(func=cmd_paper)
+
+    pd = sub.add_parser("derive", help="derive the force law, pressure and gap of a profile",
+                        description="Derive P(a), p(x; a) and the gap of a profile f(x) (x >= 0, mirrored), "
+                                    "e.g. linecontact-sym derive 'x**2/(2*R)'.")
+    pd.add_argument("profile", help="the profile f(x) in SymPy syntax, e.g. 'x**2/(2*R)'")
+    pd.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fix parameters, e.g. R=1")
+    pd.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
+    pd.add_argument("--quantities", default="force,pressure,gap", help="comma-separated (default force,pressure,gap)")
+    pd.add_argument("--adhesion", action="store_true", help="also the JKR-adhesive laws (Eqs. 29-36)")
+    pd.add_argument("--format", choices=("text", "latex", "json"), default="text")
+    common(pd, json_flag=False)
+    pd.set_defaults(func=cmd_derive)
+
+    pe = sub.add_parser("eval", help="evaluate a derived quantity at points, to any precision",
+                        description="Evaluate a quantity on the grid of --at values (all combinations), with "
+                                    "--set fixing the rest, e.g. linecontact-sym eval 'x**2/(2*R)' pressure "
+                                    "--at a=1 x=0.1,0.5 --set R=1 E_star=1 --dps 50.")
+    pe.add_argument("profile", help="the profile f(x) in SymPy syntax")
+    pe.add_argument("quantity", help="one of: " + ", ".join(_EVAL_QUANTITIES))
+    pe.add_argument("--at", nargs="+", action="extend", metavar="NAME=V1,V2",
+                    help="grid values, e.g. a=0.1,0.2 x=0:1:5 (LOW:HIGH:COUNT)")
+    pe.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fixed values, e.g. R=1 E_star=1")
+    pe.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
+    pe.add_argument("--dps", type=int, default=30, help="significant digits (default 30)")
+    common(pe)
+    pe.set_defaults(func=cmd_eval)
+
+    pt = sub.add_parser("table", help="tables of derived laws (power-law Z_n)",
+                        description="Z_n and the force law P(a) = E* c Z_n a^n of the power-law profile c x^n "
+                                    "for a list of exponents, as text, LaTeX (booktabs) or JSON.")
+    pt.add_argument("kind", choices=("power-law",), help="the table (power-law)")
+    pt.add_argument("--n", default="1,2,3,4,5,6,10", help="exponents, comma-separated (default 1,2,3,4,5,6,10)")
+    pt.add_argument("--latex", action="store_true", help="LaTeX booktabs table")
+    common(pt)
+    pt.set_defaults(func=cmd_table)
+
+    pc = sub.add_parser("check", help="check claims: a claims file, or one formula typed here",
+                        description="Check a claims TOML file, or a formula for a profile, e.g. "
+                                    "linecontact-sym check --profile 'x**2/(2*R)' --force 'pi*E_star*a**2/(4*R)'. "
+                                    "Verdicts: holds / holds under a condition / does not hold (with a "
+                                    "counterexample).")
+    pc.add_argument("file", nargs="?", help="claims .toml file (or a shipped paper name)")
+    pc.add_argument("--profile", help="the profile f(x)")
+    pc.add_argument("--force", help="the claimed force law P(a)")
+    pc.add_argument("--pressure", help="the claimed pressure p(x; a), 0 < x < a")
+    pc.add_argument("--gap", help="the claimed gap g(x; a), x > a")
+    pc.add_argument("--adhesive-force", dest="adhesive_force", help="the claimed JKR force law P(a)")
+    pc.add_argument("--pull-off", dest="pull_off", help="the claimed pull-off force P_adh > 0")
+    pc.add_argument("--Z-n", dest="Z_n", help="the claimed Z_n of a power law c*x**n")
+    pc.add_argument("--quantity", help="any checker quantity (with --formula)")
+    pc.add_argument("--formula", help="the claimed formula for --quantity")
+    pc.add_argument("--force-law", dest="force_law", help="force law for --quantity inverse_profile")
+    pc.add_argument("--assume", nargs="+", action="extend", metavar="REL", help="assumptions, e.g. 'a < R'")
+    pc.add_argument("--range", nargs="+", action="extend", metavar="NAME=LOW:HIGH",
+                    help="sampling ranges, e.g. n=0.3:6")
+    pc.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
+    pc.add_argument("--strict", action="store_true", help="exit 1 unless every claim holds unconditionally")
+    common(pc)
+    pc.set_defaults(func=cmd_check)
+    return p
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except LineContactError as exc:
+        _err(str(exc))
+        return EXIT_INPUT
+    except KeyboardInterrupt:
+        _err("interrupted")
+        return 130
+    except BrokenPipeError:          # output piped into head & co.
+        try:
+            sys.stdout = open(os.devnull, "w")
+        except OSError:
+            pass
+        return EXIT_OK
+    except Exception as exc:  # noqa: BLE001
+        _err(f"internal error: {type(exc).__name__}: {exc}")
+        if os.environ.get("LINECONTACT_SYM_DEBUG"):
+            traceback.print_exc()
+        return EXIT_INTERNAL
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

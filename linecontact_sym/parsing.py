@@ -1,0 +1,466 @@
+"""A whitelisted parser for formulas typed by people: claims files, the
+command line, notebooks.
+
+Strings are never handed to ``eval`` or to ``sympify`` as they come.  Each
+string is first parsed by Python's own ``ast`` module and every node is
+checked against a whitelist: numbers, the arithmetic operators, comparisons
+and boolean connectives (for ``Piecewise`` conditions), tuples (for the
+arguments of ``Piecewise``, ``Integral`` and ``hyper``), known names, and
+calls of known functions by their bare name.  Anything else -- attribute
+access, subscripts, dunder names, lambdas, comprehensions, keyword arguments,
+strings, calls of unknown names, huge constant powers -- is rejected with a
+:class:`~linecontact_sym.errors.ClaimError` that names where the string came
+from (file, claim, field) and what is wrong.  Only then is the (re-printed)
+string given to :func:`sympy.parsing.sympy_parser.parse_expr`, with a
+namespace that holds exactly the whitelisted objects.
+
+Names
+-----
+* the standard symbols ``x, a, P, E_star, gamma, R, b, n, c, theta`` (with the
+  assumptions of :mod:`linecontact_sym.symbols`) and the integration
+  variables ``t`` and ``s`` (the paper's a-tilde);
+* symbols the caller declares (``symbols=["k", "h"]``, created positive);
+* named definitions (``definitions={"Z_n": expr}``), e.g. Popov's Z_n;
+* placeholders for functional claims (``placeholders={"f": ...}``);
+* constants ``pi``, ``E`` (Euler's number), ``I``, ``oo``;
+* functions: see :data:`FUNCTIONS`.
+
+``gamma`` is both the work of adhesion (a symbol, the paper's gamma_12) and
+Euler's Gamma function: ``gamma(n/2)`` is the function, a bare ``gamma`` the
+symbol.  ``^`` means power.  Decimal literals are exact (``0.1`` is 1/10).
+"""
+from __future__ import annotations
+
+import ast
+import math
+
+import sympy as sp
+from sympy.parsing.sympy_parser import convert_xor, rationalize, parse_expr as _sympy_parse_expr
+from sympy.parsing.sympy_parser import standard_transformations
+
+from . import symbols as S
+from .errors import ClaimError
+
+#: integration variables (the paper's a-tilde); the same symbols as the engine's
+t = sp.Symbol("t", positive=True)
+s = sp.Symbol("s", positive=True)
+
+#: the standard symbols every formula may use
+SYMBOLS = {sym.name: sym for sym in (S.x, S.a, S.P, S.E_star, S.gamma, S.R, S.b, S.n, S.c, S.theta, t, s)}
+
+#: constants
+CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "True": sp.true, "False": sp.false}
+
+#: functions that may be called, by name
+FUNCTIONS = {
+    "sqrt": sp.sqrt, "cbrt": sp.cbrt, "root": sp.root, "exp": sp.exp, "log": sp.log, "ln": sp.log,
+    "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
+    "asin": sp.asin, "acos": sp.acos, "atan": sp.atan, "acot": sp.acot, "atan2": sp.atan2,
+    "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh, "coth": sp.coth,
+    "asinh": sp.asinh, "acosh": sp.acosh, "atanh": sp.atanh, "acoth": sp.acoth,
+    "gamma": sp.gamma, "loggamma": sp.loggamma, "beta": sp.beta, "binomial": sp.binomial,
+    "elliptic_k": sp.elliptic_k, "elliptic_e": sp.elliptic_e, "elliptic_f": sp.elliptic_f,
+    "elliptic_pi": sp.elliptic_pi, "hyper": sp.hyper,
+    "besselj": sp.besselj, "bessely": sp.bessely, "besseli": sp.besseli, "besselk": sp.besselk,
+    "erf": sp.erf, "erfc": sp.erfc,
+    "Piecewise": sp.Piecewise, "Abs": sp.Abs, "sign": sp.sign, "Min": sp.Min, "Max": sp.Max,
+    "Rational": sp.Rational, "Integral": sp.Integral, "Derivative": sp.Derivative,
+    "Eq": sp.Eq, "Ne": sp.Ne, "Lt": sp.Lt, "Le": sp.Le, "Gt": sp.Gt, "Ge": sp.Ge,
+    "And": sp.And, "Or": sp.Or, "Not": sp.Not,
+}
+
+#: helpful words for names people often try
+_HINTS = {
+    "K": "for the complete elliptic integral K(k) write elliptic_k(k**2) (SymPy takes the parameter m = k**2)",
+    "E": "E is Euler's number; for the elliptic integral E(k) write elliptic_e(k**2) "
+         "(parameter m = k**2); the modulus is E_star",
+    "Gamma": "write gamma(...) for Euler's Gamma function",
+    "arcsin": "write asin", "arccos": "write acos", "arctan": "write atan",
+    "arcsinh": "write asinh", "arccosh": "write acosh", "arctanh": "write atanh",
+    "Estar": "the reduced modulus is E_star", "E_s": "the reduced modulus is E_star",
+    "eval": "strings are never evaluated as code", "exec": "strings are never evaluated as code",
+    "import": "strings are never evaluated as code", "open": "strings are never evaluated as code",
+}
+
+MAX_LENGTH = 2000
+MAX_NODES = 800
+MAX_DIGITS = 40          # longest numeric literal
+MAX_CONST_EXPONENT = 1000
+
+_ALLOWED_BINOPS = (ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow, ast.BitXor, ast.BitAnd, ast.BitOr)
+_ALLOWED_UNARY = (ast.UAdd, ast.USub, ast.Invert, ast.Not)
+_ALLOWED_CMP = (ast.Lt, ast.LtE, ast.Gt, ast.GtE, ast.Eq, ast.NotEq)
+
+_GAMMA_FN = "Gamma__fn"   # internal rename of gamma(...) calls (never user-visible)
+
+
+def _where(where: str) -> str:
+    return f"{where}: " if where else ""
+
+
+class _Validator(ast.NodeVisitor):
+    def __init__(self, text, where, names, callables):
+        self.text = text
+        self.where = where
+        self.names = names
+        self.callables = callables
+        self.count = 0
+
+    def fail(self, problem, node=None):
+        pos = f" (at column {node.col_offset + 1})" if node is not None and hasattr(node, "col_offset") else ""
+        raise ClaimError(f"{_where(self.where)}{problem}{pos} in {self.text!r}")
+
+    def generic_visit(self, node):
+        self.count += 1
+        if self.count > MAX_NODES:
+            self.fail(f"formula too large (more than {MAX_NODES} syntax nodes)")
+        super().generic_visit(node)
+
+    # -- allowed nodes -------------------------------------------------------
+    def visit_Expression(self, node):
+        self.generic_visit(node)
+
+    def visit_Constant(self, node):
+        self.count += 1
+        v = node.value
+        if isinstance(v, bool):
+            return
+        if isinstance(v, (int, float)):
+            if len(repr(v)) > MAX_DIGITS:
+                self.fail(f"numeric literal with more than {MAX_DIGITS} characters", node)
+            return
+        if isinstance(v, str):
+            self.fail("strings are not allowed", node)
+        self.fail(f"constant {v!r} is not allowed", node)
+
+    def visit_Name(self, node):
+        self.count += 1
+        name = node.id
+        if name.startswith("_") or "__" in name:
+            self.fail(f"name {name!r} is not allowed (no private or dunder names)", node)
+        if name not in self.names and name not in self.callables:
+            hint = _HINTS.get(name)
+            known = ", ".join(sorted(n for n in self.names if n not in ("True", "False")))
+            self.fail(f"unknown name {name!r}" + (f" ({hint})" if hint else
+                      f"; declare it as a symbol (symbols = [\"{name}\"]) or use one of: {known}"), node)
+        if name in self.callables and name not in self.names:
+            self.fail(f"{name!r} is a function; call it, e.g. {name}(x)", node)
+
+    def visit_BinOp(self, node):
+        if not isinstance(node.op, _ALLOWED_BINOPS):
+            self.fail(f"operator {type(node.op).__name__} is not allowed", node)
+        if isinstance(node.op, (ast.Pow, ast.BitXor)) and _is_constant(node.right):
+            try:
+                e = _const_value(node.right)
+            except OverflowError:
+                self.fail("constant exponent too large", node)
+            if isinstance(e, (int, float)) and abs(e) > MAX_CONST_EXPONENT and _is_constant(node.left):
+                self.fail(f"constant power with exponent {e:g} is too large", node)
+        if isinstance(node.op, (ast.Pow, ast.BitXor)) and _is_constant(node.left) and _is_constant(node.right):
+            try:
+                _const_value(node)
+            except OverflowError:
+                self.fail("constant power too large", node)
+        self.generic_visit(node)
+
+    def visit_UnaryOp(self, node):
+        if not isinstance(node.op, _ALLOWED_UNARY):
+            self.fail(f"operator {type(node.op).__name__} is not allowed", node)
+        self.generic_visit(node)
+
+    def visit_Compare(self, node):
+        for op in node.ops:
+            if not isinstance(op, _ALLOWED_CMP):
+                self.fail(f"comparison {type(op).__name__} is not allowed", node)
+        if len(node.ops) > 1:
+            self.fail("chained comparisons (a < x < b) are ambiguous here; write (a < x) & (x < b)", node)
+        self.generic_visit(node)
+
+    def visit_BoolOp(self, node):
+        self.fail("use & and | (or And(...), Or(...)) for conditions instead of 'and'/'or'", node)
+
+    def visit_Tuple(self, node):
+        self.generic_visit(node)
+
+    def visit_Call(self, node):
+        if not isinstance(node.func, ast.Name):
+            if isinstance(node.func, ast.Attribute):
+                self.fail("attribute access (obj.name) not allowed; call whitelisted functions by "
+                          "their bare name", node)
+            self.fail("only calls of whitelisted functions by their bare name are allowed", node)
+        name = node.func.id
+        if name.startswith("_") or "__" in name:
+            self.fail(f"name {name!r} is not allowed (no private or dunder names)", node)
+        if name not in self.callables:
+            hint = _HINTS.get(name)
+            self.fail(f"call of {name!r} is not allowed" + (f" ({hint})" if hint else
+                      "; allowed functions: " + ", ".join(sorted(self.callables))), node)
+        if node.keywords:
+            self.fail(f"keyword arguments are not allowed (in the call of {name})", node)
+        self.count += 1
+        for arg in node.args:
+            if isinstance(arg, ast.Starred):
+                self.fail("*args are not allowed", arg)
+            self.visit(arg)
+
+    # -- everything else is refused -----------------------------------------
+    def _refuse(self, node):
+        what = {ast.Attribute: "attribute access", ast.Subscript: "subscripts",
+                ast.Lambda: "lambda", ast.IfExp: "conditional expressions (use Piecewise)",
+                ast.ListComp: "comprehensions", ast.GeneratorExp: "comprehensions",
+                ast.DictComp: "comprehensions", ast.SetComp: "comprehensions",
+                ast.List: "lists (use tuples)", ast.Dict: "dicts", ast.Set: "sets",
+                ast.NamedExpr: "assignment expressions", ast.JoinedStr: "f-strings",
+                ast.Starred: "starred expressions", ast.Slice: "slices",
+                ast.Await: "await", ast.Yield: "yield", ast.YieldFrom: "yield"}.get(type(node))
+        self.fail(f"{what or type(node).__name__} not allowed", node)
+
+    visit_Attribute = visit_Subscript = visit_Lambda = visit_IfExp = _refuse
+    visit_ListComp = visit_GeneratorExp = visit_DictComp = visit_SetComp = _refuse
+    visit_List = visit_Dict = visit_Set = visit_NamedExpr = visit_JoinedStr = _refuse
+    visit_Starred = visit_Slice = visit_Await = visit_Yield = visit_YieldFrom = _refuse
+    visit_FormattedValue = _refuse
+
+
+def _is_constant(node) -> bool:
+    return all(not isinstance(n, ast.Name) and not isinstance(n, ast.Call) for n in ast.walk(node))
+
+
+def _const_value(node):
+    """Float value of a constant arithmetic subtree, raising OverflowError when
+    it is astronomically large (so that SymPy is never asked to build it)."""
+    if isinstance(node, ast.Constant):
+        return node.value
+    if isinstance(node, ast.UnaryOp):
+        v = _const_value(node.operand)
+        return -v if isinstance(node.op, ast.USub) else v
+    if isinstance(node, ast.BinOp):
+        lv, rv = _const_value(node.left), _const_value(node.right)
+        lf, rf = float(lv), float(rv)
+        if isinstance(node.op, (ast.Pow, ast.BitXor)):
+            if abs(rf) > MAX_CONST_EXPONENT and abs(lf) not in (0.0, 1.0):
+                raise OverflowError
+            if lf != 0 and abs(rf * math.log10(abs(lf))) > 10000:
+                raise OverflowError
+            try:
+                return lf ** rf if not (lf < 0 and rf != int(rf)) else abs(lf) ** rf
+            except ZeroDivisionError:
+                return math.inf
+        if isinstance(node.op, ast.Add):
+            return lf + rf
+        if isinstance(node.op, ast.Sub):
+            return lf - rf
+        if isinstance(node.op, ast.Mult):
+            return lf * rf
+        if isinstance(node.op, ast.Div):
+            return lf / rf if rf else math.inf
+        return 0.0
+    if isinstance(node, ast.Tuple):
+        return 0.0
+    return 0.0
+
+
+class _RenameGamma(ast.NodeTransformer):
+    def visit_Call(self, node):
+        self.generic_visit(node)
+        if isinstance(node.func, ast.Name) and node.func.id == "gamma":
+            node.func = ast.Name(id=_GAMMA_FN, ctx=ast.Load())
+        return node
+
+
+def declare_symbols(names, where: str = "") -> dict:
+    """Positive SymPy symbols for user-declared names (validated identifiers)."""
+    out = {}
+    for name in names or ():
+        if not isinstance(name, str) or not name.isidentifier() or name.startswith("_"):
+            raise ClaimError(f"{_where(where)}symbol name {name!r} is not a plain identifier")
+        if name in FUNCTIONS or name in CONSTANTS:
+            raise ClaimError(f"{_where(where)}symbol name {name!r} clashes with a function or constant")
+        out[name] = SYMBOLS.get(name) or sp.Symbol(name, positive=True)
+    return out
+
+
+def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where: str = "",
+               allow_relational: bool = False) -> sp.Expr:
+    """Parse a formula string safely into a SymPy expression.
+
+    Parameters
+    ----------
+    text : str
+        The formula in SymPy (Python) syntax, e.g. ``"pi*E_star*a**2/(4*R)"``.
+    symbols : iterable of str or dict, optional
+        Extra symbol names the formula may use (created ``positive=True``), or
+        a dict name -> Symbol.
+    definitions : dict, optional
+        Named sub-expressions (name -> SymPy expression) substituted for the name.
+    placeholders : dict, optional
+        Extra names (name -> SymPy object: a symbol, or an undefined Function
+        for names used as calls) for functional claims.
+    where : str
+        Where the string comes from (file, claim, field), used in errors.
+    allow_relational : bool
+        Accept a relation (``"a < R"``) as the result (for assumptions).
+
+    Raises
+    ------
+    ClaimError
+        If the string is not valid syntax, uses a name or construct outside
+        the whitelist, or is not an expression.
+
+    Examples
+    --------
+    >>> parse_expr("pi*E_star*a**2/(4*R)")
+    pi*E_star*a**2/(4*R)
+    >>> parse_expr("(n-1)*sqrt(pi)*gamma(n/2 - 1/2)/(2*gamma(n/2))")
+    sqrt(pi)*(n - 1)*gamma(n/2 - 1/2)/(2*gamma(n/2))
+    >>> parse_expr("__import__('os')")
+    Traceback (most recent call last):
+    ...
+    linecontact_sym.errors.ClaimError: name '__import__' is not allowed (no private or dunder names) (at column 1) in "__import__('os')"
+    """
+    if not isinstance(text, str):
+        if isinstance(text, (int, float)) and not isinstance(text, bool):
+            text = repr(text)
+        else:
+            raise ClaimError(f"{_where(where)}expected a formula string, got {type(text).__name__}: {text!r}")
+    if not text.strip():
+        raise ClaimError(f"{_where(where)}empty formula")
+    if len(text) > MAX_LENGTH:
+        raise ClaimError(f"{_where(where)}formula longer than {MAX_LENGTH} characters")
+    try:
+        tree = ast.parse(text.strip(), mode="eval")
+    except SyntaxError as exc:
+        raise ClaimError(f"{_where(where)}not a valid formula ({exc.msg}) in {text!r}") from None
+    except (RecursionError, MemoryError, ValueError):
+        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+
+    sym_table = dict(SYMBOLS)
+    if isinstance(symbols, dict):
+        sym_table.update(symbols)
+    else:
+        sym_table.update(declare_symbols(symbols, where))
+    defs = dict(definitions or {})
+    ph = dict(placeholders or {})
+    names = {**sym_table, **CONSTANTS, **defs}
+    callables = dict(FUNCTIONS)
+    for k, v in ph.items():
+        if isinstance(v, sp.FunctionClass) or callable(v) and not isinstance(v, sp.Basic):
+            callables[k] = v
+        else:
+            names[k] = v
+    try:
+        _Validator(text, where, names, callables).visit(tree)
+    except RecursionError:
+        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+
+    tree = _RenameGamma().visit(tree)
+    code = ast.unparse(tree)
+    local = {**names, **callables, _GAMMA_FN: sp.gamma}
+    local.pop("True", None)
+    local.pop("False", None)
+    # 'gamma' as a bare name is the work of adhesion; as a call it was renamed
+    local["gamma"] = sym_table["gamma"]
+    global_dict = {"__builtins__": {}, "Integer": sp.Integer, "Float": sp.Float,
+                   "Rational": sp.Rational, "Symbol": sp.Symbol}
+    try:
+        expr = _sympy_parse_expr(code, local_dict=local, global_dict=global_dict,
+                                 transformations=standard_transformations + (convert_xor, rationalize))
+    except ClaimError:
+        raise
+    except Exception as exc:
+        raise ClaimError(f"{_where(where)}cannot build the formula {text!r}: {type(exc).__name__}: {exc}") from None
+    if isinstance(expr, tuple):
+        raise ClaimError(f"{_where(where)}expected one expression, got a tuple: {text!r}")
+    if not isinstance(expr, sp.Basic):
+        expr = sp.sympify(expr)
+    is_relation = isinstance(expr, (sp.logic.boolalg.Boolean, sp.Rel)) and not isinstance(expr, sp.Expr)
+    if is_relation and not allow_relational:
+        raise ClaimError(f"{_where(where)}expected an expression, got the relation {text!r}")
+    if allow_relational and not is_relation:
+        raise ClaimError(f"{_where(where)}expected a relation such as 'a < R', got {text!r}")
+    if expr.has(sp.zoo, sp.nan) and not expr.is_Relational:
+        raise ClaimError(f"{_where(where)}the formula {text!r} is undefined (division by zero?)")
+    return expr
+
+
+def parse_assignments(items, *, where: str = "", symbols=None) -> dict:
+    """``["R=1", "E_star=2.5"]`` or ``"R=1,E_star=2"`` -> {Symbol: exact value}.
+
+    Values are parsed with :func:`parse_expr` (so ``pi/4`` works) and must be
+    numbers; floats become exact rationals of their decimal text."""
+    if isinstance(items, str):
+        items = [items]
+    out = {}
+    sym_table = dict(SYMBOLS)
+    sym_table.update(declare_symbols(symbols, where) if not isinstance(symbols, dict) else symbols)
+    for item in items or ():
+        for part in _split_top(item):
+            if "=" not in part:
+                raise ClaimError(f"{_where(where)}expected NAME=VALUE, got {part!r}")
+            name, val = (p.strip() for p in part.split("=", 1))
+            if name not in sym_table:
+                if not name.isidentifier() or name.startswith("_"):
+                    raise ClaimError(f"{_where(where)}{name!r} is not a symbol name")
+                sym_table[name] = sp.Symbol(name, positive=True)
+            out[sym_table[name]] = parse_number(val, where=f"{where} {name}".strip())
+    return out
+
+
+def parse_number(text, where: str = "") -> sp.Expr:
+    """A numeric value (exact where the text is a decimal: '0.1' -> 1/10)."""
+    text = str(text).strip()
+    try:
+        return sp.Rational(text) if _is_decimal(text) else _numeric(parse_expr(text, where=where), text, where)
+    except (TypeError, ValueError):
+        return _numeric(parse_expr(text, where=where), text, where)
+
+
+def parse_number_list(text, where: str = "") -> list:
+    """``"0.1,0.2,pi/4"`` -> [1/10, 1/5, pi/4]; ``"0.1:0.5:5"`` -> 5 points from 0.1 to 0.5."""
+    text = str(text).strip()
+    if text.count(":") == 2 and "," not in text:
+        lo, hi, k = text.split(":")
+        lo, hi = parse_number(lo, where), parse_number(hi, where)
+        k = int(k)
+        if k < 1 or k > 10000:
+            raise ClaimError(f"{_where(where)}number of points {k} out of range 1..10000")
+        if k == 1:
+            return [lo]
+        return [lo + (hi - lo) * sp.Rational(i, k - 1) for i in range(k)]
+    return [parse_number(p, where) for p in _split_top(text)]
+
+
+def _is_decimal(text):
+    try:
+        float(text)
+        return len(text) <= MAX_DIGITS
+    except ValueError:
+        return False
+
+
+def _numeric(expr, text, where):
+    if expr.free_symbols:
+        raise ClaimError(f"{_where(where)}expected a number, got {text!r}")
+    return expr
+
+
+def _split_top(text):
+    """Split at commas that are not inside parentheses."""
+    parts, depth, cur = [], 0, []
+    for ch in text:
+        if ch in "([":
+            depth += 1
+        elif ch in ")]":
+            depth -= 1
+        if ch == "," and depth == 0:
+            parts.append("".join(cur).strip())
+            cur = []
+        else:
+            cur.append(ch)
+    if "".join(cur).strip():
+        parts.append("".join(cur).strip())
+    return [p for p in parts if p]
+
+
+__all__ = ["parse_expr", "parse_assignments", "parse_number", "parse_number_list",
+           "declare_symbols", "SYMBOLS", "FUNCTIONS", "CONSTANTS", "t", "s"]

@@ -1,0 +1,239 @@
+"""Reports of a paper check: a text table for the terminal, Markdown, LaTeX
+(booktabs), the power-law table (Table 1 of Popov 2017) and the JSON record.
+
+Everything here is a *view* of :class:`~linecontact_sym.claims.PaperResult`
+objects and of derived SymPy expressions.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import sympy as sp
+
+from . import symbols as S
+from .claims import FAILS, HOLDS, HOLDS_IF, UNDECIDED
+from .errors import DomainError
+from .latex import booktabs_table, latex_escape, standalone, to_latex
+
+_SHORT = {HOLDS: "holds", HOLDS_IF: "holds if", FAILS: "DOES NOT HOLD", UNDECIDED: "UNDECIDED"}
+
+
+# ------------------------------------------------------------------ power-law table
+def power_law_rows(ns, budget: float = 20.0):
+    """Rows (n, Z_n exact, Z_n numeric, force law) for the exponents ``ns``,
+    from the engine's force law of f = c x**n (derived once with symbolic n,
+    then evaluated at each exponent)."""
+    from .catalogue import power_law
+    d = power_law(budget=budget).derivation("force")
+    Zsym = sp.simplify(sp.gammasimp(d.expr / (S.E_star * S.c * S.a**S.n)))
+    rows = []
+    for nv in ns:
+        nv = sp.nsimplify(nv, rational=True) if not isinstance(nv, sp.Basic) else nv
+        if not (nv.is_number and nv > 0):
+            raise DomainError(f"the exponent of the power law must be a positive number, got {nv}")
+        Z = sp.nsimplify(sp.gammasimp(sp.expand_func(Zsym.subs(S.n, nv))))
+        rows.append({"n": nv, "Z": Z, "Z_float": float(sp.N(Z, 20)),
+                     "force": S.E_star * S.c * Z * S.a**nv})
+    return rows, Zsym, d
+
+
+def power_law_text(rows) -> str:
+    head = f"{'n':>6}  {'Z_n':<18} {'Z_n (numeric)':>20}  force law P(a)"
+    lines = [head, "-" * len(head)]
+    for r in rows:
+        lines.append(f"{str(r['n']):>6}  {str(r['Z']):<18} {r['Z_float']:>20.15f}  {r['force']}")
+    return "\n".join(lines)
+
+
+def power_law_latex(rows, caption=None, label="tab:Zn") -> str:
+    caption = caption or (r"Coefficient $Z_n$ of the power-law profile $f(x) = c_n |x|^n$: "
+                          r"$P(a) = E^{*} c_n Z_n a^n$ (Popov 2017, Eqs.~(16)--(17), Table~1), "
+                          r"derived by \texttt{linecontact\_sym}.")
+    body = [[f"${to_latex(r['n'])}$", f"${to_latex(r['Z'])}$", f"${r['Z_float']:.10f}$",
+             f"${to_latex(r['force'])}$"] for r in rows]
+    return booktabs_table([r"$n$", r"$Z_n$", r"$Z_n$ (numeric)", r"$P(a)$"], body, align="rlll",
+                          caption=caption, label=label, escape_header=False)
+
+
+# ------------------------------------------------------------------ claims reports
+def _digits(r):
+    return f"{r.digits:.1f}" if r.status in (HOLDS, HOLDS_IF) or r.digits else "-"
+
+
+def text_table(result, width: int = 110) -> str:
+    """The terminal report: one row per claim, then the conditions and
+    counterexamples."""
+    res = result.results
+    lab_w = max(8, max((len(r.label) for r in res), default=8))
+    head = f"{'claim':<{lab_w}}  {'status':<24} {'digits':>6}  {'time':>7}  quantity"
+    lines = [head, "-" * len(head)]
+    for r in res:
+        lines.append(f"{r.label:<{lab_w}}  {r.status:<24} {_digits(r):>6}  {r.seconds:6.1f}s  "
+                     f"{r.claim.title or r.claim.quantity}")
+    counts = {s: sum(r.status == s for r in res) for s in (HOLDS, HOLDS_IF, FAILS, UNDECIDED)}
+    lines.append("-" * len(head))
+    lines.append(f"{len(res)} claims: {counts[HOLDS]} hold, {counts[HOLDS_IF]} hold under a condition, "
+                 f"{counts[FAILS]} do not hold, {counts[UNDECIDED]} undecided; {result.seconds:.0f} s")
+    notes = [r for r in res if r.status != HOLDS]
+    if notes:
+        lines.append("")
+        lines.append("Conditions, counterexamples:")
+        for r in notes:
+            lines.append(f"  {r.label}: {_wrap(r.verdict, width - 4, '      ')}")
+    return "\n".join(lines)
+
+
+def _wrap(text, width, indent):
+    import textwrap
+    return textwrap.fill(text, width=width, subsequent_indent=indent, break_long_words=False,
+                         break_on_hyphens=False)
+
+
+def _md_escape(text):
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def markdown_summary(result) -> str:
+    """The claims table alone, in Markdown (notebooks display a PaperResult so)."""
+    res = result.results
+    out = ["| claim | result | status | digits | time | verdict |", "|---|---|---|---:|---:|---|"]
+    for r in res:
+        verdict = r.verdict.split(": ", 1)[1] if ": " in r.verdict and r.status != HOLDS else ""
+        out.append(f"| {r.label} | {_md_escape(r.claim.title)} | {_SHORT[r.status]} | {_digits(r)} | "
+                   f"{r.seconds:.1f} s | {_md_escape(verdict[:300])} |")
+    return "\n".join(out)
+
+
+def markdown_report(result, figures=(), table_path=None) -> str:
+    paper = result.paper
+    res = result.results
+    counts = {s: sum(r.status == s for r in res) for s in (HOLDS, HOLDS_IF, FAILS, UNDECIDED)}
+    out = [f"# Claims check: {paper.title or paper.key}", ""]
+    if paper.reference:
+        out += [f"Source: {paper.reference}", ""]
+    out += [f"Claims file: `{Path(paper.source).name}`. Each printed formula was compared with the "
+            f"quantity derived by `linecontact_sym` at random points with mpmath (45 working digits; "
+            f">= 30 agreeing digits required), and symbolically where SymPy can decide.", "",
+            f"**{len(res)} claims: {counts[HOLDS]} hold, {counts[HOLDS_IF]} hold under a condition, "
+            f"{counts[FAILS]} do not hold, {counts[UNDECIDED]} undecided** ({result.seconds:.0f} s).", "",
+            "| claim | result | status | digits | time |", "|---|---|---|---:|---:|"]
+    for r in res:
+        out.append(f"| {r.label} | {_md_escape(r.claim.title)} | {_SHORT[r.status]} | {_digits(r)} | "
+                   f"{r.seconds:.1f} s |")
+    out += ["", "## Verdicts", ""]
+    for r in res:
+        c = r.claim
+        out.append(f"### {c.label}: {c.title}")
+        out.append("")
+        if c.forms:
+            for f in c.forms:
+                out.append(f"- printed: `{f.text}`  ")
+                out.append(f"  $${to_latex(f.shown)}$$")
+        if c.profiles:
+            out.append("- profile(s): " + ", ".join(f"`{p}`" for p, _ in c.profiles))
+        if c.assumptions:
+            out.append("- assumptions: " + ", ".join(f"`{a}`" for a in c.assumptions))
+        out.append(f"- **{r.verdict}**")
+        for t in r.targets:
+            d = t.derived
+            if d is not None and d.expr is not None and not c.values:
+                who = f" for `{t.profile_text}`" if c.general else ""
+                out.append(f"- derived{who}: `{d.expr}` ({d.method})")
+            for f in t.forms:
+                if f.symbolic:
+                    out.append(f"  - `{f.form.text[:60]}`: symbolic: {f.symbolic}")
+                if f.note:
+                    out.append(f"  - {_md_escape(f.note)}")
+        for line in r.details:
+            out.append(f"- {line}")
+        if c.reading:
+            out.append(f"- reading of the transcription: {c.reading}")
+        if c.note:
+            out.append(f"- note: {c.note}")
+        out.append("")
+    if table_path:
+        out += ["## Table 1", "", f"LaTeX (booktabs): `{Path(table_path).name}`", ""]
+    if figures:
+        out += ["## Figures", ""]
+        for p in figures:
+            if str(p).endswith(".png"):
+                out.append(f"![{Path(p).stem}]({Path(p).name})")
+        out.append("")
+    return "\n".join(out)
+
+
+def latex_report(result, table1: str | None = None, figures=()) -> str:
+    paper = result.paper
+    rows = []
+    for r in result.results:
+        c = r.claim
+        formula = f"${to_latex(c.formula.shown)}$" if c.forms else latex_escape(", ".join(v for v, _ in c.values))
+        rows.append([latex_escape(c.label), formula, latex_escape(_SHORT[r.status]),
+                     _digits(r), f"{r.seconds:.1f}"])
+    table = booktabs_table(["claim", "formula as printed", "status", "digits", "time/s"], rows,
+                           align="l>{\\raggedright\\arraybackslash}p{0.52\\linewidth}lrr",
+                           caption=latex_escape(f"Claims of {paper.title or paper.key} checked by linecontact_sym"),
+                           label="tab:claims", size="small")
+    verdicts = ["\\subsection*{Verdicts}", "\\begin{description}\\small"]
+    for r in result.results:
+        verdicts.append(f"\\item[{latex_escape(r.label)}] {latex_escape(r.verdict)}")
+    verdicts.append("\\end{description}")
+    figs = []
+    for p in figures:
+        if str(p).endswith(".pdf"):
+            figs.append("\\begin{figure}[htbp]\\centering\\includegraphics[width=0.45\\linewidth]{%s}"
+                        "\\caption{%s}\\end{figure}" % (Path(p).name, latex_escape(Path(p).stem)))
+    body = "\n\n".join([table] + ([table1] if table1 else []) + verdicts + figs)
+    doc = standalone(body, title=f"Claims check: {paper.title or paper.key}")
+    if figs:
+        doc = doc.replace("\\usepackage{booktabs}", "\\usepackage{booktabs}\n\\usepackage{graphicx}")
+    return doc
+
+
+def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float = 20.0) -> dict:
+    """Write report.md, report.tex, table1.tex, results.json and the figures
+    into ``out_dir``; returns {kind: path or [paths]}."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = {}
+    ns = _table1_ns(result)
+    t1 = None
+    if ns:
+        rows, _, _ = power_law_rows(ns, budget=budget)
+        t1 = power_law_latex(rows)
+        (out / "table1.tex").write_text(t1 + "\n", encoding="utf-8")
+        written["table1"] = out / "table1.tex"
+    figs = []
+    if figures:
+        from .figures import all_figures
+        figs = all_figures(out, budget=budget)
+        written["figures"] = figs
+    (out / "report.md").write_text(markdown_report(result, figs, written.get("table1")), encoding="utf-8")
+    written["markdown"] = out / "report.md"
+    (out / "report.tex").write_text(latex_report(result, t1, figs), encoding="utf-8")
+    written["latex"] = out / "report.tex"
+    (out / "results.json").write_text(json.dumps(result.to_dict(), indent=2, default=str), encoding="utf-8")
+    written["json"] = out / "results.json"
+    return written
+
+
+def _table1_ns(result):
+    """The exponents of the paper's Table 1 as identified by the checker."""
+    for r in result.results:
+        if r.claim.values and r.claim.quantity == "Z_n":
+            ns = []
+            for line in r.details:
+                if ": n = " in line:
+                    try:
+                        ns.append(sp.Rational(line.split(": n = ")[1].split()[0].rstrip(",")))
+                    except (TypeError, ValueError):
+                        pass
+            if ns:
+                return sorted(set(ns))
+    return []
+
+
+__all__ = ["power_law_rows", "power_law_text", "power_law_latex", "text_table", "markdown_report",
+           "markdown_summary",
+           "latex_report", "write_paper_outputs"]

@@ -1,0 +1,243 @@
+"""The claims checker: loading claims files, verdicts (holds / holds under a
+condition / does not hold with a counterexample), the numerics it rests on.
+
+Budgets are small (derivations of the paper's profiles take well under a
+second each); the whole paper is run by the CLI job, not here.
+"""
+import importlib.util
+import textwrap
+
+import mpmath
+import pytest
+import sympy as sp
+
+import linecontact_sym as lcs
+from linecontact_sym import claims as C
+from linecontact_sym.errors import ClaimError
+
+BUDGET = 5.0
+HAVE_ADHESION = importlib.util.find_spec("linecontact_sym.adhesion") is not None
+needs_adhesion = pytest.mark.skipif(not HAVE_ADHESION, reason="linecontact_sym.adhesion not available")
+
+
+def check(d, **kw):
+    claim = C.claim_from_dict({"label": "test", **d}, "test.toml")
+    return C.check_claim(claim, budget=BUDGET, **kw)
+
+
+# ------------------------------------------------------------------ loading
+def test_shipped_paper_covers_every_numbered_result():
+    paper = C.load_paper("popov2017")
+    labels = [c.label for c in paper.claims]
+    wanted = ["Eq. (1)", "Eq. (3)", "Eq. (9)", "Eq. (10)", "Eq. (12)", "Eq. (13)", "Eq. (14)", "Eq. (16)",
+              "Eq. (17)", "Table 1", "Eq. (19)", "Eq. (20)", "Eq. (23)", "Eq. (26)", "Eq. (29)", "Eq. (31)",
+              "Eq. (33)", "Eq. (34)", "Eq. (35)", "Eq. (36)"]
+    assert labels == wanted
+    by = {c.label: c for c in paper.claims}
+    # (26) with the modulus k = a/R, i.e. SymPy's parameter m = a**2/R**2
+    assert by["Eq. (26)"].formula.expr.has(sp.elliptic_k(lcs.a**2 / lcs.R**2))
+    # Z_n is shown as a name and evaluated as Eq. (17)
+    assert sp.Symbol("Z_n", positive=True) in by["Eq. (16)"].formula.shown.free_symbols
+    assert by["Eq. (16)"].formula.expr.has(sp.gamma)
+    assert by["Eq. (10)"].general and len(by["Eq. (10)"].profiles) >= 4
+
+
+def test_resolve_paper_by_name_and_path(tmp_path):
+    assert C.resolve_paper("popov2017").name == "popov2017.toml"
+    with pytest.raises(ClaimError, match="shipped"):
+        C.resolve_paper("nosuchpaper")
+
+
+def _write(tmp_path, body):
+    p = tmp_path / "claims.toml"
+    p.write_text(textwrap.dedent(body))
+    return p
+
+
+@pytest.mark.parametrize("body, words", [
+    ('[[claims]]\nlabel = "A"\nquantity = "force"\nprofile = "x**2"\nfomula = "1"\n',
+     ["claims.toml", "'A'", "unknown field", "fomula"]),
+    ('[[claims]]\nlabel = "A"\nquantity = "forse"\nprofile = "x**2"\nformula = "1"\n',
+     ["claims.toml", "'A'", "quantity", "forse"]),
+    ('[[claims]]\nlabel = "A"\nquantity = "force"\nprofile = "x**2"\nformula = "__import__(\'os\')"\n',
+     ["claims.toml", "'A'", "formula", "dunder"]),
+    ('[[claims]]\nlabel = "A"\nquantity = "force"\nprofile = "k*x**2"\nformula = "1"\n',
+     ["claims.toml", "'A'", "profile", "unknown name 'k'"]),
+    ('[[claims]]\nlabel = "A"\nquantity = "force"\nformula = "1"\n', ["'A'", "needs a profile"]),
+    ('[[claims]]\nquantity = "force"\n', ["claim #1", "no label"]),
+    ('[[claims]]\nlabel = "A"\nquantity = "force"\nprofile = "x**2"\nformula = "a"\nranges = { n = [2, 1] }\n',
+     ["'A'", "ranges.n", "empty range"]),
+    ('[[claims]\n', ["not valid TOML"]),
+    ('title = "no claims"\n', ["no [[claims]]"]),
+])
+def test_malformed_files_get_clear_errors(tmp_path, body, words):
+    with pytest.raises(ClaimError) as info:
+        C.load_paper(_write(tmp_path, body))
+    for w in words:
+        assert w in str(info.value)
+
+
+def test_user_symbols_and_cli_claims():
+    claim = C.claim_from_cli("force", "pi*E_star*k*a**2/2", "k*x**2", symbols=["k"])
+    r = C.check_claim(claim, budget=BUDGET)
+    assert r.status == C.HOLDS, r.verdict
+    with pytest.raises(ClaimError, match="command line"):
+        C.claim_from_cli("force", "import os", "x**2")
+
+
+# ------------------------------------------------------------------ verdicts
+def test_hertz_force_holds_symbolically():
+    r = check({"quantity": "force", "profile": "x**2/(2*R)", "formula": "pi*E_star*a**2/(4*R)",
+               "forms": ["E_star*a**2/(2*R)*Integral(1/sqrt(a**2 - t**2), (t, 0, a))"]})
+    assert r.status == C.HOLDS and r.digits >= 30
+    assert all(f.symbolic.startswith("identical") for f in r.targets[0].forms)
+
+
+def test_wrong_formula_gives_counterexample_with_both_values():
+    r = check({"quantity": "force", "profile": "x*tan(theta)", "formula": "pi*E_star*a*tan(theta)/2"})
+    assert r.status == C.FAILS
+    assert "printed" in r.verdict and "derived" in r.verdict and "theta = " in r.verdict
+    cex = r.targets[0].forms[0].counterexample
+    printed, derived = cex.comparisons[0].printed, cex.comparisons[0].target
+    with mpmath.workdps(40):
+        assert abs(printed / derived - mpmath.pi / 2) < mpmath.mpf(10) ** -30
+
+
+def test_pressure_claim_with_flamant_check():
+    r = check({"quantity": "pressure", "profile": "x**2/(2*R)", "formula": "E_star/(2*R)*sqrt(a**2 - x**2)",
+               "points": 2})
+    assert r.status == C.HOLDS
+    whats = {c.what for f in r.targets[0].forms for p in f.points for c in p.comparisons}
+    assert any(w.startswith("Flamant") for w in whats)
+
+
+def test_removable_point_is_reported_as_condition():
+    r = check({"quantity": "Z_n", "profile": "c*x**n", "formula": "(n - 1)*sqrt(pi)*gamma(n/2 - 1/2)/(2*gamma(n/2))",
+               "ranges": {"n": [0.3, 6.0]}, "special": {"n": ["1"]}, "points": 3})
+    assert r.status == C.HOLDS_IF
+    assert "n != 1" in r.verdict
+    assert "removable" in r.targets[0].forms[0].note
+
+
+def test_parameter_range_found_by_bisection():
+    # the printed integral form of Eq. (16) diverges for n <= 1
+    r = check({"quantity": "force", "profile": "c*x**n",
+               "formula": "E_star*a**2*c*(n - 1)*Integral(t**(n - 2)/sqrt(a**2 - t**2), (t, 0, a))",
+               "ranges": {"n": [0.3, 4.0]}, "points": 3}, symbolic=False)
+    assert r.status == C.HOLDS_IF
+    assert r.targets[0].condition.startswith("n > 1")
+    assert "diverges" in r.targets[0].forms[0].note
+
+
+def test_printed_eq10_holds_only_where_slope_at_origin_vanishes():
+    r = check({"quantity": "force", "profiles": ["x**2/(2*R)", "x*tan(theta)", "R - sqrt(R**2 - x**2)"],
+               "formula": "E_star*a**2*Integral(Derivative(f(t)/t, t)/sqrt(a**2 - t**2), (t, 0, a))",
+               "ranges": {"a": [0.2, 0.9], "R": [1.0, 2.0]}, "points": 2}, symbolic=False)
+    assert r.status == C.HOLDS_IF
+    assert "only where f'(0+) = 0" in r.verdict
+    assert "derived - printed = E*·a·f'(0+)" in r.verdict
+    wedge = [t for t in r.targets if "tan" in t.profile_text][0]
+    assert wedge.status == C.FAILS
+    cex = wedge.forms[0].counterexample
+    assert cex.comparisons[0].printed == 0          # the printed (10) gives 0 for the wedge
+
+
+def test_assumption_restricts_the_points():
+    r = check({"quantity": "force", "profile": "Piecewise((0, x < b), ((x**2 - b**2)/(2*R), True))",
+               "formula": "E_star*a**2/(2*R)*(pi/2 - asin(b/a) + b/a*sqrt(1 - b**2/a**2))",
+               "assumptions": ["a > b"], "ranges": {"b": [0.1, 0.5], "a": [0.2, 2.0]}, "points": 3})
+    assert r.status == C.HOLDS, r.verdict
+    for f in r.targets[0].forms:
+        assert all(p.values[lcs.a] > p.values[lcs.b] for p in f.points)
+
+
+def test_elliptic_argument_convention_matters():
+    good = check({"quantity": "force", "profile": "R - sqrt(R**2 - x**2)", "assumptions": ["a < R"],
+                  "formula": "E_star*R*(elliptic_k(a**2/R**2) - elliptic_e(a**2/R**2))",
+                  "ranges": {"a": [0.05, 0.45]}, "points": 2})
+    assert good.status == C.HOLDS
+    bad = check({"quantity": "force", "profile": "R - sqrt(R**2 - x**2)", "assumptions": ["a < R"],
+                 "formula": "E_star*R*(elliptic_k(a/R) - elliptic_e(a/R))",
+                 "ranges": {"a": [0.05, 0.45]}, "points": 2})
+    assert bad.status == C.FAILS
+
+
+def test_flat_punch_from_first_principles():
+    good = check({"quantity": "flat_punch_pressure", "formula": "P/(pi*sqrt(a**2 - x**2))", "points": 1})
+    assert good.status == C.HOLDS and good.digits >= 30
+    bad = check({"quantity": "flat_punch_pressure", "formula": "P/(2*pi*sqrt(a**2 - x**2))", "points": 1})
+    assert bad.status == C.FAILS and "resultant" in bad.verdict
+
+
+def test_punch_adhesion_force_derived_two_ways():
+    r = check({"quantity": "punch_adhesion_force", "formula": "sqrt(2*pi*a*gamma*E_star)", "points": 2})
+    assert r.status == C.HOLDS
+    assert "stress-intensity" in r.targets[0].derived.notes[0]
+
+
+def test_table_values_identified_with_exponents():
+    r = check({"quantity": "Z_n", "profile": "c*x**n", "values": ["1", "pi/2", "8/3", "315*pi/256"],
+               "labels": {"315*pi/256": 10}})
+    assert r.status == C.HOLDS
+    assert "8/3 -> n = 5" in r.verdict and "315*pi/256 -> n = 10" in r.verdict
+    assert "n = 3 (Z_3 = 2)" in r.verdict
+    wrong = check({"quantity": "Z_n", "profile": "c*x**n", "values": ["8/3"], "labels": {"8/3": 4}})
+    assert wrong.status == C.FAILS and "DISAGREES" in " ".join(wrong.details)
+
+
+@needs_adhesion
+def test_adhesive_claims_and_existence_bound():
+    r = check({"quantity": "pull_off_force", "profile": "x*tan(theta)", "formula": "pi*gamma/(2*tan(theta))",
+               "points": 2})
+    assert r.status == C.HOLDS, r.verdict
+    r = check({"quantity": "pull_off_force", "profile": "c*x**n", "ranges": {"n": [0.3, 4.0]}, "points": 3,
+               "formula": "(2*n - 1)/(2*n*n**(1/(2*n - 1)))*(2**(n - 1)*pi**n*gamma**n*E_star**(n - 1)"
+                          "/(c*sqrt(pi)*gamma(n/2 + 1/2)/gamma(n/2)))**(1/(2*n - 1))"}, symbolic=False)
+    assert r.status == C.HOLDS_IF, r.verdict
+    assert r.targets[0].condition.startswith("n > 1/2")
+
+
+def test_undecided_when_the_engine_fails(monkeypatch):
+    def boom(*a, **k):
+        raise RuntimeError("engine exploded")
+    monkeypatch.setattr(C, "derive", boom)
+    r = check({"quantity": "force", "profile": "x**2/(2*R)", "formula": "1"})
+    assert r.status == C.UNDECIDED and "engine exploded" in r.verdict
+
+
+# ------------------------------------------------------------------ numerics
+def test_quad_detects_divergence_and_integrates_singular_ends():
+    t = sp.Symbol("t", positive=True)
+    with pytest.raises(C.Divergent):
+        C.quad_integral(sp.Integral(t**sp.Rational(-3, 2), (t, 0, 1)))
+    with pytest.raises(C.Divergent):
+        C.quad_integral(sp.Integral(1 / t, (t, 0, 1)))
+    v = C.quad_integral(sp.Integral(t**sp.Rational(-9, 10), (t, 0, 1)))    # = 10, needs the u**m map
+    with mpmath.workdps(50):
+        assert abs(v - 10) < mpmath.mpf(10) ** -35
+    v = C.quad_integral(sp.Integral(1 / sp.sqrt(1 - t**2), (t, 0, 1)))
+    with mpmath.workdps(50):
+        assert abs(v - mpmath.pi / 2) < mpmath.mpf(10) ** -40
+
+
+def test_num_eval_flags_undefined_values():
+    with pytest.raises(C.Undefined):
+        C.num_eval((lcs.n - 1) * sp.gamma(lcs.n / 2 - sp.S.Half), {lcs.n: sp.Integer(1)})
+    with pytest.raises(C.Undefined, match="complex"):
+        C.num_eval(sp.asin(lcs.b / lcs.a), {lcs.a: sp.Integer(1), lcs.b: sp.Integer(2)})
+
+
+def test_flamant_kernel_reproduces_the_hertz_profile():
+    av, xv, E, R = sp.Rational(3, 5), sp.Rational(1, 4), sp.Integer(2), sp.Integer(1)
+    with mpmath.workdps(60):
+        p = lambda s: E / (2 * R) * mpmath.sqrt(mpmath.mpf(av)**2 - s**2)  # noqa: E731
+        D = C.flamant_relative_displacement(p, av, xv, E, 45)
+        assert abs(D - mpmath.mpf(xv)**2 / 2) < mpmath.mpf(10) ** -40
+        assert abs(C.flamant_resultant(p, av, 45) - mpmath.pi * E * mpmath.mpf(av)**2 / 4) < mpmath.mpf(10) ** -40
+
+
+def test_result_serialises_to_json():
+    import json
+    r = check({"quantity": "force", "profile": "x*tan(theta)", "formula": "E_star*a", "points": 2})
+    d = json.loads(json.dumps(r.to_dict(), default=str))
+    assert d["status"] == C.FAILS and d["targets"][0]["forms"][0]["counterexample"]

@@ -1,0 +1,212 @@
+"""The command line `linecontact-sym`: every verb, --help, JSON output,
+errors on stderr with a non-zero exit status."""
+import json
+import os
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from linecontact_sym import cli
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def run(capsys, *argv):
+    code = cli.main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.parametrize("verb", [None, "paper", "derive", "eval", "table", "check"])
+def test_help(capsys, verb):
+    with pytest.raises(SystemExit) as info:
+        cli.main(([verb] if verb else []) + ["--help"])
+    assert info.value.code == 0
+    out = capsys.readouterr().out
+    assert "usage: linecontact-sym" in out
+
+
+def test_module_entry_point_runs():
+    env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    proc = subprocess.run([sys.executable, "-m", "linecontact_sym", "table", "power-law", "--n", "2"],
+                          capture_output=True, text=True, env=env, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "pi/2" in proc.stdout
+
+
+def test_entry_point_is_declared():
+    text = (ROOT / "pyproject.toml").read_text()
+    assert 'linecontact-sym = "linecontact_sym.cli:main"' in text
+
+
+# ------------------------------------------------------------------ check
+def test_check_command_line_claim_holds(capsys):
+    code, out, err = run(capsys, "check", "--profile", "x**2/(2*R)", "--force", "pi*E_star*a**2/(4*R)",
+                         "--budget", "5")
+    assert code == 0 and "holds" in out and err == ""
+
+
+def test_check_wrong_claim_counterexample_and_strict(capsys):
+    argv = ["check", "--profile", "x*tan(theta)", "--force", "pi*E_star*a*tan(theta)/2", "--budget", "5"]
+    code, out, _ = run(capsys, *argv)
+    assert code == 0 and "does not hold" in out and "printed" in out and "derived" in out
+    code, _, _ = run(capsys, *argv, "--strict")
+    assert code == 1
+
+
+def test_check_json(capsys):
+    code, out, _ = run(capsys, "check", "--profile", "c*x**n", "--Z-n",
+                       "(n - 1)*sqrt(pi)*gamma(n/2 - 1/2)/(2*gamma(n/2))", "--range", "n=0.5:3", "--json",
+                       "--budget", "5")
+    d = json.loads(out)
+    assert code == 0 and d["claims"][0]["status"] in ("holds", "holds under a condition")
+
+
+def test_check_refuses_unsafe_input(capsys):
+    code, out, err = run(capsys, "check", "--profile", "x**2", "--force", "__import__('os').getcwd()")
+    assert code == 2 and out == ""
+    assert "error" in err and "not allowed" in err and "command line" in err
+
+
+def test_check_file(tmp_path, capsys):
+    p = tmp_path / "mine.toml"
+    p.write_text(textwrap.dedent('''
+        title = "my notes"
+        [[claims]]
+        label = "Hertz"
+        quantity = "force"
+        profile = "x**2/(2*R)"
+        formula = "pi*E_star*a**2/(4*R)"
+        [[claims]]
+        label = "wedge, wrong"
+        quantity = "force"
+        profile = "x*tan(theta)"
+        formula = "E_star*a*theta"
+        points = 2
+    '''))
+    code, out, _ = run(capsys, "check", str(p), "--json", "--budget", "5")
+    d = json.loads(out)
+    assert code == 0
+    assert [c["status"] for c in d["claims"]] == ["holds", "does not hold"]
+    assert d["claims"][1]["targets"][0]["forms"][0]["counterexample"]
+
+
+def test_check_malformed_file(tmp_path, capsys):
+    p = tmp_path / "bad.toml"
+    p.write_text('[[claims]]\nlabel = "Eq. (7)"\nquantity = "force"\nprofile = "x**2"\nformula = "a.b"\n')
+    code, out, err = run(capsys, "check", str(p))
+    assert code == 2 and out == ""
+    assert "bad.toml" in err and "Eq. (7)" in err and "attribute" in err
+
+
+def test_nothing_to_check(capsys):
+    code, _, err = run(capsys, "check", "--profile", "x**2")
+    assert code == 2 and "nothing to check" in err
+
+
+# ------------------------------------------------------------------ derive / eval / table
+def test_derive_formats(capsys):
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force,pressure", "--format", "json",
+                       "--budget", "5")
+    d = json.loads(out)
+    assert code == 0 and d["quantities"]["force"]["expr"] == "pi*E_star*a**2/(4*R)"
+    assert d["quantities"]["force"]["verified_digits"] >= 30
+    code, out, _ = run(capsys, "derive", "x*tan(theta)", "--quantities", "force", "--format", "latex")
+    assert code == 0 and r"\begin{align*}" in out and "E^{*}" in out
+    code, out, _ = run(capsys, "derive", "k*x**2", "--symbols", "k", "--set", "k=1/2", "--quantities", "force")
+    assert code == 0 and "pi*E_star*a**2/4" in out
+
+
+def test_derive_adhesion(capsys):
+    pytest.importorskip("linecontact_sym.adhesion")
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force", "--adhesion", "--format", "json",
+                       "--budget", "5")
+    d = json.loads(out)
+    assert code == 0 and "adhesion_force" in d["quantities"]
+
+
+def test_eval_grid_and_precision(capsys):
+    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "pressure", "--at", "a=1", "x=0,0.5", "--set", "R=1",
+                       "E_star=1", "--dps", "40", "--json")
+    d = json.loads(out)
+    assert code == 0 and len(d["rows"]) == 2
+    assert d["rows"][0]["value"].startswith("0.5")
+    assert d["rows"][1]["value"].startswith("0.4330127018922193233818615853764680")
+
+
+def test_eval_outside_domain(capsys):
+    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "pressure", "--at", "a=1", "x=2", "--set", "R=1", "E_star=1")
+    assert code == 2 and "outside the contact" in out
+
+
+def test_eval_unknown_quantity(capsys):
+    code, _, err = run(capsys, "eval", "x**2", "torque", "--at", "a=1")
+    assert code == 2 and "unknown quantity" in err
+
+
+def test_table(capsys):
+    code, out, _ = run(capsys, "table", "power-law", "--n", "1,2,3,4,5,6,10")
+    assert code == 0
+    for v in ("pi/2", "3*pi/4", "8/3", "15*pi/16", "315*pi/256"):
+        assert v in out
+    code, out, _ = run(capsys, "table", "power-law", "--n", "1,2", "--latex")
+    assert r"\toprule" in out and r"\bottomrule" in out
+    code, out, _ = run(capsys, "table", "power-law", "--n", "3", "--json")
+    assert json.loads(out)["rows"][0]["Z_n"] == "2"
+    code, _, err = run(capsys, "table", "power-law", "--n", "-1")
+    assert code == 2 and "positive" in err
+
+
+# ------------------------------------------------------------------ paper
+def test_paper_job_writes_report_table_and_figures(tmp_path, capsys):
+    p = tmp_path / "demo.toml"
+    p.write_text(textwrap.dedent('''
+        key = "demo"
+        title = "demo paper"
+        [[claims]]
+        label = "Eq. (13)"
+        title = "parabola"
+        quantity = "force"
+        profile = "x**2/(2*R)"
+        formula = "pi*E_star*a**2/(4*R)"
+        [[claims]]
+        label = "Table 1"
+        quantity = "Z_n"
+        profile = "c*x**n"
+        values = ["1", "pi/2", "3*pi/4"]
+    '''))
+    out_dir = tmp_path / "out"
+    code, out, err = run(capsys, "paper", str(p), "--out", str(out_dir), "--budget", "10")
+    assert code == 0, err
+    assert "[ 1/2] Eq. (13)" in err and "[ 2/2] Table 1" in err          # progress lines
+    assert "Eq. (13)" in out and "holds" in out
+    for name in ("report.md", "report.tex", "table1.tex", "results.json", "fig4_worn_cylinder.png",
+                 "fig4_worn_cylinder.pdf", "fig5_exact_cylinder.png", "fig5_exact_cylinder.pdf"):
+        assert (out_dir / name).stat().st_size > 0, name
+    assert r"\toprule" in (out_dir / "table1.tex").read_text()
+    assert json.loads((out_dir / "results.json").read_text())["counts"]["holds"] == 2
+
+
+def test_paper_shipped_subset_json(tmp_path, capsys):
+    code, out, _ = run(capsys, "paper", "popov2017", "--only", "Eq. (19)", "Eq. (17)", "--no-figures",
+                       "--quiet", "--json", "--out", str(tmp_path), "--budget", "5")
+    d = json.loads(out)
+    assert code == 0
+    status = {c["label"]: c["status"] for c in d["claims"]}
+    assert status == {"Eq. (17)": "holds under a condition", "Eq. (19)": "holds"}
+
+
+def test_paper_unknown_label_and_internal_error(tmp_path, capsys, monkeypatch):
+    code, _, err = run(capsys, "paper", "popov2017", "--only", "Eq. (99)", "--out", str(tmp_path))
+    assert code == 2 and "Eq. (99)" in err
+
+    import linecontact_sym.claims as C
+
+    def boom(*a, **k):
+        raise RuntimeError("kaboom")
+    monkeypatch.setattr(C, "check_paper", boom)
+    code, _, err = run(capsys, "paper", "popov2017", "--out", str(tmp_path), "--no-figures")
+    assert code == 3 and "internal error" in err and "kaboom" in err

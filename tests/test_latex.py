@@ -1,0 +1,108 @@
+"""LaTeX views: the paper's notation, booktabs tables that are well-formed
+(and compile where a LaTeX installation exists)."""
+import shutil
+import subprocess
+
+import pytest
+import sympy as sp
+
+import linecontact_sym as lcs
+from linecontact_sym import claims as C
+from linecontact_sym.latex import booktabs_table, check_latex, latex_escape, standalone, to_latex
+from linecontact_sym.report import latex_report, markdown_report, power_law_latex, power_law_rows
+
+
+def test_paper_notation():
+    m = lcs.a**2 / lcs.R**2
+    tex = to_latex(lcs.E_star * lcs.R * (sp.elliptic_k(m) - sp.elliptic_e(m)))
+    assert "E^{*}" in tex
+    assert r"K\!\left(\frac{a}{R}\right)" in tex and r"E\!\left(\frac{a}{R}\right)" in tex  # modulus k = a/R
+    assert r"\gamma_{12}" in to_latex(sp.sqrt(2 * sp.pi * lcs.a * lcs.gamma * lcs.E_star))
+    assert "Z_{n}" in to_latex(sp.Symbol("Z_n") * lcs.c)
+    assert r"\arcsin" in to_latex(sp.asin(lcs.b / lcs.a))
+    assert r"\Gamma" in to_latex(sp.gamma(lcs.n / 2))
+
+
+def test_derived_objects_render_in_notebooks():
+    d = lcs.parabola(budget=5).derivation("force")
+    assert d._repr_latex_().startswith("$") and r"\pi" in d._repr_latex_()
+
+
+def test_escape():
+    assert latex_escape("a_b & 50% #1 {x}") == r"a\_b \& 50\% \#1 \{x\}"
+    assert check_latex(latex_escape(r"\weird{ text")) == []
+
+
+def test_booktabs_table_is_well_formed():
+    tab = booktabs_table(["n", "value"], [["$1$", "$x_{1}$"], ["$2$", r"$\frac{1}{2}$"]],
+                         caption="A caption with 50\\% text", label="tab:x")
+    assert check_latex(tab) == []
+    for rule in (r"\toprule", r"\midrule", r"\bottomrule"):
+        assert tab.count(rule) == 1
+    assert r"\hline" not in tab
+    with pytest.raises(ValueError):
+        booktabs_table(["a", "b"], [["1"]])
+
+
+@pytest.mark.parametrize("bad, problem", [
+    (r"\begin{tabular}{l}\toprule a \\ \bottomrule\end{tabular}", "midrule"),
+    (r"\begin{tabular}{l}\hline a \\ \toprule\midrule\bottomrule\end{tabular}", "hline"),
+    (r"{\frac{1}{2}", "unclosed brace"),
+    (r"\frac{1}{2}}", "closing brace"),
+    (r"\begin{table}x\end{tabular}", "does not match"),
+    (r"$\left( x$", "unbalanced"),
+    (r"$x", "odd number of $"),
+])
+def test_check_latex_finds_problems(bad, problem):
+    assert any(problem in p for p in check_latex(bad))
+
+
+def test_power_law_table():
+    rows, Z, d = power_law_rows([1, 2, 3, 4, 5, 6, 10], budget=5)
+    assert [r["Z"] for r in rows] == [1, sp.pi / 2, 2, 3 * sp.pi / 4, sp.Rational(8, 3), 15 * sp.pi / 16,
+                                      315 * sp.pi / 256]
+    tex = power_law_latex(rows)
+    assert check_latex(tex) == []
+    assert r"\frac{315 \pi}{256}" in tex and "E^{*}" in tex
+
+
+def _small_result():
+    paper = C.paper_from_dict({
+        "key": "demo", "title": "Demo & test_paper",
+        "definitions": {"Z_n": "(n - 1)*sqrt(pi)*gamma(n/2 - 1/2)/(2*gamma(n/2))"},
+        "claims": [
+            {"label": "Eq. (13)", "title": "parabola", "quantity": "force", "profile": "x**2/(2*R)",
+             "formula": "pi*E_star*a**2/(4*R)", "points": 2},
+            {"label": "Eq. (17)", "title": "Z_n", "quantity": "Z_n", "profile": "c*x**n",
+             "formula": "Z_n", "special": {"n": ["1"]}, "points": 2},
+            {"label": "wrong", "title": "a wrong wedge law", "quantity": "force", "profile": "x*tan(theta)",
+             "formula": "E_star*a", "points": 2},
+            {"label": "Table 1", "title": "table", "quantity": "Z_n", "profile": "c*x**n", "values": ["1", "pi/2"]},
+        ]}, "demo.toml")
+    return C.check_paper(paper, budget=5)
+
+
+def test_reports_are_well_formed():
+    result = _small_result()
+    assert [r.status for r in result.results] == [C.HOLDS, C.HOLDS_IF, C.FAILS, C.HOLDS]
+    tex = latex_report(result, power_law_latex(power_law_rows([1, 2], budget=5)[0]))
+    assert check_latex(tex) == []
+    assert r"\documentclass" in tex and r"\usepackage{booktabs}" in tex
+    assert "Z_{n}" in tex                               # printed forms keep the paper's names
+    md = markdown_report(result)
+    assert "| Eq. (13) |" in md and "does not hold" in md
+    assert result._repr_markdown_().startswith("| claim |")
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex not installed")
+def test_tables_compile(tmp_path):
+    result = _small_result()
+    rows = power_law_rows([1, 2, 4, 5, 6, 10], budget=5)[0]
+    for name, doc in (("table", standalone(power_law_latex(rows))),
+                      ("report", latex_report(result, power_law_latex(rows)))):
+        src = tmp_path / f"{name}.tex"
+        src.write_text(doc)
+        proc = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", src.name],
+                              cwd=tmp_path, capture_output=True, text=True, timeout=120)
+        assert proc.returncode == 0, proc.stdout[-2000:]
+        assert (tmp_path / f"{name}.pdf").exists()
