@@ -53,6 +53,7 @@ import sympy as sp
 
 from . import symbols as S
 from .errors import DomainError, LineContactError
+from .numeric import check_arguments
 
 EPS = float(np.finfo(float).eps)
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
@@ -339,12 +340,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     t0 = time.perf_counter()
     d = contact.derivation(quantity)
     names = [s.name for s in d.variables_all]
-    unknown = set(values) - set(names)
-    if unknown:
-        raise DomainError(f"unknown argument(s) {sorted(unknown)}; expected {names}")
-    missing = [n for n in names if n not in values]
-    if missing:
-        raise DomainError(f"missing argument(s) {missing} for {quantity}")
+    check_arguments(names, values, quantity)
     _check_domain(quantity, values)
     values = _abs_x(values)
 

@@ -451,6 +451,16 @@ def _chunked(f, vals):
     return out.reshape(shape)
 
 
+def check_arguments(names, values: dict, quantity: str):
+    """Raise :class:`DomainError` naming unknown or missing keyword arguments."""
+    unknown = set(values) - set(names)
+    if unknown:
+        raise DomainError(f"unknown argument(s) {sorted(unknown)}; expected {list(names)}")
+    missing = [n for n in names if n not in values]
+    if missing:
+        raise DomainError(f"missing argument(s) {missing} for {quantity}")
+
+
 def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dict | None = None,
                   stable: bool = True):
     """A callable ``fn(**values)`` for a :class:`Derivation`.
@@ -467,12 +477,7 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
 
     def collect(kw):
         merged = {**params, **kw}
-        unknown = set(merged) - set(names)
-        if unknown:
-            raise DomainError(f"unknown argument(s) {sorted(unknown)}; expected {names}")
-        missing = [n for n in names if n not in merged]
-        if missing:
-            raise DomainError(f"missing argument(s) {missing} for {derivation.quantity}")
+        check_arguments(names, merged, derivation.quantity)
         return [merged[n] for n in names]
 
     if backend not in ("numpy", "mpmath"):
