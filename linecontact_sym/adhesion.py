@@ -87,6 +87,7 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 
+from .parsing import to_sympy
 from . import symbols as S
 from . import transforms as T
 from .budget import run_with_budget
@@ -229,13 +230,13 @@ class _Law:
         self.fixed = dict(fixed)
         prof = ad.contact.profile
         self.profile = prof
-        g = sp.sympify(ad.gamma).xreplace(fixed)
+        g = to_sympy(ad.gamma).xreplace(fixed)
         if not g.is_number:
             raise DomainError(f"the work of adhesion {ad.gamma} needs a value")
         if g.is_negative:
             raise DomainError(f"the work of adhesion must be >= 0, got {g}")
         self.gamma = g
-        self.E = sp.sympify(fixed[S.E_star])
+        self.E = to_sympy(fixed[S.E_star])
         bps = [sp.N(bp.xreplace(fixed), 80) for bp in prof.breakpoints]
         self.breaks_sym = sorted(bps)
         fd = ad.contact.derivation("force")
@@ -663,7 +664,7 @@ class AdhesiveLineContact:
             raise DomainError("the work of adhesion is a string; strings are not evaluated. "
                               "Pass a SymPy expression or a number (e.g. lcs.gamma)")
         g = sp.nsimplify(work_of_adhesion, rational=True) if isinstance(work_of_adhesion, float) \
-            else sp.sympify(work_of_adhesion)
+            else to_sympy(work_of_adhesion)
         if not isinstance(g, sp.Expr):
             raise DomainError(f"the work of adhesion must be an expression, got {g!r}")
         if g.has(S.x, S.a, S.P):
@@ -744,7 +745,7 @@ class AdhesiveLineContact:
         return sample
 
     def _law(self, vals: dict, mode: str) -> _Law:
-        fixed = _fl({k: sp.sympify(v) for k, v in vals.items() if k in set(self.variables)})
+        fixed = _fl({k: to_sympy(v) for k, v in vals.items() if k in set(self.variables)})
         key = (mode, tuple(sorted((k.name, v) for k, v in fixed.items())))
         if key not in self._laws:
             law = _Law(self, fixed, mode)
@@ -757,7 +758,7 @@ class AdhesiveLineContact:
         vals = dict(self.values)
         if values:
             vals.update(_values_by_name(self.variables, values) if len(values) >= len(self.variables)
-                        else {s: sp.sympify(values[s.name]) for s in self.variables if s.name in values})
+                        else {s: to_sympy(values[s.name]) for s in self.variables if s.name in values})
         missing = [s.name for s in self.variables if s not in vals]
         if missing:
             raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
@@ -765,7 +766,7 @@ class AdhesiveLineContact:
             v = vals[s]
             if isinstance(v, float):
                 vals[s] = sp.nsimplify(v, rational=True)
-            if not sp.sympify(vals[s]).is_number:
+            if not to_sympy(vals[s]).is_number:
                 raise DomainError(f"{s.name} = {vals[s]} is not a number")
         return vals
 
@@ -1016,7 +1017,6 @@ class AdhesiveLineContact:
         t0 = time.perf_counter()
         fd = self.contact.derivation("force")
         P = self.derivation("force").expr
-        variables = self.variables
         notes, conds = [], list(fd.conditions)
         single = _single_power(fd.expr) if fd.closed_form else None
         if self.gamma == 0:
@@ -1310,7 +1310,7 @@ class AdhesiveLineContact:
         found and checked at random points on each branch, else the
         unevaluated P(a) = P with a numeric ``evalf``.
         """
-        load = sp.sympify(load)
+        load = to_sympy(load)
         if load.free_symbols:
             key = ("half_width", load)
             if key not in self._cache:
@@ -1339,7 +1339,7 @@ class AdhesiveLineContact:
     def branches(self, load, dps: int = 30, **values):
         """Like :meth:`half_width` with the stability: ((a, 'stable'|'unstable'), ...)."""
         vals = self._numeric_values(values)
-        roots = self._law(vals, "closed").equilibria(sp.sympify(load), dps)
+        roots = self._law(vals, "closed").equilibria(to_sympy(load), dps)
         return tuple((r, "stable" if st else "unstable") for r, st in roots)
 
     def _derive_half_widths(self, load):

@@ -31,6 +31,7 @@ import flint
 import mpmath
 import sympy as sp
 
+from .parsing import to_sympy
 from .errors import LineContactError
 from .stable import carlson_rd, carlson_rf, carlson_rg, gamma_ratio, hyp2f1c
 
@@ -232,7 +233,7 @@ def compile_arb(expr, args):
             return lambda v: _cmp(c, fl(v), fr(v))
         raise CertificationError(f"unsupported condition {c}")
 
-    f = build(sp.sympify(expr))
+    f = build(to_sympy(expr))
     return lambda *vals: f(vals)
 
 

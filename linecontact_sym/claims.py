@@ -67,6 +67,7 @@ import mpmath
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
+from .parsing import to_sympy
 from . import symbols as S
 from .budget import run_with_budget
 from .errors import BudgetExceeded, ClaimError, DomainError, LineContactError
@@ -574,7 +575,7 @@ def _quad_segments(g, pts, alphas):
 def _mp(v):
     """mpf of an exact SymPy number at the current working precision (rationals
     divided in mpmath, so that they round exactly like lambdified code)."""
-    v = sp.sympify(v)
+    v = to_sympy(v)
     if v.is_Rational:
         return mpmath.mpf(int(v.p)) / int(v.q)
     return mpmath.mpf(str(sp.N(v, mpmath.mp.dps + 5)))
@@ -605,7 +606,7 @@ def _numeric_values(expr, vals, dps):
         in_exponent |= pw.exp.free_symbols
     out = {}
     for k, v in vals.items():
-        v = sp.sympify(v)
+        v = to_sympy(v)
         if k in in_exponent and v.is_Rational and (v.q > 12 or abs(v.p) > 10**4):
             v = sp.Float(v, _quad_dps(dps) + 20)
         out[k] = v
@@ -857,7 +858,7 @@ def _as_derived(obj, method) -> Derived:
     from .derivation import Derivation
     if isinstance(obj, Derivation):
         return _from_derivation(obj)
-    return Derived(sp.sympify(obj), method)
+    return Derived(to_sympy(obj), method)
 
 
 def _derive_adhesive(claim, profile, ctx) -> Derived:
@@ -1102,7 +1103,7 @@ class PointResult:
 
 
 def _fmt_num(v):
-    v = sp.sympify(v)
+    v = to_sympy(v)
     if v.is_Rational and v.q > 1000:
         return str(sp.N(v, 8))
     return str(v)

@@ -9,6 +9,7 @@ import time
 import mpmath
 import sympy as sp
 
+from .parsing import to_sympy
 from . import symbols as S
 from . import strategies as ST
 from . import transforms as T
@@ -238,11 +239,11 @@ class LineContact:
         numeric parameters (keywords): the number (mpmath, 30 digits).
         """
         fd = self.derivation("force")
-        load = sp.sympify(load)
+        load = to_sympy(load)
         if load.is_number:
             if load <= 0:
                 raise DomainError(f"the load must be positive for a non-adhesive contact, got {load}")
-            vals = {s: sp.sympify(values[s.name]) for s in (S.E_star,) + self.params if s.name in values}
+            vals = {s: to_sympy(values[s.name]) for s in (S.E_star,) + self.params if s.name in values}
             missing = [s.name for s in (S.E_star,) + self.params if s not in vals]
             if missing:
                 raise DomainError(f"half_width needs values for {missing}")
@@ -320,14 +321,14 @@ class LineContact:
         """One high-precision value, with the domain checked (a > 0, |x| <= a
         for the pressure, |x| >= a for the gap)."""
         av = values.get("a")
-        if av is not None and sp.sympify(av) <= 0:
+        if av is not None and to_sympy(av) <= 0:
             raise DomainError(f"the half-width must be positive, got a = {av}")
         if "x" in values and av is not None:
-            xv = abs(sp.sympify(values["x"]))
-            if quantity == "pressure" and xv > sp.sympify(av):
+            xv = abs(to_sympy(values["x"]))
+            if quantity == "pressure" and xv > to_sympy(av):
                 raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {av}; "
                                   f"use the 'gap' there")
-            if quantity == "gap" and xv < sp.sympify(av):
+            if quantity == "gap" and xv < to_sympy(av):
                 raise DomainError(f"x = {values['x']} lies inside the contact; the gap is zero there")
             values = {**values, "x": xv}
         return self.derivation(quantity).evalf(dps=dps, **values)
@@ -346,7 +347,7 @@ class LineContact:
         solution at one point (a and the parameters as keywords): the profile
         does not decrease on (0, a), p >= 0 inside and the gap >= 0 outside.
         Raises :class:`InadmissibleProfileError` naming the broken assumption."""
-        vals = {s: sp.sympify(values[s.name]) for s in (S.a, S.E_star) + self.params}
+        vals = {s: to_sympy(values[s.name]) for s in (S.a, S.E_star) + self.params}
         A = float(vals[S.a])
         fixed = {k: v for k, v in vals.items() if k != S.a}
         fp = self.profile.mp_callable(fixed, derivative=1)

@@ -12,6 +12,7 @@ from typing import Callable
 import mpmath
 import sympy as sp
 
+from .parsing import to_sympy
 from . import symbols as S
 from .budget import run_with_budget
 from .errors import BudgetExceeded, DivergentIntegralError, DomainError
@@ -124,7 +125,7 @@ def _values_by_name(symbols, values):
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = sp.nsimplify(v, rational=True) if isinstance(v, float) else sp.sympify(v)
+        out[sym] = sp.nsimplify(v, rational=True) if isinstance(v, float) else to_sympy(v)
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")

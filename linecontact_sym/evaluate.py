@@ -51,6 +51,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from .parsing import to_sympy
 from . import symbols as S
 from .errors import DomainError, LineContactError
 from .numeric import check_arguments
@@ -149,7 +150,7 @@ def _as_mpf(v):
         return mpmath.mpf(v)
     if isinstance(v, str):
         return mpmath.mpf(v)
-    v = sp.sympify(v)
+    v = to_sympy(v)
     if v.is_Rational:
         return mpmath.mpf(int(v.p)) / int(v.q)
     return mpmath.mpf(sp.N(v, mpmath.mp.dps + 5))

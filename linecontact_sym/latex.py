@@ -15,6 +15,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
+from .parsing import to_sympy
 from . import symbols as S
 
 
@@ -61,7 +62,7 @@ def to_latex(expr, **settings) -> str:
     """
     if isinstance(expr, str):
         return latex_escape(expr)
-    return PaperLatexPrinter(settings).doprint(sp.sympify(expr))
+    return PaperLatexPrinter(settings).doprint(to_sympy(expr))
 
 
 _ESCAPES = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",

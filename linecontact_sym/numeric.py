@@ -41,6 +41,7 @@ import numpy as np
 import scipy.special as sc
 import sympy as sp
 
+from .parsing import to_sympy
 from .errors import DomainError
 from .stable import MPMATH_FUNCS, NUMPY_FUNCS, stabilize
 
@@ -502,7 +503,7 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
             with mpmath.workdps(dps):
                 vals = dict(zip(syms, (sp.Float(v, dps) if isinstance(v, mpmath.mpf)
                                        else sp.Float(float(v), 20) if isinstance(v, float)
-                                       else sp.sympify(v) for v in collect(kw))))
+                                       else to_sympy(v) for v in collect(kw))))
                 return ref(vals, dps)
     fn.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(names)}.\n"
                   f"Formula: {derivation.expr}\nMethod: {derivation.method}")

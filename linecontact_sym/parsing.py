@@ -464,3 +464,18 @@ def _split_top(text):
 
 __all__ = ["parse_expr", "parse_assignments", "parse_number", "parse_number_list",
            "declare_symbols", "SYMBOLS", "FUNCTIONS", "CONSTANTS", "t", "s"]
+
+
+def to_sympy(value, where: str = "") -> sp.Basic:
+    """A value given to the API as a SymPy object: SymPy objects and numbers
+    (int, float, Fraction, mpmath, NumPy scalars) convert directly; strings
+    go through the whitelisted :func:`parse_expr`, never through ``eval``;
+    anything else raises.  Use this instead of ``sympy.sympify``, which
+    evaluates strings."""
+    if isinstance(value, str):
+        return parse_expr(value, where=where)
+    try:
+        return sp.sympify(value, strict=True)
+    except sp.SympifyError:
+        raise ClaimError(f"{where + ': ' if where else ''}cannot use {value!r} "
+                         f"({type(value).__name__}) as a SymPy value") from None

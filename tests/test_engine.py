@@ -251,3 +251,14 @@ def test_catalogue_equals_typed_by_hand_and_derivation_is_sympy():
     assert cyl.force == lcs.exact_cylinder().force
     h = by_hand.half_width(P)
     assert sp.simplify(h - 2 * sp.sqrt(P * lcs.R / (sp.pi * E_star))) == 0
+
+
+def test_api_values_never_eval_strings():
+    """Strings given as values go through the whitelisted parser, not eval."""
+    cont = lcs.parabola()
+    with pytest.raises(lcs.ClaimError):
+        cont.half_width("__import__('os').getcwd()", R=1, E_star=1)
+    with pytest.raises(lcs.ClaimError):
+        cont.evaluate_at("force", a=[1, 2], R=1, E_star=1)
+    with mp.workdps(30):
+        assert abs(cont.evaluate_at("force", a="1/2", R=1, E_star=1) - mp.pi / 16) < 1e-25
