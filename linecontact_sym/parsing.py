@@ -372,7 +372,7 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
     if isinstance(expr, tuple):
         raise ClaimError(f"{_where(where)}expected one expression, got a tuple: {text!r}")
     if not isinstance(expr, sp.Basic):
-        expr = sp.sympify(expr)
+        expr = sp.sympify(expr, strict=True)  # safe: parser output, never a string
     is_relation = isinstance(expr, (sp.logic.boolalg.Boolean, sp.Rel)) and not isinstance(expr, sp.Expr)
     if is_relation and not allow_relational:
         raise ClaimError(f"{_where(where)}expected an expression, got the relation {text!r}")

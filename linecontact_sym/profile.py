@@ -44,7 +44,7 @@ def _sanitize(expr, params):
             "expression, or parse text with linecontact_sym.parse_expr(...) "
             "(a whitelisted parser)")
     if isinstance(expr, (int, float)) and not isinstance(expr, bool):
-        expr = sp.sympify(expr)
+        expr = sp.sympify(expr, strict=True)  # safe: int or float only
     if not isinstance(expr, sp.Basic):
         raise ProfileError(
             f"the profile must be a SymPy expression in x, got {type(expr).__name__}: {expr!r}")
@@ -130,7 +130,7 @@ class Profile:
                 sol = sp.solve(sp.Eq(side, 0), S.x)
                 if len(sol) != 1:
                     raise ProfileError(f"profile {self.name!r}: cannot read the breakpoint of {rel}")
-                breaks.add(sp.sympify(sol[0]))
+                breaks.add(sp.sympify(sol[0], strict=True))  # safe: a solve() result
         vals = self.sample_params()
         num = {}
         for bp in breaks:
