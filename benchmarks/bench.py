@@ -43,9 +43,9 @@ import sympy as sp
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
 import linecontact_sym as lcs  # noqa: E402
-from linecontact_sym import symbols as S  # noqa: E402
-from linecontact_sym.certified import arb_callable  # noqa: E402
-from linecontact_sym.numeric import lambdify_mpmath, make_callable, stable_form  # noqa: E402
+from linecontact_sym.core import symbols as S  # noqa: E402
+from linecontact_sym.numeric.certified import arb_callable  # noqa: E402
+from linecontact_sym.numeric.exports import lambdify_mpmath, make_callable, stable_form  # noqa: E402
 
 E_VAL, C_VAL, TH_VAL = 1.7, 1.3, 0.3
 

@@ -3,16 +3,16 @@ problems by Popov's (2017) superposition of flat punches, derived with SymPy,
 verified with mpmath and exported as fast numeric functions."""
 from __future__ import annotations
 
-from .symbols import x, a, P, E_star, gamma, R, b, n, c, theta
-from .errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
+from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta
+from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
                      DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError)
-from .profile import Profile
-from .derivation import Derivation, VerificationRecord
-from .contact import LineContact, profile_from_force
-from .adhesion import AdhesiveLineContact, NoPullOffError, NoEquilibriumError
-from . import catalogue
-from .catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
-from .latex import to_latex
+from .method.profile import Profile
+from .method.derivation import Derivation, VerificationRecord
+from .contacts.frictionless import LineContact, profile_from_force
+from .contacts.adhesive import AdhesiveLineContact, NoPullOffError, NoEquilibriumError
+from .contacts import catalogue
+from .contacts.catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
+from .core.printing import to_latex
 from .parsing import parse_expr
 
 __version__ = "0.1.0"

@@ -26,8 +26,8 @@ import traceback
 from pathlib import Path
 
 
-from . import symbols as S
-from .errors import LineContactError
+from .core import symbols as S
+from .core.errors import LineContactError
 
 EXIT_OK, EXIT_NO_VERDICT, EXIT_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -56,12 +56,12 @@ def _settings(items, symbols=()):
 
 
 def _contact(args, profile):
-    from .contact import LineContact
+    from .contacts.frictionless import LineContact
     return LineContact(profile, budget=args.budget)
 
 
 def _derivation_dict(d, values=None):
-    from .latex import to_latex
+    from .core.printing import to_latex
     expr = d.expr.xreplace(values) if values else d.expr
     rec = d.verification
     return {"quantity": d.quantity, "expr": str(expr), "latex": to_latex(expr),
@@ -73,8 +73,8 @@ def _derivation_dict(d, values=None):
 
 # ------------------------------------------------------------------ paper
 def cmd_paper(args):
-    from .claims import check_paper, load_paper
-    from .report import text_table, write_paper_outputs
+    from .claims.check import check_paper, load_paper
+    from .claims.report import text_table, write_paper_outputs
     paper = load_paper(args.name)
     out = Path(args.out or f"{paper.key}-report")
     only = set(args.only) if args.only else None
@@ -108,7 +108,7 @@ def cmd_paper(args):
 
 # ------------------------------------------------------------------ derive
 def cmd_derive(args):
-    from .latex import to_latex
+    from .core.printing import to_latex
     prof = _profile(args.profile, args.symbols)
     values = _settings(args.set, args.symbols)
     prof = prof.xreplace(values)
@@ -210,7 +210,7 @@ def _eval_one(c, q, values, dps):
 # ------------------------------------------------------------------ table
 def cmd_table(args):
     from .parsing import parse_number_list
-    from .report import power_law_latex, power_law_rows, power_law_text
+    from .claims.report import power_law_latex, power_law_rows, power_law_text
     if args.kind != "power-law":
         raise LineContactError(f"unknown table {args.kind!r}; available: power-law")
     ns = parse_number_list(args.n, where="--n")
@@ -233,8 +233,8 @@ _CLI_QUANTITIES = {"force": "force", "pressure": "pressure", "gap": "gap",
 
 
 def cmd_check(args):
-    from .claims import Paper, check_paper, claim_from_cli, load_paper
-    from .report import text_table
+    from .claims.check import Paper, check_paper, claim_from_cli, load_paper
+    from .claims.report import text_table
     formulas = [(q, getattr(args, q)) for q in _CLI_QUANTITIES if getattr(args, q, None)]
     if args.quantity or args.formula:
         if not (args.quantity and args.formula):

@@ -38,8 +38,9 @@ import sympy as sp
 from sympy.parsing.sympy_parser import convert_xor, rationalize, parse_expr as _sympy_parse_expr
 from sympy.parsing.sympy_parser import standard_transformations
 
-from . import symbols as S
-from .errors import ClaimError
+from .core import symbols as S
+from .core.conversion import to_basic
+from .core.errors import ClaimError, LineContactError
 
 #: integration variables (the paper's a-tilde); the same symbols as the engine's
 t = sp.Symbol("t", positive=True)
@@ -467,15 +468,13 @@ __all__ = ["parse_expr", "parse_assignments", "parse_number", "parse_number_list
 
 
 def to_sympy(value, where: str = "") -> sp.Basic:
-    """A value given to the API as a SymPy object: SymPy objects and numbers
-    (int, float, Fraction, mpmath, NumPy scalars) convert directly; strings
-    go through the whitelisted :func:`parse_expr`, never through ``eval``;
-    anything else raises.  Use this instead of ``sympy.sympify``, which
-    evaluates strings."""
+    """A value given to the API as a SymPy object: strings go through the
+    whitelisted :func:`parse_expr`, never through ``eval``; everything else
+    through the strict :func:`linecontact_sym.core.conversion.to_basic`.  Use
+    this instead of ``sympy.sympify``, which evaluates strings."""
     if isinstance(value, str):
         return parse_expr(value, where=where)
     try:
-        return sp.sympify(value, strict=True)
-    except sp.SympifyError:
-        raise ClaimError(f"{where + ': ' if where else ''}cannot use {value!r} "
-                         f"({type(value).__name__}) as a SymPy value") from None
+        return to_basic(value)
+    except LineContactError as exc:
+        raise ClaimError(f"{where + ': ' if where else ''}{exc}") from None

@@ -12,11 +12,11 @@ import sympy as sp
 from hypothesis import given, settings, strategies as st
 
 import linecontact_sym as lcs
-from linecontact_sym import symbols as S
-from linecontact_sym.adhesion import (AdhesiveLineContact, NoEquilibriumError, NoPullOffError,
+from linecontact_sym.core import symbols as S
+from linecontact_sym.contacts.adhesive import (AdhesiveLineContact, NoEquilibriumError, NoPullOffError,
                                       NumericValuesRequired, flat_punch_force)
-from linecontact_sym.derivation import verify
-from linecontact_sym.errors import DomainError, LineContactError
+from linecontact_sym.method.derivation import verify
+from linecontact_sym.core.errors import DomainError, LineContactError
 
 a, x, E, g, R, n, c, th, b = S.a, S.x, S.E_star, S.gamma, S.R, S.n, S.c, S.theta, S.b
 DIG = 30

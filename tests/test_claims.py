@@ -4,7 +4,6 @@ condition / does not hold with a counterexample), the numerics it rests on.
 Budgets are small (derivations of the paper's profiles take well under a
 second each); the whole paper is run by the CLI job, not here.
 """
-import importlib.util
 import textwrap
 
 import mpmath
@@ -12,12 +11,10 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
-from linecontact_sym import claims as C
-from linecontact_sym.errors import ClaimError
+from linecontact_sym.claims import check as C
+from linecontact_sym.core.errors import ClaimError
 
 BUDGET = 5.0
-HAVE_ADHESION = importlib.util.find_spec("linecontact_sym.adhesion") is not None
-needs_adhesion = pytest.mark.skipif(not HAVE_ADHESION, reason="linecontact_sym.adhesion not available")
 
 
 def check(d, **kw):
@@ -185,7 +182,6 @@ def test_table_values_identified_with_exponents():
     assert wrong.status == C.FAILS and "DISAGREES" in " ".join(wrong.details)
 
 
-@needs_adhesion
 def test_adhesive_claims_and_existence_bound():
     r = check({"quantity": "pull_off_force", "profile": "x*tan(theta)", "formula": "pi*gamma/(2*tan(theta))",
                "points": 2})

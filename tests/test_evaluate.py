@@ -9,10 +9,10 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
-from linecontact_sym.certified import CertificationError, arb_evaluate
-from linecontact_sym.errors import DomainError
-from linecontact_sym.evaluate import Evaluation, evaluate
-from linecontact_sym.numeric import lambdify_mpmath
+from linecontact_sym.numeric.certified import CertificationError, arb_evaluate
+from linecontact_sym.core.errors import DomainError
+from linecontact_sym.numeric.evaluate import Evaluation, evaluate
+from linecontact_sym.numeric.exports import lambdify_mpmath
 
 _c: dict = {}
 

@@ -7,9 +7,9 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
-from linecontact_sym import claims as C
-from linecontact_sym.latex import booktabs_table, check_latex, latex_escape, standalone, to_latex
-from linecontact_sym.report import latex_report, markdown_report, power_law_latex, power_law_rows
+from linecontact_sym.claims import check as C
+from linecontact_sym.views.latex import booktabs_table, check_latex, latex_escape, standalone, to_latex
+from linecontact_sym.claims.report import latex_report, markdown_report, power_law_latex, power_law_rows
 
 
 def test_paper_notation():

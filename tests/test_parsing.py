@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
-from linecontact_sym.errors import ClaimError
+from linecontact_sym.core.errors import ClaimError
 from linecontact_sym.parsing import (parse_assignments, parse_expr, parse_number, parse_number_list, t)
 
 

@@ -12,11 +12,11 @@ from typing import Callable
 import mpmath
 import sympy as sp
 
-from .parsing import to_sympy
-from . import symbols as S
-from .budget import run_with_budget
-from .errors import BudgetExceeded, DivergentIntegralError, DomainError
-from .strategies import NotApplicable
+from ..parsing import to_sympy
+from ..core import symbols as S
+from ..core.budget import run_with_budget
+from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError
+from .rules import NotApplicable
 
 #: digits every closed form must reproduce at every verification point
 REQUIRED_DIGITS = 30
@@ -111,7 +111,7 @@ class Derivation:
         return self.expr
 
     def _repr_latex_(self):
-        from .latex import to_latex
+        from ..core.printing import to_latex
         return f"$\\displaystyle {to_latex(self.expr)}$"
 
     def __str__(self):

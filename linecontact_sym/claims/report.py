@@ -11,10 +11,10 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import symbols as S
-from .claims import FAILS, HOLDS, HOLDS_IF, UNDECIDED
-from .errors import DomainError
-from .latex import booktabs_table, latex_escape, standalone, to_latex
+from ..core import symbols as S
+from .check import FAILS, HOLDS, HOLDS_IF, UNDECIDED
+from ..core.errors import DomainError
+from ..views.latex import booktabs_table, latex_escape, standalone, to_latex
 
 _SHORT = {HOLDS: "holds", HOLDS_IF: "holds if", FAILS: "DOES NOT HOLD", UNDECIDED: "UNDECIDED"}
 
@@ -24,7 +24,7 @@ def power_law_rows(ns, budget: float = 20.0):
     """Rows (n, Z_n exact, Z_n numeric, force law) for the exponents ``ns``,
     from the engine's force law of f = c x**n (derived once with symbolic n,
     then evaluated at each exponent)."""
-    from .catalogue import power_law
+    from ..contacts.catalogue import power_law
     d = power_law(budget=budget).derivation("force")
     Zsym = sp.simplify(sp.gammasimp(d.expr / (S.E_star * S.c * S.a**S.n)))
     rows = []

@@ -15,8 +15,8 @@ from functools import cached_property
 import mpmath
 import sympy as sp
 
-from . import symbols as S
-from .errors import ProfileError, UnknownSymbolError
+from ..core import symbols as S
+from ..core.errors import ProfileError, UnknownSymbolError
 
 
 @dataclass(frozen=True)

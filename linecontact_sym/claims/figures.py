@@ -39,7 +39,7 @@ def _save(fig, out_dir, stem, formats):
 
 def fig4_data(a_over_b=None, budget: float = 20.0):
     """(a/b, worn cylinder 2RP/(E* b^2), parabola 2RP/(E* b^2)) from the engine."""
-    from .catalogue import parabola, worn_cylinder
+    from ..contacts.catalogue import parabola, worn_cylinder
     if a_over_b is None:
         a_over_b = np.linspace(0.0, 4.0, 401)
     worn = worn_cylinder(budget=budget)
@@ -78,7 +78,7 @@ def fig4(out_dir=".", formats=("png", "pdf"), budget: float = 20.0):
 
 def fig5_data(a_over_R=None, budget: float = 20.0):
     """(a/R, exact cylinder P/(E* R), Hertz P/(E* R)) from the engine."""
-    from .catalogue import exact_cylinder, parabola
+    from ..contacts.catalogue import exact_cylinder, parabola
     if a_over_R is None:
         a_over_R = np.linspace(0.0, 0.99, 397)
     exact = exact_cylinder(budget=budget)

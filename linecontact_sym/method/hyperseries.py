@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .errors import DivergentIntegralError
+from ..core.errors import DivergentIntegralError
 
 
 @dataclass(frozen=True)

@@ -87,15 +87,15 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 
-from .parsing import to_sympy
-from . import symbols as S
-from . import transforms as T
-from .budget import run_with_budget
-from .derivation import (Derivation, VERIFY_DPS, VerificationRecord, _values_by_name, tidy,
+from ..parsing import to_sympy
+from ..core import symbols as S
+from ..method import transforms as T
+from ..core.budget import run_with_budget
+from ..method.derivation import (Derivation, VERIFY_DPS, VerificationRecord, _values_by_name, tidy,
                          digits_agreeing, verify_many,
                          verify)
-from .errors import BudgetExceeded, DomainError, VerificationError
-from .hyperseries import NotDecomposable, decompose
+from ..core.errors import BudgetExceeded, DomainError, VerificationError
+from ..method.hyperseries import NotDecomposable, decompose
 
 __all__ = ["AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "NumericValuesRequired",
            "PullOff", "flat_punch_force", "stress_intensity", "energy_release_rate",
@@ -1064,7 +1064,7 @@ class AdhesiveLineContact:
     def _points(self, conds, n=5, seed=11):
         sample = self._sampler("force")
         rng = random.Random(seed)
-        from .derivation import _holds
+        from ..method.derivation import _holds
         out, tries = [], 0
         while len(out) < n and tries < 40 * n:
             tries += 1
@@ -1154,7 +1154,7 @@ class AdhesiveLineContact:
             name = ("two independent minimisations (A: analytic dP/da, B: numerical "
                     "differentiation of the quadrature force law)")
             try:
-                from .derivation import VERIFY_BUDGET as budget
+                from ..method.derivation import VERIFY_BUDGET as budget
             except ImportError:
                 budget = 120.0
             try:
@@ -1197,7 +1197,7 @@ class AdhesiveLineContact:
         vals = self._numeric_values(values)
         if self._pull_off_closed()["Pmin"] is not None:
             fd = self.derivation("pull_off_force")
-            from .derivation import _holds
+            from ..method.derivation import _holds
             single = _single_power(self.contact.derivation("force").expr)
             if single is not None:
                 self._existence(single[0], single[1], vals)

@@ -15,8 +15,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from . import symbols as S
-from .errors import DivergentIntegralError
+from ..core import symbols as S
+from ..core.errors import DivergentIntegralError
 from .hyperseries import NotDecomposable, beta_kernel_sum, decompose
 from .transforms import s, t
 

@@ -31,8 +31,8 @@ import flint
 import mpmath
 import sympy as sp
 
-from .parsing import to_sympy
-from .errors import LineContactError
+from ..parsing import to_sympy
+from ..core.errors import LineContactError
 from .stable import carlson_rd, carlson_rf, carlson_rg, gamma_ratio, hyp2f1c
 
 arb, acb = flint.arb, flint.acb

@@ -51,10 +51,10 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from .parsing import to_sympy
-from . import symbols as S
-from .errors import DomainError, LineContactError
-from .numeric import check_arguments
+from ..parsing import to_sympy
+from ..core import symbols as S
+from ..core.errors import DomainError, LineContactError
+from .exports import check_arguments
 
 EPS = float(np.finfo(float).eps)
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
@@ -167,7 +167,7 @@ def _float64_fn(contact, quantity):
     cache = _cache(contact)
     key = ("f64", quantity)
     if key not in cache:
-        from .numeric import make_callable
+        from .exports import make_callable
         cache[key] = make_callable(contact.derivation(quantity), "numpy")
     return cache[key]
 
@@ -180,7 +180,7 @@ def _cancellation_fns(contact, quantity):
     cache = _cache(contact)
     key = ("cancel", quantity)
     if key not in cache:
-        from .numeric import lambdify_numpy, stable_form
+        from .exports import lambdify_numpy, stable_form
         from .stable import _is_rational_in_symbols
         d = contact.derivation(quantity)
         expr = stable_form(d).expr
@@ -423,7 +423,7 @@ def _quad_error(contact, quantity, point):
     cache = _cache(contact)
     key = ("qerr", quantity)
     if key not in cache:
-        from .numeric import _VectorQuad, stable_form
+        from .exports import _VectorQuad, stable_form
         d = contact.derivation(quantity)
         form = stable_form(d).expr
         ints = list(form.atoms(sp.Integral))
@@ -447,7 +447,7 @@ def _mpmath_fn(contact, d, quantity):
     cache = _cache(contact)
     key = ("mp", quantity)
     if key not in cache:
-        from .numeric import lambdify_mpmath, lambdify_mpmath_quad, stable_form
+        from .exports import lambdify_mpmath, lambdify_mpmath_quad, stable_form
         syms = d.variables_all
         if d.closed_form:
             f = lambdify_mpmath(stable_form(d).expr, syms, stable=False)
@@ -482,7 +482,7 @@ def _mpmath_path(contact, d, quantity, values, rtol, kappa, t0, notes):
 
 def _certified(contact, d, quantity, values, rtol, dps, t0):
     from .certified import arb_callable
-    from .numeric import stable_form
+    from .exports import stable_form
     if dps is None:
         dps = int(math.ceil(-math.log10(rtol))) if rtol else 15
     if not d.closed_form:

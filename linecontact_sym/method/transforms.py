@@ -39,7 +39,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from . import symbols as S
+from ..core import symbols as S
 
 # dummy integration variables: the defining Integrals print with these
 t = sp.Symbol("t", positive=True)

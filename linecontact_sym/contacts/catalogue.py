@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from . import symbols as S
-from .contact import LineContact
+from ..core import symbols as S
+from .frictionless import LineContact
 
 
 def parabola_profile(R=S.R):

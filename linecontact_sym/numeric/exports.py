@@ -41,8 +41,8 @@ import numpy as np
 import scipy.special as sc
 import sympy as sp
 
-from .parsing import to_sympy
-from .errors import DomainError
+from ..parsing import to_sympy
+from ..core.errors import DomainError
 from .stable import MPMATH_FUNCS, NUMPY_FUNCS, stabilize
 
 _SCIPY_FUNCS = {
@@ -343,7 +343,7 @@ def _removable_limit(expr, sym):
         return None
     if not (e0.has(sp.nan) or e0 is sp.nan):
         return None
-    from .budget import run_with_budget
+    from ..core.budget import run_with_budget
     try:
         lim = run_with_budget(sp.limit, expr, sym, 0, "+", seconds=10.0)
     except Exception:

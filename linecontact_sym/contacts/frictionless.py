@@ -9,14 +9,14 @@ import time
 import mpmath
 import sympy as sp
 
-from .parsing import to_sympy
-from . import symbols as S
-from . import strategies as ST
-from . import transforms as T
-from .budget import DEFAULT_BUDGET, run_with_budget
-from .derivation import Derivation, VERIFY_DPS, try_strategies, verify, REQUIRED_DIGITS
-from .errors import BudgetExceeded, DomainError, InadmissibleProfileError, ProfileError
-from .profile import Profile
+from ..parsing import to_sympy
+from ..core import symbols as S
+from ..method import rules as ST
+from ..method import transforms as T
+from ..core.budget import DEFAULT_BUDGET, run_with_budget
+from ..method.derivation import Derivation, VERIFY_DPS, try_strategies, verify, REQUIRED_DIGITS
+from ..core.errors import BudgetExceeded, DomainError, InadmissibleProfileError, ProfileError
+from ..method.profile import Profile
 
 
 def _rat(v):
@@ -66,7 +66,7 @@ class LineContact:
         return f"LineContact({self.profile.expr})"
 
     def _repr_latex_(self):
-        from .latex import to_latex
+        from ..core.printing import to_latex
         return f"$f(x) = {to_latex(self.profile.expr)}$"
 
     @property
@@ -297,7 +297,7 @@ class LineContact:
     def adhesive(self, work_of_adhesion=S.gamma):
         """The JKR-adhesive form of this contact (Eqs. 29-36), see
         :mod:`linecontact_sym.adhesion`."""
-        from .adhesion import AdhesiveLineContact
+        from .adhesive import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
 
     # --------------------------------------------------------------- numbers
@@ -306,7 +306,7 @@ class LineContact:
 
         ``backend='numpy'`` (vectorised float64) or ``'mpmath'`` (``dps``
         digits).  Keywords given here are fixed once."""
-        from .numeric import make_callable
+        from ..numeric.exports import make_callable
         return make_callable(self.derivation(quantity), backend, dps, params)
 
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
@@ -314,7 +314,7 @@ class LineContact:
         sufficient precision, a cheaper model with its error bound, or with
         ``certified=True`` an Arb ball (python-flint).  The result says which
         path was taken and its error estimate; see :mod:`linecontact_sym.evaluate`."""
-        from .evaluate import evaluate
+        from ..numeric.evaluate import evaluate
         return evaluate(self, quantity, rtol=rtol, certified=certified, dps=dps, **values)
 
     def evaluate_at(self, quantity: str, dps: int = 30, **values):

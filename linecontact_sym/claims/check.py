@@ -67,11 +67,11 @@ import mpmath
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from .parsing import to_sympy
-from . import symbols as S
-from .budget import run_with_budget
-from .errors import BudgetExceeded, ClaimError, DomainError, LineContactError
-from .parsing import declare_symbols, parse_expr, t as T_VAR
+from ..parsing import to_sympy
+from ..core import symbols as S
+from ..core.budget import run_with_budget
+from ..core.errors import BudgetExceeded, ClaimError, DomainError, LineContactError
+from ..parsing import declare_symbols, parse_expr, t as T_VAR
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -751,7 +751,7 @@ class _Context:
         self.adhesives = {}
 
     def contact(self, profile, claim):
-        from .contact import LineContact
+        from ..contacts.frictionless import LineContact
         params = {}
         for sym in sorted(profile.free_symbols - {S.x}, key=lambda z: z.name):
             params[sym] = _range_of(sym, claim)
@@ -830,7 +830,7 @@ def derive(claim: Claim, profile, ctx: _Context) -> Derived:
     if q in ("adhesive_force", "adhesive_pressure", "pull_off_force", "pull_off_half_width"):
         return _derive_adhesive(claim, profile, ctx)
     if q == "inverse_profile":
-        from .contact import profile_from_force
+        from ..contacts.frictionless import profile_from_force
         t0 = time.perf_counter()
         d = profile_from_force(claim.force_law, budget=ctx.budget)
         out = _from_derivation(d)
@@ -855,7 +855,7 @@ def _adhesion_item(ad, name):
 
 
 def _as_derived(obj, method) -> Derived:
-    from .derivation import Derivation
+    from ..method.derivation import Derivation
     if isinstance(obj, Derivation):
         return _from_derivation(obj)
     return Derived(to_sympy(obj), method)
@@ -1188,7 +1188,7 @@ class ClaimResult:
         return self.claim.label
 
     def _repr_markdown_(self):
-        from .latex import to_latex
+        from ..views.latex import to_latex
         c = self.claim
         lines = [f"**{c.label}** ({c.title or c.quantity}): **{self.status}**"]
         if c.forms:

@@ -1,0 +1,84 @@
+"""Conversions between Python numbers, SymPy objects and mpmath numbers: the
+one place that decides how a value crosses from one world to the other.
+
+Strings are never converted here (they are text from people: see
+:func:`linecontact_sym.parsing.to_sympy`, which parses them with the
+whitelist and then calls :func:`to_basic`).
+"""
+from __future__ import annotations
+
+import mpmath
+import sympy as sp
+
+from .errors import LineContactError
+
+
+def to_basic(value) -> sp.Basic:
+    """A SymPy object for a non-string value: SymPy objects as they are,
+    numbers (int, float, Fraction, mpmath and NumPy scalars) converted by
+    ``sympify(strict=True)``, which never evaluates text.
+
+    >>> to_basic(3)
+    3
+    >>> to_basic("1+1")
+    Traceback (most recent call last):
+    ...
+    linecontact_sym.core.errors.LineContactError: got the string '1+1' where a number or SymPy expression was expected; parse text with linecontact_sym.parse_expr (whitelisted)
+    """
+    if isinstance(value, str):
+        raise LineContactError(f"got the string {value!r} where a number or SymPy expression was expected; "
+                               f"parse text with linecontact_sym.parse_expr (whitelisted)")
+    if isinstance(value, sp.Basic):
+        return value
+    try:
+        return sp.sympify(value, strict=True)  # safe: never a string here
+    except sp.SympifyError:
+        raise LineContactError(f"cannot use {value!r} ({type(value).__name__}) as a SymPy value") from None
+
+
+def rational(v, digits: int = 6) -> sp.Rational:
+    """A float rounded to ``digits`` decimals as an exact Rational (sample
+    points are exact so that every method sees the same number).
+
+    >>> rational(0.1234567)
+    123457/1000000
+    """
+    scale = 10**digits
+    return sp.Rational(round(float(v) * scale), scale)
+
+
+def to_mpf(v):
+    """An mpf at the current working precision: exact for int, float and mpf,
+    rationals divided in mpmath (rounded like lambdified code), other SymPy
+    numbers evaluated with 5 guard digits.  Raises ``TypeError`` for a value
+    that is not a real number."""
+    if isinstance(v, mpmath.mpf):
+        return +v
+    if isinstance(v, bool):
+        raise TypeError("a boolean is not a number")
+    if isinstance(v, (int, float)):
+        return mpmath.mpf(v)
+    v = to_basic(v)
+    if v.is_Rational:
+        return mpmath.mpf(int(v.p)) / int(v.q)
+    num = v if v.is_Float else sp.N(v, mpmath.mp.dps + 5)
+    if not num.is_Float:
+        raise TypeError(f"{v} is not a real number")
+    return mpmath.mpf(num)  # reads the Float's binary value (``_mpf_``), rounds to the context
+
+
+def float_values(vals: dict, digits: int) -> dict:
+    """Exact non-integer numbers as Floats of ``digits`` digits, for
+    substitution into expressions: an exact Rational under a symbolic exponent
+    makes SymPy factor huge integers (minutes); a Float with guard digits
+    gives the same value to the precision asked."""
+    out = {}
+    for k, v in vals.items():
+        if isinstance(v, sp.Basic) and v.is_number and not v.is_Integer and not v.is_Float:
+            out[k] = sp.Float(v, digits)
+        else:
+            out[k] = v
+    return out
+
+
+__all__ = ["to_basic", "rational", "to_mpf", "float_values"]
