@@ -7,9 +7,13 @@ from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta
 from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
                      DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError)
 from .method.profile import Profile
-from .method.derivation import Derivation, VerificationRecord
-from .contacts.frictionless import LineContact, profile_from_force
-from .contacts.adhesive import AdhesiveLineContact, NoPullOffError, NoEquilibriumError
+from .method.derivation import Derivation
+from .method.verification import VerificationRecord
+from .contacts.frictionless import LineContact
+from .contacts.inverse import profile_from_force
+from .contacts.adhesive import AdhesiveLineContact
+from .contacts.base import Contact, Quantity
+from .core.errors import NoPullOffError, NoEquilibriumError
 from .contacts import catalogue
 from .contacts.catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
 from .core.printing import to_latex

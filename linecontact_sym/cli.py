@@ -65,7 +65,7 @@ def _derivation_dict(d, values=None):
     expr = d.expr.xreplace(values) if values else d.expr
     rec = d.verification
     return {"quantity": d.quantity, "expr": str(expr), "latex": to_latex(expr),
-            "closed_form": bool(d.closed_form), "method": d.method,
+            "closed_form": bool(d.closed_form), "rule": d.rule, "method": d.method,
             "conditions": [str(c) for c in d.conditions],
             "verified_digits": round(rec.min_digits, 2) if rec is not None else None,
             "seconds": round(d.seconds, 3), "notes": list(d.notes)}
@@ -114,29 +114,30 @@ def cmd_derive(args):
     prof = prof.xreplace(values)
     c = _contact(args, prof)
     quantities = [q.strip() for q in args.quantities.split(",") if q.strip()]
+    known = _expression_quantities("frictionless")
     for q in quantities:
-        if q not in ("force", "pressure", "gap"):
-            raise LineContactError(f"unknown quantity {q!r} for derive; choose from force, pressure, gap")
+        if q not in known:
+            raise LineContactError(f"unknown quantity {q!r} for derive; choose from {', '.join(known)}")
     out = {"profile": str(prof), "profile_latex": to_latex(prof),
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
     for q in quantities:
         out["quantities"][q] = c.derivation(q)
     if args.adhesion:
         ad = c.adhesive(S.gamma)
+        registry = type(ad).quantities()
         for q in ("force", "pressure", "adhesion_force", "pull_off_half_width"):
+            key = (registry[q].aliases or (q,))[0]
             try:
-                out["quantities"][f"adhesive_{q}" if q in ("force", "pressure") else q] = ad.derivation(q)
+                out["quantities"][key] = ad.derivation(q)
             except LineContactError as exc:
-                out["quantities"][q] = exc
+                out["quantities"][key] = exc
     if args.format == "json":
         _emit_json({**out, "quantities": {k: (_derivation_dict(v) if not isinstance(v, Exception)
                                               else {"error": str(v)}) for k, v in out["quantities"].items()}})
     elif args.format == "latex":
         print(r"\begin{align*}")
         lines = [f"f(x) &= {to_latex(prof)}"]
-        names = {"force": "P(a)", "pressure": "p(x)", "gap": "g(x)", "adhesive_force": "P_{\\mathrm{JKR}}(a)",
-                 "adhesive_pressure": "p_{\\mathrm{JKR}}(x)", "adhesion_force": "P_{\\mathrm{adh}}",
-                 "pull_off_half_width": "a_{\\mathrm{po}}"}
+        names = {k: q.latex or k for k, (_, _, q) in _registry().items()}
         for k, v in out["quantities"].items():
             if isinstance(v, Exception):
                 continue
@@ -153,8 +154,15 @@ def cmd_derive(args):
 
 
 # ------------------------------------------------------------------ eval
-_EVAL_QUANTITIES = ("force", "pressure", "gap", "half_width", "adhesive_force", "adhesive_pressure",
-                    "adhesion_force", "pull_off_force", "pull_off_half_width")
+def _registry():
+    from .contacts.base import qualified_quantities
+    return qualified_quantities()
+
+
+def _expression_quantities(kind):
+    """Registry names of a kind's quantities that are expressions (not methods)."""
+    from .contacts.base import contact_kind
+    return [n for n, q in contact_kind(kind).quantities().items() if not q.method]
 
 
 def cmd_eval(args):
@@ -163,8 +171,8 @@ def cmd_eval(args):
     prof = _profile(args.profile, args.symbols)
     values = _settings(args.set, args.symbols)
     q = args.quantity
-    if q not in _EVAL_QUANTITIES:
-        raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_EVAL_QUANTITIES)}")
+    if q not in _registry():
+        raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_registry())}")
     grids = {}
     for item in args.at or []:
         if "=" not in item:
@@ -195,16 +203,15 @@ def cmd_eval(args):
 
 
 def _eval_one(c, q, values, dps):
-    if q in ("force", "pressure", "gap"):
-        return c.evaluate_at(q, dps=dps, **values)
-    if q == "half_width":
+    kind, name, quantity = _registry()[q]
+    contact = c if kind == "frictionless" else c.adhesive(S.gamma)
+    if quantity.method:  # a(P): the load is an argument
         if "P" not in values:
-            raise LineContactError("half_width needs the load: --at P=... or --set P=...")
+            raise LineContactError(f"{q} needs the load: --at P=... or --set P=...")
         load = values.pop("P")
-        return c.half_width(load, **values)
-    ad = c.adhesive(S.gamma)
-    name = {"adhesive_force": "force", "adhesive_pressure": "pressure"}.get(q, q)
-    return ad.derivation(name).evalf(dps=dps, **values)
+        out = getattr(contact, name)(load, **values)
+        return out[0] if isinstance(out, tuple) else out
+    return contact.evaluate_at(name, dps=dps, **values)
 
 
 # ------------------------------------------------------------------ table
@@ -222,7 +229,7 @@ def cmd_table(args):
     elif args.latex:
         print(power_law_latex(rows))
     else:
-        print(f"f(x) = c x**n:  P(a) = E* c Z_n a**n,  Z_n = {Zsym}   (derived: {d.method.split(':')[0]})")
+        print(f"f(x) = c x**n:  P(a) = E* c Z_n a**n,  Z_n = {Zsym}   (derived: {d.rule})")
         print(power_law_text(rows))
     return EXIT_OK
 
@@ -315,7 +322,9 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("profile", help="the profile f(x) in SymPy syntax, e.g. 'x**2/(2*R)'")
     pd.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fix parameters, e.g. R=1")
     pd.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
-    pd.add_argument("--quantities", default="force,pressure,gap", help="comma-separated (default force,pressure,gap)")
+    pd.add_argument("--quantities", default="force,pressure,gap",
+                    help="comma-separated, from: " + ", ".join(_expression_quantities("frictionless"))
+                         + " (default force,pressure,gap)")
     pd.add_argument("--adhesion", action="store_true", help="also the JKR-adhesive laws (Eqs. 29-36)")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text")
     common(pd, json_flag=False)
@@ -326,7 +335,8 @@ def build_parser() -> argparse.ArgumentParser:
                                     "--set fixing the rest, e.g. linecontact-sym eval 'x**2/(2*R)' pressure "
                                     "--at a=1 x=0.1,0.5 --set R=1 E_star=1 --dps 50.")
     pe.add_argument("profile", help="the profile f(x) in SymPy syntax")
-    pe.add_argument("quantity", help="one of: " + ", ".join(_EVAL_QUANTITIES))
+    pe.add_argument("quantity", help="one of: " + ", ".join(_registry()) + " (adhesive quantities "
+                                     "take gamma; a(P) quantities take P, the stable branch first)")
     pe.add_argument("--at", nargs="+", action="extend", metavar="NAME=V1,V2",
                     help="grid values, e.g. a=0.1,0.2 x=0:1:5 (LOW:HIGH:COUNT)")
     pe.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fixed values, e.g. R=1 E_star=1")

@@ -15,7 +15,8 @@ import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
 from linecontact_sym.contacts.adhesive import (AdhesiveLineContact, NoEquilibriumError, NoPullOffError,
                                       NumericValuesRequired, flat_punch_force)
-from linecontact_sym.method.derivation import verify
+from linecontact_sym.contacts.equilibria import minimum
+from linecontact_sym.method.verification import verify
 from linecontact_sym.core.errors import DomainError, LineContactError
 
 a, x, E, g, R, n, c, th, b = S.a, S.x, S.E_star, S.gamma, S.R, S.n, S.c, S.theta, S.b
@@ -249,7 +250,7 @@ def test_below_bound_structure():
     with pytest.raises(NoEquilibriumError):
         ad.half_width(2 * P_max, **vals)
     with pytest.raises(NoPullOffError):
-        ad._law(ad._numeric_values(vals), "closed").minimum(30)
+        minimum(ad._law(ad._numeric_values(vals), "closed"), 30)
 
 
 def test_gamma_critical_at_n_half():

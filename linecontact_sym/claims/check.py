@@ -830,7 +830,7 @@ def derive(claim: Claim, profile, ctx: _Context) -> Derived:
     if q in ("adhesive_force", "adhesive_pressure", "pull_off_force", "pull_off_half_width"):
         return _derive_adhesive(claim, profile, ctx)
     if q == "inverse_profile":
-        from ..contacts.frictionless import profile_from_force
+        from ..contacts.inverse import profile_from_force
         t0 = time.perf_counter()
         d = profile_from_force(claim.force_law, budget=ctx.budget)
         out = _from_derivation(d)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from .errors import LineContactError
+from .errors import DomainError, LineContactError
 
 
 def to_basic(value) -> sp.Basic:
@@ -67,6 +67,32 @@ def to_mpf(v):
     return mpmath.mpf(num)  # reads the Float's binary value (``_mpf_``), rounds to the context
 
 
+def real_mpf(v):
+    """A SymPy number (or Python complex) as a real mpf at the current
+    precision; a value with a non-negligible imaginary part raises
+    :class:`~linecontact_sym.core.errors.DomainError` ("complex here")."""
+    if isinstance(v, complex):
+        if abs(v.imag) > 1e-12 * max(abs(v.real), 1e-300):
+            raise DomainError(f"the quantity is complex here: {v}")
+        return mpmath.mpf(v.real)
+    if isinstance(v, (mpmath.mpf, int, float)):
+        return to_mpf(v)
+    if isinstance(v, mpmath.mpc):
+        if abs(v.imag) > abs(v.real) * mpmath.mpf(10)**(-mpmath.mp.dps + 3):
+            raise DomainError(f"the quantity is complex here: {v}")
+        return +v.real
+    v = to_basic(v)
+    num = v if v.is_Float else sp.N(v, mpmath.mp.dps + 5)
+    if num.is_Float:
+        return mpmath.mpf(num)
+    re, im = num.as_real_imag()
+    if not (re.is_Float or re == 0) or not (im.is_Float or im == 0):
+        raise DomainError(f"the quantity is not a number here: {v}")
+    if abs(im) > abs(re) * sp.Float(10)**(-mpmath.mp.dps + 3):
+        raise DomainError(f"the quantity is complex here: {v}")
+    return mpmath.mpf(re) if re != 0 else mpmath.mpf(0)
+
+
 def float_values(vals: dict, digits: int) -> dict:
     """Exact non-integer numbers as Floats of ``digits`` digits, for
     substitution into expressions: an exact Rational under a symbolic exponent
@@ -81,4 +107,4 @@ def float_values(vals: dict, digits: int) -> dict:
     return out
 
 
-__all__ = ["to_basic", "rational", "to_mpf", "float_values"]
+__all__ = ["to_basic", "rational", "to_mpf", "real_mpf", "float_values"]

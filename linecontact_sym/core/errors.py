@@ -31,6 +31,18 @@ class DivergentIntegralError(LineContactError, ValueError):
     """A defining integral of the method diverges for this profile."""
 
 
+class NoPullOffError(DomainError):
+    """P(a) has no finite (negative) minimum: no finite tensile pull-off."""
+
+
+class NoEquilibriumError(DomainError):
+    """No equilibrium half-width at the requested load (below the pull-off force)."""
+
+
+class NumericValuesRequired(DomainError):
+    """The quantity has no closed form; a number needs values of every parameter."""
+
+
 class VerificationError(LineContactError):
     """A closed form disagreed with the independent quadrature of its defining integral."""
 
@@ -43,4 +55,4 @@ class ClaimError(LineContactError, ValueError):
     """A claim (file or command line) is malformed or unsafe."""
 
 
-__all__ = [name for name in dir() if name.endswith("Error") or name == "BudgetExceeded"]
+__all__ = [name for name in dir() if name.endswith("Error") or name in ("BudgetExceeded", "NumericValuesRequired")]

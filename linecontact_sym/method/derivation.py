@@ -1,10 +1,14 @@
 """Derivations: a closed form (or an honest unevaluated integral) together with
 how it was obtained, where it holds and how it was verified.
+
+:func:`integrate` is the dispatcher over the rules of :mod:`.rules`;
+:func:`derive` carries one transform all the way: rules under the time
+budget, tidying, verification against the independent reference, and the
+honest fallback (the unevaluated integral with a high-precision evaluator)
+when nothing closes or a closed form fails its check.
 """
 from __future__ import annotations
 
-import math
-import random
 import time
 from dataclasses import dataclass, field
 from typing import Callable
@@ -12,42 +16,16 @@ from typing import Callable
 import mpmath
 import sympy as sp
 
-from ..parsing import to_sympy
 from ..core import symbols as S
 from ..core.budget import run_with_budget
+from ..core.conversion import float_values, real_mpf
 from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError
-from .rules import NotApplicable
+from ..parsing import to_sympy
+from .rules import RULES, NotApplicable, Problem, Step
+from .verification import VerificationRecord, verify
 
-#: digits every closed form must reproduce at every verification point
-REQUIRED_DIGITS = 30
-#: working precision of the reference quadratures
-VERIFY_DPS = 45
-#: wall-clock budget of one verification (quadratures at all points), seconds
-VERIFY_BUDGET = 120.0
-
-
-@dataclass(frozen=True)
-class VerificationRecord:
-    """Agreement of a closed form with the independent quadrature of its
-    defining integral."""
-
-    points: tuple            # parameter points (dicts of Symbol -> Rational)
-    digits: tuple            # agreeing significant digits at each point
-    dps: int                 # working precision of the reference
-    reference: str           # how the reference was computed
-    required: int = REQUIRED_DIGITS
-
-    @property
-    def min_digits(self) -> float:
-        return min(self.digits) if self.digits else 0.0
-
-    @property
-    def passed(self) -> bool:
-        return bool(self.digits) and self.min_digits >= self.required
-
-    def __str__(self):
-        return (f"verified at {len(self.points)} random admissible points against "
-                f"{self.reference} ({self.dps} digits): >= {self.min_digits:.1f} digits agree")
+#: the rule name of a result without closed form
+FALLBACK = "numeric_fallback"
 
 
 @dataclass
@@ -59,34 +37,50 @@ class Derivation:
     quantity : str      'force', 'pressure', 'gap', 'profile', 'half_width', ...
     expr : sympy.Expr   the closed form, or the unevaluated defining ``Integral``
     closed_form : bool  False when no closed form was found (``expr`` is an Integral)
-    method : str        the strategy that produced ``expr``
+    step : Step         the record of the rule that produced ``expr`` (its name,
+                        ``step.rule``, and remarks, ``step.notes``); a
+                        ``numeric_fallback`` step when there is no closed form
     conditions : tuple  SymPy relations under which ``expr`` holds
     verification : VerificationRecord or None
-    seconds : float     derivation time (strategies + verification)
+    seconds : float     derivation time (rules, tidying and verification)
     notes : tuple       remarks (e.g. where the paper's printed form differs)
     reference : callable(values: dict, dps: int) -> mpf
                         high-precision evaluation of the defining integral
+    variables : tuple   the symbols a number needs (besides those of ``expr``)
+    attempts : tuple    (rule, why it gave no result) for the rules tried before
     """
 
     quantity: str
     expr: sp.Expr
     closed_form: bool
-    method: str
+    step: Step
     conditions: tuple = ()
     verification: VerificationRecord | None = None
     seconds: float = 0.0
     notes: tuple = ()
     reference: Callable | None = field(default=None, repr=False)
     variables: tuple = ()
+    attempts: tuple = ()
+
+    @property
+    def rule(self) -> str:
+        """Name of the rule (or procedure) that produced ``expr``."""
+        return self.step.rule
+
+    @property
+    def method(self) -> str:
+        """How ``expr`` was obtained, for people: 'rule: notes'."""
+        return self.step.describe()
 
     def evalf(self, dps: int = 30, **values):
         """Evaluate at a point (keyword arguments by symbol name) with ``dps``
-        digits: the closed form where there is one, else the quadrature."""
-        vals = _values_by_name(self.variables_all, values)
+        digits: the closed form where there is one, else the reference
+        (high-precision quadrature of the defining integral)."""
+        vals = values_by_name(self.variables_all, values)
         if self.closed_form:
             with mpmath.workdps(dps):
-                v = sp.N(self.expr.xreplace(_floats(vals, dps + 20)), dps + 5)
-                return _to_mpf(v)
+                v = sp.N(self.expr.xreplace(float_values(vals, dps + 20)), dps + 5)
+                return real_mpf(v)
         return self.reference(vals, dps)
 
     @property
@@ -118,7 +112,14 @@ class Derivation:
         return self.summary()
 
 
-def _values_by_name(symbols, values):
+def fallback_step(why: str = "no closed form found") -> Step:
+    """The step record of a result without closed form."""
+    return Step(FALLBACK, sp.S.Zero, (), (why,))
+
+
+def values_by_name(symbols, values):
+    """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
+    floats become exact rationals of their binary value's shortest decimal."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
@@ -130,29 +131,6 @@ def _values_by_name(symbols, values):
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
     return out
-
-
-def _floats(vals: dict, digits: int) -> dict:
-    """Exact values as Floats of ``digits`` digits: an exact Rational under a
-    symbolic exponent makes SymPy factor huge integers (minutes); a Float
-    with guard digits gives the same value to the precision asked."""
-    return {k: (sp.Float(v, digits) if isinstance(v, sp.Rational) and not v.is_Integer else v)
-            for k, v in vals.items()}
-
-
-def _to_mpf(v):
-    v = complex(v) if not v.is_real and v.is_number else v
-    if isinstance(v, complex):
-        if abs(v.imag) > 1e-12 * max(abs(v.real), 1e-300):
-            raise DomainError(f"the quantity is complex here: {v}")
-        return mpmath.mpf(v.real)
-    try:
-        return mpmath.mpf(str(v)) if v.is_Float else mpmath.mpf(sp.N(v, mpmath.mp.dps + 5))
-    except TypeError:
-        re, im = sp.N(v, mpmath.mp.dps + 5).as_real_imag()
-        if abs(im) > abs(re) * sp.Float(10)**(-mpmath.mp.dps + 3):
-            raise DomainError(f"the quantity is complex here: {v}")
-        return mpmath.mpf(str(re))
 
 
 # ------------------------------------------------------------------ tidy
@@ -183,6 +161,8 @@ def _solve_for_a(cond):
 
 
 def tidy_conditions(conds) -> tuple:
+    """Simplify convergence conditions, solve monomials in a for a, drop the
+    true ones; a condition that never holds means the integral diverges."""
     out = []
     for c in conds:
         try:
@@ -198,122 +178,70 @@ def tidy_conditions(conds) -> tuple:
     return tuple(out)
 
 
-def try_strategies(strategies, args, budget: float):
-    """Try each strategy in order, each under what remains of ``budget``.
-
-    Returns ``(expr, conditions, notes, name)`` of the first success, or
-    ``(None, (), [reasons], None)``."""
-    reasons = []
+# ------------------------------------------------------------------ dispatch
+def integrate(problem: Problem, budget: float, rules=None):
+    """Try the rules of ``problem.transform`` in order, each under what
+    remains of ``budget`` seconds; a rule whose ``applies()`` says no is
+    skipped at once.  Returns ``(step, attempts)``: the tidied
+    :class:`~.rules.Step` of the first success (or None) and the list of
+    ``(rule name, reason)`` of the rules that gave nothing.
+    :class:`~linecontact_sym.core.errors.DivergentIntegralError` propagates."""
+    attempts = []
     deadline = time.monotonic() + budget
-    for strat in strategies:
+    for rule in (RULES[problem.transform] if rules is None else rules):
+        why = rule.applies(problem)
+        if why is not None:
+            attempts.append((rule.name, f"not applicable: {why}"))
+            continue
         left = deadline - time.monotonic()
         if left <= 0.05:
-            reasons.append(f"{strat.__name__}: budget used up")
+            attempts.append((rule.name, "budget used up"))
             break
         try:
-            expr, conds, notes = run_with_budget(strat, *args, seconds=left)
+            step = run_with_budget(rule.run, problem, seconds=left)
         except NotApplicable as exc:
-            reasons.append(f"{strat.__name__}: {exc}")
+            attempts.append((rule.name, f"not applicable: {exc}"))
             continue
         except BudgetExceeded:
-            reasons.append(f"{strat.__name__}: no result within {budget:g} s")
+            attempts.append((rule.name, f"no result within {budget:g} s"))
             continue
         except DivergentIntegralError:
             raise
-        except Exception as exc:  # a SymPy failure inside a strategy
-            reasons.append(f"{strat.__name__}: {type(exc).__name__}: {exc}")
+        except Exception as exc:  # a SymPy failure inside a rule
+            attempts.append((rule.name, f"{type(exc).__name__}: {exc}"))
             continue
         left = max(deadline - time.monotonic(), 1.0)
         try:
-            expr = run_with_budget(tidy, expr, seconds=min(left, 15.0))
+            expr = run_with_budget(tidy, step.expr, seconds=min(left, 15.0))
         except Exception:
-            expr = sp.hyperexpand(expr)
-        try:
-            conds = tidy_conditions(conds)
-        except DivergentIntegralError:
-            raise
-        return expr, conds, notes, strat.__name__
-    return None, (), reasons, None
+            expr = sp.hyperexpand(step.expr)
+        return Step(step.rule, expr, tidy_conditions(step.conditions), step.notes), attempts
+    return None, attempts
 
 
-# ------------------------------------------------------------------ verification
-def _holds(conds, vals) -> bool:
-    for c in conds:
-        v = c.xreplace(vals)
-        try:
-            v = bool(v) if v in (sp.true, sp.false) else bool(sp.simplify(v))
-        except TypeError:
-            return False
-        if not v:
-            return False
-    return True
-
-
-def digits_agreeing(val, ref, dps=None) -> float:
-    """Agreeing significant digits of ``val`` and ``ref`` (capped at ``dps``,
-    default the current working precision; a reference below 10**(-dps/2)
-    is compared absolutely)."""
-    dps = mpmath.mp.dps if dps is None else dps
-    with mpmath.workdps(dps):
-        err = abs(val - ref)
-        if err == 0:
-            return float(dps)
-        scale = max(abs(ref), mpmath.mpf(10)**(-dps // 2))
-        d = float(-mpmath.log10(err / scale))
-    return 0.0 if math.isnan(d) else min(d, float(dps))
-
-
-def verify(expr, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
-           dps: int = VERIFY_DPS, reference_name: str = "mpmath quadrature",
-           budget: float = VERIFY_BUDGET) -> VerificationRecord:
-    """Compare ``expr`` with ``reference(values, dps)`` at ``n_points`` points
-    drawn by ``sampler(rng)`` (dicts Symbol -> Rational) where ``conditions`` hold.
-
-    Runs under ``budget`` seconds; a verification that does not finish is
-    returned as a record with no points (``passed`` is False)."""
-    return verify_many({"_": expr}, lambda vals, d: {"_": reference(vals, d)}, sampler, conditions,
-                       n_points, seed, dps, reference_name, budget)["_"]
-
-
-def verify_many(exprs: dict, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
-                dps: int = VERIFY_DPS, reference_name="mpmath quadrature",
-                budget: float = VERIFY_BUDGET) -> dict:
-    """:func:`verify` for several closed forms sharing one (expensive)
-    reference: ``reference(values, dps)`` returns a dict name -> mpf; the
-    same points are used for all.  ``reference_name`` may be a dict too.
-    Returns name -> :class:`VerificationRecord`."""
-    def name(k):
-        return reference_name[k] if isinstance(reference_name, dict) else reference_name
-    try:
-        return run_with_budget(_verify, exprs, reference, sampler, conditions, n_points, seed, dps,
-                               name, seconds=budget)
-    except BudgetExceeded:
-        return {k: VerificationRecord((), (), dps, name(k) + f" (did not finish in {budget:g} s)")
-                for k in exprs}
-
-
-def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
-    rng = random.Random(seed)
-    points, digits = [], {k: [] for k in exprs}
-    tries = 0
-    while len(points) < n_points and tries < 20 * n_points:
-        tries += 1
-        vals = sampler(rng)
-        if vals is None or not _holds(conditions, vals):
-            continue
-        try:
-            refs = reference(vals, dps)
-        except (ZeroDivisionError, ValueError, DomainError):
-            continue
-        if any(not mpmath.isfinite(r) or isinstance(r, mpmath.mpc) for r in refs.values()):
-            continue
-        points.append(vals)
-        fvals = _floats(vals, dps + 30)
-        for k, expr in exprs.items():
-            with mpmath.workdps(dps):
-                try:
-                    val = _to_mpf(sp.N(expr.xreplace(fvals), dps + 10))
-                except (DomainError, TypeError, ValueError):
-                    val = mpmath.mpf("nan")
-                digits[k].append(digits_agreeing(val, refs[k], dps))
-    return {k: VerificationRecord(tuple(points), tuple(digits[k]), dps, name(k)) for k in exprs}
+def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.Expr, budget: float,
+           check: bool = True, points: int = 5, notes=(), variables=(), t0=None) -> Derivation:
+    """One transform carried out: :func:`integrate`, then verification of the
+    closed form against ``reference`` at ``points`` points drawn by
+    ``sampler`` (fewer than the required digits anywhere: the closed form is
+    discarded and the note says so), else the ``fallback`` (the unevaluated
+    defining integral, evaluated by ``reference``)."""
+    t0 = time.perf_counter() if t0 is None else t0
+    step, attempts = integrate(problem, budget)
+    rec = None
+    extra = []
+    if step is not None and check:
+        rec = verify(step.expr, reference, sampler, step.conditions, n_points=points,
+                     reference_name=f"mpmath quadrature of the defining integral ({quantity})")
+        if not rec.passed:
+            attempts.append((step.rule, f"closed form FAILED verification ({rec.min_digits:.1f} digits): "
+                                        f"{step.expr}"))
+            extra.append(f"closed form from {step.rule} FAILED verification ({rec.min_digits:.1f} digits); "
+                         f"returned unevaluated: {step.expr}")
+            step = None
+    if step is None:
+        reasons = tuple(f"{r}: {why}" for r, why in attempts)
+        return Derivation(quantity, fallback, False, fallback_step(), (), rec, time.perf_counter() - t0,
+                          tuple(extra) + reasons + tuple(notes), reference, tuple(variables), tuple(attempts))
+    return Derivation(quantity, step.expr, True, step, step.conditions, rec, time.perf_counter() - t0,
+                      tuple(notes), reference, tuple(variables), tuple(attempts))

@@ -1,13 +1,26 @@
-"""Integration strategies: each a small named rule that either produces a
-closed form for one transform or says it does not apply.
+"""Integration rules: each a small named object that turns one transform of
+the method (an "integral to solve") into a closed form, or says at once why
+it cannot.
 
-Modelled on SymPy's ``manualintegrate``: every strategy is a frozen dataclass
-with a ``name`` and a ``run`` method; :func:`derive_closed_form` (in
-``derivation``) tries them in order, each under the time budget, and records
-which one produced the result.
+Modelled on SymPy's ``manualintegrate``: a rule is a class whose docstring is
+its formula; ``applies(problem)`` is a cheap test that returns ``None`` when
+the rule may apply and otherwise the reason it does not (so a rule that
+cannot work costs no budget); ``run(problem)`` returns a :class:`Step`, the
+record of what was done (data, not a string), or raises
+:class:`NotApplicable` when it finds out late that it does not apply.  The
+dispatcher (:func:`linecontact_sym.method.derivation.integrate`) tries the
+rules of a transform in order, each under what remains of the time budget.
 
-A strategy returns ``(expr, conditions, notes)``: the raw closed form, a list
-of SymPy relations under which it holds, and remarks for the record.
+A :class:`Problem` names the transform (Popov 2017, notation of
+:mod:`~linecontact_sym.method.transforms`):
+
+``force``     P(a) = E* int_0^a t f'(t) / sqrt(a^2 - t^2) dt            (Eq. 10*)
+``pressure``  p(x; a) = (1/pi) int_x^a P'(s) / sqrt(s^2 - x^2) ds          (Eq. 12)
+``gap``       g(x; a) = f(x) - (2/(pi E*)) int_0^a acosh(x/s) P'(s) ds   (Eqs. 3/5)
+``profile``   f(a) = (2a/(pi E*)) int_0^a P(s) / (s sqrt(a^2 - s^2)) ds   (Eq. 9)
+
+Adding a strategy is one class here plus its unit test, and one entry in
+:data:`RULES`.
 """
 from __future__ import annotations
 
@@ -20,11 +33,62 @@ from ..core.errors import DivergentIntegralError
 from .hyperseries import NotDecomposable, beta_kernel_sum, decompose
 from .transforms import s, t
 
+TRANSFORMS = ("force", "pressure", "gap", "profile")
+
 
 class NotApplicable(Exception):
-    """The strategy does not apply to this input (try the next one)."""
+    """The rule does not apply to this problem (the dispatcher tries the next one)."""
 
 
+@dataclass(frozen=True)
+class Problem:
+    """One transform to carry out: ``transform`` is one of :data:`TRANSFORMS`;
+    ``profile`` the :class:`~linecontact_sym.method.profile.Profile` (force,
+    pressure: its breakpoints, gap: f(x)); ``force_law`` P(a) for the
+    pressure, the gap and the inverse map (Eq. 9)."""
+
+    transform: str
+    profile: object = None
+    force_law: sp.Expr | None = None
+
+    def __post_init__(self):
+        if self.transform not in TRANSFORMS:
+            raise ValueError(f"unknown transform {self.transform!r}; one of {TRANSFORMS}")
+
+
+@dataclass(frozen=True)
+class Step:
+    """The record of a successful rule: the closed form ``expr``, the
+    relations under which it holds, remarks, and the rule's name."""
+
+    rule: str
+    expr: sp.Expr
+    conditions: tuple = ()
+    notes: tuple = ()
+
+    def describe(self) -> str:
+        """'rule: note; note' (for people; programs read the fields)."""
+        return self.rule + (": " + "; ".join(self.notes) if self.notes else "")
+
+
+class Rule:
+    """Base of the integration rules (see the module docstring)."""
+
+    name = "rule"
+    transform = ""
+
+    def applies(self, problem: Problem) -> str | None:
+        """``None`` if the rule may apply, else the reason it does not (cheap)."""
+        return None
+
+    def run(self, problem: Problem) -> Step:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def __repr__(self):
+        return f"<rule {self.name}>"
+
+
+# ------------------------------------------------------------------ helpers
 def _no_integral(expr):
     if expr.has(sp.Integral) or expr.has(sp.nan) or expr.has(sp.zoo):
         raise NotApplicable("SymPy left the integral unevaluated")
@@ -42,102 +106,122 @@ def _power_terms(expr, var):
     return [(T.coef, T.mu) for T in terms]
 
 
+def _has_piecewise(problem):
+    return any(e is not None and e.has(sp.Piecewise)
+               for e in (problem.force_law, problem.profile.expr if problem.profile is not None else None))
+
+
+def beta_termwise(g, var, rho, sigma, prefactor, rule) -> Step:
+    """prefactor * int_0^a var**rho (a^2 - var^2)**sigma g(var) dvar, termwise
+    over the hypergeometric decomposition of g (see :mod:`.hyperseries`)."""
+    conds: list = []
+    try:
+        terms = decompose(g, var)
+    except NotDecomposable as exc:
+        raise NotApplicable(str(exc))
+    total = sp.Add(*[beta_kernel_sum(T, rho, sigma, S.a, conds) for T in terms])
+    kind = "power-law termwise (Beta integrals, Z_n)" if all(T.is_power for T in terms) \
+        else "hypergeometric termwise (Beta kernel) + hyperexpand"
+    return Step(rule, prefactor * total, tuple(conds), (kind,))
+
+
 # ------------------------------------------------------------------ force (10*)
-@dataclass(frozen=True)
-class BetaTermwise:
-    """Termwise Beta-kernel integration of a hypergeometric decomposition:
-    power laws give Popov's Z_n (Eqs. 16-17), binomial/exponential/trig/Bessel
-    factors a ``hyper`` that ``hyperexpand`` may turn into K, E, Bessel ..."""
+class ForceTermwise(Rule):
+    """P(a) = E* sum_k int_0^a t (a^2 - t^2)^(-1/2) T_k(t) dt over the terms
+    T_k = c x^mu pFq(w x^q) of f'(x): each a Beta integral, so a ``hyper``
+    with Gauss-multiplied parameters; power laws give Popov's Z_n (Eqs. 16-17),
+    binomials/exp/trig/Bessel factors what ``hyperexpand`` finds (K, E, I_1 ...)."""
 
-    rho: int
-    sigma: sp.Rational
-    name: str = "hypergeometric termwise (Beta kernel)"
+    name, transform = "force_termwise", "force"
 
-    def run(self, g, var, prefactor):
-        conds: list = []
-        try:
-            terms = decompose(g, var)
-        except NotDecomposable as exc:
-            raise NotApplicable(str(exc))
-        total = sp.Add(*[beta_kernel_sum(T, self.rho, self.sigma, S.a, conds) for T in terms])
-        kind = "power-law termwise (Beta integrals, Z_n)" if all(T.is_power for T in terms) \
-            else "hypergeometric termwise (Beta kernel) + hyperexpand"
-        return prefactor * total, conds, [kind]
+    def applies(self, problem):
+        return "piecewise profile" if problem.profile.is_piecewise else None
+
+    def run(self, problem):
+        return beta_termwise(problem.profile.pieces[0].derivative, S.x, 1, sp.Rational(-1, 2), S.E_star, self.name)
 
 
-def force_termwise(profile):
-    if profile.is_piecewise:
-        raise NotApplicable("piecewise profile")
-    return BetaTermwise(1, sp.Rational(-1, 2)).run(profile.pieces[0].derivative, S.x, S.E_star)
+class ForcePiecewise(Rule):
+    """Eq. (10*) piece by piece with SymPy's definite integration: for a in
+    the J-th piece, P(a) = E* [sum_{j<J} int_{x_j}^{x_{j+1}} + int_{x_J}^a]
+    t f_j'(t)/sqrt(a^2 - t^2) dt; the result is a Piecewise in a."""
+
+    name, transform = "force_piecewise", "force"
+
+    def applies(self, problem):
+        return None if problem.profile.is_piecewise else "profile is not piecewise"
+
+    def run(self, problem):
+        branches = []
+        done = sp.S.Zero  # contribution of complete pieces
+        for pc in problem.profile.pieces:
+            integrand = sp.simplify(t * pc.derivative.subs(S.x, t) / sp.sqrt(S.a**2 - t**2))
+            upper = _no_integral(sp.integrate(integrand, (t, pc.lo, S.a))) if integrand != 0 else sp.S.Zero
+            cond = sp.Le(S.a, pc.hi) if pc.hi != sp.oo else sp.true
+            branches.append((S.E_star * (done + upper), cond))
+            if pc.hi != sp.oo and integrand != 0:
+                done += _no_integral(sp.integrate(integrand, (t, pc.lo, pc.hi)))
+        return Step(self.name, sp.Piecewise(*branches), (), ("piecewise, SymPy definite integrals per piece",))
 
 
-def force_piecewise(profile):
-    """Eq. (10*) piece by piece with SymPy's definite integration:
-    P(a) = sum over pieces below a; a Piecewise in a."""
-    if not profile.is_piecewise:
-        raise NotApplicable("profile is not piecewise")
-    branches = []
-    done = sp.S.Zero  # contribution of complete pieces
-    for pc in profile.pieces:
-        integrand = sp.simplify(t * pc.derivative.subs(S.x, t) / sp.sqrt(S.a**2 - t**2))
-        upper = _no_integral(sp.integrate(integrand, (t, pc.lo, S.a))) if integrand != 0 else sp.S.Zero
-        cond = sp.Le(S.a, pc.hi) if pc.hi != sp.oo else sp.true
-        branches.append((S.E_star * (done + upper), cond))
-        if pc.hi != sp.oo and integrand != 0:
-            done += _no_integral(sp.integrate(integrand, (t, pc.lo, pc.hi)))
-    return sp.Piecewise(*branches), [], ["piecewise, SymPy definite integrals per piece"]
+class ForceSympy(Rule):
+    """Eq. (10*) by ``sympy.integrate`` (a single analytic piece)."""
 
+    name, transform = "force_sympy", "force"
 
-def force_sympy(profile):
-    if profile.is_piecewise:
-        raise NotApplicable("piecewise profile")
-    integrand = t * profile.pieces[0].derivative.subs(S.x, t) / sp.sqrt(S.a**2 - t**2)
-    res = _no_integral(sp.integrate(integrand, (t, 0, S.a), conds="none"))
-    return S.E_star * res, [], ["SymPy integrate"]
+    def applies(self, problem):
+        return "piecewise profile" if problem.profile.is_piecewise else None
 
-
-FORCE_STRATEGIES = (force_termwise, force_piecewise, force_sympy)
+    def run(self, problem):
+        integrand = t * problem.profile.pieces[0].derivative.subs(S.x, t) / sp.sqrt(S.a**2 - t**2)
+        res = _no_integral(sp.integrate(integrand, (t, 0, S.a), conds="none"))
+        return Step(self.name, S.E_star * res, (), ("SymPy integrate",))
 
 
 # ------------------------------------------------------------------ pressure (12)
-def pressure_termwise(P, profile=None):
-    """Each power term C a**n of P gives, by the Euler integral,
-    (n C / pi) a**(n-1) sqrt(1 - xi**2) 2F1(1 - n/2, 1; 3/2; 1 - xi**2), xi = x/a."""
-    if P.has(sp.Piecewise):
-        raise NotApplicable("piecewise force law")
-    terms = _power_terms(sp.diff(P, S.a).subs(S.a, s), s)
-    xi2 = S.x**2 / S.a**2
-    out = sp.Add(*[C * S.a**m * sp.sqrt(1 - xi2) * sp.hyper([(1 - m) / 2, 1], [sp.Rational(3, 2)], 1 - xi2)
-                   for C, m in terms]) / sp.pi
-    return out, [sp.Lt(S.x, S.a)], ["power-law termwise (Euler integral, 2F1)"]
+class PressureTermwise(Rule):
+    """Each power term C a^n of P gives, by the Euler integral,
+    (n C / pi) a^(n-1) sqrt(1 - xi^2) 2F1(1 - n/2, 1; 3/2; 1 - xi^2), xi = x/a."""
+
+    name, transform = "pressure_termwise", "pressure"
+
+    def applies(self, problem):
+        return "piecewise force law" if problem.force_law.has(sp.Piecewise) else None
+
+    def run(self, problem):
+        terms = _power_terms(sp.diff(problem.force_law, S.a).subs(S.a, s), s)
+        xi2 = S.x**2 / S.a**2
+        out = sp.Add(*[C * S.a**m * sp.sqrt(1 - xi2) * sp.hyper([(1 - m) / 2, 1], [sp.Rational(3, 2)], 1 - xi2)
+                       for C, m in terms]) / sp.pi
+        return Step(self.name, out, (sp.Lt(S.x, S.a),), ("power-law termwise (Euler integral, 2F1)",))
 
 
-def _segments(profile):
-    """Breakpoints x_1 < x_2 < ... of the profile (symbolic)."""
-    return list(profile.breakpoints) if profile is not None else []
+class PressureSympy(Rule):
+    """Eq. (12) by SymPy's definite integration, per (a-interval, x-interval)
+    of the profile's breakpoints x_1 < x_2 < ...: a Piecewise in a and x."""
 
+    name, transform = "pressure_sympy", "pressure"
 
-def pressure_sympy(P, profile=None):
-    """Eq. (12) by SymPy's definite integration, per (a-interval, x-interval)."""
-    bps = _segments(profile)
-    dP_of = sp.diff(P, S.a)
-    branches = []
-    edges = [sp.S.Zero] + bps + [sp.oo]
-    for J in range(len(edges) - 1):  # a in [edges[J], edges[J+1])
-        for I in range(J + 1):       # x in [edges[I], edges[I+1])
-            total = sp.S.Zero
-            for j in range(I, J + 1):
-                lo = S.x if j == I else edges[j]
-                hi = S.a if j == J else edges[j + 1]
-                dPj = _piece_for(dP_of, j, bps).subs(S.a, s)
-                if dPj == 0:
-                    continue
-                total += _no_integral(sp.integrate(dPj / sp.sqrt(s**2 - S.x**2), (s, lo, hi)))
-            cond = sp.And(sp.Lt(S.a, edges[J + 1]) if edges[J + 1] != sp.oo else sp.true,
-                          sp.Lt(S.x, edges[I + 1]) if I < J else sp.true)
-            branches.append((total / sp.pi, cond))
-    expr = branches[0][0] if len(branches) == 1 else sp.Piecewise(*branches)
-    return expr, [sp.Lt(S.x, S.a)], ["SymPy definite integration of Eq. (12)"]
+    def run(self, problem):
+        bps = list(problem.profile.breakpoints) if problem.profile is not None else []
+        dP_of = sp.diff(problem.force_law, S.a)
+        branches = []
+        edges = [sp.S.Zero] + bps + [sp.oo]
+        for J in range(len(edges) - 1):  # a in [edges[J], edges[J+1])
+            for I in range(J + 1):       # x in [edges[I], edges[I+1])
+                total = sp.S.Zero
+                for j in range(I, J + 1):
+                    lo = S.x if j == I else edges[j]
+                    hi = S.a if j == J else edges[j + 1]
+                    dPj = _piece_for(dP_of, j, bps).subs(S.a, s)
+                    if dPj == 0:
+                        continue
+                    total += _no_integral(sp.integrate(dPj / sp.sqrt(s**2 - S.x**2), (s, lo, hi)))
+                cond = sp.And(sp.Lt(S.a, edges[J + 1]) if edges[J + 1] != sp.oo else sp.true,
+                              sp.Lt(S.x, edges[I + 1]) if I < J else sp.true)
+                branches.append((total / sp.pi, cond))
+        expr = branches[0][0] if len(branches) == 1 else sp.Piecewise(*branches)
+        return Step(self.name, expr, (sp.Lt(S.x, S.a),), ("SymPy definite integration of Eq. (12)",))
 
 
 def _piece_for(expr, J, bps):
@@ -157,55 +241,78 @@ def _piece_for(expr, J, bps):
     raise NotApplicable("could not select the branch of the force law")
 
 
-PRESSURE_STRATEGIES = (pressure_termwise, pressure_sympy)
-
-
 # ------------------------------------------------------------------ gap (3/5)
-def gap_termwise(P, profile_expr):
-    """Each power term C a**n of P gives, after integrating by parts,
-    (2C/(pi E*)) [a**n acosh(x/a) + (a**n/n) 2F1(1/2, n/2; n/2 + 1; a**2/x**2)]."""
-    if P.has(sp.Piecewise) or profile_expr.has(sp.Piecewise):
-        raise NotApplicable("piecewise")
-    terms = _power_terms(P, S.a)
-    inner = sp.Add(*[C * (S.a**m * sp.acosh(S.x / S.a)
-                          + S.a**m / m * sp.hyper([sp.S.Half, m / 2], [m / 2 + 1], S.a**2 / S.x**2))
-                     for C, m in terms])
-    return profile_expr - 2 / (sp.pi * S.E_star) * inner, [sp.Gt(S.x, S.a)], \
-        ["power-law termwise (integration by parts, 2F1)"]
+class GapTermwise(Rule):
+    """Each power term C a^n of P gives, after integrating by parts,
+    (2C/(pi E*)) [a^n acosh(x/a) + (a^n/n) 2F1(1/2, n/2; n/2 + 1; a^2/x^2)]."""
+
+    name, transform = "gap_termwise", "gap"
+
+    def applies(self, problem):
+        return "piecewise" if _has_piecewise(problem) else None
+
+    def run(self, problem):
+        terms = _power_terms(problem.force_law, S.a)
+        inner = sp.Add(*[C * (S.a**m * sp.acosh(S.x / S.a)
+                              + S.a**m / m * sp.hyper([sp.S.Half, m / 2], [m / 2 + 1], S.a**2 / S.x**2))
+                         for C, m in terms])
+        expr = problem.profile.expr - 2 / (sp.pi * S.E_star) * inner
+        return Step(self.name, expr, (sp.Gt(S.x, S.a),), ("power-law termwise (integration by parts, 2F1)",))
 
 
-def gap_sympy(P, profile_expr):
-    if P.has(sp.Piecewise):
-        raise NotApplicable("piecewise force law")
-    dP = sp.diff(P, S.a).subs(S.a, s)
-    I = _no_integral(sp.integrate(sp.acosh(S.x / s) * dP, (s, 0, S.a)))
-    return profile_expr - 2 / (sp.pi * S.E_star) * I, [sp.Gt(S.x, S.a)], ["SymPy integrate"]
+class GapSympy(Rule):
+    """The gap integral by ``sympy.integrate`` (an analytic force law)."""
 
+    name, transform = "gap_sympy", "gap"
 
-GAP_STRATEGIES = (gap_termwise, gap_sympy)
+    def applies(self, problem):
+        return "piecewise force law" if problem.force_law.has(sp.Piecewise) else None
+
+    def run(self, problem):
+        dP = sp.diff(problem.force_law, S.a).subs(S.a, s)
+        I = _no_integral(sp.integrate(sp.acosh(S.x / s) * dP, (s, 0, S.a)))
+        expr = problem.profile.expr - 2 / (sp.pi * S.E_star) * I
+        return Step(self.name, expr, (sp.Gt(S.x, S.a),), ("SymPy integrate",))
 
 
 # ------------------------------------------------------------------ inverse (9)
-def inverse_termwise(P):
-    if P.has(sp.Piecewise):
-        raise NotApplicable("piecewise force law")
-    g = P.subs(S.a, s)
-    try:
-        expr, conds, notes = BetaTermwise(-1, sp.Rational(-1, 2)).run(g, s, 2 * S.a / (sp.pi * S.E_star))
-    except DivergentIntegralError as exc:
-        lead = sp.limit(P, S.a, 0, "+")
-        if lead != 0:
-            raise DivergentIntegralError(
-                f"Eq. (9) diverges for the force law {P}: P(0+) = {lead}, but P(a) must vanish "
-                f"as a -> 0 ({exc})")
-        raise NotApplicable(f"termwise split diverges although the sum converges ({exc})")
-    return expr, conds, notes
+class InverseTermwise(Rule):
+    """Eq. (9) termwise: f(a) = (2a/(pi E*)) sum_k int_0^a s^-1 (a^2 - s^2)^(-1/2)
+    T_k(s) ds over the hypergeometric terms T_k of P(s) (Beta integrals)."""
+
+    name, transform = "inverse_termwise", "profile"
+
+    def applies(self, problem):
+        return "piecewise force law" if problem.force_law.has(sp.Piecewise) else None
+
+    def run(self, problem):
+        P = problem.force_law
+        try:
+            return beta_termwise(P.subs(S.a, s), s, -1, sp.Rational(-1, 2), 2 * S.a / (sp.pi * S.E_star), self.name)
+        except DivergentIntegralError as exc:
+            lead = sp.limit(P, S.a, 0, "+")
+            if lead != 0:
+                raise DivergentIntegralError(
+                    f"Eq. (9) diverges for the force law {P}: P(0+) = {lead}, but P(a) must vanish "
+                    f"as a -> 0 ({exc})")
+            raise NotApplicable(f"termwise split diverges although the sum converges ({exc})")
 
 
-def inverse_sympy(P):
-    Ps = P.subs(S.a, s)
-    I = _no_integral(sp.integrate(Ps / (s * sp.sqrt(S.a**2 - s**2)), (s, 0, S.a), conds="none"))
-    return 2 * S.a / (sp.pi * S.E_star) * I, [], ["SymPy integrate"]
+class InverseSympy(Rule):
+    """Eq. (9) by ``sympy.integrate``."""
+
+    name, transform = "inverse_sympy", "profile"
+
+    def run(self, problem):
+        Ps = problem.force_law.subs(S.a, s)
+        I = _no_integral(sp.integrate(Ps / (s * sp.sqrt(S.a**2 - s**2)), (s, 0, S.a), conds="none"))
+        return Step(self.name, 2 * S.a / (sp.pi * S.E_star) * I, (), ("SymPy integrate",))
 
 
-INVERSE_STRATEGIES = (inverse_termwise, inverse_sympy)
+#: the rules of each transform, in the order they are tried
+RULES = {
+    "force": (ForceTermwise(), ForcePiecewise(), ForceSympy()),
+    "pressure": (PressureTermwise(), PressureSympy()),
+    "gap": (GapTermwise(), GapSympy()),
+    "profile": (InverseTermwise(), InverseSympy()),
+}

@@ -146,3 +146,27 @@ def profile_quad(Pfn, breaks, values: dict, dps: int = 50):
         pts = [mpmath.mpf(0)] + [mpmath.asin(bp / A) for bp in breaks if bp < A] + [mpmath.pi / 2]
         I = quad0(lambda ph: Pfn(A * mpmath.sin(ph)) / mpmath.sin(ph), pts)
         return +(2 * I / (mpmath.pi * E))
+
+
+def mean_quad(p_of_phi, undefined=(ValueError, ZeroDivisionError)):
+    """(1/A) int_0^A p(x) dx for a pressure-like p after x = A sin(phi):
+    int_0^{pi/2} p(A sin phi) cos(phi) dphi, which removes an
+    inverse-square-root edge singularity.  ``p_of_phi`` is the mpmath callable
+    phi -> p(A sin phi); it is evaluated at doubled precision (cos(phi) -> 1
+    cancels in sqrt(A^2 - x^2) forms near phi = 0), and a node within 1e-20 of
+    an end where it is undefined (an integrable log singularity, e.g. the
+    wedge at x = 0) contributes 0."""
+    tiny = mpmath.mpf(10)**-20
+
+    def integrand(ph):
+        try:
+            with mpmath.workdps(2 * mpmath.mp.dps + 10):
+                v = p_of_phi(ph) * mpmath.cos(ph)
+                if isinstance(v, mpmath.mpc) or not mpmath.isfinite(v):
+                    raise ValueError("not finite")
+            return +v
+        except undefined:
+            if ph < tiny or mpmath.pi / 2 - ph < tiny:
+                return mpmath.mpf(0)
+            raise
+    return mpmath.quad(integrand, [0, mpmath.pi / 2])

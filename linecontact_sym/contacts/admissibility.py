@@ -1,0 +1,102 @@
+"""Where the frictionless compact-contact solution holds: the profile does
+not decrease on (0, a), the pressure is compressive inside, the gap is
+non-negative outside (no second contact)."""
+from __future__ import annotations
+
+import mpmath
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.errors import DomainError, InadmissibleProfileError
+from ..parsing import to_sympy
+
+
+def _mp_function(contact, quantity, dps):
+    cache = contact._caches()
+    key = ("mpfun", quantity, dps)
+    if key not in cache:
+        cache[key] = contact.to_numeric(quantity, backend="mpmath", dps=dps)
+    return cache[key]
+
+
+def check_admissible(contact, dps: int = 20, **values):
+    """Numerically check the assumptions of the frictionless compact-contact
+    solution at one point (a and the parameters as keywords): the profile
+    does not decrease on (0, a), p >= 0 inside and the gap >= 0 outside.
+    Raises :class:`InadmissibleProfileError` naming the broken assumption."""
+    prof = contact.profile
+    vals = {s: to_sympy(values[s.name]) for s in (S.a,) + tuple(contact.variables)}
+    A = float(vals[S.a])
+    fixed = {k: v for k, v in vals.items() if k != S.a}
+    fp = prof.mp_callable(fixed, derivative=1)
+    with mpmath.workdps(dps):
+        for i in range(1, 50):
+            xv = mpmath.mpf(A) * i / 50
+            if fp(xv) < 0:
+                raise InadmissibleProfileError(
+                    f"profile {prof.name!r} decreases at x = {float(xv):.6g} < a = {A:g}: "
+                    f"the contact is not compact there (it would open and close again)")
+        pfun = _mp_function(contact, "pressure", dps)
+        gfun = _mp_function(contact, "gap", dps)
+        kw = {k: v for k, v in values.items() if k != "x"}
+        for i in range(1, 20):
+            xv = mpmath.mpf(A) * i / 20
+            p = pfun(**kw, x=xv)
+            if p < 0:
+                raise InadmissibleProfileError(
+                    f"profile {prof.name!r}: tensile pressure p = {float(p):.3g} at "
+                    f"x = {float(xv):.4g} without adhesion; the frictionless solution does not hold")
+        # the gap on a geometric grid out to 1000 a (points where the profile
+        # is not real, e.g. beyond a cylinder's radius, are skipped)
+        for fac in (1.01, 1.1, 1.5, 2, 3, 5, 10, 30, 100, 1000):
+            try:
+                g = gfun(**kw, x=mpmath.mpf(A) * fac)
+            except (DomainError, ValueError, ZeroDivisionError):
+                continue
+            if isinstance(g, mpmath.mpc):
+                continue
+            if g < 0:
+                raise InadmissibleProfileError(
+                    f"profile {prof.name!r}: negative gap {float(g):.3g} at x = {A * fac:.4g}"
+                    f" outside the contact: a second contact opens there")
+    return True
+
+
+def admissible_range(contact, a_max: float = 100.0, rtol: float = 1e-6, **values):
+    """The half-widths 0 < a < a* for which the frictionless compact-contact
+    solution holds at the given parameters (keywords) -- within the checks of
+    :func:`check_admissible` (the gap is sampled out to 1000 a) -- found by
+    scanning it on a geometric grid up to ``a_max`` and bisecting the first
+    failure to ``rtol``.  Returns ``(a_star, reason)``; ``a_star = a_max`` and
+    ``reason = None`` when no failure was found."""
+    def ok(av):
+        try:
+            check_admissible(contact, **{**values, "a": sp.Float(av, 20)})
+            return True, None
+        except (InadmissibleProfileError, DomainError, ValueError, TypeError, ZeroDivisionError) as exc:
+            return False, str(exc)
+    grid = [a_max * 2.0**(-k) for k in range(30, -1, -1)]
+    good, bad, reason = None, None, None
+    for av in grid:
+        fine, why = ok(av)
+        if fine:
+            good = av
+        else:
+            bad, reason = av, why
+            break
+    if bad is None:
+        return a_max, None
+    if good is None:
+        raise InadmissibleProfileError(f"profile {contact.profile.name!r} is not admissible even "
+                                       f"at a = {bad:g}: {reason}")
+    while bad - good > rtol * bad:
+        mid = 0.5 * (good + bad)
+        fine, why = ok(mid)
+        if fine:
+            good = mid
+        else:
+            bad, reason = mid, why
+    return good, reason
+
+
+__all__ = ["check_admissible", "admissible_range"]

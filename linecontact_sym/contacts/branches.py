@@ -1,0 +1,277 @@
+"""Derivations of the JKR-adhesive contact beyond the force law: the
+flat-punch force (Eq. 31), the pressure (Eq. 29), the jump-in half-width and
+the equilibrium branches a(P), each verified by a route that shares nothing
+with the one that produced it."""
+from __future__ import annotations
+
+import random
+import time
+
+import mpmath
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.budget import run_with_budget
+from ..core.conversion import float_values, rational, real_mpf, to_mpf
+from ..core.errors import BudgetExceeded, DomainError, NoEquilibriumError, NoPullOffError
+from ..method.derivation import Derivation
+from ..method.transforms import mean_quad
+from ..method.rules import Step
+from ..method.verification import VERIFY_DPS, VerificationRecord, digits_agreeing, verify
+from .equilibria import equilibria, minimum, scan
+from .jkr import GAMMA_RANGE, flat_punch_force, phat_energy
+from .pull_off import NumericDerivation, sample_points, single_power, solve_load, tidy_checked
+
+_phi = sp.Symbol("phi", positive=True)
+
+
+def derive_phat(ad) -> Derivation:
+    """Eq. (31), verified against the energy balance G = gamma computed from
+    the flat-punch compliance by quadrature (Eq. 3), numerical
+    differentiation and root finding."""
+    t0 = time.perf_counter()
+    expr = flat_punch_force(ad.gamma)
+    gsyms, gexpr = ad._gsyms, ad.gamma
+
+    def sampler(rng):
+        vals = {S.a: rational(rng.uniform(0.05, 2.0)), S.E_star: rational(rng.uniform(0.5, 3.0))}
+        for gs in gsyms:
+            vals[gs] = rational(rng.uniform(*GAMMA_RANGE))
+        return float_values(vals, 80)
+
+    def reference(vals, dps):
+        return phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=True)
+    rec = None
+    if ad.contact.verify and ad.gamma != 0:
+        rec = verify(expr, reference, sampler, (), n_points=ad.contact.points,
+                     reference_name="energy release rate G = (Phat^2/2)|dC/d(2a)| = gamma of the flat punch, "
+                                    "compliance C by quadrature of Eq. (3), mpmath.diff + findroot")
+        ad._require(rec, "flat_punch_force")
+    step = Step("griffith", expr, (), ("Eq. (31): Griffith balance K_I^2/(2 E*) = gamma at the edge, "
+                                       "K_I = Phat/sqrt(pi a) (Eq. 30)",))
+    return Derivation("flat_punch_force", expr, True, step, (), rec, time.perf_counter() - t0,
+                      ("K_I = Phat/sqrt(pi*a) = sqrt(2*gamma*E_star); G = K_I^2/(2 E*) = Phat^2/(2 pi a E*)",),
+                      lambda vals, dps: phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps),
+                      (S.a, S.E_star) + tuple(sorted(gexpr.free_symbols, key=lambda s: s.name)))
+
+
+def derive_pressure(ad) -> Derivation:
+    """Eq. (29): p(x) = p0(x) - Phat/(pi sqrt(a^2 - x^2)), verified against
+    the quadrature of Eq. (12) minus the punch with Phat from the energy
+    balance, and by equilibrium: 2 int_0^a p dx = P(a) of Eq. (33)."""
+    t0 = time.perf_counter()
+    pd = ad.contact.derivation("pressure")
+    expr = pd.expr - flat_punch_force(ad.gamma) / (sp.pi * sp.sqrt(S.a**2 - S.x**2))
+    gexpr = ad.gamma
+
+    def reference(vals, dps):
+        with mpmath.workdps(dps + 10):
+            A, X = to_mpf(vals[S.a]), to_mpf(vals[S.x])
+            ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
+            return pd.reference(vals, dps) - ph / (mpmath.pi * mpmath.sqrt(A**2 - X**2))
+    rec, notes = None, list(pd.notes)
+    if pd.closed_form and ad.contact.verify:
+        rec = verify(expr, reference, ad._sampler("inside"), pd.conditions, n_points=ad.contact.points,
+                     reference_name="Eq. (12) quadrature of p0 minus the flat punch (Eq. 1) with Phat "
+                                    "from the energy balance (mpmath.diff + findroot)")
+        ad._require(rec, "pressure")
+        eq = equilibrium_digits(ad, expr)
+        notes.append(f"equilibrium: 2 int_0^a p dx (quadrature of Eq. 29) = P(a) of Eq. (33) to "
+                     f">= {eq:.1f} digits at {ad.contact.points} random points")
+    step = Step("jkr_superposition", expr, pd.conditions,
+                ("Eq. (29): p0 of the engine (" + pd.method + ") minus the pulled flat punch" if pd.closed_form
+                 else "numeric fallback: unevaluated Eq. (12) minus the flat punch",))
+    return Derivation("pressure", expr, pd.closed_form, step, pd.conditions, rec, time.perf_counter() - t0,
+                      tuple(notes), reference, (S.a, S.x) + ad.variables)
+
+
+def equilibrium_digits(ad, pexpr) -> float:
+    """min digits of int_{-a}^{a} p dx = P(a) at random points."""
+    fexpr = ad.derivation("force").expr
+    sample = ad._sampler()
+    rng = random.Random(29)
+    worst = float(VERIFY_DPS)
+    done = 0
+    while done < ad.contact.points:
+        vals = sample(rng)
+        if vals is None:
+            continue
+        with mpmath.workdps(VERIFY_DPS + 10):
+            A = to_mpf(vals[S.a])
+            # x = a sin(phi), sqrt(a^2 - x^2) = a cos(phi) (no cancellation at the edge)
+            e = pexpr.replace(lambda z: z.is_Pow and z.base == S.a**2 - S.x**2,
+                              lambda z: (S.a * sp.cos(_phi))**(2 * z.exp))
+            e = e.xreplace({S.x: S.a * sp.sin(_phi)})
+            e = e.xreplace({k: v for k, v in vals.items() if k != S.x})
+            pf = sp.lambdify(_phi, e, "mpmath")
+            I = 2 * A * mean_quad(pf)
+            ref = real_mpf(sp.N(fexpr.xreplace(vals), VERIFY_DPS + 10))
+            with mpmath.workdps(VERIFY_DPS):
+                worst = min(worst, digits_agreeing(I, ref))
+        done += 1
+    return worst
+
+
+def derive_jump_in(ad) -> Derivation:
+    """Stable root of P(a) = 0: the half-width the contact snaps to at zero
+    load; verified against the stable root of the quadrature law."""
+    t0 = time.perf_counter()
+    fd = ad.contact.derivation("force")
+    P = ad.derivation("force").expr
+    expr, notes = None, []
+    conds = list(fd.conditions)
+    single = single_power(fd.expr) if fd.closed_form else None
+    if single is not None and not single[1].is_number:
+        conds.append(sp.Gt(single[1], sp.S.Half))
+    method = "sympy.solve of P(a) = 0, stable root"
+
+    def reference(vals, dps):
+        po = ad._pull_off_reference(vals, dps)
+        roots = [r for r, st in equilibria(ad._law(vals, "quad"), 0, dps, scan_law=ad._law(vals, "closed"))
+                 if st and r > po.half_width]
+        if not roots:
+            raise NoEquilibriumError("no stable equilibrium at zero load")
+        return roots[0]
+    if fd.closed_form and not P.has(sp.Piecewise) and ad.gamma != 0:
+        if single is not None:
+            C, m = single
+            cands = [(2 * sp.pi * ad.gamma * S.E_star / C**2)**(1 / (2 * m - 1))]
+            method = "P(a) = 0 for the single power term P0 = C a**m: a_in = (2 pi gamma E*/C**2)**(1/(2m-1))"
+        else:
+            cands = []
+            try:
+                cands = run_with_budget(solve_load, P, 0, seconds=ad.contact.budget)
+            except (BudgetExceeded, NotImplementedError, ValueError, TypeError) as exc:
+                notes.append(f"sympy.solve(P = 0): {type(exc).__name__}")
+        for cand in cands:
+            if cand.has(S.a) or cand.has(sp.RootOf):
+                continue
+            try:
+                good = all(abs(sp.N(P.xreplace({**v, S.a: cand.xreplace(v)}), 50)) < sp.Float(10)**-35
+                           and sp.N(cand.xreplace(v), 50) > 0
+                           and sp.N(sp.diff(P, S.a).xreplace({**v, S.a: cand.xreplace(v)}), 30) > 0
+                           for v in sample_points(ad, conds))
+            except TypeError:
+                good = False
+            if good:
+                expr = tidy_checked(ad, cand, conds, simplify=single is None)
+                break
+    if expr is None:
+        step = Step("numeric_root", sp.Eq(P, 0), (), ("numeric: stable root of P(a) = 0",))
+        return NumericDerivation("jump_in_half_width", sp.Eq(P, 0), False, step, (), None,
+                                 time.perf_counter() - t0, tuple(notes), reference, ad.variables)
+    rec = None
+    if ad.contact.verify:
+        rec = verify(expr, reference, ad._sampler(), conds, n_points=ad.contact.points,
+                     reference_name="stable root of the quadrature force law P(a) = 0")
+        ad._require(rec, "jump_in_half_width")
+    return Derivation("jump_in_half_width", expr, True, Step("solve_load", expr, tuple(conds), (method,)),
+                      tuple(conds), rec, time.perf_counter() - t0, tuple(notes), reference, ad.variables)
+
+
+def why_no_equilibrium(law, load) -> str:
+    """Why P(a) = load has no root on the law's scan, in words."""
+    pts, edge = scan(law)
+    with mpmath.workdps(20):
+        lo = min(Pv for _, Pv, _ in pts)
+        if to_mpf(load) <= lo:
+            return "below the pull-off force (the minimum of P(a)): the surfaces separate"
+        if edge:
+            return (f"above the loads reached for a <= {mpmath.nstr(pts[-1][0], 12)}, within "
+                    f"1e-12 of the end of the profile's domain")
+        if pts[-1][2] < 0:
+            return ("above the maximum of P(a) (P decreases at large a, e.g. a power law with "
+                    "n < 1/2): the contact would spread without bound")
+        return f"above the loads reached on the search range a <= {mpmath.nstr(pts[-1][0], 6)}"
+
+
+def derive_half_widths(ad, load):
+    """(stable, unstable) Derivations of a(P): closed forms from sympy.solve
+    (under the budget), each identified with its branch at random points,
+    else the unevaluated P(a) = P with a numeric evalf."""
+    t0 = time.perf_counter()
+    fd = ad.contact.derivation("force")
+    P = ad.derivation("force").expr
+    notes, cands = [], []
+    if fd.closed_form and not P.has(sp.Piecewise) and ad.gamma != 0:
+        try:
+            cands = run_with_budget(solve_load, P, load, seconds=ad.contact.budget)
+        except BudgetExceeded:
+            notes.append(f"sympy.solve(P(a) = {load}) found nothing within {ad.contact.budget:g} s")
+        except (NotImplementedError, ValueError, TypeError) as exc:
+            notes.append(f"sympy.solve(P(a) = {load}): {type(exc).__name__}")
+    variables = (load,) + ad.variables
+
+    def ref(stable):
+        def reference(vals, dps):
+            roots = [r for r, st in equilibria(ad._law(vals, "closed"), vals[load], dps) if st == stable]
+            if not roots:
+                raise NoEquilibriumError(f"no {'stable' if stable else 'unstable'} equilibrium")
+            return roots[0]
+        return reference
+    out = []
+    po_d = ad.derivation("pull_off_force")
+    for stable in (True, False):
+        samples = branch_samples(ad, load, stable) if cands else []
+        chosen, rec = None, None
+        for cand in cands:
+            digs = []
+            for v, av in samples:
+                try:
+                    with mpmath.workdps(VERIFY_DPS):
+                        digs.append(digits_agreeing(real_mpf(sp.N(cand.xreplace(v), VERIFY_DPS + 10)), to_mpf(av)))
+                except (TypeError, ValueError, DomainError):
+                    digs.append(0.0)
+            if samples and min(digs) >= ad.contact.digits:
+                chosen = cand
+                rec = VerificationRecord(tuple(v for v, _ in samples), tuple(digs), VERIFY_DPS,
+                                         f"the sampled half-width on the {'stable' if stable else 'unstable'}"
+                                         f" branch, load = P(a) from the verified Eq. (33)")
+                break
+        q = "half_width_stable" if stable else "half_width_unstable"
+        cond = [sp.Gt(load, po_d.expr)] if po_d.closed_form else []
+        if not stable:
+            cond.append(sp.Lt(load, 0))
+        if chosen is not None:
+            expr = tidy_checked(ad, chosen, []) if sp.count_ops(chosen) < 80 else chosen
+            step = Step("solve_load", expr, tuple(cond), ("sympy.solve of P(a) = P, branch identified at random "
+                                                          "points",))
+            out.append(Derivation(q, expr, True, step, tuple(cond), rec, time.perf_counter() - t0, tuple(notes),
+                                  ref(stable), variables))
+        else:
+            step = Step("numeric_root", sp.Eq(P, load), (), (f"numeric root of P(a) = P on the "
+                                                             f"{'stable' if stable else 'unstable'} branch "
+                                                             f"(no closed form)",))
+            out.append(Derivation(q, sp.Eq(P, load), False, step, tuple(cond), None, time.perf_counter() - t0,
+                                  tuple(notes), ref(stable), variables))
+    return tuple(out)
+
+
+def branch_samples(ad, load, stable):
+    """(values incl. the load, half-width) on one branch: a = a_po * u."""
+    sample = ad._sampler()
+    rng = random.Random(31 if stable else 37)
+    out, tries = [], 0
+    while len(out) < ad.contact.points and tries < 20 * ad.contact.points:
+        tries += 1
+        v = sample(rng)
+        if v is None:
+            continue
+        try:
+            po = minimum(ad._law(v, "closed"), VERIFY_DPS)
+        except (NoPullOffError, DomainError):
+            continue
+        u = rng.uniform(1.2, 3.0) if stable else rng.uniform(0.1, 0.9)
+        with mpmath.workdps(VERIFY_DPS + 10):
+            av = rational(float(po.half_width) * u)
+            if (ad._law(v, "closed").dP(to_mpf(av)) > 0) != stable:
+                continue
+            v = {k: w for k, w in v.items() if k != S.a}
+            av = sp.Float(av, 80)
+            Lv = sp.N(ad.derivation("force").expr.xreplace({**v, S.a: av}), VERIFY_DPS + 20)
+        out.append(({**v, load: Lv}, av))
+    return out
+
+
+__all__ = ["derive_phat", "derive_pressure", "derive_jump_in", "derive_half_widths", "why_no_equilibrium",
+           "equilibrium_digits", "branch_samples"]

@@ -1,0 +1,213 @@
+"""The numeric force law: P(a) at fixed numeric parameters, with its slope,
+breakpoints and domain, and the one toolkit that scans it for stationary
+points, minima and equilibria.
+
+Every numeric search on a force law in the package goes through
+:class:`ForceLaw`: the half-width at a load (frictionless and adhesive), the
+pull-off (the minimum of the adhesive law), the jump-in, and the checker's
+independent references.
+
+Two routes to the same law, which share nothing but the profile:
+
+``closed``  P0 and dP0/da from the engine's (verified) closed form, lambdified
+            for mpmath; where the closed form's conditions fail or it is not
+            real, the quadrature route takes over.
+``quad``    independent quadratures after t = a sin(phi)::
+
+                P0(a)  = E* a int_0^{pi/2} sin(phi) f'(a sin phi) dphi           (10*)
+                P0'(a) = E* int_0^{pi/2} sin(phi) h'(a sin phi) dphi
+                         + E* sum_b J_b b**2 / sqrt(a**2 - b**2),   h(t) = t f'(t),
+
+            J_b = f'(b+) - f'(b-) the slope jump at a kink b < a.
+
+The JKR-adhesive law (Eq. 33) is P(a) = P0(a) - B1 sqrt(a) with
+B1 = sqrt(2 pi gamma E*) (:meth:`ForceLaw.with_adhesion`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.conversion import to_basic, to_mpf
+from ..core.errors import DomainError
+from ..core.roots import UNDEFINED, Outside, real_value
+
+#: extra working digits of the numeric searches
+GUARD = 15
+
+
+@dataclass(frozen=True)
+class PullOff:
+    """A minimum of P(a) under load control.
+
+    force          P_min < 0 (the pull-off *load*)
+    adhesion_force P_adh = -P_min > 0 (the paper's P_adh)
+    half_width     a at the minimum
+    kind           'stationary' (dP/da = 0) or 'kink' (at a profile breakpoint)
+    digits         agreement of two independent methods (None if not run)
+    """
+
+    force: mpmath.mpf
+    adhesion_force: mpmath.mpf
+    half_width: mpmath.mpf
+    kind: str
+    digits: float | None = None
+
+
+class ForceLaw:
+    """P(a) and dP/da at fixed numeric parameters (see the module docstring).
+
+    Build with :meth:`from_closed_form`, :meth:`from_profile` or
+    :meth:`from_contact`; ``P(a)`` and ``dP(a)`` take and return mpf at the
+    working precision and raise :class:`~linecontact_sym.core.roots.Outside`
+    where the law is not real.  ``breaks`` are the profile's breakpoints
+    (kinks of P), ``scale`` a length scale for the scans."""
+
+    def __init__(self, P, dP, breaks=(), mode: str = "closed", fallback=None, B1=None):
+        self._P, self._dP = P, dP
+        self.breaks_exact = tuple(sorted(breaks))
+        self.mode = mode
+        self.fallback = fallback   # a quadrature law used where the closed form does not hold
+        self.B1 = B1               # adhesive term sqrt(2 pi gamma E*) (None: non-adhesive)
+        self._scan_cache = None
+
+    # ----------------------------------------------------------- builders
+    @classmethod
+    def from_closed_form(cls, expr, values: dict, conditions=(), breaks=(), fallback=None):
+        """The law of a closed-form P0(a) (SymPy, in ``a``) at ``values``;
+        ``conditions`` (relations in a) say where the closed form holds."""
+        pf = {k: v for k, v in values.items() if k != S.a}
+        P0 = expr.xreplace(pf)
+        if P0.free_symbols - {S.a}:
+            raise DomainError(f"missing values for {sorted(map(str, P0.free_symbols - {S.a}))}")
+        fP = sp.lambdify(S.a, P0, "mpmath")
+        fdP = sp.lambdify(S.a, sp.diff(P0, S.a), "mpmath")
+        conds = [cd.xreplace(pf) for cd in conditions if cd.has(S.a)]
+        ok = sp.lambdify(S.a, sp.And(*conds), "mpmath") if conds else None
+
+        def guarded(fn, name):
+            def g(A):
+                try:
+                    if ok is not None and not bool(ok(A)):
+                        raise Outside
+                    return real_value(fn(A))
+                except UNDEFINED:
+                    if fallback is None:
+                        raise Outside
+                    # the closed form may hold on part of the axis only (branch
+                    # cuts): the profile's own quadrature decides the domain
+                    return getattr(fallback, name)(A)
+            return g
+        return cls(guarded(fP, "P"), guarded(fdP, "dP"), breaks, "closed", fallback)
+
+    @classmethod
+    def from_profile(cls, profile, values: dict):
+        """The quadrature law of Eq. (10*) for a profile at ``values``
+        (E_star and the profile's parameters)."""
+        pf = {k: v for k, v in values.items() if k not in (S.a, S.x)}
+        E = to_basic_number(pf[S.E_star])
+        f1 = [sp.lambdify(S.x, sp.diff(pc.expr, S.x).xreplace(pf), "mpmath") for pc in profile.pieces]
+        f2 = [sp.lambdify(S.x, sp.diff(pc.expr, S.x, 2).xreplace(pf), "mpmath") for pc in profile.pieces]
+        breaks = tuple(sorted(sp.N(bp.xreplace(pf), 80) for bp in profile.breakpoints))
+
+        def pieces(A):
+            edges = [mpmath.mpf(0)] + [to_mpf(b) for b in breaks if to_mpf(b) < A] + [A]
+            return list(zip(range(len(edges) - 1), edges[:-1], edges[1:]))
+
+        def P(A):
+            total = mpmath.mpf(0)
+            for i, lo, hi in pieces(A):
+                fn = f1[i]
+                total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
+                                     [mpmath.asin(lo / A), mpmath.asin(hi / A)])
+            return real_value(to_mpf(E) * A * total)
+
+        def dP(A):
+            total = mpmath.mpf(0)
+            for i, lo, hi in pieces(A):
+                g1, g2 = f1[i], f2[i]
+
+                def integrand(ph):
+                    t = A * mpmath.sin(ph)
+                    return mpmath.sin(ph) * (g1(t) + t * g2(t))
+                total += mpmath.quad(integrand, [mpmath.asin(lo / A), mpmath.asin(hi / A)])
+            for i, bv in enumerate(breaks):
+                bv = to_mpf(bv)
+                if bv < A:
+                    J = f1[i + 1](bv) - f1[i](bv)
+                    total += J * bv**2 / mpmath.sqrt(A**2 - bv**2)
+            return real_value(to_mpf(E) * total)
+
+        def guard(fn):
+            def g(A):
+                try:
+                    return fn(A)
+                except UNDEFINED:
+                    raise Outside
+            return g
+        return cls(guard(P), guard(dP), breaks, "quad")
+
+    @classmethod
+    def from_contact(cls, contact, values: dict, mode: str = "closed"):
+        """The non-adhesive law of a :class:`~.frictionless.LineContact` at
+        ``values``: the closed form where the engine found one (``mode='closed'``,
+        with the quadrature as fallback off its domain), else the quadrature."""
+        quad = cls.from_profile(contact.profile, values)
+        fd = contact.derivation("force")
+        if mode == "quad" or not fd.closed_form:
+            return quad
+        return cls.from_closed_form(fd.expr, values, fd.conditions, quad.breaks_exact, fallback=quad)
+
+    def with_adhesion(self, gamma, E_star) -> "ForceLaw":
+        """The JKR law P(a) = P0(a) - sqrt(2 pi a gamma E*) (Eq. 33)."""
+        g, E = to_basic_number(gamma), to_basic_number(E_star)
+        if g < 0:
+            raise DomainError(f"the work of adhesion must be >= 0, got {g}")
+
+        def B1():
+            return mpmath.sqrt(2 * mpmath.pi * to_mpf(g) * to_mpf(E))
+        P0, dP0 = self._P, self._dP
+        law = ForceLaw(lambda A: P0(A) - B1() * mpmath.sqrt(A), lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
+                       self.breaks_exact, self.mode, B1=B1)
+        law.gamma = g
+        if self.fallback is not None:
+            law.quad = self.fallback.with_adhesion(g, E)
+        elif self.mode == "quad":
+            law.quad = law
+        return law
+
+    # ----------------------------------------------------------- values
+    def P(self, A):
+        return self._P(A)
+
+    def dP(self, A):
+        return self._dP(A)
+
+    def breaks(self):
+        """The breakpoints as mpf at the working precision."""
+        return [to_mpf(b) for b in self.breaks_exact]
+
+    @property
+    def scale(self):
+        """A length scale for scans: the geometric mean of the breakpoints, or 1."""
+        bps = self.breaks()
+        return mpmath.mpf(1) if not bps else mpmath.exp(sum(mpmath.log(b) for b in bps) / len(bps))
+
+    @property
+    def quadrature_law(self) -> "ForceLaw":
+        """The same law by the quadrature route (for independent checks)."""
+        return getattr(self, "quad", None) or (self if self.mode == "quad" else self.fallback)
+
+
+def to_basic_number(v):
+    """A SymPy number for a value (exact where given exactly)."""
+    v = to_basic(v)
+    if not v.is_number:
+        raise DomainError(f"{v} needs a numeric value")
+    return v
+
+
+__all__ = ["ForceLaw", "PullOff", "GUARD"]

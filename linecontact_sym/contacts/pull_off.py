@@ -1,0 +1,350 @@
+"""Pull-off of a JKR-adhesive line contact (Popov 2017, Eqs. 34-36): the
+symbolic attempt (dP/da = 0 by ``sympy.solve``) and the numeric minimum, each
+verified by a route that shares nothing with it.
+
+Under load control the contact separates at the minimum of P(a) (see
+:mod:`.equilibria`): ``pull_off_force`` is that minimum P_min < 0 and
+``adhesion_force`` is P_adh = -P_min > 0, the paper's convention in (34)-(36).
+For a single power law P0 = C a**m (power-law profile c_n |x|**n: m = n,
+C = E* c_n Z_n, Eq. 32) dP/da = 0 gives
+
+    a_po  = (2 pi gamma E* / (4 m**2 C**2))**(1/(2m - 1)),
+    P_adh = (2m - 1)/(2m) * ((2 pi gamma E*)**m / (2 m C))**(1/(2m - 1)),
+
+i.e. Barquins' (3/4)(4 pi R E* gamma**2)**(1/3) for the parabola (34), the
+paper's (35) for general n and pi gamma / (2 tan theta) for the wedge (36).
+
+Existence (found here, not printed in the paper): a finite tensile pull-off
+exists when P0(a)/sqrt(a) -> 0 as a -> 0 and P0(a)/sqrt(a) grows beyond
+sqrt(2 pi gamma E*) at large a; for a power law both hold **iff n > 1/2**.
+"""
+from __future__ import annotations
+
+import random
+import time
+
+import mpmath
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.budget import run_with_budget
+from ..core.conversion import float_values, real_mpf
+from ..core.errors import BudgetExceeded, NoPullOffError, VerificationError
+from ..method.derivation import Derivation, tidy
+from ..method.hyperseries import NotDecomposable, decompose
+from ..method.rules import Step
+from ..method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
+                                   verify_many)
+from .equilibria import minimum, minimum_by_differences
+from .force_law import PullOff
+
+
+def single_power(P0):
+    """P0 = C a**m (one pure power term) -> (C, m), else None."""
+    if P0.has(sp.Piecewise, sp.Integral):
+        return None
+    try:
+        terms = decompose(P0, S.a)
+    except NotDecomposable:
+        return None
+    if len(terms) != 1 or not terms[0].is_power or terms[0].coef.has(S.a):
+        return None
+    return terms[0].coef, terms[0].mu
+
+
+def check_existence(ad, C, m, vals=None):
+    """Raise NoPullOffError for a single power law P0 = C a**m, m <= 1/2."""
+    mv = m.xreplace(vals) if vals else m
+    if not mv.is_number:
+        return
+    if ad.gamma.xreplace(vals or {}) == 0:
+        raise NoPullOffError(f"{ad.profile.name!r}: no adhesion (gamma = 0), no tensile pull-off")
+    if mv > sp.S.Half:
+        return
+    name = ad.profile.name
+    if mv < sp.S.Half:
+        raise NoPullOffError(
+            f"{name!r}: P0 ~ a**({mv}) grows slower than the adhesive term sqrt(2 pi a gamma E*) "
+            f"(exponent {mv} < 1/2): P(a) has a maximum, not a minimum; tensile equilibria are "
+            f"all unstable and P -> -oo as a -> oo, loads above the maximum have no equilibrium. "
+            f"No finite pull-off exists for n < 1/2 (it needs n > 1/2).")
+    gc = sp.simplify(C**2 / (2 * sp.pi * S.E_star))
+    raise NoPullOffError(
+        f"{name!r}: exponent n = 1/2 is the borderline: P = (C - sqrt(2 pi gamma E*)) sqrt(a) with "
+        f"C = {C} is monotone. For gamma < gamma_c = {gc} no tensile load is sustained (zero "
+        f"pull-off, reached only as a -> 0); for gamma > gamma_c P -> -oo, every equilibrium "
+        f"is unstable and the contact spreads without bound. No finite pull-off (needs n > 1/2).")
+
+
+def solve_stationary(P):
+    return sp.solve(sp.diff(P, S.a), S.a)
+
+
+def solve_load(P, load):
+    return sp.solve(sp.Eq(P, load), S.a)
+
+
+# ---------------------------------------------------------------- checks at points
+def sample_points(ad, conds, n=5, seed=11):
+    """n random admissible points (parameters, E_star, gamma) where ``conds`` hold."""
+    sample = ad._sampler()
+    rng = random.Random(seed)
+    out, tries = [], 0
+    while len(out) < n and tries < 40 * n:
+        tries += 1
+        v = sample(rng)
+        if v is not None and holds(conds, v):
+            out.append(v)
+    return out
+
+
+def same_at_points(ad, e1, e2, conds) -> bool:
+    """Do two expressions agree to 40 digits at random admissible points?"""
+    for v in sample_points(ad, conds):
+        x1 = sp.N(e1.xreplace(v), 50)
+        x2 = sp.N(e2.xreplace(v), 50)
+        if not (x1.is_real and x2.is_real) or abs(x1 - x2) > abs(x2) * sp.Float(10)**-40:
+            return False
+    return True
+
+
+def tidy_checked(ad, e, conds, simplify=True):
+    """``tidy`` under the budget, kept only where it agrees at points; drop
+    Abs of expressions positive at every admissible point (|tan(theta)| ...)."""
+    if simplify:
+        try:
+            cand = run_with_budget(tidy, e, seconds=min(ad.contact.budget, 15))
+        except Exception:
+            cand = e
+        if sp.count_ops(cand) <= sp.count_ops(e) and same_at_points(ad, cand, e, conds):
+            e = cand
+    for ab in list(e.atoms(sp.Abs)):
+        inner = ab.args[0]
+        if all(sp.N(inner.xreplace(v), 30) > 0 for v in sample_points(ad, conds)):
+            e2 = e.xreplace({ab: inner})
+            if same_at_points(ad, e2, e, conds):
+                e = e2
+    return e
+
+
+def pick_minimum(ad, cands, P, conds):
+    """The candidate a* that is a real positive local minimum of P at
+    random admissible points."""
+    d1, d2 = sp.diff(P, S.a), sp.diff(P, S.a, 2)
+    pts = sample_points(ad, conds)
+    for cand in cands:
+        if cand.has(S.a) or cand.has(sp.RootOf):
+            continue
+        ok = bool(pts)
+        for v in pts:
+            av = sp.N(cand.xreplace(v), 50)
+            if not av.is_real or not av > 0:
+                ok = False
+                break
+            sub = {**v, S.a: av}
+            g1 = sp.N(d1.xreplace(sub), 50)
+            g2 = sp.N(d2.xreplace(sub), 50)
+            if not (abs(g1) < sp.Float(10)**-35 * (1 + abs(sp.N(P.xreplace(sub), 50)) / av) and g2 > 0):
+                ok = False
+                break
+        if ok:
+            return cand
+    return None
+
+
+# ---------------------------------------------------------------- symbolic attempt
+def closed_attempt(ad):
+    """The symbolic pull-off: a dict with Pmin, a_star, adh, conds, notes,
+    method, t0 -- Pmin None when there is no closed form."""
+    t0 = time.perf_counter()
+    fd = ad.contact.derivation("force")
+    P = ad.derivation("force").expr
+    notes, conds = [], list(fd.conditions)
+    single = single_power(fd.expr) if fd.closed_form else None
+    if ad.gamma == 0:
+        raise NoPullOffError(f"{ad.profile.name!r}: no adhesion (gamma = 0): P(a) = P0(a) >= 0, "
+                             f"no tensile pull-off")
+    a_star = Pmin = adh = method = None
+    if fd.closed_form:
+        if single is not None:
+            C, m = single
+            check_existence(ad, C, m)
+            if not m.is_number:
+                conds.append(sp.Gt(m, sp.S.Half))
+        cands = []
+        try:
+            cands = run_with_budget(solve_stationary, P, seconds=ad.contact.budget)
+            notes.append(f"sympy.solve(dP/da = 0) gave {len(cands)} candidate(s)")
+        except BudgetExceeded:
+            notes.append(f"sympy.solve(dP/da = 0) found nothing within {ad.contact.budget:g} s")
+        except (NotImplementedError, ValueError, TypeError) as exc:
+            notes.append(f"sympy.solve(dP/da = 0): {type(exc).__name__}")
+        a_star = pick_minimum(ad, cands, P, conds)
+        if a_star is not None:
+            method = "sympy.solve of dP/da = 0, minimum checked numerically (P'' > 0)"
+            compact = False
+            Pmin = P.xreplace({S.a: a_star})
+            if single is not None:
+                C, m = single
+                gE = 2 * sp.pi * ad.gamma * S.E_star
+                compact_adh = (2 * m - 1) / (2 * m) * (gE**m / (2 * m * C))**(1 / (2 * m - 1))
+                compact_a = (gE / (4 * m**2 * C**2))**(1 / (2 * m - 1))
+                if same_at_points(ad, -compact_adh, Pmin, conds) and same_at_points(ad, compact_a, a_star, conds):
+                    Pmin, a_star, adh, compact = -compact_adh, compact_a, compact_adh, True
+                    notes.append("single power term P0 = C a**m: P_min = -(2m-1)/(2m) "
+                                 "((2 pi gamma E*)**m/(2 m C))**(1/(2m-1)) (equal to the solve "
+                                 "result at 5 points to 40 digits)")
+            Pmin = tidy_checked(ad, Pmin, conds, simplify=not compact)
+            a_star = tidy_checked(ad, a_star, conds, simplify=not compact)
+            if adh is None:
+                adh = tidy_checked(ad, -Pmin, conds)
+    return dict(Pmin=Pmin, a_star=a_star, adh=adh, conds=conds, notes=notes, method=method, t0=t0)
+
+
+def derivations(ad):
+    """(pull_off_force, adhesion_force, pull_off_half_width) Derivations:
+    closed forms verified against the quadrature-only minimisation, else
+    numeric ones verified by two independent methods."""
+    r = ad._pull_off_closed()
+    Pmin, a_star, adh, conds = r["Pmin"], r["a_star"], r["adh"], r["conds"]
+    notes, method, t0 = list(r["notes"]), r["method"], r["t0"]
+    if Pmin is None:
+        return numeric_derivations(ad, ad.derivation("force").expr, notes, t0)
+    recs = {"P": None, "adh": None, "a": None}
+    if ad.contact.verify:
+        def reference(v, d):
+            po = ad._pull_off_reference(v, d)
+            return {"P": po.force, "adh": po.adhesion_force, "a": po.half_width}
+        recs = verify_many(
+            {"P": Pmin, "adh": adh, "a": a_star}, reference, ad._sampler(), conds, ad.contact.points,
+            reference_name={"P": "global minimisation of the quadrature force law (10*) minus Phat: scan + "
+                                  "findroot of the quadrature dP/da",
+                            "adh": "minus the quadrature-based minimum of P(a)",
+                            "a": "half-width of the quadrature-based minimum of P(a)"})
+        for k, what in (("P", "pull_off_force"), ("a", "pull_off_half_width"), ("adh", "adhesion_force")):
+            ad._require(recs[k], what)
+    dt = time.perf_counter() - t0
+    note = tuple(notes) + ("load control; pull_off_force = P_min < 0, adhesion_force = -P_min (the paper's P_adh)",)
+    ref_f = lambda v, d: ad._pull_off_reference(v, d).force  # noqa: E731
+
+    def mk(q, expr, rec, ref):
+        return Derivation(q, expr, True, Step("solve_stationary", expr, tuple(conds), (method,)), tuple(conds),
+                          rec, dt, note, ref, ad.variables)
+    return (mk("pull_off_force", Pmin, recs["P"], ref_f),
+            mk("adhesion_force", adh, recs["adh"], lambda v, d: mpmath.fneg(ref_f(v, d), exact=True)),
+            mk("pull_off_half_width", a_star, recs["a"], lambda v, d: ad._pull_off_reference(v, d).half_width))
+
+
+class NumericDerivation(Derivation):
+    """A Derivation without closed form whose defining statement contains the
+    half-width ``a`` as an unknown (not an input)."""
+
+    @property
+    def variables_all(self):
+        return tuple(sorted(set(self.variables), key=lambda s: s.name))
+
+
+def numeric_derivations(ad, P, notes, t0):
+    """No closed form: Derivations whose evalf is the numeric minimum,
+    verified at random points by two independent methods."""
+    notes = list(notes) + [
+        "no closed form: method A = scan + findroot of dP/da from the engine's force law "
+        "(closed form if any, else the quadrature P0'(a) with kink terms); method B = "
+        "mpmath.diff of the quadrature force law (10*) + findroot (kinks: one-sided differences)"]
+    rec = None
+    if ad.contact.verify and ad.gamma != 0:
+        sample, n_points = ad._sampler(), ad.contact.points
+
+        def work():  # in a budgeted child, like the engine's verify
+            pts, digs = [], []
+            rng = random.Random(2017)
+            tries = 0
+            while len(pts) < n_points and tries < 20 * n_points:
+                tries += 1
+                v = sample(rng)
+                if v is None:
+                    continue
+                try:
+                    po = ad._pull_off_checked(v, VERIFY_DPS)
+                except (NoPullOffError, ZeroDivisionError, ValueError):
+                    continue
+                pts.append(v)
+                digs.append(po.digits)
+            return pts, digs
+        name = "two independent minimisations (A: analytic dP/da, B: numerical differentiation of the " \
+               "quadrature force law)"
+        try:
+            pts, digs = run_with_budget(work, seconds=VERIFY_BUDGET)
+        except BudgetExceeded:
+            pts, digs, name = [], [], name + f" (did not finish in {VERIFY_BUDGET:g} s)"
+        rec = VerificationRecord(tuple(pts), tuple(digs), VERIFY_DPS, name)
+        ad._require(rec, "pull_off_force")
+    stat = sp.Eq(sp.diff(P, S.a), 0)
+    dt = time.perf_counter() - t0
+    step = Step("numeric_minimum", stat, (), ("numeric: global minimum of P(a) (no closed form)",))
+
+    def mk(q, attr, sign=1):
+        return NumericDerivation(q, stat, False, step, (), rec, dt, tuple(notes),
+                                 lambda v, d: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, d), attr), exact=True),
+                                 ad.variables)
+    return mk("pull_off_force", "force"), mk("adhesion_force", "force", -1), mk("pull_off_half_width", "half_width")
+
+
+def _key(ad, vals):
+    return tuple(sorted((k.name, v) for k, v in vals.items() if k in set(ad.variables)))
+
+
+def reference(ad, vals, dps, mode="quad") -> PullOff:
+    """Minimum of the quadrature law (brackets from the closed law's scan), cached."""
+    key = ("po_ref", mode, dps, _key(ad, vals))
+    if key not in ad._cache:
+        try:
+            ad._cache[key] = minimum(ad._law(vals, mode), dps, scan_law=ad._law(vals, "closed"))
+        except NoPullOffError as exc:
+            ad._cache[key] = exc
+    res = ad._cache[key]
+    if isinstance(res, Exception):
+        raise res
+    return res
+
+
+def checked(ad, vals, dps) -> PullOff:
+    """Numeric pull-off at a point by method A, checked by method B (cached)."""
+    key = ("po_checked", dps, _key(ad, vals))
+    if key not in ad._cache:
+        law = ad._law(vals, "closed")
+        po = minimum(law, dps)
+        po_b = minimum_by_differences(law, dps, po)
+        with mpmath.workdps(dps):
+            d = min(digits_agreeing(po.force, po_b.force),
+                    digits_agreeing(po.half_width, po_b.half_width) if po.kind == "stationary" else float(dps))
+        ad._cache[key] = PullOff(po.force, po.adhesion_force, po.half_width, po.kind, d)
+    return ad._cache[key]
+
+
+def at_values(ad, vals, dps) -> PullOff:
+    """The pull-off at numeric values: the closed form where there is one
+    (conditions and existence checked), else the checked numeric minimum."""
+    if ad._pull_off_closed()["Pmin"] is not None:
+        fd = ad.derivation("pull_off_force")
+        single = single_power(ad.contact.derivation("force").expr)
+        if single is not None:
+            check_existence(ad, single[0], single[1], vals)
+        if not holds(fd.conditions, vals):
+            raise NoPullOffError(f"{ad.profile.name!r}: the pull-off conditions "
+                                 f"{fd.conditions} fail at {vals}: no finite pull-off")
+        fv = float_values(vals, 80)
+        with mpmath.workdps(dps + 10):
+            Pm = real_mpf(sp.N(fd.expr.xreplace(fv), dps + 10))
+            A = real_mpf(sp.N(ad.derivation("pull_off_half_width").expr.xreplace(fv), dps + 10))
+            return PullOff(Pm, -Pm, A, "stationary", None)
+    po = checked(ad, vals, dps)
+    if po.digits < dps:
+        raise VerificationError(f"pull-off of {ad.profile.name!r}: the two methods agree to "
+                                f"{po.digits:.1f} < {dps} digits at {vals}")
+    return po
+
+
+__all__ = ["reference", "checked", "at_values", "single_power", "check_existence", "closed_attempt", "derivations", "numeric_derivations",
+           "NumericDerivation", "pick_minimum", "tidy_checked", "sample_points", "same_at_points",
+           "solve_stationary", "solve_load"]

@@ -1,0 +1,62 @@
+"""Random verification points of a contact: parameter values, a half-width
+and, for quantities defined inside or outside the contact, an x.
+
+The one place that decides where closed forms are checked; every contact
+class draws its points here.  Points are exact rationals (six decimals), so
+the closed form and its reference see the same number.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.conversion import rational
+
+#: range of the reduced modulus at the verification points
+E_STAR_RANGE = (0.5, 3.0)
+#: x relative to a, by the domain of the quantity
+X_RANGES = {"inside": (0.02, 0.98), "outside": (1.05, 2.5)}
+
+
+def sample_half_width(profile, rng, vals):
+    """A half-width inside a random piece of the profile (a single-piece
+    profile: in (0.05, 1.5)), shrunk until the profile's slope is real and
+    finite there; None when no such point is found."""
+    pcs = profile.pieces
+    pc = pcs[rng.randrange(len(pcs))] if len(pcs) > 1 else pcs[0]
+    lo = float(sp.N(pc.lo.xreplace(vals)))
+    hi = float(sp.N(pc.hi.xreplace(vals))) if pc.hi != sp.oo else lo + 1.5
+    if len(pcs) == 1:
+        lo, hi = 0.05, 1.5
+    av = rng.uniform(lo + 0.02 * (hi - lo), hi - 0.02 * (hi - lo))
+    for _ in range(12):  # shrink into the profile's real domain
+        try:
+            fp = complex(sp.N(profile.piece_at(av, vals).derivative.xreplace(vals).subs(S.x, av)))
+            if abs(fp.imag) < 1e-30 and abs(fp) < 1e30:
+                return rational(av)
+        except (TypeError, ValueError):
+            pass
+        av *= 0.5
+    return None
+
+
+def point_sampler(profile, domain: str = "any", extra=None):
+    """A function ``rng -> {Symbol: Rational} or None``: the profile's
+    parameters, E_star, a, and x where ``domain`` is 'inside' or 'outside';
+    ``extra`` maps further symbols to (low, high) ranges."""
+    def sample(rng):
+        vals = profile.sample_params(rng)
+        vals[S.E_star] = rational(rng.uniform(*E_STAR_RANGE))
+        av = sample_half_width(profile, rng, vals)
+        if av is None:
+            return None
+        vals[S.a] = av
+        if domain in X_RANGES:
+            vals[S.x] = rational(float(av) * rng.uniform(*X_RANGES[domain]))
+        for sym, (lo, hi) in (extra or {}).items():
+            vals[sym] = rational(rng.uniform(lo, hi))
+        return vals
+    return sample
+
+
+__all__ = ["point_sampler", "sample_half_width", "E_STAR_RANGE", "X_RANGES"]

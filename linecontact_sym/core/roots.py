@@ -1,0 +1,116 @@
+"""One toolkit for 1-D roots and minima of real functions on (0, oo), at the
+current mpmath working precision.
+
+Every search of the package that looks for a half-width (equilibria,
+stationary points of a force law, the edge of a domain) goes through these
+functions, so a fix or an improvement lands everywhere at once.
+
+Conventions: ``fn`` maps an mpf to an mpf; it raises :class:`Outside` (or
+ValueError / ZeroDivisionError) where it is undefined.  Searches for a
+positive variable work in u = ln(a), which treats 1e-6 and 1e6 alike.
+"""
+from __future__ import annotations
+
+import mpmath
+
+
+class Outside(Exception):
+    """The function is undefined (not real, not finite) at this argument."""
+
+
+UNDEFINED = (Outside, ValueError, ZeroDivisionError)
+
+
+def real_value(v):
+    """``v`` as a finite real mpf, or :class:`Outside` (complex with a
+    non-negligible imaginary part, NaN, infinite, not a number)."""
+    if isinstance(v, mpmath.mpc):
+        if v.real == 0 or abs(v.imag) > abs(v.real) * mpmath.mpf(10)**(-mpmath.mp.dps + 5):
+            raise Outside
+        v = v.real
+    elif not isinstance(v, mpmath.mpf):
+        try:
+            v = mpmath.mpf(v)
+        except (TypeError, ValueError):
+            raise Outside
+    if not mpmath.isfinite(v):
+        raise Outside
+    return v
+
+
+def bisect(fn, lo, hi, iters: int = 60):
+    """Bisection on a sign change of ``fn`` over [lo, hi] (``fn(lo)`` and
+    ``fn(hi)`` of opposite signs); returns the final bracket."""
+    flo = fn(lo)
+    for _ in range(iters):
+        mid = (lo + hi) / 2
+        fm = fn(mid)
+        if (fm < 0) == (flo < 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return lo, hi
+
+
+def root_in_log(fn, lo, hi, approx=None):
+    """The root of ``fn`` in the sign-change bracket [lo, hi] (0 < lo < hi),
+    solved in u = ln a at the working precision: Anderson-Bjorck, with
+    bisection + secant as the fallback.  With ``approx`` the bracket is first
+    narrowed around it (a cheap high-precision refinement of a root known
+    to lower precision)."""
+    g = lambda u: fn(mpmath.exp(u))  # noqa: E731
+    ul, uh = mpmath.log(lo), mpmath.log(hi)
+    if approx is not None:
+        u0 = mpmath.log(approx)
+        d = mpmath.mpf("1e-12")
+        while d < uh - ul:
+            l2, h2 = max(u0 - d, ul), min(u0 + d, uh)
+            if (g(l2) < 0) != (g(h2) < 0):
+                ul, uh = l2, h2
+                break
+            d *= 1000
+    try:
+        u = mpmath.findroot(g, (ul, uh), solver="anderson", verify=False)
+    except (ZeroDivisionError, ValueError):
+        u = None
+    if u is None or isinstance(u, mpmath.mpc) or not (ul <= u <= uh):
+        ul, uh = bisect(g, ul, uh, iters=45)
+        u = mpmath.findroot(g, (ul, uh), solver="secant", verify=False)
+    return mpmath.exp(u)
+
+
+def domain_end(fn, good, bad, iters: int = 60):
+    """The end of the domain of ``fn`` between a point where it is defined
+    (``good``) and one where it is not (``bad``): the last defined point of
+    a bisection (``iters`` halvings)."""
+    for _ in range(iters):
+        mid = (good + bad) / 2
+        try:
+            fn(mid)
+            good = mid
+        except UNDEFINED:
+            bad = mid
+    return good
+
+
+def golden_minimum(fn, lo, hi, tol=None):
+    """Golden-section search for a minimum of a unimodal ``fn`` on [lo, hi]
+    (derivative-free; ``tol`` defaults to 10**(-dps/2) relative, the
+    accuracy a minimum's location can have from function values alone)."""
+    invphi = (mpmath.sqrt(5) - 1) / 2
+    tol = tol if tol is not None else mpmath.mpf(10)**(-mpmath.mp.dps // 2) * hi
+    c, d = hi - invphi * (hi - lo), lo + invphi * (hi - lo)
+    fc, fd = fn(c), fn(d)
+    while hi - lo > tol:
+        if fc < fd:
+            hi, d, fd = d, c, fc
+            c = hi - invphi * (hi - lo)
+            fc = fn(c)
+        else:
+            lo, c, fc = c, d, fd
+            d = lo + invphi * (hi - lo)
+            fd = fn(d)
+    return (lo + hi) / 2
+
+
+__all__ = ["Outside", "UNDEFINED", "real_value", "bisect", "root_in_log", "domain_end", "golden_minimum"]

@@ -1,0 +1,133 @@
+"""Verification: every closed form is compared with an independent
+high-precision evaluation of its defining integral (or another route that
+shares nothing with the derivation) at random admissible points.
+
+A :class:`VerificationRecord` with no points never counts as verified.
+"""
+from __future__ import annotations
+
+import math
+import random
+from dataclasses import dataclass
+
+import mpmath
+import sympy as sp
+
+from ..core.budget import run_with_budget
+from ..core.conversion import float_values, real_mpf
+from ..core.errors import BudgetExceeded, DomainError
+
+#: digits every closed form must reproduce at every verification point
+REQUIRED_DIGITS = 30
+#: working precision of the reference quadratures
+VERIFY_DPS = 45
+#: wall-clock budget of one verification (quadratures at all points), seconds
+VERIFY_BUDGET = 120.0
+
+
+@dataclass(frozen=True)
+class VerificationRecord:
+    """Agreement of a closed form with the independent quadrature of its
+    defining integral."""
+
+    points: tuple            # parameter points (dicts of Symbol -> Rational)
+    digits: tuple            # agreeing significant digits at each point
+    dps: int                 # working precision of the reference
+    reference: str           # how the reference was computed
+    required: int = REQUIRED_DIGITS
+
+    @property
+    def min_digits(self) -> float:
+        return min(self.digits) if self.digits else 0.0
+
+    @property
+    def passed(self) -> bool:
+        return bool(self.digits) and self.min_digits >= self.required
+
+    def __str__(self):
+        return (f"verified at {len(self.points)} random admissible points against "
+                f"{self.reference} ({self.dps} digits): >= {self.min_digits:.1f} digits agree")
+
+
+
+def holds(conds, vals) -> bool:
+    """Do all relations ``conds`` hold at the point ``vals`` (False when undecidable)?"""
+    for c in conds:
+        v = c.xreplace(vals)
+        try:
+            v = bool(v) if v in (sp.true, sp.false) else bool(sp.simplify(v))
+        except TypeError:
+            return False
+        if not v:
+            return False
+    return True
+
+
+def digits_agreeing(val, ref, dps=None) -> float:
+    """Agreeing significant digits of ``val`` and ``ref`` (capped at ``dps``,
+    default the current working precision; a reference below 10**(-dps/2)
+    is compared absolutely)."""
+    dps = mpmath.mp.dps if dps is None else dps
+    with mpmath.workdps(dps):
+        err = abs(val - ref)
+        if err == 0:
+            return float(dps)
+        scale = max(abs(ref), mpmath.mpf(10)**(-dps // 2))
+        d = float(-mpmath.log10(err / scale))
+    return 0.0 if math.isnan(d) else min(d, float(dps))
+
+
+def verify(expr, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
+           dps: int = VERIFY_DPS, reference_name: str = "mpmath quadrature",
+           budget: float = VERIFY_BUDGET) -> VerificationRecord:
+    """Compare ``expr`` with ``reference(values, dps)`` at ``n_points`` points
+    drawn by ``sampler(rng)`` (dicts Symbol -> Rational) where ``conditions`` hold.
+
+    Runs under ``budget`` seconds; a verification that does not finish is
+    returned as a record with no points (``passed`` is False)."""
+    return verify_many({"_": expr}, lambda vals, d: {"_": reference(vals, d)}, sampler, conditions,
+                       n_points, seed, dps, reference_name, budget)["_"]
+
+
+def verify_many(exprs: dict, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
+                dps: int = VERIFY_DPS, reference_name="mpmath quadrature",
+                budget: float = VERIFY_BUDGET) -> dict:
+    """:func:`verify` for several closed forms sharing one (expensive)
+    reference: ``reference(values, dps)`` returns a dict name -> mpf; the
+    same points are used for all.  ``reference_name`` may be a dict too.
+    Returns name -> :class:`VerificationRecord`."""
+    def name(k):
+        return reference_name[k] if isinstance(reference_name, dict) else reference_name
+    try:
+        return run_with_budget(_verify, exprs, reference, sampler, conditions, n_points, seed, dps,
+                               name, seconds=budget)
+    except BudgetExceeded:
+        return {k: VerificationRecord((), (), dps, name(k) + f" (did not finish in {budget:g} s)")
+                for k in exprs}
+
+
+def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
+    rng = random.Random(seed)
+    points, digits = [], {k: [] for k in exprs}
+    tries = 0
+    while len(points) < n_points and tries < 20 * n_points:
+        tries += 1
+        vals = sampler(rng)
+        if vals is None or not holds(conditions, vals):
+            continue
+        try:
+            refs = reference(vals, dps)
+        except (ZeroDivisionError, ValueError, DomainError):
+            continue
+        if any(not mpmath.isfinite(r) or isinstance(r, mpmath.mpc) for r in refs.values()):
+            continue
+        points.append(vals)
+        fvals = float_values(vals, dps + 30)
+        for k, expr in exprs.items():
+            with mpmath.workdps(dps):
+                try:
+                    val = real_mpf(sp.N(expr.xreplace(fvals), dps + 10))
+                except (DomainError, TypeError, ValueError):
+                    val = mpmath.mpf("nan")
+                digits[k].append(digits_agreeing(val, refs[k], dps))
+    return {k: VerificationRecord(tuple(points), tuple(digits[k]), dps, name(k)) for k in exprs}
