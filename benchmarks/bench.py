@@ -1,6 +1,6 @@
 """Speed versus accuracy of every backend, per seed law (issue 5).
 
-    python benchmarks/bench.py [--quick] [--json benchmarks/results.json]
+    python benchmarks/bench.py [--quick] [--json PATH]
 
 For the force law P(a) of each seed law (parabola, power law n = 3/2 and 3,
 wedge, worn cylinder, exact cylinder) it measures
@@ -15,13 +15,19 @@ wedge, worn cylinder, exact cylinder) it measures
 * ``scipy.integrate.quad`` of Eq. (10*) (algebraic weight for the
   1/sqrt(a - t) end point; pieces split at the profile's breakpoints),
 * the python-flint Arb certified enclosure at 15 and 50 digits,
+* the worst float64 error on the documented grid of extreme arguments
+  (``benchmarks/extremes.py``, shared with ``tests/test_extremes.py``), in
+  units of eps * max(1, kappa),
 
 with the median time per evaluation and the correct digits (minimum over the
 sample points) against a 100-digit mpmath reference (the derived closed form
 evaluated with 130 digits of working precision); plus the derivation time
 (cold: first derivation in a fresh process-wide contact; cached: repeated
 call) and the export time (stabilise + lambdify), and the 10^6-point timing
-of the pressure too.  Prints a Markdown table and saves everything as JSON.
+of the pressure too.  Prints a Markdown table and saves everything as JSON:
+by default to ``benchmarks/results.json`` (the tracked record of a full run);
+``--quick`` runs write to a file in the temporary directory instead, so a
+quick check never overwrites the record (``--json PATH`` chooses the file).
 """
 from __future__ import annotations
 
@@ -32,6 +38,7 @@ import os
 import platform
 import statistics
 import sys
+import tempfile
 import time
 
 import mpmath
@@ -45,7 +52,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
 import linecontact_sym as lcs  # noqa: E402
 from linecontact_sym.core import symbols as S  # noqa: E402
 from linecontact_sym.numeric.certified import arb_callable  # noqa: E402
+from linecontact_sym.numeric.accuracy import audit  # noqa: E402
 from linecontact_sym.numeric.exports import lambdify_mpmath, make_callable, stable_form  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from extremes import extreme_points  # noqa: E402
 
 E_VAL, C_VAL, TH_VAL = 1.7, 1.3, 0.3
 
@@ -241,6 +252,15 @@ def bench_law(name, quick, rng, results):
                      min(dg, 120.0)))
         row[f"arb_{dps}_s"] = ta
 
+    # the documented grid of extreme arguments: worst error / (eps * max(1, kappa))
+    fm0 = lambdify_mpmath(d.expr, d.variables_all, stable=False)
+    grid = extreme_points(names, "force", "small" if quick else "full")
+    recs = audit(f64, lambda **kw: fm0(*[kw[n] for n in names]), grid, dps=100, kappa="mp")
+    worst = max(recs, key=lambda r: r.ulps)
+    row["extreme_grid_points"] = len(recs)
+    row["extreme_grid_worst_eps_kappa"] = worst.ulps
+    row["extreme_grid_worst_at"] = worst.point
+
     row["float64_digits"] = rows[0][2]
     row["scipy_quad_digits"] = digits(sqv, refs)
     row["float64_speedup_vs_quad"] = tsq / (tv / big)
@@ -274,9 +294,14 @@ def fmt_time(t):
 def main(argv=None):
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="fewer points and repetitions")
-    ap.add_argument("--json", default=os.path.join(os.path.dirname(__file__), "results.json"))
+    ap.add_argument("--json", default=None,
+                    help="output file (default: benchmarks/results.json; with --quick a file in the "
+                         "temporary directory, so the tracked record is not overwritten)")
     ap.add_argument("--laws", nargs="*", default=list(LAWS))
     args = ap.parse_args(argv)
+    if args.json is None:
+        args.json = os.path.join(tempfile.gettempdir(), "linecontact_sym_bench_quick.json") if args.quick \
+            else os.path.join(os.path.dirname(__file__), "results.json")
     rng = np.random.default_rng(2017)
     results = {}
     lines = []
@@ -285,7 +310,9 @@ def main(argv=None):
         lines.append(f"\n### {name}\n")
         lines.append(f"P(a) = `{row['formula']}`  \nstable form: `{row['stable_formula']}`  \n"
                      f"derivation: cold {row['derive_cold_s']:.2f} s, cached {fmt_time(row['derive_cached_s'])}; "
-                     f"export (stabilise + lambdify) {row['export_s']:.2f} s\n")
+                     f"export (stabilise + lambdify) {row['export_s']:.2f} s; "
+                     f"extreme grid ({row['extreme_grid_points']} points): worst float64 error "
+                     f"{row['extreme_grid_worst_eps_kappa']:.2f} eps*max(1, kappa)\n")
         lines.append("| backend | median time / evaluation | correct digits |")
         lines.append("|---|---:|---:|")
         for r in row["rows"]:

@@ -317,7 +317,7 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
     >>> parse_expr("__import__('os')")
     Traceback (most recent call last):
     ...
-    linecontact_sym.errors.ClaimError: name '__import__' is not allowed (no private or dunder names) (at column 1) in "__import__('os')"
+    linecontact_sym.core.errors.ClaimError: name '__import__' is not allowed (no private or dunder names) (at column 1) in "__import__('os')"
     """
     if not isinstance(text, str):
         if isinstance(text, (int, float)) and not isinstance(text, bool):

@@ -1,5 +1,14 @@
+import sys
+from pathlib import Path
+
 import pytest
 from hypothesis import HealthCheck, settings
+
+# benchmarks/extremes.py (the grid of extreme arguments) is shared by
+# tests/test_extremes.py and benchmarks/bench.py
+_BENCHMARKS = str(Path(__file__).resolve().parents[1] / "benchmarks")
+if _BENCHMARKS not in sys.path:
+    sys.path.insert(0, _BENCHMARKS)
 
 settings.register_profile(
     "ci", max_examples=12, deadline=None,

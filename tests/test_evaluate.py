@@ -3,6 +3,7 @@ rtol=..., certified=..., dps=..., **values)`` picks the cheapest path that
 meets the tolerance and says which (float64 / mpmath@N / arb / model:...)."""
 from __future__ import annotations
 
+import math
 
 import mpmath
 import pytest
@@ -184,3 +185,27 @@ def test_float64_estimate_honest_at_weak_spots(n, xr):
     with mpmath.workdps(100):
         err = abs(mpmath.mpf(r.value) - exact)
         assert err <= r.error and err <= 1e-13 * abs(exact), (r.path, float(err), float(r.error))
+
+
+def test_caches_are_kept_by_the_numeric_layer_not_in_the_objects():
+    """Exports and evaluate() cache per Derivation (and Profile) in caches of
+    their own: nothing is written into the contact's or the derivation's
+    __dict__, the cached function is reused, and the cache does not keep a
+    derivation alive after its contact is gone."""
+    import gc
+    import weakref
+    from linecontact_sym.numeric import evaluate as EV
+    c = lcs.parabola()
+    d = c.derivation("force")
+    keys_c, keys_d = set(vars(c)), set(vars(d))
+    assert c.to_numeric("force")(a=0.5, R=1.0, E_star=2.0) == pytest.approx(math.pi / 8, rel=1e-15)
+    r1 = evaluate(c, "force", a=0.5, R=1.0, E_star=2.0)
+    f64 = EV._CACHE.of(d)["f64"]
+    r2 = evaluate(c, "force", a=0.25, R=1.0, E_star=2.0)
+    assert EV._CACHE.of(d)["f64"] is f64 and r1.path == r2.path == "float64"
+    evaluate(c, "force", a=0.5, R=1.0, E_star=2.0, rtol=1e-30)
+    assert set(vars(c)) == keys_c and set(vars(d)) == keys_d
+    gone = weakref.ref(d)
+    del c, d, f64
+    gc.collect()
+    assert gone() is None

@@ -1,6 +1,7 @@
 """Stable numerics at the extremes (issue 5): the float64 export of every
 seed law against a high-precision mpmath reference on the documented grid of
-extreme arguments (``linecontact_sym.stable.EXTREME_GRID``):
+extreme arguments (``EXTREME_GRID`` in ``benchmarks/extremes.py``, shared
+with the benchmark; ``tests/conftest.py`` puts ``benchmarks/`` on sys.path):
 
 * a/R from 1e-12 to 1 - 1e-12; n from 1e-3 to 1e3 with exactly 1 and 1 +- 1e-9;
   x/a from 0 to 1 - 1e-12 and 1 (pressure), from 1 to 1e6 (gap); b/a from
@@ -29,8 +30,9 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
+from linecontact_sym.numeric.accuracy import audit
 from linecontact_sym.numeric.exports import make_callable, lambdify_mpmath, lambdify_mpmath_quad
-from linecontact_sym.numeric.stable import audit, extreme_points
+from extremes import extreme_points
 
 TOL = 8.0
 

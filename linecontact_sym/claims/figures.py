@@ -17,13 +17,13 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.extras import require
 
 
 def _plt():
-    # imported lazily: the package itself does not need matplotlib (headless
-    # machines fall back to the Agg backend by themselves)
-    import matplotlib.pyplot as plt
-    return plt
+    # imported lazily: the package itself does not need matplotlib (the [plot]
+    # extra; headless machines fall back to the Agg backend by themselves)
+    return require("plot", "matplotlib.pyplot")
 
 
 def _save(fig, out_dir, stem, formats):

@@ -55,4 +55,9 @@ class ClaimError(LineContactError, ValueError):
     """A claim (file or command line) is malformed or unsafe."""
 
 
+class MissingExtraError(LineContactError, ImportError):
+    """An optional dependency is not installed; the message names the extra that
+    installs it (see :func:`linecontact_sym.core.extras.require`)."""
+
+
 __all__ = [name for name in dir() if name.endswith("Error") or name in ("BudgetExceeded", "NumericValuesRequired")]

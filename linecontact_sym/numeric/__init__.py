@@ -1,8 +1,13 @@
 """Layer 3: numbers from derived results.
 
-``stable`` (accuracy-preserving rewrites and their special functions),
-``exports`` (float64 / mpmath callables), ``certified`` (Arb balls),
-``evaluate`` (the cheapest path that meets a tolerance).  Works on
+``special`` (the stable special functions: Carlson integrals, Gamma ratios,
+2F1 with its complement), ``stable`` (accuracy-preserving rewrites, one rule
+object each, and :func:`~.stable.stabilize`), ``exports`` (float64 / mpmath
+callables), ``quadrature`` (vectorised float64 tanh-sinh for integrals without
+a closed form), ``certified`` (Arb balls; python-flint, the ``[certified]``
+extra), ``accuracy`` (condition numbers, audits against a reference),
+``evaluate`` (the cheapest path that meets a tolerance), ``cache`` (the
+per-object caches this layer owns).  Works on
 :class:`~linecontact_sym.method.derivation.Derivation` objects; knows no
 contact class.
 """

@@ -7,7 +7,7 @@ given: a Python float is its exact binary value, a string or a SymPy Rational
 its exact decimal/rational value).  The working precision is raised until
 the ball's relative radius meets the requested number of digits.
 
-The stable form (:mod:`linecontact_sym.stable`) is evaluated when available:
+The stable form (:mod:`linecontact_sym.numeric.stable`) is evaluated when available:
 in ball arithmetic cancellation cannot produce a wrong result, only a wide
 ball, so the stable form just reaches the target at a lower precision.
 
@@ -20,6 +20,10 @@ carlson_rd, carlson_rg, gamma_ratio, hyp2f1c.  Unevaluated integrals are not
 supported (no certified quadrature here): :class:`CertificationError`.
 
 The global precision of python-flint is never changed (``ctx.workprec``).
+python-flint is an optional dependency (the ``[certified]`` extra): it is
+imported when a certified evaluation is asked for, and its absence is a
+:class:`~linecontact_sym.core.errors.MissingExtraError` naming
+``pip install "linecontact_sym[certified]"``.
 """
 from __future__ import annotations
 
@@ -27,15 +31,18 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 
-import flint
 import mpmath
 import sympy as sp
 
 from ..parsing import to_sympy
 from ..core.errors import LineContactError
-from .stable import carlson_rd, carlson_rf, carlson_rg, gamma_ratio, hyp2f1c
+from ..core.extras import require
+from .special import carlson_rd, carlson_rf, carlson_rg, gamma_ratio, hyp2f1c
 
-arb, acb = flint.arb, flint.acb
+
+def _flint():
+    """The python-flint module (imported on first use; the ``[certified]`` extra)."""
+    return require("certified", "flint")
 
 
 class CertificationError(LineContactError):
@@ -46,6 +53,8 @@ def to_arb(v):
     """An Arb ball containing the exact value of ``v`` (float: its binary
     value; int, Fraction, SymPy Rational: exact; str: the decimal number;
     mpmath mpf: its binary value)."""
+    flint = _flint()
+    arb = flint.arb
     if isinstance(v, arb):
         return v
     if isinstance(v, bool):
@@ -76,13 +85,14 @@ def to_arb(v):
     return arb(v)
 
 
-def _real(z: acb) -> arb:
+def _real(z):
+    """The real part of the acb ball ``z``, which must contain a real number."""
     if not z.imag.contains(0):
         raise CertificationError(f"complex value {z} where a real one was expected")
     return z.real
 
 
-def _cmp(rel, lhs: arb, rhs: arb):
+def _cmp(rel, lhs, rhs):
     """True/False if decided on the balls, None if not."""
     if isinstance(rel, sp.StrictLessThan):
         t, f = lhs < rhs, lhs >= rhs
@@ -106,13 +116,15 @@ _UNARY = {
     sp.cosh: lambda x: x.cosh(), sp.tanh: lambda x: x.tanh(), sp.asinh: lambda x: x.asinh(),
     sp.acosh: lambda x: x.acosh(), sp.atanh: lambda x: x.atanh(), sp.gamma: lambda x: x.gamma(),
     sp.loggamma: lambda x: x.lgamma(), sp.Abs: lambda x: abs(x),
-    sp.elliptic_k: lambda m: _real(acb(m).elliptic_k()),
+    sp.elliptic_k: lambda m: _real(_flint().acb(m).elliptic_k()),
 }
 
 
 def compile_arb(expr, args):
     """A function ``f(*balls) -> arb`` evaluating ``expr`` at the current
     python-flint precision."""
+    flint = _flint()
+    arb, acb = flint.arb, flint.acb
     index = {s: i for i, s in enumerate(args)}
 
     def build(e):
@@ -247,7 +259,7 @@ class Enclosure:
     def _mp(self, ball_method, digits=None):
         """The exact binary end point / midpoint / radius as an mpmath mpf
         (exact: an mpf with enough bits holds the Arb float as it is)."""
-        with flint.ctx.workprec(self.prec + 64):
+        with _flint().ctx.workprec(self.prec + 64):
             b = getattr(self.ball, ball_method)()
             if not b.is_finite():
                 return mpmath.nan
@@ -280,7 +292,7 @@ class Enclosure:
         return self.ball.rel_accuracy_bits() * math.log10(2)
 
     def __str__(self):
-        with flint.ctx.workprec(self.prec):
+        with _flint().ctx.workprec(self.prec):
             return self.ball.str(max(int(self.prec * 0.30103) - 3, 15), radius=True)
 
 
@@ -295,13 +307,36 @@ def arb_callable(expr, args):
 
 
 def arb_evaluate(expr, args, values, dps: int = 15, max_prec: int = 40000) -> Enclosure:
-    """Rigorous enclosure of ``expr`` at ``values`` (a sequence matching
-    ``args``) whose relative radius is below 10**-dps (or an exception if
-    ``max_prec`` bits do not suffice)."""
+    """A rigorous enclosure of the exact value of ``expr`` at ``args`` = ``values``.
+
+    ``expr``: a SymPy expression in the supported functions (module
+    docstring; no unevaluated integrals); ``values``: a sequence matching
+    ``args``, each taken exactly (a float is its binary value, a string such
+    as ``"0.1"`` or a Rational its exact value).  The ball arithmetic runs at
+    increasing precision until the ball's relative radius is below 10**-dps;
+    :class:`CertificationError` if ``max_prec`` bits do not suffice or a
+    function has no Arb translation.  Needs python-flint (the
+    ``[certified]`` extra), else
+    :class:`~linecontact_sym.core.errors.MissingExtraError`.
+
+    sqrt(1 + 10**-22) - 1 = 5e-23 (1 - 2.5e-23 + ...): float64 gives 0, the
+    ball is certain of 20 digits.
+
+    >>> import mpmath, sympy as sp
+    >>> x = sp.Symbol("x", positive=True)
+    >>> enc = arb_evaluate(sp.sqrt(1 + x) - 1, [x], ["1e-22"], dps=20)
+    >>> with mpmath.workdps(60):
+    ...     exact = mpmath.sqrt(1 + mpmath.mpf("1e-22")) - 1
+    ...     print(enc.lower <= exact <= enc.upper, mpmath.nstr(enc.mid, 5))
+    True 5.0e-23
+    >>> enc.rel_accuracy_digits() >= 20
+    True
+    """
     return _enclose(compile_arb(expr, args), values, dps, max_prec)
 
 
 def _enclose(f, values, dps, max_prec):
+    flint = _flint()
     prec = int(dps * 3.33) + 30
     target_bits = dps * math.log2(10) + 1
     last = None

@@ -36,7 +36,7 @@ The returned :class:`Evaluation` says which path was taken, with the error
 estimate (or the enclosure) and a note on why.
 
     >>> import linecontact_sym as lcs
-    >>> from linecontact_sym.evaluate import evaluate
+    >>> from linecontact_sym.numeric.evaluate import evaluate
     >>> c = lcs.exact_cylinder()
     >>> evaluate(c, "force", a=1e-6, R=1.0, E_star=1.0, rtol=1e-12).path
     'model:x**2/(2*R)'
@@ -54,9 +54,14 @@ import sympy as sp
 from ..parsing import to_sympy
 from ..core import symbols as S
 from ..core.errors import DomainError, LineContactError
-from .exports import check_arguments
+from .accuracy import EPS, condition_number_float
+from .cache import IdentityCache
+from .certified import CertificationError, arb_callable
+from .exports import (check_arguments, compile_plain_numpy, lambdify_mpmath, lambdify_mpmath_quad,
+                      lambdify_numpy, make_callable, stable_form)
+from .quadrature import VectorQuad
+from .stable import is_rational_in_symbols
 
-EPS = float(np.finfo(float).eps)
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
 #: closed forms / quadratures (what tests/test_extremes.py checks on the grid)
 FLOAT64_FACTOR = 8.0
@@ -107,8 +112,9 @@ class Evaluation:
 
 
 # ----------------------------------------------------------------- helpers
-def _cache(contact):
-    return contact.__dict__.setdefault("_lcs_evaluate_cache", {})
+#: compiled functions per Derivation (and the series model per Profile), kept
+#: here and not in the contact's or derivation's __dict__ (see .cache)
+_CACHE = IdentityCache()
 
 
 def _check_domain(quantity, values):
@@ -163,33 +169,28 @@ def _is_expensive(derivation):
             or any(g.args[0].free_symbols for g in e.atoms(sp.gamma)))
 
 
-def _float64_fn(contact, quantity):
-    cache = _cache(contact)
-    key = ("f64", quantity)
-    if key not in cache:
-        from .exports import make_callable
-        cache[key] = make_callable(contact.derivation(quantity), "numpy")
-    return cache[key]
+def _float64_fn(d):
+    cache = _CACHE.of(d)
+    if "f64" not in cache:
+        cache["f64"] = make_callable(d, "numpy")
+    return cache["f64"]
 
 
-def _cancellation_fns(contact, quantity):
+def _cancellation_fns(d):
     """For each sum in the stable form that is not a rational function of the
     symbols (those are formed exactly or are covered by kappa): a pair of
     float64 functions (sum of |terms|, sum).  Their ratio at a point is the
     amplification of rounding errors by cancellation in that sum."""
-    cache = _cache(contact)
-    key = ("cancel", quantity)
+    cache = _CACHE.of(d)
+    key = "cancel"
     if key not in cache:
-        from .exports import lambdify_numpy, stable_form
-        from .stable import _is_rational_in_symbols
-        d = contact.derivation(quantity)
         expr = stable_form(d).expr
         syms = d.variables_all
         fns = []
         for node in sp.preorder_traversal(expr):
             if isinstance(node, sp.Integral):
                 continue
-            if node.is_Add and not _is_rational_in_symbols(node) and not node.is_number \
+            if node.is_Add and not is_rational_in_symbols(node) and not node.is_number \
                     and node.free_symbols <= set(syms):
                 absum = sp.Add(*[sp.Abs(t) for t in node.args])
                 fns.append((lambdify_numpy(absum, syms, stable=False),
@@ -198,37 +199,15 @@ def _cancellation_fns(contact, quantity):
     return cache[key]
 
 
-def _cancellation(contact, quantity, point, names):
+def _cancellation(d, point, names):
     worst = 1.0
     vals = [point[n] for n in names]
     with np.errstate(all="ignore"):
-        for fa, fs in _cancellation_fns(contact, quantity):
+        for fa, fs in _cancellation_fns(d):
             A, Sm = float(np.asarray(fa(*vals))), float(np.asarray(fs(*vals)))
             if math.isfinite(A) and math.isfinite(Sm) and Sm != 0:
                 worst = max(worst, A / abs(Sm))
     return worst
-
-
-def _kappa_float(f64, point, f0):
-    """Componentwise relative condition number by float64 central differences."""
-    total = 0.0
-    h = 1e-6
-    with np.errstate(all="ignore"):
-        for k, v in point.items():
-            if v == 0:
-                continue
-            up = float(np.asarray(f64(**{**point, k: v * (1 + h)})))
-            dn = float(np.asarray(f64(**{**point, k: v * (1 - h)})))
-            if math.isfinite(up) and math.isfinite(dn):
-                d = (up - dn) / (2 * h)
-            elif math.isfinite(up):
-                d = (up - f0) / h
-            elif math.isfinite(dn):
-                d = (f0 - dn) / h
-            else:
-                continue
-            total += abs(d)
-    return total / abs(f0) if f0 != 0 else math.inf
 
 
 # ----------------------------------------------------------------- model path
@@ -316,27 +295,41 @@ class SeriesModel:
 
 
 def _model(contact):
-    cache = _cache(contact)
+    cache = _CACHE.of(contact.profile)   # the model depends on the profile only
     if "model" not in cache:
         try:
             cache["model"] = SeriesModel(contact)
-        except Exception as exc:  # no model for this profile
-            cache["model"] = exc
-    m = cache["model"]
-    return None if isinstance(m, Exception) else m
+        except Exception:  # no model for this profile
+            # (not the exception: its traceback would keep the contact alive)
+            cache["model"] = None
+    return cache["model"]
 
 
 # ----------------------------------------------------------------- main
 def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool = False,
              dps: int | None = None, model: bool = True, **values) -> Evaluation:
-    """Evaluate ``quantity`` ('force', 'pressure', 'gap') of ``contact`` at
-    ``values`` (keywords by symbol name) to relative tolerance ``rtol``
-    by the cheapest path that meets it (see the module docstring).
+    """Evaluate ``quantity`` of ``contact`` at ``values`` (keywords by symbol
+    name) to relative tolerance ``rtol`` by the cheapest path that meets it
+    (see the module docstring); returns an :class:`Evaluation`.
 
+    ``contact``: any object with ``derivation(quantity)`` returning a
+    :class:`~linecontact_sym.method.derivation.Derivation` and ``profile``
+    (for the series model of the force); ``quantity``: 'force' (P(a),
+    Eq. 10), 'pressure' (p(x), Eq. 12, domain |x| <= a) or 'gap' (domain
+    |x| >= a), a > 0 (else :class:`~linecontact_sym.core.errors.DomainError`).
     ``certified=True`` returns a rigorous Arb enclosure with ``dps`` digits
-    (default: 15, or -log10(rtol)).  ``dps`` without ``certified`` means
-    rtol = 10**-dps.  Neither: rtol = 1e-12.  ``model=False`` disables the
-    series-model path.
+    (default: 15, or -log10(rtol); needs python-flint, the ``[certified]``
+    extra).  ``dps`` without ``certified`` means rtol = 10**-dps.  Neither:
+    rtol = 1e-12.  ``model=False`` disables the series-model path.
+
+    >>> import linecontact_sym as lcs
+    >>> c = lcs.parabola()                      # P = pi E* a^2 / (4 R), Eq. (13)
+    >>> r = evaluate(c, "force", a=0.5, R=1.0, E_star=2.0, rtol=1e-12)
+    >>> r.path, r.value                         # pi/8
+    ('float64', 0.39269908169872414)
+    >>> r = evaluate(c, "force", a=0.5, R=1.0, E_star=2.0, rtol=1e-30)
+    >>> r.path.startswith("mpmath@"), mpmath.nstr(r.value, 30)
+    (True, '0.39269908169872415480783042291')
     """
     t0 = time.perf_counter()
     d = contact.derivation(quantity)
@@ -346,7 +339,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     values = _abs_x(values)
 
     if certified:
-        return _certified(contact, d, quantity, values, rtol, dps, t0)
+        return _certified(d, quantity, values, rtol, dps, t0)
     if rtol is None:
         rtol = 10.0 ** -dps if dps is not None else 1e-12
     if not rtol > 0:
@@ -356,25 +349,27 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     # 1. the cheapest model that meets rtol
     if model and quantity == "force" and (expensive or rtol < 1e-15):
         m = _model(contact)
-        if m is not None:
+        # the model is the series of the profile's Eq. (10); a force law with
+        # other arguments (e.g. an adhesive one, with gamma) is not that series
+        if m is not None and set(m.names) == set(names):
             res = _try_model(m, quantity, values, rtol, t0)
             if res is not None:
                 return res
     # 2. float64
     notes = []
     if rtol >= 4 * EPS:
-        f64 = _float64_fn(contact, quantity)
+        f64 = _float64_fn(d)
         point = {k: _as_float(v) for k, v in values.items()}
         with np.errstate(all="ignore"):
             v = float(np.asarray(f64(**point)))
         if math.isfinite(v):
-            kappa = _kappa_float(f64, point, v)
-            cancel = _cancellation(contact, quantity, point, names)
+            kappa = condition_number_float(f64, point, f0=v)
+            cancel = _cancellation(d, point, names)
             factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
             est = factor * EPS * max(1.0, kappa, cancel) * abs(v)
             qerr = 0.0
             if not d.closed_form:
-                qerr = _quad_error(contact, quantity, point)
+                qerr = _quad_error(d, point)
                 est += qerr
             if est <= rtol * abs(v) or (v == 0 and est == 0):
                 note = (f"stable float64 export; estimate {factor:g} eps max(1, kappa, cancellation) "
@@ -391,7 +386,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         kappa = 1.0
         notes.append("rtol below float64 resolution")
     # 3. mpmath, precision from rtol and kappa, confirmed at +10 digits
-    return _mpmath_path(contact, d, quantity, values, rtol, kappa, t0, notes)
+    return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
 
 
 def _try_model(m, quantity, values, rtol, t0):
@@ -417,18 +412,16 @@ def _try_model(m, quantity, values, rtol, t0):
                       seconds=time.perf_counter() - t0, details={"terms": N, "ratio_bound": rb})
 
 
-def _quad_error(contact, quantity, point):
+def _quad_error(d, point):
     """The float64 quadrature's own error estimate (for quantities without a
     closed form): re-evaluate with error output where possible."""
-    cache = _cache(contact)
-    key = ("qerr", quantity)
+    cache = _CACHE.of(d)
+    key = "qerr"
     if key not in cache:
-        from .exports import _VectorQuad, stable_form
-        d = contact.derivation(quantity)
         form = stable_form(d).expr
         ints = list(form.atoms(sp.Integral))
         syms = d.variables_all
-        quads = [(_VectorQuad(I, conditions=()), I) for I in ints]
+        quads = [(VectorQuad(I, compile_plain_numpy, conditions=()), I) for I in ints]
         # d(form)/d(I) for the propagation of each integral's error
         coeffs = [sp.lambdify(syms, sp.diff(form.xreplace({I: sp.Symbol("_I_")}), sp.Symbol("_I_"))
                               .xreplace({sp.Symbol("_I_"): 0}), "numpy") for I in ints]
@@ -443,11 +436,10 @@ def _quad_error(contact, quantity, point):
     return total
 
 
-def _mpmath_fn(contact, d, quantity):
-    cache = _cache(contact)
-    key = ("mp", quantity)
+def _mpmath_fn(d):
+    cache = _CACHE.of(d)
+    key = "mp"
     if key not in cache:
-        from .exports import lambdify_mpmath, lambdify_mpmath_quad, stable_form
         syms = d.variables_all
         if d.closed_form:
             f = lambdify_mpmath(stable_form(d).expr, syms, stable=False)
@@ -457,8 +449,8 @@ def _mpmath_fn(contact, d, quantity):
     return cache[key]
 
 
-def _mpmath_path(contact, d, quantity, values, rtol, kappa, t0, notes):
-    f, names = _mpmath_fn(contact, d, quantity)
+def _mpmath_path(d, quantity, values, rtol, kappa, t0, notes):
+    f, names = _mpmath_fn(d)
     want = -math.log10(rtol)
     digits = int(math.ceil(want + 5 + math.log10(max(1.0, kappa))))
     digits = max(digits, 20)
@@ -480,19 +472,16 @@ def _mpmath_path(contact, d, quantity, values, rtol, kappa, t0, notes):
         digits *= 2
 
 
-def _certified(contact, d, quantity, values, rtol, dps, t0):
-    from .certified import arb_callable
-    from .exports import stable_form
+def _certified(d, quantity, values, rtol, dps, t0):
     if dps is None:
         dps = int(math.ceil(-math.log10(rtol))) if rtol else 15
     if not d.closed_form:
-        from .certified import CertificationError
         raise CertificationError(f"{quantity} has no closed form; certified evaluation needs one")
     syms = d.variables_all
-    cache = _cache(contact)
-    if ("arb", quantity) not in cache:
-        cache[("arb", quantity)] = arb_callable(stable_form(d).expr, syms)
-    enc = cache[("arb", quantity)]([values[s.name] for s in syms], dps=dps)
+    cache = _CACHE.of(d)
+    if "arb" not in cache:
+        cache["arb"] = arb_callable(stable_form(d).expr, syms)
+    enc = cache["arb"]([values[s.name] for s in syms], dps=dps)
     lo, hi = enc.lower, enc.upper
     with mpmath.workdps(dps + 10):
         mid = enc.mid

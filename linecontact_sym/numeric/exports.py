@@ -4,7 +4,7 @@ Backends
 --------
 ``"numpy"``  vectorised float64 (NumPy + ``scipy.special``).  By default the
              expression is first put in its *stable form*
-             (:func:`linecontact_sym.stable.stabilize`: Carlson forms for
+             (:func:`linecontact_sym.numeric.stable.stabilize`: Carlson forms for
              K - E, Gamma ratios without overflow, asinh/atan forms of
              atanh/acosh/asin near 1, 2F1 with the complementary argument,
              factored differences of squares), so the export stays accurate at
@@ -14,12 +14,9 @@ Backends
              ``ellipk(m)`` (both take the parameter m = k**2), 2F1/1F1/0F1 to
              ``hyp2f1``/``hyp1f1``/``hyp0f1``; anything SciPy lacks is evaluated
              point by point with mpmath at 20 digits.
-             Unevaluated integrals (no closed form) are evaluated by a
-             vectorised double-exponential (tanh-sinh) quadrature in float64
-             over the stable integrand: the interval is split at the
-             breakpoints of a ``Piecewise`` integrand, and each piece is mapped
-             symbolically onto [0, 1] so the distances to the end points (where
-             the integrable singularities sit) are formed exactly.
+             Unevaluated integrals (no closed form) are evaluated by the
+             vectorised float64 tanh-sinh quadrature of
+             :mod:`linecontact_sym.numeric.quadrature`.
 ``"mpmath"`` arbitrary precision at ``dps`` digits (``mpmath.workdps``; the
              global precision is never changed); the stable form is used too.
              Unevaluated integrals are evaluated by the derivation's reference
@@ -27,14 +24,12 @@ Backends
              alternative).
 
 ``stable=False`` gives the plain translation of the expression as derived.
-Exports are cached on the derivation (stabilising and lambdifying once).
+Exports are cached per derivation (stabilising and lambdifying once) in a
+cache of this module, not in the derivation (:mod:`.cache`).
 Removable singularities at an argument = 0 (e.g. x**2*atanh(sqrt(a**2 -
 x**2)/a) at x = 0) are patched with the symbolic limit.
 """
 from __future__ import annotations
-
-import itertools
-import random
 
 import mpmath
 import numpy as np
@@ -43,7 +38,10 @@ import sympy as sp
 
 from ..parsing import to_sympy
 from ..core.errors import DomainError
-from .stable import MPMATH_FUNCS, NUMPY_FUNCS, stabilize
+from .cache import IdentityCache
+from .quadrature import VectorQuad, piecewise_breakpoints
+from .special import MPMATH_FUNCS, NUMPY_FUNCS
+from .stable import stabilize
 
 _SCIPY_FUNCS = {
     "_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1,
@@ -96,214 +94,39 @@ def _fold_constants(expr):
     return expr.replace(want, do)
 
 
-# ============================================================== float64 quadrature
-def _ts_levels(levels=(8, 16, 32, 64, 128), tmax=6.2):
-    """Nested tanh-sinh node sets on [0, 1] for h = 1/8, 1/16, ... : for each
-    level the *new* nodes (v, w = 1 - v, both to full relative precision) and
-    their weights phi(t) (the level sum is h * sum phi f)."""
-    out = []
-    hmax = levels[-1]
-    kmax = int(tmax * hmax)
-    k = np.arange(-kmax, kmax + 1)
-    t = k / hmax
-    ps = np.pi / 2 * np.sinh(t)
-    with np.errstate(over="ignore"):
-        v = 1 / (1 + np.exp(-2 * ps))
-        w = 1 / (1 + np.exp(2 * ps))
-        phi = (np.pi / 2) * np.cosh(t) / np.cosh(ps) ** 2 / 2
-    keep = (v > 0) & (w > 0) & (phi > 0)
-    seen = np.zeros(k.size, dtype=bool)
-    for m in levels:
-        step = hmax // m
-        sel = (k % step == 0) & keep & ~seen
-        seen |= sel
-        out.append((1.0 / m, v[sel], w[sel], phi[sel]))
-    return out
-
-
-_TS_LEVELS = _ts_levels()
-#: relative change between two tanh-sinh levels below which the finer one is
-#: accepted (the method roughly doubles the correct digits per level)
-_TS_ACCEPT = 1e-10
-
-
-def _relations_in(expr, var):
-    """Break points in ``var`` from the conditions of Piecewise expressions."""
-    out = []
-    for pw in expr.atoms(sp.Piecewise):
-        for _, cond in pw.args:
-            for rel in (cond.atoms(sp.core.relational.Relational) if cond not in (sp.true, sp.false) else ()):
-                if rel.has(var):
-                    try:
-                        sol = sp.solve(sp.Eq(rel.lhs, rel.rhs), var)
-                    except Exception:
-                        sol = []
-                    out += [s_ for s_ in sol if not s_.has(var)]
-    uniq = []
-    for b in out:
-        if b not in uniq:
-            uniq.append(b)
-    return uniq
-
-
-class _VectorQuad:
-    """Float64 vectorised tanh-sinh quadrature of one ``Integral(f, (s, lo, hi))``.
-
-    For every ordering case of the Piecewise breakpoints relative to (lo, hi)
-    the integral is split into sub-intervals [p, q] with *symbolic* ends; on
-    each the integrand's branch is resolved, s = p + (q - p) v substituted and
-    1 - v named w, the result put in stable form and lambdified in
-    (params, v, w).  Evaluation selects the case per point.
-    """
-
-    def __init__(self, integral, stable=True, conditions=()):
-        self.integral = integral
-        f = integral.function
-        (s, lo, hi) = integral.limits[0]
-        self.params = sorted(integral.free_symbols, key=lambda q: q.name)
-        bps = [b for b in _relations_in(f, s) if b.free_symbols <= set(self.params)]
-        self.bps = bps
-        self.cases = []
-        self.conditions = conditions
-        v, w = sp.Dummy("v", positive=True), sp.Dummy("w", positive=True)
-        self.v, self.w = v, w
-        bp_fns = [sp.lambdify(self.params, b, "numpy") for b in bps]
-        self.bp_fns = bp_fns
-        self.lo_fn = sp.lambdify(self.params, lo, "numpy")
-        self.hi_fn = sp.lambdify(self.params, hi, "numpy")
-        # each breakpoint lies below lo (-1), inside (lo, hi) (0) or above hi (+1)
-        for where in itertools.product((-1, 0, 1), repeat=len(bps)):
-            ins = [b for b, w_ in zip(bps, where) if w_ == 0]
-            sample = self._sample_case(lo, hi, bps, where)
-            if sample is None:
-                continue
-            ends = [lo] + self._order(ins, sample) + [hi]
-            pieces = []
-            for p, q in zip(ends[:-1], ends[1:]):
-                g = self._branch(f, s, p, q, sample)
-                if g is None or g == 0:
-                    continue
-                gv = (g.xreplace({s: p + (q - p) * v}) * (q - p))
-                gv = sp.factor_terms(gv)
-                if stable:
-                    gv = stabilize(gv, check=False).expr
-                gv = gv.xreplace({1 - v: w, v - 1: -w, -v + 1: w})
-                pieces.append(lambdify_numpy(gv, list(self.params) + [v, w], stable=False))
-            self.cases.append((where, pieces))
-
-    def _sample_case(self, lo, hi, bps, where):
-        rng = random.Random(5)
-        for _ in range(3000):
-            vals = {p: sp.Rational(rng.randint(1, 400), 100) for p in self.params}
-            try:
-                L, H = float(lo.xreplace(vals)), float(hi.xreplace(vals))
-                if not L < H:
-                    continue
-                pos = [float(b.xreplace(vals)) for b in bps]
-                if all((w_ == -1 and p_ < L) or (w_ == 0 and L < p_ < H) or (w_ == 1 and p_ > H)
-                       for p_, w_ in zip(pos, where)) and \
-                        all(bool(c.xreplace(vals)) for c in self.conditions):
-                    return vals
-            except (TypeError, ValueError):
-                continue
-        return None
-
-    @staticmethod
-    def _order(ins, sample):
-        if sample is None or len(ins) < 2:
-            return list(ins)
-        return sorted(ins, key=lambda b: float(b.xreplace(sample)))
-
-    @staticmethod
-    def _branch(f, s, p, q, sample):
-        if not f.has(sp.Piecewise):
-            return f
-        if sample is None:
-            return None
-        mid = ((p + q) / 2).xreplace(sample)
-
-        def pick(pw):
-            for e, c in pw.args:
-                cv = c.xreplace({s: mid, **sample}) if c not in (sp.true,) else sp.true
-                if cv == sp.true or (cv != sp.false and bool(cv)):
-                    return e
-            return sp.nan
-        return f.replace(lambda e: isinstance(e, sp.Piecewise), pick)
-
-    def _integrate(self, pieces, args):
-        """Adaptive-level tanh-sinh over [0, 1] of sum(pieces) for the points
-        in ``args`` (columns); returns (value, error estimate)."""
-        npts = args[0].shape[0]
-
-        def level_sum(lev, rows):
-            h, v, w, phi = _TS_LEVELS[lev]
-            a_ = [t[rows] for t in args] + [v[None, :], w[None, :]]
-            tot = np.zeros(rows.size)
-            for piece in pieces:
-                fv = np.broadcast_to(piece(*a_), (rows.size, v.size))
-                tot += fv @ phi
-            return tot
-        rows = np.arange(npts)
-        prev = level_sum(0, rows) / 8
-        cur = prev / 2 + level_sum(1, rows) / 16
-        err = np.abs(cur - prev)
-        for lev in range(2, len(_TS_LEVELS)):
-            todo = np.flatnonzero(~(err <= _TS_ACCEPT * np.abs(cur)))
-            todo = todo[np.isfinite(cur[todo]) | np.isnan(cur[todo])]
-            if todo.size == 0:
-                break
-            h = _TS_LEVELS[lev][0]
-            new = cur[todo] / 2 + h * level_sum(lev, todo)
-            err[todo] = np.abs(new - cur[todo])
-            cur[todo] = new
-        rel = err / np.maximum(np.abs(cur), 1e-300)
-        est = np.where(rel <= _TS_ACCEPT, 10 * err * np.minimum(rel, 1.0), err) + 4 * 2.2e-16 * np.abs(cur)
-        return cur, est
-
-    def __call__(self, *vals, with_error=False):
-        vals = np.broadcast_arrays(*[np.asarray(t, dtype=float) for t in vals])
-        shape = vals[0].shape
-        flat = [t.ravel() for t in vals]
-        npts = flat[0].size
-        out = np.zeros(npts)
-        err = np.zeros(npts)
-        lo, hi = np.broadcast_to(self.lo_fn(*flat), (npts,)), np.broadcast_to(self.hi_fn(*flat), (npts,))
-        bpv = [np.broadcast_to(fn(*flat), (npts,)) for fn in self.bp_fns]
-        with np.errstate(all="ignore"):
-            for where, pieces in self.cases:
-                if not pieces:
-                    continue
-                mask = np.ones(npts, dtype=bool)
-                for w_, b in zip(where, bpv):
-                    mask &= np.where(b <= lo, -1, np.where(b >= hi, 1, 0)) == w_
-                idx = np.flatnonzero(mask)
-                for start in range(0, idx.size, 2048):
-                    sel = idx[start:start + 2048]
-                    val, est = self._integrate(pieces, [t[sel][:, None] for t in flat])
-                    out[sel] += val
-                    err[sel] += est
-        out = out.reshape(shape)
-        err = err.reshape(shape)
-        if with_error:
-            return (out[()], err[()]) if out.ndim == 0 else (out, err)
-        return out[()] if out.ndim == 0 else out
-
-
 # ============================================================== lambdify
 def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None):
-    """A float64 NumPy/SciPy function of ``args`` for ``expr``.
+    """A float64 function ``f(*values)`` computing ``expr`` at ``args`` = values
+    (``args`` a list of symbols; NumPy arrays broadcast).
 
-    ``stable=True`` (default) evaluates the stable form of ``expr``;
-    unevaluated ``Integral`` objects become vectorised tanh-sinh quadratures.
-    Removable singularities at an argument = 0 (e.g. x**2*atanh(...) at x = 0)
-    are patched with the symbolic limit of ``original`` (default: ``expr``)."""
+    ``stable=True`` (default) evaluates the stable form of ``expr``
+    (:func:`~linecontact_sym.numeric.stable.stabilize`, its rewrites checked
+    where ``conditions`` hold); unevaluated ``Integral`` objects become
+    vectorised tanh-sinh quadratures
+    (:class:`~linecontact_sym.numeric.quadrature.VectorQuad`).  Removable
+    singularities at an argument = 0 (e.g. x**2*atanh(...) at x = 0) are
+    patched with the symbolic limit of ``original`` (default: ``expr``).
+    Domain: real arguments where ``expr`` is real (elsewhere NaN).
+
+    K(m) - E(m) = (pi m/4)(1 + 3m/8 + ...) at m = 1e-10: the plain
+    translation loses six digits to cancellation, the stable form none.
+
+    >>> import sympy as sp
+    >>> m = sp.Symbol("m", positive=True)
+    >>> k_minus_e = sp.elliptic_k(m) - sp.elliptic_e(m)
+    >>> exact = 3.141592653589793e-10 / 4 * (1 + 3e-10 / 8)
+    >>> bool(abs(lambdify_numpy(k_minus_e, [m])(1e-10) / exact - 1) < 1e-15)
+    True
+    >>> bool(abs(lambdify_numpy(k_minus_e, [m], stable=False)(1e-10) / exact - 1) > 1e-9)
+    True
+    """
     original = expr if original is None else original
     if stable:
         expr = stabilize(expr, conditions).expr
     quads = {}
     if expr.has(sp.Integral):
         def to_quad(I):
-            q = _VectorQuad(I, stable=stable, conditions=conditions)
+            q = VectorQuad(I, compile_plain_numpy, stable=stable, conditions=conditions)
             name = f"_quad{len(quads)}"
             quads[name] = q
             return sp.Function(name)(*q.params)
@@ -332,6 +155,13 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
     return patched
 
 
+def compile_plain_numpy(expr, args):
+    """:func:`lambdify_numpy` of ``expr`` as it is (no stable rewriting): the
+    compiler :class:`~linecontact_sym.numeric.quadrature.VectorQuad` uses for
+    the pieces of an integrand that is already in stable form."""
+    return lambdify_numpy(expr, args, stable=False)
+
+
 def _removable_limit(expr, sym):
     """lim_{sym -> 0+} expr if expr is undefined (nan) at sym = 0 but the limit
     is finite; else None."""
@@ -354,8 +184,24 @@ def _removable_limit(expr, sym):
 
 
 def lambdify_mpmath(expr, args, stable: bool = True, conditions=()):
-    """An mpmath function of ``args`` for ``expr`` (precision: the caller's
-    ``mpmath.workdps``)."""
+    """An mpmath function ``f(*values)`` computing ``expr`` at ``args`` = values,
+    at the caller's precision (``mpmath.workdps``; the global precision is
+    never changed).
+
+    ``stable=True`` (default) evaluates the stable form (rewrites checked where
+    ``conditions`` hold): fewer digits are lost to cancellation, so a given
+    accuracy needs a lower working precision.  The stable primitives map to
+    :data:`~linecontact_sym.numeric.special.MPMATH_FUNCS`.  Domain: scalar
+    arguments where ``expr`` is defined; complex results are returned as
+    ``mpc``.  No unevaluated integrals (see :func:`lambdify_mpmath_quad`).
+
+    >>> import mpmath, sympy as sp
+    >>> m = sp.Symbol("m", positive=True)
+    >>> f = lambdify_mpmath(sp.elliptic_k(m) - sp.elliptic_e(m), [m])
+    >>> with mpmath.workdps(30):
+    ...     print(f(mpmath.mpf("1e-10")))
+    7.85398163426900740744905934376e-11
+    """
     if stable:
         expr = stabilize(expr, conditions).expr
     return sp.lambdify(args, expr, modules=[dict(MPMATH_FUNCS), "mpmath"])
@@ -376,7 +222,7 @@ def lambdify_mpmath_quad(expr, args, stable: bool = False):
         fI = sp.lambdify([s_] + params, I.function, modules=[dict(MPMATH_FUNCS), "mpmath"])
         lo_f = sp.lambdify(params, lo, "mpmath")
         hi_f = sp.lambdify(params, hi, "mpmath")
-        bp_fs = [sp.lambdify(params, b, "mpmath") for b in _relations_in(I.function, s_)
+        bp_fs = [sp.lambdify(params, b, "mpmath") for b in piecewise_breakpoints(I.function, s_)
                  if b.free_symbols <= set(params)]
 
         def q(*vals):
@@ -406,9 +252,15 @@ def lambdify_mpmath_quad(expr, args, stable: bool = False):
     return sp.lambdify(args, expr, modules=[dict(MPMATH_FUNCS, **quads), "mpmath"])
 
 
+#: stable forms and compiled functions per Derivation, kept here, not in the
+#: derivation (see :mod:`linecontact_sym.numeric.cache`)
+_CACHE = IdentityCache()
+
+
 def stable_form(derivation):
-    """The (cached) :class:`~linecontact_sym.stable.StableForm` of a derivation."""
-    cache = derivation.__dict__.setdefault("_lcs_numeric_cache", {})
+    """The (cached) :class:`~linecontact_sym.numeric.stable.StableForm` of a
+    derivation's expression, its rewrites checked under its conditions."""
+    cache = _CACHE.of(derivation)
     if "stable" not in cache:
         cache["stable"] = stabilize(derivation.expr, _conditions(derivation))
     return cache["stable"]
@@ -420,7 +272,7 @@ def _conditions(derivation):
 
 
 def _cached_lambdify(derivation, kind, stable):
-    cache = derivation.__dict__.setdefault("_lcs_numeric_cache", {})
+    cache = _CACHE.of(derivation)
     key = (kind, stable)
     if key not in cache:
         syms = derivation.variables_all
@@ -464,21 +316,44 @@ def check_arguments(names, values: dict, quantity: str):
 
 def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dict | None = None,
                   stable: bool = True):
-    """A callable ``fn(**values)`` for a :class:`Derivation`.
+    """A callable ``fn(**values)`` evaluating a derived quantity.
 
-    Keyword arguments are the symbol names (``a``, ``x``, ``E_star``, ``R`` ...);
-    ``params`` fixes some of them once.  With ``backend='numpy'`` the
-    arguments may be arrays (broadcast); with ``'mpmath'`` scalars.
-    ``stable`` (default True) evaluates the stable form
-    (:mod:`linecontact_sym.stable`).
+    ``derivation``: a :class:`~linecontact_sym.method.derivation.Derivation`
+    (its ``expr``, ``variables_all``, ``closed_form``, ``quantity`` and, for
+    quantities without a closed form in mpmath, ``reference`` are used).
+    Keyword arguments are the symbol names (``a``, ``x``, ``E_star``, ``R``
+    ...); ``params`` fixes some of them once; a missing or unknown name raises
+    :class:`~linecontact_sym.core.errors.DomainError`.  ``backend='numpy'``:
+    vectorised float64, arrays broadcast (:func:`lambdify_numpy`, compiled
+    once per derivation); ``'mpmath'``: scalars at ``dps`` digits (the closed
+    form, or the derivation's reference quadrature).  ``stable`` (default True)
+    evaluates the stable form (:mod:`linecontact_sym.numeric.stable`).
+    Domain: the quantity's (e.g. a > 0, |x| <= a for a pressure); outside it
+    the value is NaN or complex, not an error.  ``fn.arguments`` lists the
+    names.
+
+    >>> import sympy as sp
+    >>> from linecontact_sym.core.symbols import a, E_star
+    >>> from linecontact_sym.method.derivation import Derivation
+    >>> R = sp.Symbol("R", positive=True)
+    >>> d = Derivation("force", sp.pi * E_star * a**2 / (4 * R), True, "example")   # Eq. (13)
+    >>> P = make_callable(d)
+    >>> P.arguments
+    ('E_star', 'R', 'a')
+    >>> P(a=[0.1, 0.2], R=1.0, E_star=2.0)
+    array([0.01570796, 0.06283185])
+    >>> import mpmath
+    >>> mpmath.nstr(make_callable(d, "mpmath", dps=25, params={"R": 1, "E_star": 4})(a=1), 25)
+    '3.141592653589793238462643'
     """
     params = dict(params or {})
     syms = derivation.variables_all
     names = [s.name for s in syms]
+    quantity = derivation.quantity   # the closures below must not hold the derivation
 
     def collect(kw):
         merged = {**params, **kw}
-        check_arguments(names, merged, derivation.quantity)
+        check_arguments(names, merged, quantity)
         return [merged[n] for n in names]
 
     if backend not in ("numpy", "mpmath"):

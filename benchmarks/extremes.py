@@ -1,0 +1,73 @@
+"""The documented grid of extreme arguments, and the points it gives a quantity.
+
+Shared by ``tests/test_extremes.py`` (``tests/conftest.py`` puts this
+directory on ``sys.path``) and ``benchmarks/bench.py``.  The grid is keyed to
+the seed laws' parameter names (R, b, n, theta ...): it belongs to the
+audit of those laws, not to the library (whose generic accuracy tools are in
+:mod:`linecontact_sym.numeric.accuracy`).
+"""
+from __future__ import annotations
+
+import itertools
+
+#: The documented grid of extreme arguments (dimensionless ratios).
+EXTREME_GRID = {
+    # a/R (cylinders, parabola): from 1e-12 to 1 - 1e-12
+    "a_over_R": [1e-12, 1e-8, 1e-4, 1e-2, 0.1, 0.5, 0.9, 0.99, 1 - 1e-4, 1 - 1e-8, 1 - 1e-12],
+    # x/a inside the contact (pressure), edge included
+    "x_in": [0.0, 1e-12, 1e-8, 1e-4, 0.1, 0.5, 0.9, 0.999, 1 - 1e-8, 1 - 1e-12, 1.0],
+    # x/a outside the contact (gap), edge included
+    "x_out": [1.0, 1 + 1e-12, 1 + 1e-8, 1 + 1e-4, 1.01, 1.5, 3.0, 10.0, 1e3, 1e6],
+    # power-law exponent n, with exactly 1 and 1 +- 1e-9
+    "n": [1e-3, 0.01, 0.1, 0.5, 1 - 1e-9, 1.0, 1 + 1e-9, 1.5, 2.0, 2.5, 3.0, 5.0, 10.0, 33.3,
+          100.0, 333.0, 1000.0],
+    # b/a (worn cylinder flat half-width over contact half-width)
+    "b_over_a": [1e-12, 1e-6, 0.1, 0.5, 0.9, 1 - 1e-6, 1 - 1e-12, 1.0, 1.5],
+    # absolute scales the ratios are applied at
+    "a": [1e-3, 1.0, 7.5],
+}
+
+
+def extreme_points(names, quantity: str, size: str = "full"):
+    """Points of :data:`EXTREME_GRID` for a quantity with arguments ``names``
+    (symbol names).  Ratios are applied to the half-width ``a``: R = a/(a/R),
+    b = (b/a) a, x = (x/a) a.  Other parameters get one generic value
+    (E_star = 2, c = 1.3, theta = 0.3).  ``size='small'`` thins the grid (for
+    quantities that only have a quadrature)."""
+    G = EXTREME_GRID
+    thin = (lambda L, k: L[::k] if size == "small" else L)
+    lists = {}
+    lists["a"] = G["a"][1:] if quantity != "force" else G["a"]
+    if size == "small":
+        lists["a"] = [1.0]
+    if "R" in names:
+        lists["a/R"] = G["a_over_R"] if quantity == "force" else [1e-8, 0.5, 1 - 1e-8]
+        if size == "small":
+            lists["a/R"] = [1e-4, 0.5, 0.99]
+    if "b" in names:
+        lists["b/a"] = G["b_over_a"] if size != "small" else [1e-6, 0.5, 1 - 1e-6, 1.5]
+    if "n" in names:
+        lists["n"] = G["n"] if quantity == "force" else [n for n in G["n"] if n not in (0.01, 2.5, 33.3)]
+    if "x" in names:
+        lists["x/a"] = thin(G["x_in"] if quantity == "pressure" else G["x_out"], 2)
+    if quantity != "force" and "R" not in names and "b" not in names:
+        lists["a"] = [1.0]
+    keys = list(lists)
+    pts = []
+    for combo in itertools.product(*[lists[k] for k in keys]):
+        d = dict(zip(keys, combo))
+        a_ = d["a"]
+        pt = {"a": a_}
+        if "a/R" in d:
+            pt["R"] = a_ / d["a/R"]
+        if "b/a" in d:
+            pt["b"] = d["b/a"] * a_
+        if "n" in d:
+            pt["n"] = d["n"]
+        if "x/a" in d:
+            pt["x"] = d["x/a"] * a_
+        for nm, val in (("E_star", 2.0), ("c", 1.3), ("theta", 0.3)):
+            if nm in names:
+                pt[nm] = val
+        pts.append({k: pt[k] for k in names if k in pt})
+    return pts

@@ -1,0 +1,56 @@
+"""Optional dependencies, grouped as the package's extras.
+
+matplotlib (plots) and python-flint (certified evaluation) are not needed to
+derive, check or export anything, so they are optional::
+
+    pip install "linecontact_sym[plot]"        # matplotlib
+    pip install "linecontact_sym[certified]"   # python-flint
+    pip install "linecontact_sym[all]"         # both
+
+Code that needs one imports it through :func:`require`, at the time of use
+(never at module import), and a missing package becomes a
+:class:`~linecontact_sym.core.errors.MissingExtraError` that says what to
+install.
+
+>>> require("certified", "math").sqrt(4.0)       # any importable module works
+2.0
+>>> require("nonsense", "math")
+Traceback (most recent call last):
+...
+ValueError: unknown extra 'nonsense'; the extras are ['all', 'certified', 'plot']
+"""
+from __future__ import annotations
+
+import importlib
+
+from .errors import MissingExtraError
+
+__all__ = ["EXTRAS", "require", "install_hint"]
+
+#: extra -> (distribution names it installs, what it is for)
+EXTRAS = {
+    "plot": (("matplotlib",), "plotting"),
+    "certified": (("python-flint",), "certified (Arb ball) evaluation"),
+    "all": (("matplotlib", "python-flint"), "every optional feature"),
+}
+
+
+def install_hint(extra: str) -> str:
+    """The pip command that installs ``extra``: ``pip install "linecontact_sym[extra]"``."""
+    return f'pip install "linecontact_sym[{extra}]"'
+
+
+def require(extra: str, module: str):
+    """Import and return ``module`` (a dotted name, e.g. ``"matplotlib.pyplot"``)
+    that the optional ``extra`` provides; if it cannot be imported, raise
+    :class:`~linecontact_sym.core.errors.MissingExtraError` naming the extra
+    and the command that installs it."""
+    if extra not in EXTRAS:
+        raise ValueError(f"unknown extra {extra!r}; the extras are {sorted(EXTRAS)}")
+    try:
+        return importlib.import_module(module)
+    except ImportError as exc:
+        dists, purpose = EXTRAS[extra]
+        raise MissingExtraError(
+            f"{purpose} needs the optional package {' and '.join(dists)} (module {module!r} "
+            f"could not be imported: {exc}); install it with: {install_hint(extra)}") from exc

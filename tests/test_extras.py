@@ -1,0 +1,86 @@
+"""Optional dependencies: matplotlib ([plot]) and python-flint ([certified]).
+
+The package imports without them; using a feature that needs one raises
+MissingExtraError (a LineContactError and an ImportError) whose message says
+which extra to install.  A missing module is simulated by
+``sys.modules[name] = None`` (then ``import name`` raises ImportError).
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+import linecontact_sym as lcs
+from linecontact_sym.core.errors import LineContactError, MissingExtraError
+from linecontact_sym.core.extras import require
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_require_names_the_extra(monkeypatch):
+    monkeypatch.setitem(sys.modules, "flint", None)
+    with pytest.raises(MissingExtraError) as exc:
+        require("certified", "flint")
+    assert 'pip install "linecontact_sym[certified]"' in str(exc.value)
+    assert "python-flint" in str(exc.value)
+    assert isinstance(exc.value, LineContactError) and isinstance(exc.value, ImportError)
+
+
+def test_certified_evaluation_without_python_flint(monkeypatch):
+    from linecontact_sym.numeric.certified import arb_evaluate
+    from linecontact_sym.numeric.evaluate import evaluate
+    monkeypatch.setitem(sys.modules, "flint", None)
+    x = sp.Symbol("x", positive=True)
+    with pytest.raises(MissingExtraError, match=r'pip install "linecontact_sym\[certified\]"'):
+        arb_evaluate(sp.sqrt(x), [x], [2])
+    with pytest.raises(MissingExtraError, match=r"linecontact_sym\[certified\]"):
+        evaluate(lcs.parabola(), "force", certified=True, a=0.5, R=1.0, E_star=1.0)
+    # without certified=True nothing needs python-flint
+    assert evaluate(lcs.parabola(), "force", a=0.5, R=1.0, E_star=1.0).path == "float64"
+
+
+def test_plotting_without_matplotlib(monkeypatch):
+    from linecontact_sym.claims import figures
+    monkeypatch.setitem(sys.modules, "matplotlib", None)
+    monkeypatch.setitem(sys.modules, "matplotlib.pyplot", None)
+    with pytest.raises(MissingExtraError, match=r'pip install "linecontact_sym\[plot\]"'):
+        figures._plt()
+
+
+def test_the_package_imports_without_the_extras():
+    """A fresh interpreter with flint and matplotlib blocked imports every module
+    of the package (our copy: the worktree first on sys.path)."""
+    code = (
+        "import sys, pkgutil, importlib\n"
+        f"sys.path.insert(0, {str(ROOT)!r})\n"
+        "sys.modules['flint'] = None\n"
+        "sys.modules['matplotlib'] = None\n"
+        "import linecontact_sym\n"
+        f"assert linecontact_sym.__file__.startswith({str(ROOT)!r}), linecontact_sym.__file__\n"
+        "names = [m.name for m in pkgutil.walk_packages(linecontact_sym.__path__, 'linecontact_sym.')\n"
+        "         if not m.name.endswith('__main__')]\n"
+        "for name in names:\n"
+        "    importlib.import_module(name)\n"
+        "print(len(names))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert int(out.stdout.strip()) > 20
+
+
+def test_pyproject_declares_the_extras():
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python < 3.11
+        import tomli as tomllib
+    meta = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+    deps = " ".join(meta["dependencies"])
+    assert "matplotlib" not in deps and "flint" not in deps
+    extras = meta["optional-dependencies"]
+    assert any(d.startswith("matplotlib") for d in extras["plot"])
+    assert any(d.startswith("python-flint") for d in extras["certified"])
+    assert extras["all"] == ["linecontact_sym[plot,certified]"]
+    assert "linecontact_sym[all]" in extras["test"]

@@ -1,0 +1,332 @@
+"""Every stable rewrite, and every stable special function, on its own.
+
+For each rule of ``linecontact_sym.numeric.stable.RULES``: it fires on its
+pattern (and the result is the same function: 50-digit mpmath at a random
+point), it leaves a non-matching expression alone, and at an argument where
+the float64 translation of the original loses digits the float64 value of
+the rewritten form is accurate -- both compared with the ORIGINAL expression
+evaluated by SymPy/mpmath at 50 digits at the same (exactly representable)
+arguments.  For each special primitive: its float64 and mpmath
+implementations against mpmath's own functions (or exact values) at high
+precision.
+"""
+from __future__ import annotations
+
+import math
+import random
+
+import mpmath
+import numpy as np
+import pytest
+import sympy as sp
+
+from linecontact_sym.numeric import stable as ST
+from linecontact_sym.numeric.exports import lambdify_numpy
+from linecontact_sym.numeric.special import (MPMATH_FUNCS, NUMPY_FUNCS, carlson_rd, carlson_rf, carlson_rg,
+                                             gamma_ratio, hyp2f1c, np_gamma_ratio, np_hyp2f1c, np_rd, np_rf,
+                                             np_rg)
+
+a, x, R, n, c = sp.symbols("a x R n c", positive=True)
+half = sp.S.Half
+EPS = 2.0**-52
+
+
+# ----------------------------------------------------------------- helpers
+def reference(expr, point, dps=50):
+    """``expr`` at ``point`` (symbol -> float, taken exactly) with SymPy at ``dps`` digits."""
+    vals = {s: sp.Rational(v) if isinstance(v, float) else sp.sympify(v) for s, v in point.items()}
+    v = sp.N(expr.xreplace(vals), dps)
+    assert v.is_real and v.is_finite, f"reference of {expr} at {point} is {v}"
+    with mpmath.workdps(dps):
+        return mpmath.mpf(v)
+
+
+def float64(expr, point):
+    """The plain float64 translation of ``expr`` (no stable rewriting) at ``point``."""
+    syms = list(point)
+    with np.errstate(all="ignore"):
+        return float(lambdify_numpy(expr, syms, stable=False)(*[point[s] for s in syms]))
+
+
+def rel_error(value, ref):
+    if not math.isfinite(value):
+        return math.inf
+    with mpmath.workdps(50):
+        return float(abs((mpmath.mpf(value) - ref) / ref))
+
+
+def assert_same_function(old, new, ranges, seed=3):
+    """old == new at 50 digits at two random points of ``ranges`` (symbol -> (lo, hi))."""
+    rng = random.Random(seed)
+    for _ in range(2):
+        pt = {s: rng.uniform(lo, hi) for s, (lo, hi) in ranges.items()}
+        r_old, r_new = reference(old, pt), reference(new, pt)
+        with mpmath.workdps(50):
+            assert abs(r_new - r_old) <= mpmath.mpf(10) ** -45 * abs(r_old), (pt, r_old, r_new)
+
+
+def check_rule(rule, expr, point, ranges, lost, kept, ref_point=None):
+    """The rule fires on ``expr``; same function; at ``point`` the plain
+    float64 of ``expr`` has a relative error above ``lost`` and that of the
+    rewritten form below ``kept`` (reference: ``expr`` at 50 digits, at
+    ``ref_point`` if given -- for a removable singularity, a point 1e-30 away)."""
+    assert rule.applies(expr)
+    new = rule.apply(expr)
+    assert new != expr, f"{rule.name} did not fire on {expr}"
+    assert_same_function(expr, new, ranges)
+    ref = reference(expr, ref_point or point)
+    err_old = rel_error(float64(expr, point), ref)
+    err_new = rel_error(float64(new, point), ref)
+    assert err_old > lost, f"the original does not lose digits here ({err_old:.1e}): a useless test point"
+    assert err_new < kept, f"{rule.name}: rewritten form off by {err_new:.1e} (original {err_old:.1e})"
+    return new
+
+
+# ----------------------------------------------------------------- the rule set
+def test_rules_are_named_documented_and_ordered():
+    names = [r.name for r in ST.RULES]
+    assert names == ["elliptic->carlson", "hyp2f1-connection", "gamma-absorb", "gamma-ratio", "atanh->asinh",
+                     "acosh->asinh", "asin->atan", "acos->atan", "hyp2f1-complement", "conjugate", "factor"]
+    for r in ST.RULES:
+        assert isinstance(r, ST.StableRule)
+        assert type(r).__doc__ and "=" in type(r).__doc__, f"{r.name}: the docstring states no identity"
+
+
+def test_rule_without_its_head_is_not_tried():
+    expr = sp.sin(x) + a
+    for r in ST.RULES:
+        if r.heads:
+            assert not r.applies(expr), r.name
+        assert r.apply(expr) == expr, r.name
+
+
+# ----------------------------------------------------------------- one test per rule
+def test_elliptic_to_carlson():
+    """K(m) - E(m) = (m/3) R_D(0, 1 - m, 1), m = a^2/R^2: no cancellation at a/R = 1e-5."""
+    expr = sp.elliptic_k(a**2 / R**2) - sp.elliptic_e(a**2 / R**2)
+    new = check_rule(ST.EllipticToCarlson(), expr, {a: 1e-5, R: 1.0}, {a: (0.1, 0.9), R: (1.0, 1.0)},
+                     lost=1e-8, kept=4 * EPS)
+    assert new == a**2 * carlson_rd(0, (R - a) * (R + a) / R**2, 1) / (3 * R**2)
+    # K and E alone: R_F and 2 R_G
+    assert ST.EllipticToCarlson().apply(sp.elliptic_e(a**2 / R**2)) == 2 * carlson_rg(0, (R - a) * (R + a) / R**2, 1)
+    # not its pattern: an incomplete integral E(phi|m)
+    inc = sp.elliptic_e(x, a**2 / R**2)
+    assert ST.EllipticToCarlson().apply(inc) == inc
+
+
+def test_hyp2f1_connection():
+    """The power-law gap's c*x**n against the x**n part of the 2F1 about z = 1:
+    the connection formula makes the cancellation exact (one term left).  Its
+    output is finished by FactorDifferences in stabilize(); with it, float64
+    is accurate at x = a(1 + 1e-8) where the original loses 8 digits."""
+    rule = ST.Hyp2f1Connection()
+    expr = c * x**n - a**n * c * sp.gamma(n / 2 + half) / (sp.sqrt(sp.pi) * sp.gamma(n / 2 + 1)) \
+        * sp.hyper([half, n / 2], [n / 2 + 1], a**2 / x**2)
+    assert rule.applies(expr)
+    new = rule.apply(expr)
+    assert len(sp.Add.make_args(new)) == 1 and len(sp.Add.make_args(sp.expand(expr))) == 2
+    assert_same_function(expr, new, {a: (0.5, 1.0), x: (1.2, 3.0), n: (0.5, 4.0), c: (0.5, 2.0)})
+    pt = {a: 1.0, x: 1.00000001, n: 3.0, c: 1.3}
+    ref = reference(expr, pt)
+    assert rel_error(float64(expr, pt), ref) > 1e-10
+    finished = ST.FactorDifferences().apply(new)
+    assert rel_error(float64(finished, pt), ref) < 8 * EPS
+    # not its pattern: c - a - b an integer (no connection formula of this form),
+    # and a lone 2F1 whose connection formula cancels nothing
+    for other in (sp.hyper([1, 1], [2], a / x), sp.hyper([half, sp.Rational(3, 2)], [sp.Rational(5, 2)], a**2 / x**2)):
+        assert rule.apply(other) == other
+
+
+def test_gamma_absorb():
+    """(n - 1) Gamma(n/2 - 1/2) = 2 Gamma(n/2 + 1/2): 0 * inf (NaN) at n = 1 removed."""
+    rule = ST.GammaAbsorb()
+    expr = (n - 1) * sp.gamma(n / 2 - half)
+    new = check_rule(rule, expr, {n: 1.0}, {n: (1.5, 4.0)}, lost=1.0, kept=2 * EPS,
+                     ref_point={n: sp.Integer(1) + sp.Rational(1, 10**30)})
+    assert new == 2 * sp.gamma(n / 2 + half)
+    other = (n + 1) * sp.gamma(n)          # (n + 1)/n is no number
+    assert rule.apply(other) == other
+
+
+def test_gamma_ratio():
+    """Gamma(n/2 + 1)/Gamma(n/2 + 1/2) = gamma_ratio(...): both overflow at n = 1000."""
+    rule = ST.GammaRatio()
+    expr = sp.gamma(n / 2 + 1) / sp.gamma(n / 2 + half)
+    new = check_rule(rule, expr, {n: 1000.0}, {n: (1.0, 30.0)}, lost=1.0, kept=4 * EPS)
+    assert new == gamma_ratio(n / 2 + 1, n / 2 + half)
+    other = sp.gamma(n) / sp.gamma(2 * n)   # the difference of the arguments is no number
+    assert rule.apply(other) == other
+
+
+def test_atanh_to_asinh():
+    """atanh(sqrt(a^2 - x^2)/a) = asinh(sqrt(a^2 - x^2)/x): atanh(1.0) = inf at x = 1e-9 a."""
+    rule = ST.AtanhToAsinh()
+    expr = sp.atanh(sp.sqrt(a**2 - x**2) / a)
+    check_rule(rule, expr, {a: 1.0, x: 1e-9}, {a: (1.0, 2.0), x: (0.1, 0.9)}, lost=1.0, kept=4 * EPS)
+    other = sp.atanh(sp.sin(x))            # 1 - sin^2 is not a rational function
+    assert rule.apply(other) == other
+
+
+def test_acosh_to_asinh():
+    """acosh(a/x) = asinh(sqrt((a - x)(a + x))/x): accurate at x = a(1 - 1e-12)."""
+    rule = ST.AcoshToAsinh()
+    expr = sp.acosh(a / x)
+    check_rule(rule, expr, {a: 1.0, x: 0.999999999999}, {a: (1.0, 2.0), x: (0.1, 0.9)},
+               lost=1e-6, kept=4 * EPS)
+    other = sp.acosh(sp.exp(x))
+    assert rule.apply(other) == other
+
+
+def test_asin_to_atan():
+    """asin(x/a) = atan(x/sqrt((a - x)(a + x))): accurate at x = a(1 - 1e-12),
+    where the rounding of x/a costs asin five digits (a = 3: x/a is not exact)."""
+    rule = ST.AsinToAtan()
+    expr = sp.asin(x / a)
+    new = check_rule(rule, expr, {a: 3.0, x: 3 * (1 - 1e-12)}, {a: (1.0, 2.0), x: (0.1, 0.9)},
+                     lost=1e-12, kept=4 * EPS)
+    assert new.has(sp.atan) and not new.has(sp.pi)
+    other = sp.asin(sp.sin(x))
+    assert rule.apply(other) == other
+
+
+def test_asin_to_atan_complement_form():
+    """pi x - 2 x asin(a/x) = 2 x atan(sqrt((x - a)(x + a))/a): the pi/2 cancels
+    exactly; at x = a(1 + 1e-12), a = 3, the original loses five digits to the
+    cancellation of pi/2 against asin(1 - 1e-12) ~ pi/2 - 1.4e-6."""
+    rule = ST.AsinToAtan()
+    expr = sp.pi * x - 2 * x * sp.asin(a / x)
+    new = check_rule(rule, expr, {a: 3.0, x: 3 * (1 + 1e-12)}, {a: (0.2, 1.0), x: (1.1, 3.0)},
+                     lost=1e-11, kept=4 * EPS)
+    assert not new.has(sp.pi) and len(sp.Add.make_args(new)) == 1
+
+
+def test_acos_to_atan():
+    """acos(x/a) = atan(sqrt((a - x)(a + x))/x): accurate at x = a(1 - 1e-12),
+    where the rounding of x/a (a = 3) costs acos ~ sqrt(2e-12) five digits."""
+    rule = ST.AcosToAtan()
+    expr = sp.acos(x / a)
+    check_rule(rule, expr, {a: 3.0, x: 3 * (1 - 1e-12)}, {a: (1.0, 2.0), x: (0.1, 0.9)},
+               lost=1e-6, kept=4 * EPS)
+    other = sp.acos(sp.sin(x))
+    assert rule.apply(other) == other
+
+
+def test_hyp2f1_complement():
+    """2F1(1/2, 1/2; 3/2; 1 - x^2/a^2) = asin(w)/w, w = sqrt(1 - x^2/a^2): at
+    x = 1e-9 a the argument rounds to 1 and the original loses 9 digits;
+    hyp2f1c receives 1 - z = x^2/a^2 exactly."""
+    rule = ST.Hyp2f1Complement()
+    expr = sp.hyper([half, half], [sp.Rational(3, 2)], 1 - x**2 / a**2)
+    new = check_rule(rule, expr, {a: 1.0, x: 1e-9}, {a: (1.0, 2.0), x: (0.1, 0.9)},
+                     lost=1e-11, kept=4 * EPS)
+    assert new == hyp2f1c(half, half, sp.Rational(3, 2), 1 - x**2 / a**2, x**2 / a**2)
+    other = sp.hyper([half, half], [sp.Rational(3, 2)], sp.Rational(1, 2))   # a number, no symbol
+    assert rule.apply(other) == other
+
+
+def test_conjugate():
+    """R - sqrt(R^2 - x^2) = x^2/(R + sqrt(R^2 - x^2)): 0 instead of 5e-19 at x = 1e-9 R."""
+    rule = ST.Conjugate()
+    expr = R - sp.sqrt(R**2 - x**2)
+    new = check_rule(rule, expr, {R: 1.0, x: 1e-9}, {R: (1.0, 2.0), x: (0.1, 0.9)}, lost=0.5, kept=4 * EPS)
+    assert new == x**2 / (R + sp.sqrt(R**2 - x**2))
+    other = R + sp.sqrt(R**2 - x**2)       # a sum, nothing cancels
+    assert rule.apply(other) == other
+
+
+def test_factor_differences():
+    """sqrt(a^2 - x^2) = sqrt(a - x) sqrt(a + x): at x = a(1 - 1e-12), a = 7.5,
+    the rounded squares leave 4 digits."""
+    rule = ST.FactorDifferences()
+    expr = sp.sqrt(a**2 - x**2)
+    xv = 7.5 * (1 - 1e-12)
+    new = check_rule(rule, expr, {a: 7.5, x: xv}, {a: (1.0, 2.0), x: (0.1, 0.9)}, lost=1e-8, kept=4 * EPS)
+    assert new == sp.sqrt(a - x) * sp.sqrt(a + x)
+    for other in (a + x, sp.sqrt(a**2 + x**2)):   # nothing to factor
+        assert rule.apply(other) == other
+
+
+def test_stabilize_chains_the_rules_and_records_them():
+    expr = sp.atanh(sp.sqrt(a**2 - x**2) / a) + R - sp.sqrt(R**2 - x**2)
+    form = ST.stabilize(expr, conditions=(x < a, a < R))
+    assert [nm for nm, _ in form.rewrites] == ["atanh->asinh", "conjugate", "factor"]
+    assert not form.rejected
+    assert form.expr == x**2 / (R + sp.sqrt(R - x) * sp.sqrt(R + x)) + sp.asinh(sp.sqrt(a - x) * sp.sqrt(a + x) / x)
+
+
+def test_stabilize_rejects_a_rewrite_that_is_not_an_identity(monkeypatch):
+    """The numeric re-check can fail: a bogus rule is recorded as rejected, not applied."""
+    class Bogus(ST.StableRule):
+        """sin(x) = x (false)."""
+        name = "bogus"
+        heads = (sp.sin,)
+
+        def apply(self, expr):
+            return expr.replace(lambda e: isinstance(e, sp.sin), lambda e: e.args[0])
+    monkeypatch.setattr(ST, "RULES", (Bogus(),))
+    form = ST.stabilize(sp.sin(x) + a)
+    assert form.expr == sp.sin(x) + a and not form.rewrites
+    assert [nm for nm, _ in form.rejected] == ["bogus"] and "values differ" in form.rejected[0][1]
+
+
+# ----------------------------------------------------------------- the special primitives
+@pytest.mark.parametrize("args", [(0.0, 1e-12, 1.0), (0.0, 0.3, 1.0), (0.0, 1 - 1e-10, 1.0), (0.0, 1.0, 1.0),
+                                  (0.5, 1.2, 2.0), (1e-3, 4.0, 0.25)])
+def test_carlson_against_mpmath(args):
+    with mpmath.workdps(50):
+        ref = {"rf": mpmath.elliprf(*args), "rd": mpmath.elliprd(*args), "rg": mpmath.elliprg(*args)}
+        for key, f64, sym in (("rf", np_rf, carlson_rf), ("rd", np_rd, carlson_rd), ("rg", np_rg, carlson_rg)):
+            got = float(f64(*[np.float64(t) for t in args]))
+            assert abs(got - ref[key]) <= 4 * EPS * abs(ref[key]), (key, args, got, ref[key])
+            mp = MPMATH_FUNCS[f"carlson_{key}"](*[mpmath.mpf(t) for t in args])
+            assert abs(mp - ref[key]) <= mpmath.mpf(10) ** -45 * abs(ref[key]), (key, args)
+            ev = sp.N(sym(*[sp.Rational(t) for t in args]), 40)
+            assert abs(mpmath.mpf(ev) - ref[key]) <= mpmath.mpf(10) ** -38 * abs(ref[key]), (key, args)
+
+
+def test_carlson_complete_case_is_vectorised():
+    y = np.array([1e-12, 1e-6, 0.1, 0.5, 0.9, 1 - 1e-9, 1.0])
+    got = np_rd(np.zeros_like(y), y, np.ones_like(y))
+    with mpmath.workdps(40):
+        for yi, gi in zip(y, got):
+            r = mpmath.elliprd(0, yi, 1)
+            assert abs(gi - r) <= 4 * EPS * r
+
+
+@pytest.mark.parametrize("u,v", [(1000.5, 1000.0), (1e6 + 0.5, 1e6), (171.5, 170.0), (3.5, 2.0), (12.25, 10.0),
+                                 (0.5, 2.5)])
+def test_gamma_ratio_against_mpmath(u, v):
+    with mpmath.workdps(50):
+        ref = mpmath.gammaprod([u], [v])
+        got = float(np_gamma_ratio(u, v))
+        assert abs(got - ref) <= 8 * EPS * abs(ref), (u, v, got, ref)
+        assert abs(MPMATH_FUNCS["gamma_ratio"](mpmath.mpf(u), mpmath.mpf(v)) - ref) <= mpmath.mpf(10)**-45 * ref
+
+
+def test_gamma_ratio_exact_for_integers():
+    """Gamma(k + 2)/Gamma(k) = k (k + 1) exactly, for arguments where both gammas overflow."""
+    for k in (200, 1000, 10**5):
+        got = float(np_gamma_ratio(float(k + 2), float(k)))
+        assert abs(got / (k * (k + 1)) - 1) <= 8 * EPS
+    assert abs(sp.N(gamma_ratio(1002, 1000), 30) - 1001 * 1000) < 1e-20
+
+
+@pytest.mark.parametrize("abc", [(0.5, 0.5, 1.5), (0.5, 1.5, 2.5), (1.0, 2.0, 1.5), (0.25, 0.5, 1.0),
+                                 (0.5, 0.5, 1.0), (1.5, 2.0, 3.0)])
+@pytest.mark.parametrize("zc", [1e-14, 1e-8, 1e-3, 0.3])
+def test_hyp2f1c_near_one(abc, zc):
+    """2F1(a, b; c; 1 - zc) for zc down to 1e-14 (z itself rounds to 1 - zc
+    with an error of up to 1e-16, i.e. 100% of zc): against mpmath at z = 1 - zc exactly."""
+    A, B, C = abc
+    with mpmath.workdps(60):
+        ref = mpmath.hyp2f1(A, B, C, 1 - mpmath.mpf(zc))
+        got = float(np_hyp2f1c(A, B, C, 1 - zc, zc))
+        tol = 16 * EPS * max(1.0, float(abs(mpmath.log(zc))))
+        assert abs(got - ref) <= tol * abs(ref), (abc, zc, got, ref)
+        mp = MPMATH_FUNCS["hyp2f1c"](*[mpmath.mpf(t) for t in (A, B, C, 1 - zc, zc)])
+        assert abs(mp - ref) <= mpmath.mpf(10) ** -40 * abs(ref)
+
+
+def test_numpy_and_mpmath_tables_cover_every_primitive():
+    assert set(NUMPY_FUNCS) == set(MPMATH_FUNCS) == {"carlson_rf", "carlson_rd", "carlson_rg", "gamma_ratio",
+                                                      "hyp2f1c"}
