@@ -26,6 +26,6 @@ __all__ = [
     "LineContactError", "ProfileError", "UnknownSymbolError", "InadmissibleProfileError",
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
-    "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "catalogue",
+    "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "Contact", "Quantity", "catalogue",
     "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "parse_expr",
 ]

@@ -335,8 +335,10 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     >>> import sympy as sp
     >>> from linecontact_sym.core.symbols import a, E_star
     >>> from linecontact_sym.method.derivation import Derivation
+    >>> from linecontact_sym.method.rules import Step
     >>> R = sp.Symbol("R", positive=True)
-    >>> d = Derivation("force", sp.pi * E_star * a**2 / (4 * R), True, "example")   # Eq. (13)
+    >>> P_expr = sp.pi * E_star * a**2 / (4 * R)                                   # Eq. (13)
+    >>> d = Derivation("force", P_expr, True, Step("example", P_expr))
     >>> P = make_callable(d)
     >>> P.arguments
     ('E_star', 'R', 'a')
