@@ -53,7 +53,6 @@ import sympy as sp
 
 from ..parsing import to_sympy
 from ..core import symbols as S
-from ..core.errors import DomainError, LineContactError
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
@@ -115,31 +114,6 @@ class Evaluation:
 #: compiled functions per Derivation (and the series model per Profile), kept
 #: here and not in the contact's or derivation's __dict__ (see .cache)
 _CACHE = IdentityCache()
-
-
-def _check_domain(quantity, values):
-    if "a" in values:
-        av = float(values["a"]) if not isinstance(values["a"], str) else float(sp.Rational(values["a"]))
-        if not av > 0:
-            raise DomainError(f"the half-width must be positive, got a = {values['a']}")
-        if "x" in values:
-            xv = abs(float(values["x"]) if not isinstance(values["x"], str) else float(sp.Rational(values["x"])))
-            if quantity == "pressure" and xv > av:
-                raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
-                                  f"use the 'gap' there")
-            if quantity == "gap" and xv < av:
-                raise DomainError(f"x = {values['x']} lies inside the contact; the gap is zero there")
-
-
-def _abs_x(values):
-    if "x" in values:
-        xv = values["x"]
-        if isinstance(xv, str):
-            xv = xv[1:] if xv.startswith("-") else xv
-        else:
-            xv = abs(xv)
-        values = {**values, "x": xv}
-    return values
 
 
 def _as_float(v):
@@ -313,10 +287,11 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     (see the module docstring); returns an :class:`Evaluation`.
 
     ``contact``: any object with ``derivation(quantity)`` returning a
-    :class:`~linecontact_sym.method.derivation.Derivation` and ``profile``
-    (for the series model of the force); ``quantity``: 'force' (P(a),
-    Eq. 10), 'pressure' (p(x), Eq. 12, domain |x| <= a) or 'gap' (domain
-    |x| >= a), a > 0 (else :class:`~linecontact_sym.core.errors.DomainError`).
+    :class:`~linecontact_sym.method.derivation.Derivation`,
+    ``check_domain(quantity, values)`` (the quantity's domain from the
+    contact's registry: a > 0, |x| <= a for a pressure, |x| >= a for a gap,
+    else :class:`~linecontact_sym.core.errors.DomainError`) and ``profile``
+    (for the series model of the force).
     ``certified=True`` returns a rigorous Arb enclosure with ``dps`` digits
     (default: 15, or -log10(rtol); needs python-flint, the ``[certified]``
     extra).  ``dps`` without ``certified`` means rtol = 10**-dps.  Neither:
@@ -335,8 +310,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     d = contact.derivation(quantity)
     names = [s.name for s in d.variables_all]
     check_arguments(names, values, quantity)
-    _check_domain(quantity, values)
-    values = _abs_x(values)
+    values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
 
     if certified:
         return _certified(d, quantity, values, rtol, dps, t0)
