@@ -53,6 +53,7 @@ import sympy as sp
 
 from ..parsing import to_sympy
 from ..core import symbols as S
+from ..core.errors import LineContactError
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
