@@ -120,6 +120,11 @@ class AdhesiveLineContact(Contact):
         self._laws: dict = {}
         self.values = values_by_name(self.variables, dict(values)) if values else {}
 
+    @classmethod
+    def from_frictionless(cls, contact):
+        """``contact.adhesive(gamma)`` with the symbolic work of adhesion."""
+        return cls(contact, S.gamma)
+
     def __repr__(self):
         return f"AdhesiveLineContact({self.contact.profile.expr}, gamma={self.gamma})"
 

@@ -87,6 +87,13 @@ class Contact:
 
     kind = "contact"
 
+    @classmethod
+    def from_frictionless(cls, contact):
+        """This kind of contact built on a frictionless
+        :class:`~.frictionless.LineContact`, with its extra parameters left
+        symbolic (the claims checker and the CLI build contacts this way)."""
+        raise NotImplementedError(f"{cls.__name__} does not say how it is built from a frictionless contact")
+
     def __init_subclass__(cls, **kw):
         super().__init_subclass__(**kw)
         if "kind" in cls.__dict__:

@@ -82,6 +82,10 @@ class LineContact(Contact):
     def __repr__(self):
         return f"LineContact({self.profile.expr})"
 
+    @classmethod
+    def from_frictionless(cls, contact):
+        return contact
+
     def _repr_latex_(self):
         from ..core.printing import to_latex
         return f"$f(x) = {to_latex(self.profile.expr)}$"
