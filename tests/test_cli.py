@@ -65,6 +65,22 @@ def test_check_json(capsys):
     assert code == 0 and d["claims"][0]["status"] in ("holds", "holds under a condition")
 
 
+def test_check_adhesion_force_and_pull_off_signs(capsys):
+    """--adhesion-force is P_adh > 0, --pull-off is P_min < 0 (wedge, Eq. 36)."""
+    base = ["check", "--profile", "x*tan(theta)", "--budget", "5", "--json"]
+    code, out, _ = run(capsys, *base, "--adhesion-force", "pi*gamma/(2*tan(theta))",
+                       "--pull-off=-pi*gamma/(2*tan(theta))")
+    d = json.loads(out)
+    assert code == 0
+    assert [(c["quantity"], c["status"]) for c in d["claims"]] == [("adhesion_force", "holds"),
+                                                                   ("pull_off_force", "holds")]
+    code, out, _ = run(capsys, *base, "--pull-off", "pi*gamma/(2*tan(theta))")
+    assert code == 0 and json.loads(out)["claims"][0]["status"] == "does not hold"
+    with pytest.raises(SystemExit):
+        cli.main(["check", "--help"])
+    assert "P_min = min_a P(a) < 0" in " ".join(capsys.readouterr().out.split())
+
+
 def test_check_refuses_unsafe_input(capsys):
     code, out, err = run(capsys, "check", "--profile", "x**2", "--force", "__import__('os').getcwd()")
     assert code == 2 and out == ""

@@ -12,7 +12,7 @@ from pathlib import Path
 import sympy as sp
 
 from ..core import symbols as S
-from .check import FAILS, HOLDS, HOLDS_IF, UNDECIDED
+from .results import FAILS, HOLDS, HOLDS_IF, UNDECIDED
 from ..core.errors import DomainError
 from ..views.latex import booktabs_table, latex_escape, standalone, to_latex
 
@@ -24,8 +24,8 @@ def power_law_rows(ns, budget: float = 20.0):
     """Rows (n, Z_n exact, Z_n numeric, force law) for the exponents ``ns``,
     from the engine's force law of f = c x**n (derived once with symbolic n,
     then evaluated at each exponent)."""
-    from ..contacts.catalogue import power_law
-    d = power_law(budget=budget).derivation("force")
+    from .derive import power_law_force
+    d = power_law_force(budget)
     Zsym = sp.simplify(sp.gammasimp(d.expr / (S.E_star * S.c * S.a**S.n)))
     rows = []
     for nv in ns:
