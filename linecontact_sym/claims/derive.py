@@ -22,7 +22,7 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.errors import ClaimError, DomainError, LineContactError
 from .references import (DPS, Comparison, DerivedUndefined, Undefined, flamant_relative_displacement,
                          flamant_resultant, griffith_punch_force, num_eval, numeric_minimum)
-from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim
+from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
 
 
 @dataclass
@@ -81,7 +81,7 @@ class Derived:
 
 
 class Context:
-    """Caches engine objects across the claims of one run."""
+    """Caches engine objects across the claims (and figures) of one run."""
 
     def __init__(self, budget):
         self.budget = budget
@@ -106,6 +106,13 @@ class Context:
         if id(c) not in self.adhesives:
             self.adhesives[id(c)] = c.adhesive(S.gamma)
         return self.adhesives[id(c)]
+
+
+def figure_contacts(profiles, file_ranges: dict, budget: float) -> list:
+    """Contacts of the profiles of a figure (parameters verified over the
+    file's sampling ranges): objects with ``to_numeric(quantity)``."""
+    ctx = Context(budget)
+    return [ctx.contact(p, lambda sym: range_of(sym.name, file_ranges)) for p in profiles]
 
 
 def power_law_force(budget: float):
@@ -334,4 +341,4 @@ def _punch_adhesion_force(ctx) -> Derived:
                    notes=(note,), seconds=time.perf_counter() - t0)
 
 
-__all__ = ["Derived", "Context", "derive", "placeholder_laws", "power_law_force"]
+__all__ = ["Derived", "Context", "derive", "placeholder_laws", "figure_contacts", "power_law_force"]

@@ -2,9 +2,11 @@
 
 A paper is a *claims file* (TOML): each claim names the quantity, the profile
 (or a list of test profiles for a general formula), the formula *as printed*
-in SymPy syntax, and the assumptions on its symbols.  This module reads and
-validates such files (and the claims typed on the command line) into
-:class:`Paper` and :class:`Claim` records; :mod:`.check` judges the claims.
+in SymPy syntax, and the assumptions on its symbols; figures of the paper are
+described as data too.  This module reads and validates such files (and the
+claims typed on the command line) into :class:`Paper`, :class:`Claim` and
+:class:`Figure` records; :mod:`.check` judges the claims, :mod:`.figures`
+draws the figures.
 
 File format
 -----------
@@ -41,6 +43,31 @@ File format
     note = "..."                  # remark shown in the report
     reading = "..."               # how the transcription was read
 
+    [[figures]]                   # a figure of the paper, redrawn from derived laws
+    file = "fig4_worn_cylinder"   # file name stem of the PNG/PDF written
+    title = "Fig. 4: ..."         # title drawn above the plot
+    caption = "The normalised load ... (a sentence)."
+    quantity = "force"            # force, pressure or gap
+    x = "a/b"                     # normalised abscissa; its one free symbol not
+                                  # fixed by `values` is swept (a, or x at fixed a)
+    y = "2*R*P/(E_star*b**2)"     # normalised ordinate in the value P (force),
+                                  # p (pressure) or g (gap)
+    x_range = [0, 4]              # range of the normalised abscissa
+    points = 401                  # points per curve
+    values = { b = 1, R = 1, E_star = 1 }   # the other parameters
+    xlabel = "half-width $a/b$"   # axis labels (matplotlib mathtext)
+    ylabel = "..."
+    y_min = 0                     # optional limits of the ordinate (y_max too)
+    size = [5.2, 3.8]             # optional figure size in inches
+    marks = [{ x = 1, text = "..." }]        # optional vertical marker lines
+    ratio = ["exact", "hertz"]    # optional lower panel: curve / curve (by name)
+    ratio_label = "exact / Hertz"
+    [[figures.curves]]
+    name = "worn"
+    profile = "Piecewise((0, x < b), ((x**2 - b**2)/(2*R), True))"
+    label = "worn cylinder (Eq. 23)"        # legend entry
+    style = "-"                   # matplotlib line style; width = 2 (line width)
+
 Formulas may use, besides the standard symbols, ``t`` and ``s`` (integration
 variables), ``Integral`` and ``Derivative``, the definitions, and the
 placeholders of general (functional) claims: ``f(...)`` the profile,
@@ -64,6 +91,7 @@ from sympy.core.function import AppliedUndef
 from ..core import symbols as S
 from ..core.errors import ClaimError
 from ..parsing import declare_symbols, parse_expr
+from ..views.plots import VALUE_SYMBOLS
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -113,10 +141,13 @@ X_RANGES = {"pressure": (0.02, 0.98), "adhesive_pressure": (0.02, 0.98),
             "flat_punch_pressure": (0.02, 0.98), "gap": (1.05, 3.0),
             "flat_punch_displacement": (1.05, 3.0)}
 
-_TOP_KEYS = {"key", "title", "reference", "definitions", "ranges", "claims", "source", "symbols"}
+_TOP_KEYS = {"key", "title", "reference", "definitions", "ranges", "claims", "source", "symbols", "figures"}
 _CLAIM_KEYS = {"label", "title", "description", "quantity", "profile", "profiles", "profile_names", "formula", "forms",
                "assumptions", "ranges", "special", "symbols", "force_law", "values", "labels", "note",
                "points", "reading"}
+_FIGURE_KEYS = {"file", "title", "caption", "quantity", "x", "y", "x_range", "points", "values", "xlabel", "ylabel",
+                "y_min", "y_max", "size", "marks", "ratio", "ratio_label", "curves"}
+_CURVE_KEYS = {"name", "profile", "label", "style", "width"}
 
 
 def range_of(name: str, *tables) -> tuple:
@@ -179,8 +210,45 @@ class Claim:
 
 
 @dataclass
+class Curve:
+    """One curve of a figure: a profile whose derived quantity is drawn."""
+
+    name: str
+    profile_text: str
+    profile: sp.Expr
+    label: str
+    style: str = "-"
+    width: float = 1.5
+
+
+@dataclass
+class Figure:
+    """A figure of the paper as data (see the module docstring); drawn by
+    :func:`linecontact_sym.claims.figures.draw_figures`."""
+
+    file: str
+    title: str
+    caption: str
+    quantity: str
+    x: sp.Expr
+    y: sp.Expr
+    x_range: tuple
+    values: dict
+    curves: list
+    points: int = 401
+    xlabel: str = ""
+    ylabel: str = ""
+    y_min: float | None = None
+    y_max: float | None = None
+    size: tuple | None = None
+    marks: list = field(default_factory=list)    # [(x, text)]
+    ratio: tuple | None = None                   # (curve name, curve name)
+    ratio_label: str = ""
+
+
+@dataclass
 class Paper:
-    """The claims of one paper."""
+    """The claims (and figures) of one paper."""
 
     key: str
     title: str
@@ -189,6 +257,7 @@ class Paper:
     definitions: dict
     source: str
     ranges: dict = field(default_factory=dict)
+    figures: list = field(default_factory=list)
 
 
 # =====================================================================  loading
@@ -219,6 +288,14 @@ def _num(v, where):
     if e.free_symbols:
         raise ClaimError(f"{where}: expected a number, got {v!r}")
     return e
+
+
+def _text(v, where, required=False):
+    if v is None and not required:
+        return ""
+    if not isinstance(v, str) or (required and not v.strip()):
+        raise ClaimError(f"{where}: expected a text")
+    return v
 
 
 def load_paper(source) -> Paper:
@@ -273,8 +350,14 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
             raise ClaimError(f"{_w(source, claim.label)}: duplicate label")
         seen.add(claim.label)
         claims.append(claim)
+    figs_data = data.get("figures", [])
+    if not isinstance(figs_data, list):
+        raise ClaimError(f"{source}: figures: expected [[figures]] tables")
+    figures = [figure_from_dict(fd, source, file_syms, index=i) for i, fd in enumerate(figs_data)]
+    if len({f.file for f in figures}) != len(figures):
+        raise ClaimError(f"{source}: two [[figures]] write the same file")
     return Paper(str(data.get("key", Path(source).stem)), str(data.get("title", "")),
-                 str(data.get("reference", "")), claims, defs, source, ranges)
+                 str(data.get("reference", "")), claims, defs, source, ranges, figures)
 
 
 def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_shown=None,
@@ -393,6 +476,79 @@ def claim_from_cli(quantity: str, formula: str, profile: str | None = None, *, l
     return claim_from_dict(d, "command line")
 
 
+def figure_from_dict(fd: dict, source="<claims>", file_symbols=None, index=0) -> Figure:
+    """Validate and parse one ``[[figures]]`` table."""
+    if not isinstance(fd, dict):
+        raise ClaimError(f"{source}: figure #{index + 1} is not a table")
+    stem = fd.get("file")
+    if not isinstance(stem, str) or not stem or not all(ch.isalnum() or ch in "_-" for ch in stem):
+        raise ClaimError(f"{source}: figure #{index + 1}: file must be a plain file name stem "
+                         f"(letters, digits, _ and -), got {stem!r}")
+    W = lambda fld=None: f"{source}: figure {stem!r}" + (f": {fld}" if fld else "")  # noqa: E731
+    unknown = set(fd) - _FIGURE_KEYS
+    if unknown:
+        raise ClaimError(f"{W()}: unknown field(s) {sorted(unknown)}; allowed: {sorted(_FIGURE_KEYS)}")
+    quantity = fd.get("quantity", "force")
+    if quantity not in VALUE_SYMBOLS:
+        raise ClaimError(f"{W('quantity')}: a figure draws one of {sorted(VALUE_SYMBOLS)}, got {quantity!r}")
+    caption = _text(fd.get("caption"), W("caption"), required=True).strip()
+    if not caption.endswith("."):
+        raise ClaimError(f"{W('caption')}: the caption is a sentence (ending with a full stop)")
+    syms = dict(file_symbols or {})
+    value = VALUE_SYMBOLS[quantity]
+    for key in ("x", "y"):
+        if not isinstance(fd.get(key), str):
+            raise ClaimError(f"{W(key)}: the normalised axis is a formula, e.g. x = \"a/b\"")
+    x = parse_expr(fd["x"], symbols=syms, where=W("x"))
+    y = parse_expr(fd["y"], symbols=syms, placeholders={value.name: value}, where=W("y"))
+    if value not in y.free_symbols:
+        raise ClaimError(f"{W('y')}: the ordinate must contain the value {value} of the {quantity}")
+    xr = _parse_range(fd.get("x_range"), W("x_range"))
+    values = {}
+    for k, v in (fd.get("values") or {}).items():
+        sym = declare_symbols([k], W("values"))[k] if k not in syms else syms[k]
+        values[sym] = _num(v, W(f"values.{k}"))
+    curves_data = fd.get("curves")
+    if not isinstance(curves_data, list) or not curves_data:
+        raise ClaimError(f"{W()}: no [[figures.curves]]")
+    curves = []
+    for j, cd in enumerate(curves_data):
+        cw = W(f"curves[{j}]")
+        if not isinstance(cd, dict) or set(cd) - _CURVE_KEYS or "profile" not in cd:
+            raise ClaimError(f"{cw}: a curve is a table with profile and optional {sorted(_CURVE_KEYS - {'profile'})}")
+        prof = parse_expr(_text(cd["profile"], cw, required=True), symbols=syms, where=f"{cw}: profile")
+        if S.x not in prof.free_symbols:
+            raise ClaimError(f"{cw}: the profile {cd['profile']!r} does not depend on x")
+        width = cd.get("width", 1.5)
+        if isinstance(width, bool) or not isinstance(width, (int, float)) or width <= 0:
+            raise ClaimError(f"{cw}: width must be a positive number")
+        curves.append(Curve(_text(cd.get("name", f"curve {j + 1}"), cw), cd["profile"], prof,
+                            _text(cd.get("label"), cw), _text(cd.get("style", "-"), cw), float(width)))
+    names = [c.name for c in curves]
+    ratio = fd.get("ratio")
+    if ratio is not None:
+        if not (isinstance(ratio, list) and len(ratio) == 2 and all(r in names for r in ratio)):
+            raise ClaimError(f"{W('ratio')}: expected [numerator, denominator], two of the curve names {names}")
+        ratio = tuple(ratio)
+    marks = []
+    for j, m in enumerate(fd.get("marks", [])):
+        if not (isinstance(m, dict) and set(m) <= {"x", "text"} and "x" in m):
+            raise ClaimError(f"{W(f'marks[{j}]')}: a mark is {{ x = ..., text = \"...\" }}")
+        marks.append((float(_num(m["x"], W(f"marks[{j}].x"))), _text(m.get("text"), W(f"marks[{j}].text"))))
+    pts = fd.get("points", 401)
+    if not isinstance(pts, int) or not 2 <= pts <= 100000:
+        raise ClaimError(f"{W('points')}: expected an integer 2..100000")
+    size = fd.get("size")
+    if size is not None:
+        if not (isinstance(size, list) and len(size) == 2):
+            raise ClaimError(f"{W('size')}: expected [width, height] in inches")
+        size = tuple(float(_num(v, W("size"))) for v in size)
+    lims = {k: (float(_num(fd[k], W(k))) if k in fd else None) for k in ("y_min", "y_max")}
+    return Figure(stem, _text(fd.get("title"), W("title")), caption, quantity, x, y, xr, values, curves, pts,
+                  _text(fd.get("xlabel"), W("xlabel")), _text(fd.get("ylabel"), W("ylabel")),
+                  lims["y_min"], lims["y_max"], size, marks, ratio, _text(fd.get("ratio_label"), W("ratio_label")))
+
+
 # =====================================================================  placeholders
 def substitute_placeholders(expr, profile, derived_force=None, derived_pressure=None):
     """Replace the placeholders f(.), force(.), p0 of a general formula by the
@@ -412,5 +568,6 @@ def substitute_placeholders(expr, profile, derived_force=None, derived_pressure=
     return expr
 
 
-__all__ = ["QUANTITIES", "PROFILE_FREE", "PLACEHOLDERS", "DEFAULT_RANGES", "X_RANGES", "Form", "Claim", "Paper", "range_of", "load_paper", "resolve_paper", "paper_from_dict", "claim_from_dict",
-           "claim_from_cli", "substitute_placeholders"]
+__all__ = ["QUANTITIES", "PROFILE_FREE", "PLACEHOLDERS", "DEFAULT_RANGES", "X_RANGES", "Form", "Claim", "Curve",
+           "Figure", "Paper", "range_of", "load_paper", "resolve_paper", "paper_from_dict", "claim_from_dict",
+           "claim_from_cli", "figure_from_dict", "substitute_placeholders"]
