@@ -73,8 +73,9 @@ def _derivation_dict(d, values=None):
 
 # ------------------------------------------------------------------ paper
 def cmd_paper(args):
-    from .claims.check import check_paper, load_paper
+    from .claims.check import check_paper
     from .claims.report import text_table, write_paper_outputs
+    from .claims.spec import load_paper
     paper = load_paper(args.name)
     out = Path(args.out or f"{paper.key}-report")
     only = set(args.only) if args.only else None
@@ -236,11 +237,13 @@ def cmd_table(args):
 
 # ------------------------------------------------------------------ check
 _CLI_QUANTITIES = {"force": "force", "pressure": "pressure", "gap": "gap",
-                   "adhesive_force": "adhesive_force", "pull_off": "pull_off_force", "Z_n": "Z_n"}
+                   "adhesive_force": "adhesive_force", "adhesion_force": "adhesion_force",
+                   "pull_off": "pull_off_force", "Z_n": "Z_n"}
 
 
 def cmd_check(args):
-    from .claims.check import Paper, check_paper, claim_from_cli, load_paper
+    from .claims.check import check_paper
+    from .claims.spec import Paper, claim_from_cli, load_paper
     from .claims.report import text_table
     formulas = [(q, getattr(args, q)) for q in _CLI_QUANTITIES if getattr(args, q, None)]
     if args.quantity or args.formula:
@@ -254,7 +257,7 @@ def cmd_check(args):
     else:
         if not formulas:
             raise LineContactError("nothing to check: give a claims FILE, or --profile with --force/--pressure/"
-                                   "--gap/--adhesive-force/--pull-off/--Z-n or --quantity Q --formula F")
+                                   "--gap/--adhesive-force/--adhesion-force/--pull-off/--Z-n or --quantity Q --formula F")
         ranges = {}
         for item in args.range or []:
             name, _, span = item.partition("=")
@@ -306,7 +309,7 @@ def build_parser() -> argparse.ArgumentParser:
     pp = sub.add_parser("paper", help="check every claim of a paper and write the reports",
                         description="Derive and check every claim of a paper (a shipped name such as "
                                     "popov2017, or a claims TOML file); print a report table and write a "
-                                    "Markdown and a LaTeX report, the LaTeX Table 1, the figures (PNG, PDF) "
+                                    "Markdown and a LaTeX report, the LaTeX Table 1, the paper's figures (its [[figures]], PNG and PDF) "
                                     "and results.json into DIR. Exit status 0 when every claim has a verdict.")
     pp.add_argument("name", help="shipped paper (popov2017) or path to a claims .toml file")
     pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
@@ -365,7 +368,12 @@ def build_parser() -> argparse.ArgumentParser:
     pc.add_argument("--pressure", help="the claimed pressure p(x; a), 0 < x < a")
     pc.add_argument("--gap", help="the claimed gap g(x; a), x > a")
     pc.add_argument("--adhesive-force", dest="adhesive_force", help="the claimed JKR force law P(a)")
-    pc.add_argument("--pull-off", dest="pull_off", help="the claimed pull-off force P_adh > 0")
+    pc.add_argument("--adhesion-force", dest="adhesion_force",
+                    help="the claimed adhesion force P_adh = -min_a P(a) > 0 (e.g. Eqs. 34-36)")
+    pc.add_argument("--pull-off", dest="pull_off",
+                    help="the claimed pull-off load P_min = min_a P(a) < 0 (negative: a tensile load; "
+                         "write --pull-off='-...' for a leading minus; for the positive P_adh use "
+                         "--adhesion-force)")
     pc.add_argument("--Z-n", dest="Z_n", help="the claimed Z_n of a power law c*x**n")
     pc.add_argument("--quantity", help="any checker quantity (with --formula)")
     pc.add_argument("--formula", help="the claimed formula for --quantity")

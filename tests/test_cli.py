@@ -65,6 +65,22 @@ def test_check_json(capsys):
     assert code == 0 and d["claims"][0]["status"] in ("holds", "holds under a condition")
 
 
+def test_check_adhesion_force_and_pull_off_signs(capsys):
+    """--adhesion-force is P_adh > 0, --pull-off is P_min < 0 (wedge, Eq. 36)."""
+    base = ["check", "--profile", "x*tan(theta)", "--budget", "5", "--json"]
+    code, out, _ = run(capsys, *base, "--adhesion-force", "pi*gamma/(2*tan(theta))",
+                       "--pull-off=-pi*gamma/(2*tan(theta))")
+    d = json.loads(out)
+    assert code == 0
+    assert [(c["quantity"], c["status"]) for c in d["claims"]] == [("adhesion_force", "holds"),
+                                                                   ("pull_off_force", "holds")]
+    code, out, _ = run(capsys, *base, "--pull-off", "pi*gamma/(2*tan(theta))")
+    assert code == 0 and json.loads(out)["claims"][0]["status"] == "does not hold"
+    with pytest.raises(SystemExit):
+        cli.main(["check", "--help"])
+    assert "P_min = min_a P(a) < 0" in " ".join(capsys.readouterr().out.split())
+
+
 def test_check_refuses_unsafe_input(capsys):
     code, out, err = run(capsys, "check", "--profile", "x**2", "--force", "__import__('os').getcwd()")
     assert code == 2 and out == ""
@@ -176,6 +192,34 @@ def test_paper_job_writes_report_table_and_figures(tmp_path, capsys):
         quantity = "Z_n"
         profile = "c*x**n"
         values = ["1", "pi/2", "3*pi/4"]
+        [[figures]]
+        file = "fig4_worn_cylinder"
+        caption = "A worn cylinder against the parabola."
+        x = "a/b"
+        y = "2*R*P/(E_star*b**2)"
+        x_range = [0, 4]
+        points = 41
+        values = { b = 1, R = 1, E_star = 1 }
+        [[figures.curves]]
+        profile = "Piecewise((0, x < b), ((x**2 - b**2)/(2*R), True))"
+        [[figures.curves]]
+        profile = "x**2/(2*R)"
+        style = "--"
+        [[figures]]
+        file = "fig5_exact_cylinder"
+        caption = "The exact cylinder against Hertz, and their ratio."
+        x = "a/R"
+        y = "P/(E_star*R)"
+        x_range = [0, 0.99]
+        points = 41
+        values = { R = 1, E_star = 1 }
+        ratio = ["exact", "hertz"]
+        [[figures.curves]]
+        name = "exact"
+        profile = "R - sqrt(R**2 - x**2)"
+        [[figures.curves]]
+        name = "hertz"
+        profile = "x**2/(2*R)"
     '''))
     out_dir = tmp_path / "out"
     code, out, err = run(capsys, "paper", str(p), "--out", str(out_dir), "--budget", "10")
@@ -187,6 +231,7 @@ def test_paper_job_writes_report_table_and_figures(tmp_path, capsys):
         assert (out_dir / name).stat().st_size > 0, name
     assert r"\toprule" in (out_dir / "table1.tex").read_text()
     assert json.loads((out_dir / "results.json").read_text())["counts"]["holds"] == 2
+    assert r"\caption{The exact cylinder against Hertz, and their ratio.}" in (out_dir / "report.tex").read_text()
 
 
 def test_paper_shipped_subset_json(tmp_path, capsys):

@@ -12,7 +12,7 @@ from pathlib import Path
 import sympy as sp
 
 from ..core import symbols as S
-from .check import FAILS, HOLDS, HOLDS_IF, UNDECIDED
+from .results import FAILS, HOLDS, HOLDS_IF, UNDECIDED
 from ..core.errors import DomainError
 from ..views.latex import booktabs_table, latex_escape, standalone, to_latex
 
@@ -24,8 +24,8 @@ def power_law_rows(ns, budget: float = 20.0):
     """Rows (n, Z_n exact, Z_n numeric, force law) for the exponents ``ns``,
     from the engine's force law of f = c x**n (derived once with symbolic n,
     then evaluated at each exponent)."""
-    from ..contacts.catalogue import power_law
-    d = power_law(budget=budget).derivation("force")
+    from .derive import power_law_force
+    d = power_law_force(budget)
     Zsym = sp.simplify(sp.gammasimp(d.expr / (S.E_star * S.c * S.a**S.n)))
     rows = []
     for nv in ns:
@@ -105,7 +105,11 @@ def markdown_summary(result) -> str:
     return "\n".join(out)
 
 
-def markdown_report(result, figures=(), table_path=None) -> str:
+def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
+    """The full report in Markdown: counts, the claims table, each verdict
+    with the derived expressions, Table 1 and the figures (``captions``:
+    {file stem: caption sentence})."""
+    captions = captions or {}
     paper = result.paper
     res = result.results
     counts = {s: sum(r.status == s for r in res) for s in (HOLDS, HOLDS_IF, FAILS, UNDECIDED)}
@@ -158,12 +162,19 @@ def markdown_report(result, figures=(), table_path=None) -> str:
         out += ["## Figures", ""]
         for p in figures:
             if str(p).endswith(".png"):
-                out.append(f"![{Path(p).stem}]({Path(p).name})")
+                cap = captions.get(Path(p).stem)
+                out.append(f"![{_md_escape(cap or Path(p).stem)}]({Path(p).name})")
+                if cap:
+                    out += ["", f"*{_md_escape(cap)}*", ""]
         out.append("")
     return "\n".join(out)
 
 
-def latex_report(result, table1: str | None = None, figures=()) -> str:
+def latex_report(result, table1: str | None = None, figures=(), captions=None) -> str:
+    """The report as a standalone LaTeX document: the claims table (booktabs),
+    Table 1, the verdicts and the figures (PDF) with their ``captions``
+    ({file stem: caption sentence}; the file stem where none is given)."""
+    captions = captions or {}
     paper = result.paper
     rows = []
     for r in result.results:
@@ -183,7 +194,8 @@ def latex_report(result, table1: str | None = None, figures=()) -> str:
     for p in figures:
         if str(p).endswith(".pdf"):
             figs.append("\\begin{figure}[htbp]\\centering\\includegraphics[width=0.45\\linewidth]{%s}"
-                        "\\caption{%s}\\end{figure}" % (Path(p).name, latex_escape(Path(p).stem)))
+                        "\\caption{%s}\\end{figure}" % (Path(p).name,
+                                                          latex_escape(captions.get(Path(p).stem, Path(p).stem))))
     body = "\n\n".join([table] + ([table1] if table1 else []) + verdicts + figs)
     doc = standalone(body, title=f"Claims check: {paper.title or paper.key}")
     if figs:
@@ -192,8 +204,9 @@ def latex_report(result, table1: str | None = None, figures=()) -> str:
 
 
 def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float = 20.0) -> dict:
-    """Write report.md, report.tex, table1.tex, results.json and the figures
-    into ``out_dir``; returns {kind: path or [paths]}."""
+    """Write report.md, report.tex, table1.tex, results.json and the paper's
+    figures (its ``[[figures]]``, PNG and PDF) into ``out_dir``; returns
+    {kind: path or [paths]}."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     written = {}
@@ -205,13 +218,15 @@ def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float 
         (out / "table1.tex").write_text(t1 + "\n", encoding="utf-8")
         written["table1"] = out / "table1.tex"
     figs = []
-    if figures:
-        from .figures import all_figures
-        figs = all_figures(out, budget=budget)
+    caps = {}
+    if figures and result.paper.figures:
+        from .figures import captions, draw_figures
+        figs = draw_figures(result.paper, out, budget=budget)
+        caps = captions(result.paper)
         written["figures"] = figs
-    (out / "report.md").write_text(markdown_report(result, figs, written.get("table1")), encoding="utf-8")
+    (out / "report.md").write_text(markdown_report(result, figs, written.get("table1"), caps), encoding="utf-8")
     written["markdown"] = out / "report.md"
-    (out / "report.tex").write_text(latex_report(result, t1, figs), encoding="utf-8")
+    (out / "report.tex").write_text(latex_report(result, t1, figs, caps), encoding="utf-8")
     written["latex"] = out / "report.tex"
     (out / "results.json").write_text(json.dumps(result.to_dict(), indent=2, default=str), encoding="utf-8")
     written["json"] = out / "results.json"
