@@ -47,6 +47,7 @@ def test_plotting_without_matplotlib(monkeypatch):
     from linecontact_sym.views import plots
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     monkeypatch.setitem(sys.modules, "matplotlib.pyplot", None)
+    monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
     with pytest.raises(MissingExtraError, match=r'pip install "linecontact_sym\[plot\]"'):
         plots._figure_class()
 
