@@ -89,6 +89,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..core import symbols as S
+from ..core.conversion import exact_number
 from ..core.errors import ClaimError
 from ..parsing import declare_symbols, parse_expr
 from ..views.plots import VALUE_SYMBOLS
@@ -283,7 +284,7 @@ def _num(v, where):
     if isinstance(v, bool):
         raise ClaimError(f"{where}: expected a number, got {v!r}")
     if isinstance(v, (int, float)):
-        return sp.nsimplify(v, rational=True) if isinstance(v, float) else sp.Integer(v)
+        return exact_number(v) if isinstance(v, float) else sp.Integer(v)
     e = parse_expr(str(v), where=where)
     if e.free_symbols:
         raise ClaimError(f"{where}: expected a number, got {v!r}")

@@ -1,0 +1,78 @@
+"""Issue 10: every input a clear package error, bounded work, no code from
+strings.  Each case is one of the adversarial inputs that once hung, ran code
+or raised a foreign exception."""
+import ast
+import time
+from pathlib import Path
+
+import pytest
+
+import linecontact_sym as lcs
+from linecontact_sym.core.errors import ClaimError, LineContactError
+
+PKG = Path(lcs.__file__).parent
+
+#: calls that turn text into code or into SymPy objects by evaluation
+_DANGEROUS = {"eval", "exec", "compile", "S", "nsimplify", "parse_expr", "__import__"}
+
+
+def _calls(tree):
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call):
+            f = node.func
+            name = f.attr if isinstance(f, ast.Attribute) else f.id if isinstance(f, ast.Name) else None
+            yield node, name
+
+
+def test_no_string_can_reach_eval():
+    """sympify only with strict=True; nsimplify, S(...), eval/exec/compile and
+    SymPy's own parse_expr only in core/conversion.py (which refuses strings)."""
+    bad = []
+    for path in PKG.rglob("*.py"):
+        rel = path.relative_to(PKG).as_posix()
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node, name in _calls(tree):
+            if name == "sympify":
+                strict = [k for k in node.keywords if k.arg == "strict"]
+                if not strict or not (isinstance(strict[0].value, ast.Constant) and strict[0].value.value is True):
+                    bad.append(f"{rel}:{node.lineno} sympify without strict=True")
+            elif name in _DANGEROUS and rel != "core/conversion.py":
+                is_own_parser = name == "parse_expr" and isinstance(node.func, ast.Name)
+                if not is_own_parser:
+                    bad.append(f"{rel}:{node.lineno} {name}(...)")
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.module and "sympy_parser" in node.module:
+                bad.append(f"{rel}:{node.lineno} imports sympy_parser")
+    assert not bad, "\n".join(bad)
+
+
+def test_the_scan_finds_a_planted_eval(tmp_path):
+    code = "import sympy as sp\nx = sp.S('1+1')\ny = sp.sympify(s)\n"
+    names = [name for _, name in _calls(ast.parse(code))]
+    assert "S" in names and "sympify" in names
+
+
+def test_report_rows_refuse_code_strings():
+    from linecontact_sym.claims.report import power_law_rows
+    with pytest.raises(LineContactError):
+        power_law_rows(["__import__('os').system('id') or 2"])
+
+
+@pytest.mark.parametrize("text,what", [
+    ("gamma(10**7)", "gamma"), ("gamma(10**30)", "gamma"), ("binomial(10**12, 10**6)", "binomial"),
+    ("sqrt(4)**(10**10)", "exponent"), ("x**(10**10)", "exponent"),
+    ("Derivative(sin(x), (x, 10**9))", "derivative order"),
+    ("sin(" * 150 + "x" + ")" * 150, "nested"), ("-" * 200 + "x", "nested"),
+    ("2**(2**(2**10))", "too large"),
+])
+def test_parser_bounds_sizes_before_building(text, what):
+    t0 = time.perf_counter()
+    with pytest.raises(ClaimError, match=what):
+        lcs.parse_expr(text)
+    assert time.perf_counter() - t0 < 2.0
+
+
+def test_long_flat_sums_are_not_nesting():
+    assert lcs.parse_expr("x" + "+x" * 390) == 391 * lcs.x
+    assert lcs.parse_expr("x^2/(2*R)") == lcs.x**2 / (2 * lcs.R)
+    assert lcs.parse_expr("0.1*x") == lcs.x / 10
