@@ -76,3 +76,46 @@ def test_long_flat_sums_are_not_nesting():
     assert lcs.parse_expr("x" + "+x" * 390) == 391 * lcs.x
     assert lcs.parse_expr("x^2/(2*R)") == lcs.x**2 / (2 * lcs.R)
     assert lcs.parse_expr("0.1*x") == lcs.x / 10
+
+
+# ---------------------------------------------------------------- physical domains
+@pytest.fixture(scope="module")
+def contacts():
+    return {"parabola": lcs.parabola(), "power": lcs.power_law(), "cylinder": lcs.exact_cylinder(budget=3)}
+
+
+@pytest.mark.parametrize("which,quantity,values,match", [
+    ("parabola", "force", dict(a=1, R=1, E_star=-1), "E\\* must be positive"),
+    ("parabola", "force", dict(a=1, R=-1, E_star=1), "R must be positive"),
+    ("power", "force", dict(a=1, n=-1, c=1, E_star=1), "n must be positive"),
+    ("power", "force", dict(a=1, n=0, c=1, E_star=1), "n must be positive"),
+    ("power", "force", dict(a=1, n=2, c=-1, E_star=1), "c must be positive"),
+    ("parabola", "force", dict(a=0, R=1, E_star=1), "half-width a must be positive"),
+    ("cylinder", "force", dict(a=2, R=1, E_star=1), "a < R"),
+    ("parabola", "force", dict(a=1, R=1, E_star=1, Q=3), "'Q'"),
+    ("parabola", "force", dict(a=float("nan"), R=1, E_star=1), "finite real"),
+    ("parabola", "force", dict(a=float("inf"), R=1, E_star=1), "finite real"),
+    ("parabola", "force", dict(a=1j, R=1, E_star=1), "finite real"),
+    ("parabola", "force", dict(a=None, R=1, E_star=1), "not a number"),
+    ("parabola", "pressure", dict(a=1, x=2, R=1, E_star=1), "outside the contact"),
+    ("parabola", "gap", dict(a=1, x=0.5, R=1, E_star=1), "inside the contact"),
+    ("parabola", "force", dict(a=[0.5, -1.0], R=1.0, E_star=1.0), "must be positive"),
+])
+def test_values_outside_the_domain_are_refused(contacts, which, quantity, values, match):
+    c = contacts[which]
+    for call in (c.evaluate_at, c.evaluate):
+        if call is c.evaluate_at and isinstance(values.get("a"), list):
+            continue
+        with pytest.raises(lcs.DomainError, match=match):
+            call(quantity, **values)
+
+
+def test_values_inside_the_domain_still_evaluate(contacts):
+    c = contacts["cylinder"]
+    assert abs(float(c.evaluate_at("force", a=sp_half(), R=1, E_star=1)) - 0.218288145473169) < 1e-14
+    assert abs(float(contacts["parabola"].evaluate("force", a=1.0, R=1.0, E_star=1.0).value) - 0.7853981633974483) < 1e-15
+
+
+def sp_half():
+    import sympy as sp
+    return sp.Rational(1, 2)
