@@ -240,6 +240,15 @@ def _abs(v):
     return np.abs(v) if isinstance(v, np.ndarray) else abs(v)
 
 
+#: symbols declared positive whose values may be <= 0 (x: the profile is
+#: mirrored, f(-x) = f(x)) or 0 (gamma = 0: the non-adhesive limit)
+_ANY_SIGN, _MAY_BE_ZERO = {"x"}, {"gamma"}
+
+
+def _positive_required(name, sym):
+    return sym is not None and sym.is_positive and name not in _ANY_SIGN
+
+
 def _as_float_array(v):
     return v if isinstance(v, (float, np.ndarray)) else float(v)
 
@@ -250,7 +259,7 @@ def _checked_value(name, v, sym):
     if type(v) in (float, int):  # the common, fast case
         if not math.isfinite(v):
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
-        if sym is not None and sym.is_positive and not v > 0 and not (name == "gamma" and v == 0):
+        if _positive_required(name, sym) and not v > 0 and not (name in _MAY_BE_ZERO and v == 0):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
         return v
@@ -261,7 +270,7 @@ def _checked_value(name, v, sym):
         arr = arr.astype(float)
         if not np.all(np.isfinite(arr)):
             raise DomainError(f"{name} = {v!r}: values must be finite")
-        if sym is not None and sym.is_positive and np.any(arr <= 0) and not (name == "gamma" and np.all(arr >= 0)):
+        if _positive_required(name, sym) and np.any(arr <= 0) and not (name in _MAY_BE_ZERO and np.all(arr >= 0)):
             raise DomainError(f"{name} must be positive, got {v!r}")
         return arr
     if v is None or isinstance(v, bool):
@@ -275,8 +284,8 @@ def _checked_value(name, v, sym):
     if not val.is_real:
         if val.is_real is None and abs(sp.im(sp.N(val, 30))) > 0:
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
-    if sym is not None and sym.is_positive and not val.is_positive:
-        if not (name == "gamma" and val.is_zero):
+    if _positive_required(name, sym) and not val.is_positive:
+        if not (name in _MAY_BE_ZERO and val.is_zero):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
     return val
