@@ -119,3 +119,44 @@ def test_values_inside_the_domain_still_evaluate(contacts):
 def sp_half():
     import sympy as sp
     return sp.Rational(1, 2)
+
+
+# ---------------------------------------------------------------- claims files
+def _paper(tmp_path, body):
+    p = tmp_path / "c.toml"
+    p.write_text(body, encoding="utf-8")
+    return p
+
+
+BASE = 'label = "L"\nquantity = "force"\nprofile = "x**2/(2*R)"\nformula = "pi*E_star*a**2/(4*R)"\n'
+
+
+@pytest.mark.parametrize("extra,match", [
+    ('symbols = "k"\n', "symbols must be a list"),
+    ("points = true\n", "points must be"),
+    ("assumptions = \"a < R\"\n", "assumptions must be a list"),
+    ("ranges = [1, 2]\n", "ranges must be a table"),
+    ("note = 3\n", "note must be a string"),
+])
+def test_claims_fields_of_the_wrong_type(tmp_path, extra, match):
+    from linecontact_sym.claims import load_paper
+    with pytest.raises(ClaimError, match=match):
+        load_paper(_paper(tmp_path, "[[claims]]\n" + BASE + extra))
+
+
+def test_claims_file_that_is_not_a_text_file(tmp_path):
+    from linecontact_sym.claims import load_paper
+    bad = tmp_path / "bin.toml"
+    bad.write_bytes(b"\xff\xfe\x00[claims]")
+    with pytest.raises(ClaimError, match="UTF-8"):
+        load_paper(bad)
+    with pytest.raises(ClaimError, match="regular file"):
+        load_paper(tmp_path)
+    t0 = time.perf_counter()
+    with pytest.raises(ClaimError, match="regular file"):
+        load_paper("/dev/zero")
+    big = tmp_path / "big.toml"
+    big.write_bytes(b"#" * 2_000_000)
+    with pytest.raises(ClaimError, match="larger than"):
+        load_paper(big)
+    assert time.perf_counter() - t0 < 2
