@@ -556,6 +556,8 @@ def _is_decimal(text):
 def _numeric(expr, text, where):
     if expr.free_symbols:
         raise ClaimError(f"{_where(where)}expected a number, got {text!r}")
+    if expr.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or expr.is_real is False:
+        raise ClaimError(f"{_where(where)}expected a finite real number, got {text!r}")
     return expr
 
 

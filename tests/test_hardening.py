@@ -2,6 +2,7 @@
 strings.  Each case is one of the adversarial inputs that once hung, ran code
 or raised a foreign exception."""
 import ast
+import re
 import time
 from pathlib import Path
 
@@ -160,3 +161,21 @@ def test_claims_file_that_is_not_a_text_file(tmp_path):
     with pytest.raises(ClaimError, match="larger than"):
         load_paper(big)
     assert time.perf_counter() - t0 < 2
+
+
+# ---------------------------------------------------------------- command line
+@pytest.mark.parametrize("argv,match", [
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "--dps", "0"], "digits must be"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=oo", "--set", "R=1", "E_star=1"], "finite real"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "Q=3"], "'Q'"),
+    (["derive", "x**2/(2*R)", "--set", "Q=3", "--quantities", "force"], "no such parameter"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=-1", "E_star=1"], "R must be positive"),
+])
+def test_cli_refuses_bad_values(capsys, argv, match):
+    from linecontact_sym import cli
+    try:
+        code = cli.main(argv)
+    except SystemExit as exc:   # argparse type errors
+        code = exc.code
+    out, err = capsys.readouterr()
+    assert code != 0 and re.search(match, out + err), (code, out, err)
