@@ -179,3 +179,23 @@ def test_cli_refuses_bad_values(capsys, argv, match):
         code = exc.code
     out, err = capsys.readouterr()
     assert code != 0 and re.search(match, out + err), (code, out, err)
+
+
+# ---------------------------------------------------------------- profiles
+@pytest.mark.parametrize("make,err,match", [
+    (lambda: lcs.x**2 / (2 * lcs.R) * 0 + lcs.x / 0, lcs.ProfileError, "undefined"),
+    (lambda: lcs.x**2 / __import__("sympy").Symbol("R", negative=True), lcs.ProfileError, "non-positive"),
+    (lambda: lcs.x**(10**10), lcs.ProfileError, "exponent"),
+    (lambda: __import__("sympy").Derivative(__import__("sympy").sin(lcs.x), (lcs.x, 10**9)), lcs.ProfileError,
+     "derivative of order"),
+    (lambda: __import__("sympy").I * lcs.x**2, lcs.ProfileError, "not real"),
+])
+def test_profiles_refused_with_a_reason(make, err, match):
+    t0 = time.perf_counter()
+    with pytest.raises(err, match=match):
+        lcs.LineContact(make())
+    assert time.perf_counter() - t0 < 2
+
+
+def test_the_profile_x_is_a_profile():
+    assert lcs.LineContact(lcs.x).force == lcs.E_star * lcs.a
