@@ -36,6 +36,17 @@ class _Parser(argparse.ArgumentParser):
     """argparse with errors on stderr, exit status 2 (its default)."""
 
 
+def _dps(text):
+    """--dps: an integer number of significant digits, 1 to 1000."""
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer number of digits, got {text!r}") from None
+    if not 1 <= v <= 1000:
+        raise argparse.ArgumentTypeError(f"digits must be 1 to 1000, got {v}")
+    return v
+
+
 def _emit_json(obj):
     print(json.dumps(obj, indent=2, default=str))
 
@@ -112,6 +123,9 @@ def cmd_derive(args):
     from .core.printing import to_latex
     prof = _profile(args.profile, args.symbols)
     values = _settings(args.set, args.symbols)
+    unused = sorted(str(k) for k in values if k not in prof.free_symbols)
+    if unused:
+        raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof)
     quantities = [q.strip() for q in args.quantities.split(",") if q.strip()]
@@ -344,7 +358,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="grid values, e.g. a=0.1,0.2 x=0:1:5 (LOW:HIGH:COUNT)")
     pe.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fixed values, e.g. R=1 E_star=1")
     pe.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
-    pe.add_argument("--dps", type=int, default=30, help="significant digits (default 30)")
+    pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
 

@@ -26,7 +26,7 @@ from sympy.core.function import AppliedUndef
 
 from ..core import symbols as S
 from ..core.budget import run_with_budget
-from ..core.conversion import to_mpf
+from ..core.conversion import nsimplify_basic, to_mpf
 from ..core.errors import BudgetExceeded, ClaimError, LineContactError
 from ..parsing import t as T_VAR
 from .derive import Context, Derived, derive, placeholder_laws
@@ -445,7 +445,7 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
             except (ValueError, ZeroDivisionError):
                 problems.append(f"{text}: no n > 0 with Z_n = {text}")
                 continue
-        nn = sp.nsimplify(float(nroot), rational=True, tolerance=1e-9)
+        nn = nsimplify_basic(float(nroot), rational=True, tolerance=1e-9)
         exact = sp.simplify(sp.gammasimp(Z.subs(S.n, nn) - val)) == 0 if nn.is_Rational else False
         with mpmath.workdps(DPS):
             dg = Comparison("Z", _exact_mpf(Z.subs(S.n, nn)), target).digits
@@ -467,8 +467,8 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
     gap_note = ""
     if gaps:
         gap_note = "; no value printed (or legible) for " + ", ".join(
-            f"n = {k} (Z_{k} = {sp.nsimplify(Z.subs(S.n, k))})" for k in gaps)
-    details.append(f"Z_n from the engine: {Z}; Z_1 = {sp.nsimplify(Z.subs(S.n, 1))}")
+            f"n = {k} (Z_{k} = {nsimplify_basic(Z.subs(S.n, k))})" for k in gaps)
+    details.append(f"Z_n from the engine: {Z}; Z_1 = {nsimplify_basic(Z.subs(S.n, 1))}")
     seconds = time.perf_counter() - t0
     tr = TargetResult(prof_txt, derived, [], HOLDS if not problems else FAILS)
     if problems:

@@ -13,7 +13,9 @@ import sympy as sp
 
 from ..core import symbols as S
 from .results import FAILS, HOLDS, HOLDS_IF, UNDECIDED
+from ..core.conversion import exact_number, nsimplify_basic
 from ..core.errors import DomainError
+from ..parsing import to_sympy
 from ..views.latex import booktabs_table, latex_escape, standalone, to_latex
 
 _SHORT = {HOLDS: "holds", HOLDS_IF: "holds if", FAILS: "DOES NOT HOLD", UNDECIDED: "UNDECIDED"}
@@ -29,10 +31,10 @@ def power_law_rows(ns, budget: float = 20.0):
     Zsym = sp.simplify(sp.gammasimp(d.expr / (S.E_star * S.c * S.a**S.n)))
     rows = []
     for nv in ns:
-        nv = sp.nsimplify(nv, rational=True) if not isinstance(nv, sp.Basic) else nv
+        nv = exact_number(nv) if isinstance(nv, float) else to_sympy(nv, where="exponent n")
         if not (nv.is_number and nv > 0):
             raise DomainError(f"the exponent of the power law must be a positive number, got {nv}")
-        Z = sp.nsimplify(sp.gammasimp(sp.expand_func(Zsym.subs(S.n, nv))))
+        Z = nsimplify_basic(sp.gammasimp(sp.expand_func(Zsym.subs(S.n, nv))))
         rows.append({"n": nv, "Z": Z, "Z_float": float(sp.N(Z, 20)),
                      "force": S.E_star * S.c * Z * S.a**nv})
     return rows, Zsym, d

@@ -91,6 +91,7 @@ from sympy.core.function import AppliedUndef
 from ..core import symbols as S
 from ..core.errors import ClaimError
 from ..parsing import declare_symbols, parse_expr
+from .fields import _names, _num, _parse_range, _text, _typed, _w, read_text_file
 from ..views.plots import VALUE_SYMBOLS
 
 if sys.version_info >= (3, 11):
@@ -261,48 +262,14 @@ class Paper:
 
 
 # =====================================================================  loading
-def _w(source, label=None, fld=None):
-    out = str(source)
-    if label:
-        out += f": claim {label!r}"
-    if fld:
-        out += f": {fld}"
-    return out
-
-
-def _parse_range(val, where):
-    if not (isinstance(val, (list, tuple)) and len(val) == 2):
-        raise ClaimError(f"{where}: a range is [low, high], got {val!r}")
-    lo, hi = (float(_num(v, where)) for v in val)
-    if not lo < hi:
-        raise ClaimError(f"{where}: empty range [{lo}, {hi}]")
-    return (lo, hi)
-
-
-def _num(v, where):
-    if isinstance(v, bool):
-        raise ClaimError(f"{where}: expected a number, got {v!r}")
-    if isinstance(v, (int, float)):
-        return sp.nsimplify(v, rational=True) if isinstance(v, float) else sp.Integer(v)
-    e = parse_expr(str(v), where=where)
-    if e.free_symbols:
-        raise ClaimError(f"{where}: expected a number, got {v!r}")
-    return e
-
-
-def _text(v, where, required=False):
-    if v is None and not required:
-        return ""
-    if not isinstance(v, str) or (required and not v.strip()):
-        raise ClaimError(f"{where}: expected a text")
-    return v
-
-
 def load_paper(source) -> Paper:
-    """Load a claims file: a path, or the name of a shipped paper (``popov2017``)."""
+    """Load a claims file: a path, or the name of a shipped paper (``popov2017``).
+    The file must be a regular UTF-8 text file of at most
+    :data:`MAX_FILE_BYTES` bytes (never a device, a FIFO or a directory)."""
     path = resolve_paper(source)
+    text = read_text_file(path)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ClaimError(f"{path}: not valid TOML: {exc}") from None
     return paper_from_dict(data, str(path))
@@ -330,7 +297,10 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
     unknown = set(data) - _TOP_KEYS
     if unknown:
         raise ClaimError(f"{source}: unknown top-level field(s) {sorted(unknown)}")
-    file_syms = declare_symbols(data.get("symbols", []), _w(source, fld="symbols"))
+    for key, types in (("key", str), ("title", str), ("reference", str), ("definitions", dict), ("ranges", dict),
+                       ("claims", list), ("figures", list)):
+        _typed(data, key, types, source)
+    file_syms = declare_symbols(_names(data, "symbols", source), _w(source, fld="symbols"))
     defs_show, defs = {}, {}
     for name, text in (data.get("definitions") or {}).items():
         where = _w(source, fld=f"definitions.{name}")
@@ -372,11 +342,16 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     unknown = set(cd) - _CLAIM_KEYS
     if unknown:
         raise ClaimError(f"{W()}: unknown field(s) {sorted(unknown)}; allowed: {sorted(_CLAIM_KEYS)}")
+    for key, types in (("quantity", str), ("profile", str), ("profiles", list), ("profile_names", list),
+                       ("formula", (str, int, float)), ("forms", list), ("assumptions", list), ("ranges", dict),
+                       ("special", dict), ("force_law", str), ("values", list), ("labels", dict), ("note", str),
+                       ("reading", str), ("title", str), ("description", str), ("points", int)):
+        _typed(cd, key, types, W())
     quantity = cd.get("quantity")
     if quantity not in QUANTITIES:
         raise ClaimError(f"{W('quantity')}: unknown quantity {quantity!r}; choose one of {sorted(QUANTITIES)}")
     syms = dict(file_symbols or {})
-    syms.update(declare_symbols(cd.get("symbols", []), W("symbols")))
+    syms.update(declare_symbols(_names(cd, "symbols", W()), W("symbols")))
     defs = dict(definitions or {})
     shown = dict(definitions_shown or {})
     general = "profiles" in cd
@@ -449,7 +424,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
             vals = [vals]
         special[k] = [_num(v, W(f"special.{k}")) for v in vals]
     pts = cd.get("points", 6)
-    if not isinstance(pts, int) or not 1 <= pts <= 50:
+    if isinstance(pts, bool) or not isinstance(pts, int) or not 1 <= pts <= 50:
         raise ClaimError(f"{W('points')}: expected an integer 1..50")
     return Claim(label.strip(), quantity, forms, profiles, general, assumptions, table, special,
                  {**syms}, force_law, values, labels, str(cd.get("title", cd.get("description", ""))),
