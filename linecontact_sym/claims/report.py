@@ -61,9 +61,9 @@ def _digits(r):
     return f"{r.digits:.1f}" if r.status in (HOLDS, HOLDS_IF) or r.digits else "-"
 
 
-def text_table(result, width: int = 110) -> str:
-    """The terminal report: one row per claim, then the conditions and
-    counterexamples."""
+def text_table(result, width: int = 110, notes: bool = True) -> str:
+    """The terminal report: one row per claim, then (``notes``) the
+    conditions and counterexamples."""
     res = result.results
     lab_w = max(8, max((len(r.label) for r in res), default=8))
     head = f"{'claim':<{lab_w}}  {'status':<24} {'digits':>6}  {'time':>7}  quantity"
@@ -75,12 +75,43 @@ def text_table(result, width: int = 110) -> str:
     lines.append("-" * len(head))
     lines.append(f"{len(res)} claims: {counts[HOLDS]} hold, {counts[HOLDS_IF]} hold under a condition, "
                  f"{counts[FAILS]} do not hold, {counts[UNDECIDED]} undecided; {result.seconds:.0f} s")
-    notes = [r for r in res if r.status != HOLDS]
+    notes = [r for r in res if r.status != HOLDS] if notes else []
     if notes:
         lines.append("")
         lines.append("Conditions, counterexamples:")
         for r in notes:
             lines.append(f"  {r.label}: {_wrap(r.verdict, width - 4, '      ')}")
+    return "\n".join(lines)
+
+
+def claim_details_text(result, width: int = 110) -> str:
+    """Per claim: the formula as claimed, the derived expression (for every
+    claim, failing ones included), the condition, a counterexample for a
+    form that does not hold, and the diagnosis of a common mistake."""
+    lines = []
+    for r in result.results:
+        c = r.claim
+        lines.append(f"{r.label}: {r.status}")
+        for f in c.forms:
+            lines.append(f"  claimed:        {f.text}")
+        for t in r.targets:
+            d = t.derived
+            who = f" (for {t.profile_text})" if c.general and t.profile_text else ""
+            if d is not None and d.expr is not None and not c.values:
+                lines.append(f"  derived{who}:{' ' * max(1, 8 - len(who))}{d.expr}    [{d.method}]")
+            if t.error:
+                lines.append(f"  undecided{who}: {_wrap(t.error, width - 14, ' ' * 16)}")
+            for f in t.forms:
+                if f.status == HOLDS_IF and f.condition:
+                    lines.append(f"  holds if:       {f.condition}")
+                if f.status in (FAILS, HOLDS_IF) and f.counterexample is not None:
+                    lines.append("  counterexample: " + _wrap(f.counterexample.describe(), width - 18, " " * 18))
+                if f.diagnosis is not None:
+                    lines.append("  diagnosis:      " + _wrap(f.diagnosis.message, width - 18, " " * 18))
+                    if f.diagnosis.formula:
+                        lines.append(f"  corrected:      {f.diagnosis.formula}")
+        if r.status == UNDECIDED and not r.targets:
+            lines.append("  " + _wrap(r.verdict, width - 2, "    "))
     return "\n".join(lines)
 
 
@@ -249,6 +280,6 @@ def _table1_ns(result):
     return []
 
 
-__all__ = ["power_law_rows", "power_law_text", "power_law_latex", "text_table", "markdown_report",
+__all__ = ["power_law_rows", "power_law_text", "power_law_latex", "text_table", "claim_details_text", "markdown_report",
            "markdown_summary",
            "latex_report", "write_paper_outputs"]
