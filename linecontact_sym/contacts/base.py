@@ -186,6 +186,15 @@ class Contact:
         from ..numeric.evaluate import evaluate
         return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
 
+    def plot(self, what: str = "force", **kw):
+        """A matplotlib figure of the contact in the literature's normalised
+        axes: ``"pressure"`` (p/p0 against x/a at ``loads=[...]``),
+        ``"force"``, ``"adhesive"`` (JKR branches, pull-off, jump-in),
+        ``"gap"``; ``values={"R": 1}``, ``path=`` to save.  See
+        :mod:`linecontact_sym.views.contact_plots` (needs the ``[plot]`` extra)."""
+        from ..views.contact_plots import plot_contact
+        return plot_contact(self, what, **kw)
+
     def latex(self, quantity: str) -> str:
         """LaTeX of a quantity's expression (the package's one printer)."""
         from ..core.printing import to_latex
