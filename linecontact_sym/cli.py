@@ -154,7 +154,7 @@ def cmd_derive(args):
         t1 = time.perf_counter()
         try:
             out["quantities"][key] = contact.derivation(q)
-            status = out["quantities"][key].method
+            status = out["quantities"][key].rule
         except LineContactError as exc:
             if contact is c:
                 raise

@@ -76,7 +76,7 @@ def text_table(result, width: int = 110, notes: bool = True) -> str:
                      f"{r.claim.title or r.claim.quantity}")
     counts = {s: sum(r.status == s for r in res) for s in (HOLDS, HOLDS_IF, FAILS, UNDECIDED)}
     lines.append("-" * len(head))
-    lines.append(f"{len(res)} claims: {counts[HOLDS]} hold, {counts[HOLDS_IF]} hold under a condition, "
+    lines.append(f"{len(res)} claim{'s' if len(res) != 1 else ''}: {counts[HOLDS]} hold, {counts[HOLDS_IF]} hold under a condition, "
                  f"{counts[FAILS]} do not hold, {counts[UNDECIDED]} undecided; {result.seconds:.0f} s")
     notes = [r for r in res if r.status != HOLDS] if notes else []
     if notes:
@@ -224,10 +224,14 @@ def _status_sentence(r) -> str:
     v = r.verdict
     rest = v.split(": ", 1)[1] if ": " in v and v.split(": ", 1)[0] == r.status else ""
     if r.status == HOLDS:
-        rest = v[len(HOLDS):].strip().strip("()")
+        rest = v[len(HOLDS):].lstrip(": ").strip().strip("()")
     head = {HOLDS: "Holds", HOLDS_IF: "Holds under a condition", FAILS: "Does not hold",
             UNDECIDED: "Undecided"}[r.status]
     return head + (": " + text_to_latex(rest) if rest else "") + "."
+
+
+def _centred(tex):
+    return "\\begin{center}\n" + tex + "\n\\end{center}"
 
 
 def latex_report(result, table1: str | None = None, figures=(), captions=None) -> str:
@@ -264,11 +268,11 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
     verdicts = [r"\section*{Verdicts}", r"\begin{description}\small"]
     for r in res:
         c = r.claim
-        item = [f"\\item[{latex_escape(c.label)}] \\emph{{{latex_escape(c.title or c.quantity)}.}} "
+        item = [f"\\item[{latex_escape(c.label)}] \\emph{{{text_to_latex(c.title or c.quantity)}.}} "
                 + _status_sentence(r)]
         if len(c.forms) > 1:
             for f in c.forms:
-                item.append(r"Printed form: \\" + "\n" + r"\centerline{" + fit_math(to_latex(f.shown)) + "}")
+                item.append("Printed form:\n" + _centred(fit_math(to_latex(f.shown))))
         if c.profiles and c.general:
             item.append("Test profiles: " + ", ".join(f"${to_latex(p)}$" for _, p in c.profiles) + ".")
         if c.assumptions:
@@ -277,7 +281,7 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
             d = t.derived
             if d is not None and d.expr is not None and not c.values:
                 who = f" for $f(x) = {to_latex(d.profile)}$" if c.general and d.profile is not None else ""
-                item.append(f"Derived{who}: \\\\\n\\centerline{{{fit_math(to_latex(d.expr))}}}")
+                item.append(f"Derived{who}:\n" + _centred(fit_math(to_latex(d.expr))))
             for f in t.forms:
                 if f.diagnosis is not None:
                     item.append(r"\emph{Diagnosis:} " + text_to_latex(f.diagnosis.message) + ".")

@@ -37,18 +37,18 @@ DOMAINS = {"any": None, "inside": "|x| <= a", "outside": "|x| >= a"}
 
 @dataclass(frozen=True)
 class Quantity:
-    """The declaration of a physical quantity of a contact class.
+    """The declaration of a physical quantity of a contact class::
 
-    symbol     how it is written (``"p(x; a)"``; LaTeX in ``latex``)
-    equation   the paper's equation (``"Eq. (12)"``), or ``""``
-    doc        what it is: definition, units, sign convention
-    arguments  the variables it depends on besides parameters (``("a", "x")``)
-    domain     ``"any"``, ``"inside"`` (|x| <= a) or ``"outside"`` (|x| >= a)
-    latex      its LaTeX symbol, for tables and reports
-    aliases    other names that mean this quantity (e.g. claims files)
-    method     True: the attribute is a method (``c.half_width(P)``) that
-               calls ``_<name>``; the registry entry and ``_derive_<name>``
-               serve the symbolic form
+        symbol     how it is written (``"p(x; a)"``; LaTeX in ``latex``)
+        equation   the paper's equation (``"Eq. (12)"``), or ``""``
+        doc        what it is: definition, units, sign convention
+        arguments  the variables it depends on besides parameters (``("a", "x")``)
+        domain     ``"any"``, ``"inside"`` (|x| <= a) or ``"outside"`` (|x| >= a)
+        latex      its LaTeX symbol, for tables and reports
+        aliases    other names that mean this quantity (e.g. claims files)
+        method     True: the attribute is a method (``c.half_width(P)``) that
+                   calls ``_<name>``; the registry entry and ``_derive_<name>``
+                   serve the symbolic form
     """
 
     symbol: str

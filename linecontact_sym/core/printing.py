@@ -140,12 +140,14 @@ def init_printing(**kw):
 
 
 _ESCAPES = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
-            "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
+            "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
+            # the default (OT1) font encoding has no < > | in text: they would print as other glyphs
+            "<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}"}
 
 
 def latex_escape(text) -> str:
     """Escape plain text for LaTeX (``&``, ``%``, ``_``, braces, ...)."""
-    text = str(text)
+    text = str(text).replace("->", "\u2192")
     out = "".join(_ESCAPES.get(ch, ch) for ch in text)
     for u, tex in (("\u2264", r"$\le$"), ("\u2265", r"$\ge$"), ("\u2260", r"$\ne$"), ("\u03c0", r"$\pi$"),
                    ("\u2192", r"$\to$"), ("\u00b7", r"$\cdot$"), ("\u2248", r"$\approx$"), ("\u2212", "-"),

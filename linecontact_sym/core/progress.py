@@ -11,8 +11,8 @@ Only stderr is written, so stdout stays clean for the results (``--json``);
 >>> p.start("Eq. (14)"); p.done("Eq. (14)", "holds", 1.5)
 >>> p.close()
 >>> print(out.getvalue(), end="")
-[ 1/2] Eq. (13)   holds      0.2 s
-[ 2/2] Eq. (14)   holds      1.5 s
+[ 1/2] Eq. (13)   holds                      0.2 s
+[ 2/2] Eq. (14)   holds                      1.5 s
 """
 from __future__ import annotations
 
@@ -69,7 +69,7 @@ class Progress:
             return
         w = len(str(self.total))
         secs = f" {seconds:6.1f} s" if seconds is not None else ""
-        line = f"[{self.count:{w + 1}d}/{self.total}] {name:<10} {status:<10}{secs}"
+        line = f"[{self.count:{w + 1}d}/{self.total}] {name:<10} {status:<24}{secs}"
         if detail:
             line += f" {detail}"
         print(line.rstrip(), file=self.stream, flush=True)

@@ -4,7 +4,7 @@ literature (``contact.plot(what, ...)`` calls :func:`plot_contact`):
 ``"pressure"``  p(x)/p0 against x/a at several loads P, with
                 p0 = 2P/(pi a) the Hertzian maximum pressure of the same load
                 and half-width (the Hertz line contact is the unit
-                half-circle; a flat punch is singular at |x| = a);
+                half-circle; a flat punch is singular at the edges x = -a, a);
 ``"force"``     the force law P/(E* L) against a/L, L the length scale of
                 the profile (R, else b, else 1; ``scale=`` chooses);
 ``"adhesive"``  the JKR force law P/P_adh against a/a_po (a_po the pull-off

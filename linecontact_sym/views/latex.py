@@ -100,7 +100,7 @@ def _formula_tex(span):
         except Exception:  # noqa: BLE001 -- short undeclared names (k, w1) are symbols; words are not
             names = sorted(set(re.findall(_IDENT, part)))
             try:
-                expr = parse_expr(part, symbols=[n for n in names if len(n) <= 2], where="report")
+                expr = parse_expr(part, symbols=[n for n in names if len(n) <= 2 or "_" in n], where="report")
             except Exception:  # noqa: BLE001 -- not a formula after all
                 return None
         out.append(to_latex(expr, fold_short_frac=True))
@@ -190,7 +190,7 @@ PREAMBLE = [r"\documentclass[10pt,a4paper]{article}",
             r"\newsavebox{\fitbox}",
             r"\newcommand{\fitmath}[1]{\sbox{\fitbox}{$\displaystyle #1$}\ifdim\wd\fitbox>\linewidth"
             r"\resizebox{\linewidth}{!}{\usebox{\fitbox}}\else\usebox{\fitbox}\fi}",
-            r"\renewcommand{\arraystretch}{1.3}"]
+            r"\renewcommand{\arraystretch}{1.3}", r"\setlength{\LTcapwidth}{\linewidth}"]
 
 
 def fit_math(tex: str) -> str:
