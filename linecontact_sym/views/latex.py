@@ -100,10 +100,10 @@ def _formula_tex(span):
         except Exception:  # noqa: BLE001 -- short undeclared names (k, w1) are symbols; words are not
             names = sorted(set(re.findall(_IDENT, part)))
             try:
-                expr = parse_expr(part, symbols=[n for n in names if len(n) <= 2 or "_" in n], where="report")
+                expr = parse_expr(part, symbols=[n for n in names if len(n) <= 2 or ("_" in n and len(n) <= 6)], where="report")
             except Exception:  # noqa: BLE001 -- not a formula after all
                 return None
-        out.append(to_latex(expr, fold_short_frac=True))
+        out.append(to_latex(expr))
     return " ".join(out)
 
 
