@@ -190,7 +190,7 @@ PREAMBLE = [r"\documentclass[10pt,a4paper]{article}",
             r"\newsavebox{\fitbox}",
             r"\newcommand{\fitmath}[1]{\sbox{\fitbox}{$\displaystyle #1$}\ifdim\wd\fitbox>\linewidth"
             r"\resizebox{\linewidth}{!}{\usebox{\fitbox}}\else\usebox{\fitbox}\fi}",
-            r"\renewcommand{\arraystretch}{1.3}", r"\setlength{\LTcapwidth}{\linewidth}"]
+            r"\renewcommand{\arraystretch}{1.3}", r"\AtBeginDocument{\setlength{\LTcapwidth}{\textwidth}}"]
 
 
 def fit_math(tex: str) -> str:
