@@ -16,7 +16,7 @@ from .contacts.base import Contact, Quantity
 from .core.errors import NoPullOffError, NoEquilibriumError
 from .contacts import catalogue
 from .contacts.catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
-from .core.printing import to_latex
+from .core.printing import init_printing, to_latex
 from .parsing import parse_expr
 
 __version__ = "0.1.0"
@@ -27,5 +27,5 @@ __all__ = [
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
     "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "Contact", "Quantity", "catalogue",
-    "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "parse_expr",
+    "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "init_printing", "parse_expr",
 ]

@@ -110,3 +110,74 @@ def test_malformed_figure_tables_get_clear_errors(change, words):
         spec.figure_from_dict(fd, "mine.toml")
     for w in words:
         assert w in str(info.value)
+
+
+# ------------------------------------------------------------------ contact.plot: normalised views
+_CACHE = {}
+
+
+def hertz():
+    """One parabola contact (and its adhesive form) for all the tests below: derived once."""
+    import linecontact_sym as lcs
+    if not _CACHE:
+        _CACHE["c"] = lcs.parabola(budget=10)
+        _CACHE["ad"] = _CACHE["c"].adhesive(lcs.gamma)
+    return _CACHE["c"], _CACHE["ad"]
+
+def test_pressure_view_hertz_is_the_unit_half_circle():
+    import linecontact_sym as lcs
+    from linecontact_sym.views.contact_plots import pressure_data
+    X, Ys, As = pressure_data(hertz()[0], [0.2, 1.5], {"R": 2, "E_star": 3}, points=9)
+    for P, Y, a in zip([0.2, 1.5], Ys, As):
+        assert np.isclose(a, 2 * np.sqrt(P * 2 / (np.pi * 3)), rtol=1e-12)      # Hertz: a = 2 sqrt(PR/(pi E*))
+        assert np.allclose(Y, np.sqrt(1 - X**2), rtol=1e-12, atol=1e-12)
+
+
+def test_force_and_gap_views_hertz():
+    import linecontact_sym as lcs
+    from linecontact_sym.views.contact_plots import force_data, gap_data
+    c = hertz()[0]
+    X, Y, L = force_data(c, {"R": 2, "E_star": 3}, points=5)
+    assert L == "R" and np.isclose(X[-1], 1.0) and np.allclose(Y, np.pi * X**2 / 4, rtol=1e-13)
+    X, (Y,), _ = gap_data(c, [0.7], {"R": 2, "E_star": 3}, points=6)
+    assert np.allclose(Y, X * np.sqrt(X**2 - 1) - np.arccosh(X), rtol=1e-10, atol=1e-14)
+
+
+def test_adhesive_view_branches_pull_off_and_jump_in():
+    import linecontact_sym as lcs
+    from linecontact_sym.views.contact_plots import adhesive_data
+    ad = hertz()[1]
+    d = adhesive_data(ad, {"R": 1, "gamma": 0.05}, points=401)
+    # JKR line contact of a parabola: a_po^3 = 2 R^2 gamma/(pi E*), a_in^3 = 32 R^2 gamma/(pi E*)
+    assert np.isclose(d["a_po"], (2 * 0.05 / np.pi) ** (1 / 3), rtol=1e-12)
+    assert np.isclose(d["jump_in"][0], 16 ** (1 / 3), rtol=1e-10)
+    assert np.isclose(d["Y"].min(), -1, rtol=1e-4) and np.isclose(d["X"][d["Y"].argmin()], 1, atol=0.02)
+    assert not d["stable"][d["X"] < 0.95].any() and d["stable"][d["X"] > 1.05].all()
+    pytest.importorskip("matplotlib")
+    fig = ad.plot("adhesive", values={"R": 1, "gamma": 0.05}, points=101)
+    labels = fig.axes[0].get_legend_handles_labels()[1]
+    assert "stable branch" in labels and "unstable branch" in labels and any("pull-off" in t for t in labels)
+
+
+def test_every_contact_kind_has_numeric_views_through_the_registry():
+    import linecontact_sym as lcs
+    ad = hertz()[1]
+    p = ad.to_numeric("pressure")(a=1.0, x=0.5, R=1.0, E_star=1.0, gamma=0.02)
+    expect = np.sqrt(0.75) / 2 - np.sqrt(2 * np.pi * 0.02) / (np.pi * np.sqrt(0.75))   # Eq. (29) by hand
+    assert np.isclose(p, expect, rtol=1e-13)
+    r = ad.evaluate("force", a=1, R=1, E_star=1, gamma=0.02, rtol=1e-12)
+    assert abs(float(r.value) - (np.pi / 4 - np.sqrt(2 * np.pi * 0.02))) < 1e-12
+
+
+def test_contact_plot_writes_figures(tmp_path):
+    pytest.importorskip("matplotlib")
+    import linecontact_sym as lcs
+    c = hertz()[0]
+    for what, kw in (("pressure", {"loads": [0.1, 1.0]}), ("force", {}), ("gap", {"loads": [0.5]})):
+        fig = c.plot(what, values={"R": 1}, path=tmp_path / f"{what}.png", points=41, **kw)
+        assert (tmp_path / f"{what}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        assert fig.axes[0].get_xlabel()
+    with pytest.raises(DomainError, match="choose one of"):
+        c.plot("torque")
+    with pytest.raises(DomainError, match="'R'"):
+        c.plot("pressure", loads=[1.0])

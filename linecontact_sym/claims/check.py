@@ -30,6 +30,7 @@ from ..core.conversion import nsimplify_basic, to_mpf
 from ..core.errors import BudgetExceeded, ClaimError, LineContactError
 from ..parsing import t as T_VAR
 from .derive import Context, Derived, derive, placeholder_laws
+from .diagnosis import diagnose
 from .references import DPS, Comparison, DerivedUndefined, Divergent, Undefined, num_eval
 from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult, PaperResult, PointResult,
                       TargetResult, fmt_mp, verdict_line)
@@ -175,8 +176,11 @@ def _infer_parameter_condition(derived, printed, points, dps):
 
 
 def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, budget=10.0,
-               seed=2017, physics_points=2, symbolic=True) -> FormResult:
-    """Check one printed form against the derived quantity."""
+               seed=2017, physics_points=2, symbolic=True, force_law=None) -> FormResult:
+    """Check one printed form against the derived quantity.  A form that
+    fails everywhere gets a :mod:`.diagnosis` when it matches after a known
+    transformation (``force_law``: P(a) for the load rule, or a callable
+    returning it, or None)."""
     free = set(printed.free_symbols) - {T_VAR}
     if derived.expr is not None:
         free |= derived.expr.free_symbols
@@ -208,7 +212,10 @@ def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, 
     if not bad:
         return FormResult(form, HOLDS, "", digits, results, None, sym_note)
     if not ok:
-        return FormResult(form, FAILS, "", max((p.digits for p in bad), default=0.0), results, bad[0], sym_note)
+        law = force_law() if callable(force_law) else force_law
+        diag = diagnose(claim, derived, printed, results, force_law=law, dps=dps)
+        return FormResult(form, FAILS, "", max((p.digits for p in bad), default=0.0), results, bad[0], sym_note,
+                          diagnosis=diag)
     # a condition: excluded special points, or a parameter range
     special_bad = [p for p in bad if p.kind.startswith("special")]
     other_bad = [p for p in bad if not p.kind.startswith("special")]
@@ -301,7 +308,7 @@ def check_claim(claim: Claim, ctx: Context | None = None, *, budget: float = 20.
             for form in claim.forms:
                 printed = substitute_placeholders(form.expr, prof, dforce, dpress)
                 frs.append(check_form(claim, form, derived, printed, dps=dps, budget=min(budget, 10.0),
-                                      symbolic=symbolic))
+                                      symbolic=symbolic, force_law=lambda: _force_law(claim, prof, ctx, printed)))
         except ClaimError as exc:
             targets.append(TargetResult(ptxt, derived, frs, UNDECIDED, error=str(exc)))
             continue
@@ -309,6 +316,20 @@ def check_claim(claim: Claim, ctx: Context | None = None, *, budget: float = 20.
         targets.append(TargetResult(ptxt, derived, frs, st, cond))
     status, verdict, digits = _combine_targets(claim, targets)
     return ClaimResult(claim, status, verdict, digits, time.perf_counter() - t0, targets)
+
+
+def _force_law(claim, prof, ctx, printed):
+    """P(a) of the claim's contact, for a formula written in the load P
+    (the diagnosis' load rule); None where it does not apply."""
+    if prof is None or S.P not in printed.free_symbols or claim.quantity in ("half_width",):
+        return None
+    try:
+        if claim.quantity.startswith("adhesive") or claim.quantity.startswith("pull_off"):
+            return ctx.adhesive(prof, claim.range_of).force
+        d = ctx.contact(prof, claim.range_of).derivation("force")
+        return d.expr if d.closed_form else None
+    except Exception:  # noqa: BLE001 -- only a hint
+        return None
 
 
 def _combine_forms(frs):
@@ -344,7 +365,9 @@ def _combine_targets(claim, targets):
         t = targets[0]
         if t.status == FAILS:
             f = next(f for f in t.forms if f.status == FAILS)
-            return FAILS, verdict_line(FAILS, "", f.counterexample), max(f.digits for f in t.forms)
+            diag = next((g.diagnosis for g in t.forms if g.diagnosis is not None), None)
+            extra = f"; diagnosis: {diag.message}" if diag is not None else ""
+            return FAILS, verdict_line(FAILS, "", f.counterexample) + extra, max(f.digits for f in t.forms)
         return HOLDS_IF, verdict_line(HOLDS_IF, t.condition, None), digits
     # general claims: is the split explained by f'(0+) = 0 ?
     prop = _slope_hypothesis(targets)
@@ -480,11 +503,12 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
 
 # =====================================================================  papers
 def check_paper(paper, *, budget: float = 20.0, progress: Callable | None = None, only=None,
-                dps: int = DPS, symbolic: bool = True) -> PaperResult:
+                dps: int = DPS, symbolic: bool = True, on_start: Callable | None = None) -> PaperResult:
     """Check every claim of a paper (a :class:`Paper`, a path, or a shipped name).
 
-    ``progress(i, n, result)`` is called after each claim; ``only`` limits the
-    run to the given labels."""
+    ``on_start(i, n, claim)`` is called before and ``progress(i, n, result)``
+    after each claim (e.g. :class:`~linecontact_sym.core.progress.Progress`);
+    ``only`` limits the run to the given labels."""
     if not isinstance(paper, Paper):
         paper = load_paper(paper)
     ctx = Context(budget)
@@ -492,6 +516,8 @@ def check_paper(paper, *, budget: float = 20.0, progress: Callable | None = None
     claims = [c for c in paper.claims if only is None or c.label in only]
     results = []
     for i, claim in enumerate(claims):
+        if on_start is not None:
+            on_start(i, len(claims), claim)
         try:
             r = check_claim(claim, ctx, budget=budget, dps=dps, symbolic=symbolic)
         except ClaimError as exc:

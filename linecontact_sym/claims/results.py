@@ -16,6 +16,17 @@ FAILS = "does not hold"
 UNDECIDED = "undecided"
 STATUSES = (HOLDS, HOLDS_IF, FAILS, UNDECIDED)
 
+#: exit statuses of the command line (``check``, ``paper`` and the other verbs)
+EXIT_OK, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_UNDECIDED = 0, 1, 2, 3, 4
+EXIT_CODES = {
+    EXIT_OK: "every claim holds (possibly under a condition that the report states)",
+    EXIT_FAILS: "at least one claim does not hold (with --strict: or holds only under a condition)",
+    EXIT_INPUT: "bad input: a malformed claims file, formula, option or value; nothing was judged",
+    EXIT_INTERNAL: "internal error (a bug in linecontact_sym; LINECONTACT_SYM_DEBUG=1 prints the traceback)",
+    EXIT_UNDECIDED: "no claim fails but at least one is undecided: the engine could not derive the "
+                    "quantity (e.g. within --budget)",
+}
+
 
 def fmt_num(v) -> str:
     """A sample value for a message: exact unless its denominator is large.
@@ -78,10 +89,15 @@ class FormResult:
     counterexample: PointResult | None = None
     symbolic: str = ""
     note: str = ""
+    diagnosis: object = None  # diagnosis.Diagnosis: a known mistake that explains a failure
 
     def to_dict(self):
+        dg = self.diagnosis
         return {"formula": self.form.text, "status": self.status, "condition": self.condition,
                 "digits": round(self.digits, 2), "symbolic": self.symbolic, "note": self.note,
+                "diagnosis": dg.message if dg is not None else None,
+                "diagnosis_rule": dg.rule if dg is not None else None,
+                "corrected_formula": dg.formula if dg is not None and dg.formula else None,
                 "counterexample": self.counterexample.describe() if self.counterexample else None,
                 "points": [p.to_dict() for p in self.points]}
 
@@ -124,6 +140,16 @@ class ClaimResult:
     def label(self):
         return self.claim.label
 
+    @property
+    def diagnoses(self) -> list:
+        """The diagnoses of the failing forms (one sentence each, no repeats)."""
+        out = []
+        for t in self.targets:
+            for f in t.forms:
+                if f.diagnosis is not None and f.diagnosis.message not in out:
+                    out.append(f.diagnosis.message)
+        return out
+
     def _repr_markdown_(self):
         from ..views.latex import to_latex
         c = self.claim
@@ -144,7 +170,8 @@ class ClaimResult:
                 "formula": c.formula.text if c.forms else None,
                 "forms": [f.text for f in c.forms], "profiles": [p for p, _ in c.profiles],
                 "assumptions": [str(r) for r in c.assumptions], "note": c.note, "reading": c.reading,
-                "details": self.details, "targets": [t.to_dict() for t in self.targets]}
+                "details": self.details, "diagnoses": self.diagnoses,
+                "targets": [t.to_dict() for t in self.targets]}
 
 
 @dataclass
@@ -159,6 +186,20 @@ class PaperResult:
     def ok(self) -> bool:
         """Every claim has a verdict (none is undecided)."""
         return all(r.status != UNDECIDED for r in self.results)
+
+    def exit_code(self, strict: bool = False) -> int:
+        """The command line's exit status for this result (see :data:`EXIT_CODES`):
+        3 when a claim is undecided by an internal error, else 1 when a claim
+        does not hold (``strict``: or holds only under a condition), else 4
+        when a claim is undecided, else 0."""
+        sts = [r.status for r in self.results]
+        if any(r.status == UNDECIDED and "internal error" in r.verdict for r in self.results):
+            return EXIT_INTERNAL
+        if FAILS in sts or (strict and HOLDS_IF in sts):
+            return EXIT_FAILS
+        if UNDECIDED in sts:
+            return EXIT_UNDECIDED
+        return EXIT_OK
 
     def _repr_markdown_(self):
         from .report import markdown_summary
@@ -182,5 +223,6 @@ def verdict_line(status, condition, cex: PointResult | None, extra="") -> str:
     return f"{UNDECIDED}: {extra}"
 
 
-__all__ = ["HOLDS", "HOLDS_IF", "FAILS", "UNDECIDED", "STATUSES", "PointResult", "FormResult", "TargetResult",
+__all__ = ["HOLDS", "HOLDS_IF", "FAILS", "UNDECIDED", "STATUSES", "EXIT_CODES", "EXIT_OK", "EXIT_FAILS",
+           "EXIT_INPUT", "EXIT_INTERNAL", "EXIT_UNDECIDED", "PointResult", "FormResult", "TargetResult",
            "ClaimResult", "PaperResult", "verdict_line", "fmt_num", "fmt_mp"]

@@ -43,18 +43,18 @@ DOMAINS = {"any": None, "inside": "|x| <= a", "outside": "|x| >= a"}
 
 @dataclass(frozen=True)
 class Quantity:
-    """The declaration of a physical quantity of a contact class.
+    """The declaration of a physical quantity of a contact class::
 
-    symbol     how it is written (``"p(x; a)"``; LaTeX in ``latex``)
-    equation   the paper's equation (``"Eq. (12)"``), or ``""``
-    doc        what it is: definition, units, sign convention
-    arguments  the variables it depends on besides parameters (``("a", "x")``)
-    domain     ``"any"``, ``"inside"`` (|x| <= a) or ``"outside"`` (|x| >= a)
-    latex      its LaTeX symbol, for tables and reports
-    aliases    other names that mean this quantity (e.g. claims files)
-    method     True: the attribute is a method (``c.half_width(P)``) that
-               calls ``_<name>``; the registry entry and ``_derive_<name>``
-               serve the symbolic form
+        symbol     how it is written (``"p(x; a)"``; LaTeX in ``latex``)
+        equation   the paper's equation (``"Eq. (12)"``), or ``""``
+        doc        what it is: definition, units, sign convention
+        arguments  the variables it depends on besides parameters (``("a", "x")``)
+        domain     ``"any"``, ``"inside"`` (|x| <= a) or ``"outside"`` (|x| >= a)
+        latex      its LaTeX symbol, for tables and reports
+        aliases    other names that mean this quantity (e.g. claims files)
+        method     True: the attribute is a method (``c.half_width(P)``) that
+                   calls ``_<name>``; the registry entry and ``_derive_<name>``
+                   serve the symbolic form
     """
 
     symbol: str
@@ -223,6 +223,15 @@ class Contact:
         ``certified=True`` an Arb ball; see :mod:`linecontact_sym.numeric.evaluate`."""
         from ..numeric.evaluate import evaluate
         return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
+
+    def plot(self, what: str = "force", **kw):
+        """A matplotlib figure of the contact in the literature's normalised
+        axes: ``"pressure"`` (p/p0 against x/a at ``loads=[...]``),
+        ``"force"``, ``"adhesive"`` (JKR branches, pull-off, jump-in),
+        ``"gap"``; ``values={"R": 1}``, ``path=`` to save.  See
+        :mod:`linecontact_sym.views.contact_plots` (needs the ``[plot]`` extra)."""
+        from ..views.contact_plots import plot_contact
+        return plot_contact(self, what, **kw)
 
     def latex(self, quantity: str) -> str:
         """LaTeX of a quantity's expression (the package's one printer)."""
