@@ -37,7 +37,7 @@ import traceback
 from pathlib import Path
 
 
-from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK, EXIT_UNDECIDED
+from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK
 from .core import symbols as S
 from .core.errors import LineContactError
 from .core.progress import Progress

@@ -13,8 +13,10 @@ from linecontact_sym.core.errors import ClaimError, LineContactError
 
 PKG = Path(lcs.__file__).parent
 
-#: calls that turn text into code or into SymPy objects by evaluation
-_DANGEROUS = {"eval", "exec", "compile", "S", "nsimplify", "parse_expr", "__import__"}
+#: builtins that run text as code (called by their bare name), and SymPy
+#: functions that evaluate strings (called either way)
+_BUILTINS = {"eval", "exec", "compile", "__import__"}
+_DANGEROUS = {"S", "nsimplify", "parse_expr"}
 
 
 def _calls(tree):
@@ -37,6 +39,8 @@ def test_no_string_can_reach_eval():
                 strict = [k for k in node.keywords if k.arg == "strict"]
                 if not strict or not (isinstance(strict[0].value, ast.Constant) and strict[0].value.value is True):
                     bad.append(f"{rel}:{node.lineno} sympify without strict=True")
+            elif name in _BUILTINS and isinstance(node.func, ast.Name):
+                bad.append(f"{rel}:{node.lineno} {name}(...)")
             elif name in _DANGEROUS and rel != "core/conversion.py":
                 is_own_parser = name == "parse_expr" and isinstance(node.func, ast.Name)
                 if not is_own_parser:

@@ -26,6 +26,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+import sympy as sp
 
 from ..core.errors import DomainError
 from ..core.extras import require
@@ -130,7 +131,7 @@ def gap_data(contact, loads, values=None, x_max: float = 3.0, points: int = 201)
     X = np.linspace(1.0, float(x_max), int(points))
     fn = contact.to_numeric("gap")
     prof = getattr(contact, "contact", contact).profile.expr
-    f_at = __import__("sympy").lambdify([s for s in sorted(prof.free_symbols, key=lambda s: s.name)], prof,
+    f_at = sp.lambdify([s for s in sorted(prof.free_symbols, key=lambda s: s.name)], prof,
                                         "numpy")
     names = [s.name for s in sorted(prof.free_symbols, key=lambda s: s.name)]
     Ys, As = [], []

@@ -8,12 +8,14 @@ that compile with a standard LaTeX installation (packages ``booktabs`` and
 """
 from __future__ import annotations
 
+import re
+
 from ..core.printing import PaperLatexPrinter, latex_escape, to_latex
 
 
 _IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
 _NUMBER = r"\d+(?:\.\d+)?(?:[eE][-+]?\d+)?"
-_IDENT_RE = __import__("re").compile(_IDENT)
+_IDENT_RE = re.compile(_IDENT)
 _OPS = ("**", "!=", "<=", ">=", "*", "/", "+", "-", "<", ">", "=", "^")
 _RELATIONS = {"!=": r"\neq", "<=": r"\le", ">=": r"\ge", "<": "<", ">": ">", "=": "="}
 _SPECIAL = {"E*\u00b7a\u00b7f'(0+)": "E^{*} a f'(0^{+})", "f'(0+)": "f'(0^{+})", "E*": "E^{*}"}
@@ -34,7 +36,6 @@ def _group(text, i):
 
 def _atom(text, i):
     """End of an operand starting at i: [-]name[(...)] | [-]number | [-](...) ; -1 if none."""
-    import re
     j = i
     if j < len(text) and text[j] == "-":
         j += 1
