@@ -95,6 +95,7 @@ from ..method.derivation import Derivation, fallback_step
 from ..method.rules import Step
 from ..method.verification import verify
 from ..parsing import to_sympy
+from . import tangential_history as history
 from . import tangential_states as states
 from .base import Contact, Quantity
 
@@ -249,12 +250,21 @@ class TangentialLineContact(Contact):
     def _variables(self, *args):
         return tuple(args) + self.variables
 
-    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, t0, sampler):
+    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, t0, sampler,
+                needs=("pressure",)):
         """Verify a closed form against ``check`` (30 digits at random points);
         a failed check or no closed form leaves a numeric derivation evaluated
-        by ``value``."""
+        by ``value``.  The checks integrate the normal solutions ``needs``; where
+        one of them has no closed form the check (nested quadratures) is not
+        run and a note says so."""
         rec, notes = None, ()
-        if closed and self.contact.verify:
+        missing = [n for n in needs if not self._normal(n).closed_form] if closed and self.contact.verify else []
+        if missing:
+            notes = (f"not verified here: the independent check integrates the {' and '.join(missing)}, which "
+                     f"has no closed form for this profile (nested quadratures); the same identity is verified "
+                     f"at 30 digits on profiles with a closed pressure and against the direct solution "
+                     f"(tangential_reference.CoulombBEM)",)
+        elif closed and self.contact.verify:
             rec = verify(expr, check, sampler, conditions, n_points=self.contact.points, reference_name=how)
             if not rec.passed:
                 notes = (f"closed form FAILED verification ({rec.min_digits:.1f} digits): evaluated numerically",)
@@ -318,7 +328,7 @@ class TangentialLineContact(Contact):
         conds = tuple(self._normal("force").conditions) + (sp.Lt(S.c_s, S.a),)
         check, value, how = states.energy_references(self)
         return self._finish("dissipated_energy", W, closed, conds, check, value, how,
-                            self._variables(S.a, S.c_s), t0, self._sampler("any"))
+                            self._variables(S.a, S.c_s), t0, self._sampler("any"), ("pressure", "gap"))
 
     # ----------------------------------------------------------- stick zone
     def _stick_half_width(self, force=S.Q, **values):
@@ -330,9 +340,9 @@ class TangentialLineContact(Contact):
         Numeric Q with numbers for the parameters, and ``a`` or the normal load
         ``P``: the number (30 digits).  |Q| > mu P raises
         :class:`~linecontact_sym.core.errors.GrossSlidingError`."""
-        Qv = to_sympy(force)
+        Qv = history.to_sympy_number(force)
         if Qv.is_number:
-            return states.stick_half_width_at(self, Qv, values).c
+            return history.stick_half_width_at(self, Qv, values).c
         key = ("stick_half_width", Qv)
         if key not in self._cache:
             self._cache[key] = states.derive_stick_half_width(self, Qv)
@@ -345,30 +355,30 @@ class TangentialLineContact(Contact):
     def state(self, Q, **values):
         """The partial-slip state after monotonic loading from 0 to Q (numbers:
         ``a`` or ``P``, E_star, the profile's parameters, mu if symbolic); a
-        :class:`~.tangential_states.TangentialState`."""
-        return states.stick_half_width_at(self, to_sympy(Q), values)
+        :class:`~.tangential_history.TangentialState`."""
+        return history.stick_half_width_at(self, history.to_sympy_number(Q), values)
 
     def unload(self, Q_max, Q, **values):
         """Mindlin-Deresiewicz: the state at Q after loading to Q_max and
         unloading (-Q_max <= Q <= Q_max)."""
-        return states.reversal(self, Q_max, Q, values, "unloading")
+        return history.reversal(self, Q_max, Q, values, "unloading")
 
     def reload(self, Q_max, Q, **values):
         """The state at Q on the reloading branch from -Q_max (after a full
         unloading to -Q_max)."""
-        return states.reversal(self, Q_max, Q, values, "reloading")
+        return history.reversal(self, Q_max, Q, values, "reloading")
 
     def cycle(self, Q_amplitude, points: int = 41, **values):
         """A full fretting cycle between +-Q_amplitude: the loop (Q, delta),
         the stick half-width at the extremes and the energy dissipated per
-        cycle; a :class:`~.tangential_states.FrettingCycle`."""
-        return states.cycle(self, Q_amplitude, points, values)
+        cycle; a :class:`~.tangential_history.FrettingCycle`."""
+        return history.cycle(self, Q_amplitude, points, values)
 
-    def bem(self, n: int = 200, **values):
+    def bem(self, elements: int = 200, **values):
         """The independent direct solution on this contact's normal pressure
         (:class:`~.tangential_reference.CoulombBEM`) at numbers (``a`` or
         ``P``, E_star, parameters, mu)."""
-        return states.bem(self, n, values)
+        return history.bem(self, elements, values)
 
     def report(self, quantities=("traction", "tangential_force", "slip", "dissipated_energy")) -> str:
         return super().report(quantities)

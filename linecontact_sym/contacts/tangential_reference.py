@@ -186,6 +186,30 @@ def element_pressures(dP, edges, a, breaks=()):
     return total / (np.pi * (x2 - x1))
 
 
+def solve_dense(A, b):
+    """x with A x = b by Gaussian elimination with partial pivoting in plain
+    numpy array operations.  Used instead of ``numpy.linalg.solve`` because a
+    multi-threaded LAPACK spends ~0.1 s per small system (n ~ 100) when the
+    cores are shared; this costs ~n elementwise updates and is deterministic."""
+    A = np.array(A, dtype=float)
+    b = np.array(b, dtype=float)
+    n = len(b)
+    for k in range(n - 1):
+        piv = k + int(np.argmax(np.abs(A[k:, k])))
+        if A[piv, k] == 0.0:
+            raise LineContactError("singular boundary-element system")
+        if piv != k:
+            A[[k, piv]] = A[[piv, k]]
+            b[[k, piv]] = b[[piv, k]]
+        f = A[k + 1:, k] / A[k, k]
+        A[k + 1:, k + 1:] -= f[:, None] * A[k, k + 1:][None, :]
+        b[k + 1:] -= f * b[k]
+    x = np.empty(n)
+    for k in range(n - 1, -1, -1):
+        x[k] = (b[k] - np.dot(A[k, k + 1:], x[k + 1:])) / A[k, k]
+    return x
+
+
 @dataclass
 class BEMState:
     """One equilibrium state of :class:`CoulombBEM` (half mesh x >= 0).
@@ -264,7 +288,7 @@ class CoulombBEM:
             A[m, :m] = 2.0 * self.h[S]
             r[m] = Q - 2.0 * self.h[L] @ q[L]
             if m:
-                sol = np.linalg.solve(A, r)
+                sol = solve_dense(A, r)
                 q[S], delta = sol[:m], sol[m]
             else:
                 delta = 0.0
@@ -302,4 +326,4 @@ class CoulombBEM:
 
 __all__ = ["stick_traction_inversion", "tangential_force_inversion", "slip_flamant", "displacement_flamant",
            "friction_work",
-           "element_pressures", "CoulombBEM", "BEMState"]
+           "element_pressures", "solve_dense", "CoulombBEM", "BEMState"]

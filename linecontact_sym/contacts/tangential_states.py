@@ -1,26 +1,23 @@
-"""The numbers of the tangential line contact (:mod:`.tangential`): the
-verification points and the references of its derivations, the energy and
-loop-displacement forms from the force law, the stick half-width, and the
-states of a load history (monotonic loading, Mindlin-Deresiewicz unloading and
-reloading, full fretting cycles)."""
+"""The derivations' machinery of the tangential line contact
+(:mod:`.tangential`): the verification points and the references (independent
+checks, and numeric values where there is no closed form), the energy and
+loop-displacement forms from the force law, and the stick half-width.  The
+load histories at numbers are in :mod:`.tangential_history`."""
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
-
 import mpmath
-import numpy as np
 import sympy as sp
 
 from ..core import symbols as S
 from ..core.budget import run_with_budget
 from ..core.conversion import float_values, rational, to_mpf
-from ..core.errors import BudgetExceeded, DomainError, GrossSlidingError
+from ..core.errors import BudgetExceeded
 from ..method import transforms as T
 from ..method.derivation import Derivation, fallback_step
 from ..method.rules import Step
 from ..method.verification import verify
-from ..parsing import to_sympy
+from ..numeric.exports import make_callable
 from . import tangential_reference as ref
 from .equilibria import half_width_at
 from .force_law import ForceLaw
@@ -48,7 +45,12 @@ def _breaks(t, vals):
 
 
 def _law(t, vals) -> ForceLaw:
-    return ForceLaw.from_contact(t.contact, float_values(_fixed(t, vals), mpmath.mp.dps + 20))
+    """The numeric force law at the values (cached on the contact per values and precision)."""
+    fixed = _fixed(t, vals)
+    key = ("_law", mpmath.mp.dps, tuple(sorted((k.name, str(v)) for k, v in fixed.items())))
+    if key not in t._cache:
+        t._cache[key] = ForceLaw.from_contact(t.contact, float_values(fixed, mpmath.mp.dps + 20))
+    return t._cache[key]
 
 
 def normal_fn(t, name, vals, A):
@@ -57,14 +59,16 @@ def normal_fn(t, name, vals, A):
     of the outside gap with the numeric force law."""
     d = t.contact.derivation(name)
     fixed = _fixed(t, vals)
-    if d.closed_form:
-        e = d.expr.xreplace(float_values(fixed, mpmath.mp.dps + 20)).xreplace({S.a: sp.Float(A, mpmath.mp.dps + 10)})
-        fn = sp.lambdify(S.x, e, "mpmath")
-        return lambda X: mpmath.re(fn(X))
+    if d.closed_form:   # the package's stable form (e.g. no atanh(1.0) at x -> 0 for the wedge)
+        dps = mpmath.mp.dps
+        fn = make_callable(d, "mpmath", dps, {k.name: to_mpf(sp.N(v, dps + 5)) for k, v in fixed.items()})
+        A = to_mpf(A)
+        return lambda X: mpmath.re(fn(a=A, x=X))
     law = _law(t, vals)
     brs = law.breaks()
-    if name == "pressure":
-        return lambda X: T.pressure_quad(law.dP, brs, {S.a: A, S.x: X}, mpmath.mp.dps)
+    if name == "pressure":   # zero on and beyond the edge (rounding may put X a hair past A)
+        return lambda X: T.pressure_quad(law.dP, brs, {S.a: A, S.x: X}, mpmath.mp.dps) if abs(X) < A \
+            else mpmath.mpf(0)
     f = t.profile.mp_callable(float_values(fixed, mpmath.mp.dps + 20))
     E = to_mpf(sp.N(fixed[S.E_star], mpmath.mp.dps + 5))
     return lambda X: T.gap_quad(f, law.dP, brs, {S.a: A, S.x: X, S.E_star: E}, mpmath.mp.dps)
@@ -106,8 +110,9 @@ def references(t, what, terms):
     ``check`` shares nothing with the superposition (inversion of the stick
     condition, Flamant kernel), ``value`` evaluates the superposition by
     quadrature where the normal solution has no closed form."""
-    for name in ("force", "pressure") + (("gap",) if what == "slip" else ()):
-        t.contact.derivation(name)   # derived here, not inside the forked verification
+    if t.contact.verify:   # derived here, not inside the forked verification
+        for name in ("force", "pressure") + (("gap",) if what == "slip" else ()):
+            t.contact.derivation(name)
 
     def num(vals, key):
         return to_mpf(sp.N(vals[key], mpmath.mp.dps + 5))
@@ -224,8 +229,9 @@ def _delta_numeric(t, vals, C):
 def energy_references(t):
     """(check, value, description) of the dissipated energy: the friction work
     in the slip zones, and the force-law formula by quadrature."""
-    for name in ("force", "pressure", "gap"):
-        t.contact.derivation(name)   # derived here, not inside the forked verification
+    if t.contact.verify:   # derived here, not inside the forked verification
+        for name in ("force", "pressure", "gap"):
+            t.contact.derivation(name)
 
     def nums(vals):
         return [to_mpf(sp.N(vals[k], mpmath.mp.dps + 5)) for k in (S.a, S.c_s, S.E_star)]
@@ -300,192 +306,5 @@ def _tidy_root(e):
     return e
 
 
-@dataclass
-class TangentialState:
-    """One state of a tangential load history at numbers.
-
-    branch  'loading' (from Q = 0), 'unloading' (from Q_max), 'reloading'
-            (from -Q_max) or 'gross sliding onset' (|Q| = mu P)
-    Q, P, a, mu   tangential force, normal load, half-width, friction coefficient
-    c       stick half-width of the monotone part (at the turning point on a reversal)
-    c_r     stick half-width of the reversal (None on the loading branch)
-    Q_max   the turning point (None on the loading branch)
-    """
-
-    branch: str
-    Q: object
-    P: object
-    a: object
-    mu: object
-    c: object
-    c_r: object = None
-    Q_max: object = None
-    values: dict = field(default_factory=dict, repr=False)
-    contact: object = field(default=None, repr=False)
-
-    def _eval(self, quantity, x):
-        t = self.contact
-        sign = 1.0
-        args = {"a": self.a, "c_s": self.c}
-        if self.branch in ("unloading", "reloading"):
-            quantity = "unloading_" + quantity
-            args["c_r"] = self.c_r
-            sign = 1.0 if self.branch == "unloading" else -1.0
-        elif self.Q < 0:
-            sign = -1.0
-        xs = np.abs(np.asarray(x, dtype=float))
-        d = t.derivation(quantity)
-        fixed = {**{k: float(v) for k, v in args.items()}, **{k: float(v) for k, v in self.values.items()}}
-        if d.closed_form:
-            return sign * np.real(t.to_numeric(quantity, "numpy", **fixed)(x=xs))
-        syms = {s.name: s for s in d.variables_all}
-        out = [d.reference({**{syms[k]: sp.Float(v, 20) for k, v in fixed.items()}, S.x: sp.Float(float(xv), 20)},
-                           15) for xv in xs.ravel()]
-        return sign * np.array([float(v) for v in out]).reshape(xs.shape)
-
-    def traction(self, x):
-        """The shear traction at x (float64 array), positive in the direction of +Q."""
-        return self._eval("traction", x)
-
-    def slip(self, x):
-        """The accumulated slip at x relative to the stick zone (float64 array)."""
-        return self._eval("slip", x)
-
-
-def _numbers(t, values):
-    """Keyword values -> (Symbol -> exact number) for the contact's variables,
-    plus the half-width a (given, or from the normal load P)."""
-    by_name = {s.name: s for s in t.variables}
-    vals = {}
-    for k, v in values.items():
-        if k in ("a", "P"):
-            continue
-        if k not in by_name:
-            raise DomainError(f"unknown value {k!r}; expected {sorted(by_name)} and a or P")
-        vals[by_name[k]] = to_sympy_number(v)
-    missing = [s.name for s in t.variables if s not in vals]
-    if missing:
-        raise DomainError(f"values needed for {', '.join(missing)}")
-    if ("a" in values) == ("P" in values):
-        raise DomainError("give either the half-width a or the normal load P")
-    law = ForceLaw.from_contact(t.contact, float_values(_fixed(t, vals), 50))
-    if "a" in values:
-        A = to_mpf(values["a"])
-    else:
-        if not to_mpf(values["P"]) > 0:
-            raise DomainError(f"the normal load must be positive, got P = {values['P']}")
-        A = half_width_at(law, to_mpf(values["P"]))
-    return vals, law, A
-
-
-def _stick(t, law, load, vals):
-    """The stick half-width where P(c) = load (0 <= load <= P(a))."""
-    if load <= 0:
-        return to_mpf(sp.N(t.c0.xreplace(vals), 30))
-    return half_width_at(law, load)
-
-
-def stick_half_width_at(t, Qv, values) -> TangentialState:
-    """The monotonic-loading state at the tangential force Q (numbers)."""
-    with mpmath.workdps(30):
-        vals, law, A = _numbers(t, values)
-        Pa, mu = law.P(A), _mu(t, vals)
-        Qm = to_mpf(sp.N(Qv, 40))
-        load = Pa - abs(Qm) / mu
-        if load < -Pa * mpmath.mpf(10)**-25:
-            raise GrossSlidingError(f"|Q| = {mpmath.nstr(abs(Qm), 8)} exceeds the Coulomb limit mu P = "
-                                    f"{mpmath.nstr(mu * Pa, 8)}: the contact slides as a whole (no partial slip)")
-        branch = "loading" if load > Pa * mpmath.mpf(10)**-25 else "gross sliding onset"
-        return TangentialState(branch, Qm, Pa, A, mu, _stick(t, law, load, vals),
-                               values={s.name: v for s, v in vals.items()}, contact=t)
-
-
-def reversal(t, Q_max, Q, values, branch) -> TangentialState:
-    """Mindlin-Deresiewicz: the state at Q on the unloading branch from +Q_max
-    or the reloading branch from -Q_max."""
-    top = stick_half_width_at(t, abs(to_sympy_number(Q_max)), values)
-    with mpmath.workdps(30):
-        Qm = to_mpf(sp.N(to_sympy_number(Q), 40))
-        Qx = top.Q
-        if not -Qx <= Qm <= Qx:
-            raise DomainError(f"Q = {mpmath.nstr(Qm, 8)} lies outside [-Q_max, Q_max] = +-{mpmath.nstr(Qx, 8)}")
-        dQ = Qx - Qm if branch == "unloading" else Qx + Qm
-        vals, law, _ = _numbers(t, values)
-        c_r = _stick(t, law, top.P - dQ / (2 * top.mu), vals)
-        return TangentialState(branch, Qm, top.P, top.a, top.mu, top.c, c_r, Qx, top.values, t)
-
-
-def to_sympy_number(v):
-    """An exact SymPy number for a value (floats as the rational of their
-    shortest decimal, like the rest of the package)."""
-    return sp.nsimplify(v, rational=True) if isinstance(v, float) else to_sympy(v)
-
-
-@dataclass
-class FrettingCycle:
-    """A full cycle between +-Q_amplitude at constant normal load.
-
-    c          stick half-width at the extremes
-    W          energy dissipated per unit length per cycle
-    Q, delta   the closed loop (unloading then reloading branch); delta is the
-               rigid shift with reference length a (a convention: another
-               reference length shears the loop, its area stays W)
-    """
-
-    Q_amplitude: object
-    P: object
-    a: object
-    mu: object
-    c: object
-    W: object
-    Q: np.ndarray
-    delta: np.ndarray
-
-    @property
-    def loop_area(self) -> float:
-        """Area enclosed by the (Q, delta) polygon (a numerical check of W)."""
-        q, d = self.Q, self.delta
-        return 0.5 * abs(float(np.dot(d, np.roll(q, -1)) - np.dot(q, np.roll(d, -1))))
-
-
-def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
-    """The fretting loop and the energy per cycle (see :class:`FrettingCycle`)."""
-    top = stick_half_width_at(t, to_sympy_number(Q_amplitude), values)
-    vals, law, A = _numbers(t, values)
-    fixed = {s.name: float(v) for s, v in vals.items()}
-    with mpmath.workdps(30):
-        QA = abs(top.Q)
-        Qs = [QA - 2 * QA * k / (points - 1) for k in range(points)]
-        crs = [_stick(t, law, top.P - (QA - q) / (2 * top.mu), vals) for q in Qs]
-
-    def evaluate(name, cs):
-        d = t.derivation(name)
-        if d.closed_form:
-            fn = t.to_numeric(name, "numpy", **fixed)
-            return np.real(fn(a=float(A), c_s=np.array([float(c) for c in cs])))
-        syms = {s.name: s for s in d.variables_all}
-        return np.array([float(d.reference({**{syms[k]: sp.Float(v, 20) for k, v in fixed.items()},
-                                            S.a: sp.Float(A, 25), S.c_s: sp.Float(c, 25)}, 15)) for c in cs])
-    d_top = evaluate("loop_displacement", [top.c])[0]
-    down = d_top - 2 * evaluate("loop_displacement", crs)
-    Qd = np.array([float(q) for q in Qs])
-    Q = np.concatenate([Qd, -Qd[1:-1]])
-    delta = np.concatenate([down, -down[1:-1]])
-    W = evaluate("dissipated_energy", [top.c])[0]
-    return FrettingCycle(QA, top.P, A, top.mu, top.c, float(W), Q, delta)
-
-
-def bem(t, n, values):
-    """A :class:`~.tangential_reference.CoulombBEM` of this contact at numbers."""
-    vals, law, A = _numbers(t, values)
-    fixed = {s.name: float(v) for s, v in vals.items() if s in set(t.contact.variables)}
-    slope = t.contact.to_numeric("stiffness", "numpy", **fixed)
-
-    def dP(tv):
-        return np.broadcast_to(np.real(slope(a=tv)), np.shape(tv))
-    brs = [float(b) for b in law.breaks()]
-    return ref.CoulombBEM(float(A), fixed["E_star"], float(_mu(t, vals)), dP, n, brs)
-
-
-__all__ = ["CONDITIONS", "TangentialState", "FrettingCycle", "sampler", "references", "energy_parts",
-           "energy_references", "derive_stick_half_width", "stick_half_width_at", "reversal", "cycle", "bem"]
+__all__ = ["CONDITIONS", "normal_fn", "sampler", "references", "energy_parts", "energy_references",
+           "derive_stick_half_width"]
