@@ -210,7 +210,13 @@ def test_mindlin_deresiewicz_identities(plain):
     P = float(t.state(0, **vals).P)
     QA = 0.55 * vals["mu"] * P
     load, down = t.state(QA, **vals), t.unload(QA, -QA, **vals)
-    assert abs(float(load.c) / vals["a"] - np.sqrt(1 - QA / (vals["mu"] * P))) < 1e-14
+    with mpmath.workdps(30):
+        for ratio in (0.01, 0.55, 0.9, 0.99, 1 - 1e-9):   # Cattaneo: c/a = sqrt(1 - Q/(mu P))
+            Qv = ratio * vals["mu"] * P
+            st = t.state(Qv, **vals)
+            Qexact = mpmath.mpf(sp.nsimplify(Qv, rational=True))   # floats mean their shortest decimal
+            want = mpmath.mpf(4) / 5 * mpmath.sqrt(1 - Qexact / (mpmath.mpf(2) / 5 * st.P))
+            assert abs(st.c / want - 1) < 1e-20   # 30 digits, less the cancellation in P - Q/mu near 1
     with mpmath.workdps(30):
         assert abs(down.c_r - load.c) < 1e-25
     xs = np.linspace(0.01, 0.79, 23)
@@ -232,11 +238,12 @@ def test_fretting_loop_area_is_the_dissipated_energy(plain):
     t, vals = plain["parabola"], VALS["parabola"]
     P = float(t.state(0, **vals).P)
     m = vals["mu"]
-    QA = 0.7 * m * P
-    cyc = t.cycle(QA, 401, **vals)
-    assert abs(cyc.loop_area / cyc.W - 1) < 2e-5
-    r = 1 - QA / (m * P)
-    assert abs(cyc.W / (2 * (m * P)**2 / (np.pi * vals["E_star"]) * (1 - r**2 + 2 * r * np.log(r))) - 1) < 1e-12
+    for ratio in (0.3, 0.7, 0.95):
+        QA = ratio * m * P
+        cyc = t.cycle(QA, 401, **vals)
+        assert abs(cyc.loop_area / cyc.W - 1) < 2e-5
+        r = 1 - ratio
+        assert abs(cyc.W / (2 * (m * P)**2 / (np.pi * vals["E_star"]) * (1 - r**2 + 2 * r * np.log(r))) - 1) < 1e-12
     small = t.cycle(1e-3 * m * P, 3, **vals)
     assert abs(small.W / (2 * (1e-3 * m * P)**3 / (3 * np.pi * vals["E_star"] * m * P)) - 1) < 2e-3
 

@@ -105,6 +105,18 @@ _t = sp.Symbol("t", positive=True)
 #: symbols the tangential quantities take besides the profile's
 _OWN = (S.mu, S.Q, S.c_s, S.c_r)
 
+#: how each quantity is built from the engine's normal solution (the step record)
+STEP_NOTES = {
+    "traction": "mu [p(x; a) - p(x; c_s)] in the stick zone, mu p(x; a) in the slip zones (engine's pressure)",
+    "tangential_force": "mu [P(a) - P(c_s)] (engine's force law)",
+    "slip": "mu g(x; c_s) in the slip zones (engine's gap at the half-width c_s)",
+    "loop_displacement": "(2 mu/(pi E*)) int_c^a P'(t) ln(2a/t) dt, integrated by parts over the engine's force law",
+    "dissipated_energy": "(8 mu^2/(pi E*)) [(P(a) + P(c)) I_1 - I_2 - P(a) P(c) ln(a/c)] over the engine's force law",
+    "unloading_traction": "q(x; c_s) - 2 q(x; c_r) (Mindlin-Deresiewicz)",
+    "unloading_force": "Q(c_s) - 2 Q(c_r) (Mindlin-Deresiewicz)",
+    "unloading_slip": "s(x; c_s) - 2 s(x; c_r) (Mindlin-Deresiewicz)",
+}
+
 #: the Mindlin-Deresiewicz reversal: (coefficient, stick half-width) of each monotone term
 LOADING = ((1, S.c_s),)
 UNLOADING = ((1, S.c_s), (-2, S.c_r))
@@ -269,7 +281,7 @@ class TangentialLineContact(Contact):
             if not rec.passed:
                 notes = (f"closed form FAILED verification ({rec.min_digits:.1f} digits): evaluated numerically",)
                 closed = False
-        step = Step("cattaneo_mindlin", expr, conditions, (states.CONDITIONS,)) if closed \
+        step = Step("cattaneo_mindlin", expr, conditions, (STEP_NOTES[quantity],)) if closed \
             else fallback_step("the normal solution it is built from has no closed form here")
         return Derivation(quantity, expr, closed, step, conditions if closed else (), rec,
                           time.perf_counter() - t0, notes + (states.CONDITIONS,),

@@ -14,7 +14,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.conversion import to_mpf
-from ..core.errors import DomainError, GrossSlidingError
+from ..core.errors import DomainError, GrossSlidingError, LineContactError
 from ..core.roots import root_in_log
 from ..numeric.exports import make_callable
 from ..parsing import to_sympy
@@ -211,16 +211,26 @@ def _numbers(t, values):
 
 def _stick(t, law, load, vals, A):
     """The stick half-width where P(c) = load (0 <= load <= P(A)): the force
-    law's last zero c0 at load 0, else the root in (c0, A) (the law does not
-    decrease there) by :func:`~linecontact_sym.core.roots.root_in_log`."""
+    law's last zero c0 at load 0, else the root in (c0, A), where the law
+    does not decrease: bracketed by halving from A (a narrow bracket: the
+    Anderson step of :func:`~linecontact_sym.core.roots.root_in_log` may
+    stop short of the root in a wide one), then solved and checked."""
     c0 = to_mpf(sp.N(t.c0.xreplace(vals), mpmath.mp.dps + 5))
     if load <= 0:
         return c0
     with mpmath.workdps(mpmath.mp.dps + 10):
-        lo = c0 if c0 > 0 else A * mpmath.mpf(10)**-20
+        A = to_mpf(A)
+        hi, lo = A, A / 2
+        floor = c0 if c0 > 0 else A * mpmath.mpf(10)**-30
+        while lo > floor and law.P(lo) >= load:
+            hi, lo = lo, lo / 2
+        lo = max(lo, floor)
         if law.P(lo) >= load:
             return lo
-        return root_in_log(lambda c: law.P(c) - load, lo, to_mpf(A))
+        c = root_in_log(lambda cv: law.P(cv) - load, lo, hi)
+        if abs(law.P(c) - load) > law.P(A) * mpmath.mpf(10)**(-mpmath.mp.dps // 2):
+            raise LineContactError(f"no stick half-width found for P(c) = {mpmath.nstr(load, 10)}")
+        return c
 
 
 def stick_half_width_at(t, Qv, values) -> TangentialState:
