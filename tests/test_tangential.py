@@ -50,10 +50,11 @@ def hertz():
 def plain():
     """Contacts without the package's verification: the checks here are the tests'."""
     out = {"parabola": lcs.parabola(verify=False).tangential(),
-           "worn": lcs.worn_cylinder(verify=False, budget=2).tangential(),
-           "exact": lcs.exact_cylinder(verify=False, budget=2).tangential()}
+           "worn": lcs.worn_cylinder(verify=False, budget=20).tangential(),
+           "exact": lcs.exact_cylinder(verify=False, budget=20).tangential()}
     for t in out.values():   # what is tested: closed force laws; the pressures are closed for the parabola only
         assert t.contact.derivation("force").closed_form
+        t.contact.budget = 1.0   # the symbolic attempts that fail here (pressure, gap, W) give up sooner
     return out
 
 

@@ -136,7 +136,7 @@ class TangentialLineContact(Contact):
     Examples
     --------
     >>> import linecontact_sym as lcs
-    >>> t = lcs.parabola().tangential()
+    >>> t = lcs.parabola(verify=False).tangential()   # verify=False: no 30-digit checks in this example
     >>> t.tangential_force
     pi*E_star*mu*(a**2 - c_s**2)/(4*R)
     >>> t.stick_half_width().expr
@@ -218,8 +218,8 @@ class TangentialLineContact(Contact):
         return first.hi if (len(self.profile.pieces) > 1 and sp.simplify(first.expr) == 0) else sp.S.Zero
 
     def check_domain(self, quantity, values):
-        """The base checks plus 0 <= c_s <= c_r <= a, mu > 0 and, for the slip,
-        nothing more (it is 0 in the stick zone)."""
+        """The base checks (a > 0, E* > 0, |x| <= a) plus 0 <= c_s <= c_r <= a
+        and mu > 0."""
         vals = super().check_domain(quantity, values)
         num = {k: to_sympy(v) for k, v in vals.items() if v is not None}
         A, cs, cr = num.get("a"), num.get("c_s"), num.get("c_r")
@@ -293,7 +293,8 @@ class TangentialLineContact(Contact):
         if what == "force":
             expr = sp.factor_terms(expr)
         closed = self._closed(what)
-        conds = tuple(self._normal("force").conditions) + tuple(sp.Lt(C, S.a) for _, C in terms)
+        conds = tuple(self._normal("force").conditions) + tuple(sp.Lt(C, S.a) for _, C in terms) \
+            + ((sp.Lt(self.c0, S.c_s),) if self.c0 != 0 else ())
         if len(terms) > 1:
             conds += (sp.Lt(S.c_s, S.c_r),)
         if domain == "inside":
@@ -337,7 +338,8 @@ class TangentialLineContact(Contact):
     def _derive_dissipated_energy(self):
         t0 = time.perf_counter()
         W, _, closed = self._energy_parts()
-        conds = tuple(self._normal("force").conditions) + (sp.Lt(S.c_s, S.a),)
+        conds = tuple(self._normal("force").conditions) + (sp.Lt(S.c_s, S.a),) \
+            + ((sp.Lt(self.c0, S.c_s),) if self.c0 != 0 else ())
         check, value, how = states.energy_references(self)
         return self._finish("dissipated_energy", W, closed, conds, check, value, how,
                             self._variables(S.a, S.c_s), t0, self._sampler("any"), ("pressure", "gap"))
@@ -367,7 +369,16 @@ class TangentialLineContact(Contact):
     def state(self, Q, **values):
         """The partial-slip state after monotonic loading from 0 to Q (numbers:
         ``a`` or ``P``, E_star, the profile's parameters, mu if symbolic); a
-        :class:`~.tangential_history.TangentialState`."""
+        :class:`~.tangential_history.TangentialState`.
+
+        >>> import linecontact_sym as lcs
+        >>> t = lcs.parabola(verify=False).tangential()
+        >>> st = t.state(0.1, E_star=1, R=1, mu=0.4, a=0.8)   # c/a = sqrt(1 - Q/(mu P)), P = pi a^2/4
+        >>> round(float(st.c / st.a), 12)
+        0.708971651646
+        >>> bool(abs(t.unload(0.1, -0.1, E_star=1, R=1, mu=0.4, a=0.8).c_r - st.c) < 1e-25)
+        True
+        """
         return history.stick_half_width_at(self, history.to_sympy_number(Q), values)
 
     def unload(self, Q_max, Q, **values):

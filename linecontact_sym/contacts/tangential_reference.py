@@ -68,7 +68,16 @@ def stick_traction_inversion(p, a, c, x, mu, breaks=()):
     """The stick-zone traction q(x), |x| < c, by the inversion of the stick
     condition (see the module docstring); ``p`` is an mpmath callable of the
     pressure at half-width ``a``, ``breaks`` the kinks of p (the profile's
-    breakpoints).  Domain: 0 <= |x| < c < a."""
+    breakpoints).  Domain: 0 <= |x| < c < a.
+
+    Hertz (p = sqrt(1 - x^2) for a = 1, E* = 2 R): mu [p(x; 1) - p(x; c)]
+
+    >>> import mpmath
+    >>> p = lambda t: mpmath.sqrt(1 - t**2)
+    >>> q = stick_traction_inversion(p, 1, 0.5, 0.3, 0.2)
+    >>> abs(q - 0.2 * (p(0.3) - mpmath.sqrt(0.25 - 0.09))) < 1e-14
+    True
+    """
     a, c, x, mu = (mpmath.mpf(v) for v in (a, c, x, mu))
     if not (abs(x) < c < a):
         raise DomainError(f"the inversion needs |x| < c < a, got x = {x}, c = {c}, a = {a}")
@@ -81,7 +90,15 @@ def stick_traction_inversion(p, a, c, x, mu, breaks=()):
 
 def tangential_force_inversion(p, a, c, mu, breaks=()):
     """Q(c) = 2 mu int_0^U p(sqrt(c^2 + u^2); a) du: the resultant of the
-    inverted stick traction and of mu p in the slip zones.  Domain 0 <= c <= a."""
+    inverted stick traction and of mu p in the slip zones.  Domain 0 <= c <= a.
+
+    Hertz (p = sqrt(1 - x^2)): mu [P(1) - P(c)] = mu pi (1 - c^2)/2
+
+    >>> import mpmath
+    >>> Q = tangential_force_inversion(lambda t: mpmath.sqrt(1 - t**2), 1, 0.5, 0.2)
+    >>> abs(Q - 0.2 * mpmath.pi * 0.75 / 2) < 1e-14
+    True
+    """
     a, c, mu = (mpmath.mpf(v) for v in (a, c, mu))
     if not (0 <= c <= a):
         raise DomainError(f"the stick half-width must lie in [0, a], got c = {c}, a = {a}")
@@ -98,7 +115,17 @@ def slip_flamant(q, a, x, E_star, points=()):
 
     from the Flamant kernel (F).  ``q`` is an mpmath callable of the traction
     (even in xi), ``points`` its kinks in (0, a) (stick-zone edges, profile
-    breakpoints).  Positive s: the surfaces have moved in the direction of Q."""
+    breakpoints).  Positive s: the surfaces have moved in the direction of Q.
+
+    Hertz (a = 1, c = 0.5, E* = 2, R = 1: p = sqrt(1 - x^2)): mu g(x; c)
+
+    >>> import mpmath
+    >>> p = lambda t, A=1: mpmath.sqrt(A**2 - t**2) if abs(t) < A else 0
+    >>> q = lambda t: 0.2 * (p(t) - p(t, 0.5))
+    >>> g = (0.8 * mpmath.sqrt(0.64 - 0.25) - 0.25 * mpmath.acosh(1.6)) / 2
+    >>> abs(slip_flamant(q, 1, 0.8, 2, [0.5]) - 0.2 * g) < 1e-13
+    True
+    """
     a, x, E = (mpmath.mpf(v) for v in (a, x, E_star))
     x = abs(x)
     inner = {mpmath.mpf(0), x, *(mpmath.mpf(v) for v in points)}
@@ -119,7 +146,16 @@ def displacement_flamant(q, a, E_star, points=()):
         delta = -(2/(pi E*)) int_{-a}^{a} q(xi) ln(|xi|/a) dxi.
 
     (2-D leaves the rigid shift undefined; another reference length L adds
-    (2 Q/(pi E*)) ln(L/a).)"""
+    (2 Q/(pi E*)) ln(L/a).)
+
+    Hertz (a = 1, c = 0.5, E* = 2, R = 1), see :mod:`.tangential`:
+
+    >>> import mpmath
+    >>> p = lambda t, A=1: mpmath.sqrt(A**2 - t**2) if abs(t) < A else 0
+    >>> d = displacement_flamant(lambda t: 0.2 * (p(t) - p(t, 0.5)), 1, 2, [0.5])
+    >>> abs(d - 0.2 / 4 * (0.75 - 0.5 * mpmath.log(2) + 1.5 * mpmath.log(2))) < 1e-13
+    True
+    """
     a, E = mpmath.mpf(a), mpmath.mpf(E_star)
     inner = {mpmath.mpf(0), *(mpmath.mpf(v) for v in points if 0 < v < a)}
     pts = sorted({*(-v for v in inner), *inner, -a, a})
@@ -136,7 +172,16 @@ def friction_work(p, g, a, c, mu, breaks=()):
 
         W = 2 half-cycles * 2 zones * int_c^a mu p(x; a) * 2 mu g(x; c) dx.
 
-    ``p``: pressure at a, ``g``: gap at c (mpmath callables of x)."""
+    ``p``: pressure at a, ``g``: gap at c (mpmath callables of x).
+
+    Hertz (a = 1, c = 0.5, E* = 2, R = 1): pi E* mu^2/(8 R^2) [a^4 - c^4 - 4 a^2 c^2 ln(a/c)]
+
+    >>> import mpmath
+    >>> g = lambda x: (x * mpmath.sqrt(x**2 - 0.25) - 0.25 * mpmath.acosh(2 * x)) / 2
+    >>> W = friction_work(lambda x: mpmath.sqrt(1 - x**2), g, 1, 0.5, 0.2)
+    >>> abs(W - mpmath.pi * 2 * 0.04 / 8 * (1 - 0.0625 - mpmath.log(2))) < 1e-14
+    True
+    """
     a, c, mu = (mpmath.mpf(v) for v in (a, c, mu))
     pts = _split(breaks, c, a)
     return 8 * mu**2 * mpmath.quad(lambda xv: p(xv) * g(xv), pts)
@@ -166,7 +211,14 @@ def element_pressures(dP, edges, a, breaks=()):
         int_{x1}^{x2} p dx = (1/pi) int_{x1}^{a} P'(t) [asin(min(x2, t)/t) - asin(x1/t)] dt
 
     (Eq. 12 integrated over the element), by Gauss-Legendre split at x2 and
-    at the breakpoints.  ``dP``: numpy callable of the force-law slope."""
+    at the breakpoints.  ``dP``: numpy callable of the force-law slope.
+
+    Hertz (P = pi a^2/4, p = sqrt(a^2 - x^2)/2): the mean over [0, 1] is pi/8
+
+    >>> import numpy as np
+    >>> bool(abs(element_pressures(lambda t: np.pi * t / 2, np.array([0.0, 1.0]), 1.0)[0] / (np.pi / 8) - 1) < 1e-12)
+    True
+    """
     x1, x2 = np.asarray(edges[:-1], float), np.asarray(edges[1:], float)
     cuts = sorted(float(bv) for bv in breaks if 0 < bv < a)
 
@@ -190,7 +242,11 @@ def solve_dense(A, b):
     """x with A x = b by Gaussian elimination with partial pivoting in plain
     numpy array operations.  Used instead of ``numpy.linalg.solve`` because a
     multi-threaded LAPACK spends ~0.1 s per small system (n ~ 100) when the
-    cores are shared; this costs ~n elementwise updates and is deterministic."""
+    cores are shared; this costs ~n elementwise updates and is deterministic.
+
+    >>> solve_dense([[2.0, 1.0], [1.0, 3.0]], [3.0, 5.0])
+    array([0.8, 1.4])
+    """
     A = np.array(A, dtype=float)
     b = np.array(b, dtype=float)
     n = len(b)
@@ -244,6 +300,14 @@ class CoulombBEM:
     n : int
         Elements on 0 <= x <= a (graded towards the edge, x = a sin(theta)).
     breaks : breakpoints of the profile (for the pressure integration).
+    
+    Example (Hertz, E* = 2, R = 1, a = 1, mu = 0.2: Q = 0.6 mu P, c = a sqrt(0.4)):
+
+    >>> import numpy as np
+    >>> bem = CoulombBEM(1.0, 2.0, 0.2, lambda t: np.pi * t, n=60)
+    >>> _ = bem.run(np.linspace(0, 0.6 * 0.2 * bem.P, 5)[1:])
+    >>> bool(abs(bem.stick_half_width() - np.sqrt(0.4)) < 0.04)
+    True
     """
 
     def __init__(self, a, E_star, mu, pressure, n=200, breaks=()):
