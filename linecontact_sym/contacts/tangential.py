@@ -8,8 +8,8 @@ Setting and conditions of validity (every result below)
 * elastically similar bodies, or the Dundurs constant beta neglected
   (Goodman approximation): only then does the shear traction leave the
   pressure unchanged.  A rigid indenter on a half-plane (Popov's
-  E* = E/(1 - nu^2)) is "similar" only for nu = 1/2; otherwise beta =
-  -(1 - 2 nu)/(2 (1 - nu)) is neglected;
+  E* = E/(1 - nu^2)) is "similar" only for nu = 1/2; otherwise
+  |beta| = (1 - 2 nu)/(2 (1 - nu)) (0.29 for nu = 0.3) is neglected;
 * Coulomb friction with one coefficient mu (static = kinetic);
 * the normal load P (half-width a) is held constant while Q varies;
 * a symmetric profile and a compact contact |x| < a whose frictionless solution
