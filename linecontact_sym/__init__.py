@@ -3,7 +3,7 @@ problems by Popov's (2017) superposition of flat punches, derived with SymPy,
 verified with mpmath and exported as fast numeric functions."""
 from __future__ import annotations
 
-from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta
+from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta, mu, Q, c_s, c_r
 from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
                      DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError)
 from .method.profile import Profile
@@ -13,7 +13,8 @@ from .contacts.frictionless import LineContact
 from .contacts.inverse import profile_from_force
 from .contacts.adhesive import AdhesiveLineContact
 from .contacts.base import Contact, Quantity
-from .core.errors import NoPullOffError, NoEquilibriumError
+from .core.errors import NoPullOffError, NoEquilibriumError, GrossSlidingError
+from .contacts.tangential import TangentialLineContact
 from .contacts import catalogue
 from .contacts.catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
 from .core.printing import init_printing, to_latex
@@ -22,10 +23,11 @@ from .parsing import parse_expr
 __version__ = "0.1.0"
 
 __all__ = [
-    "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta",
+    "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r",
     "LineContactError", "ProfileError", "UnknownSymbolError", "InadmissibleProfileError",
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
     "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "Contact", "Quantity", "catalogue",
+    "TangentialLineContact", "GrossSlidingError",
     "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "init_printing", "parse_expr",
 ]

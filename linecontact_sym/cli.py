@@ -250,12 +250,14 @@ def cmd_eval(args):
 
 
 def _eval_one(c, q, values, dps):
+    from .contacts.base import contact_kind
     kind, name, quantity = _registry()[q]
-    contact = c if kind == "frictionless" else c.adhesive(S.gamma)
-    if quantity.method:  # a(P): the load is an argument
-        if "P" not in values:
-            raise LineContactError(f"{q} needs the load: --at P=... or --set P=...")
-        load = values.pop("P")
+    contact = contact_kind(kind).from_frictionless(c)
+    if quantity.method:  # a(P), c_s(Q): the load is the last argument, passed first
+        load_name = quantity.arguments[-1]
+        if load_name not in values:
+            raise LineContactError(f"{q} needs {load_name}: --at {load_name}=... or --set {load_name}=...")
+        load = values.pop(load_name)
         out = getattr(contact, name)(load, **values)
         return out[0] if isinstance(out, tuple) else out
     return contact.evaluate_at(name, dps=dps, **values)

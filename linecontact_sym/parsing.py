@@ -50,7 +50,8 @@ t = sp.Symbol("t", positive=True)
 s = sp.Symbol("s", positive=True)
 
 #: the standard symbols every formula may use
-SYMBOLS = {sym.name: sym for sym in (S.x, S.a, S.P, S.E_star, S.gamma, S.R, S.b, S.n, S.c, S.theta, t, s)}
+SYMBOLS = {sym.name: sym for sym in (S.x, S.a, S.P, S.E_star, S.gamma, S.R, S.b, S.n, S.c, S.theta,
+                                     S.mu, S.Q, S.c_s, S.c_r, t, s)}
 
 #: constants
 CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "True": sp.true, "False": sp.false}

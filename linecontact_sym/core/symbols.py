@@ -20,6 +20,18 @@ Conventions (Popov 2017):
 * ``R``, ``b``, ``n``, ``c``, ``theta`` -- the paper's profile parameters:
   radius, flat half-width, power-law exponent, power-law coefficient c_n and
   wedge angle.
+
+Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential`:
+
+* ``mu``  -- Coulomb friction coefficient (one coefficient, static = kinetic).
+* ``Q``   -- tangential force per unit length, signed (real): its sign is the
+  direction of the load; |Q| < mu*P for partial slip.
+* ``c_s`` -- half-width of the central *stick* zone |x| < c_s (the literature's
+  ``c``, Johnson 1985 ch. 7, Hills & Nowell 1994; ``c`` is taken here by the
+  power-law coefficient and ``b`` by the flat half-width).  In a load
+  reversal it is the stick half-width at the turning point.
+* ``c_r`` -- half-width of the stick zone of a *reversal* (Mindlin-Deresiewicz
+  unloading or reloading), c_s <= c_r <= a.
 """
 from __future__ import annotations
 
@@ -37,6 +49,11 @@ n = sp.Symbol("n", positive=True)
 c = sp.Symbol("c", positive=True)
 theta = sp.Symbol("theta", positive=True)
 
+mu = sp.Symbol("mu", positive=True)
+Q = sp.Symbol("Q", real=True)
+c_s = sp.Symbol("c_s", positive=True)
+c_r = sp.Symbol("c_r", positive=True)
+
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
 
@@ -45,7 +62,9 @@ LATEX_NAMES = {
     E_star: r"E^{*}",
     gamma: r"\gamma_{12}",
     theta: r"\theta",
+    c_s: r"c_{\mathrm{s}}",
+    c_r: r"c_{\mathrm{r}}",
 }
 
-__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta",
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r",
            "RESERVED", "LATEX_NAMES"]
