@@ -87,6 +87,7 @@ class Context:
         self.budget = budget
         self.contacts = {}
         self.adhesives = {}
+        self.kinds = {}   # (id(contact), kind) -> the contact of that kind
 
     def contact(self, profile, ranges: Callable):
         """The contact of ``profile``, its parameters verified over
@@ -202,7 +203,30 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
         return _flat_punch_displacement()
     if q == "punch_adhesion_force":
         return _punch_adhesion_force(ctx)
-    raise ClaimError(f"{_where(claim)}: quantity {q!r} is not implemented")
+    return _derive_registered(claim, profile, ctx)
+
+
+def _derive_registered(claim, profile, ctx) -> Derived:
+    """Any quantity of any contact kind, by its registry name ('tangential.slip'):
+    the kind is built on the frictionless contact of the profile."""
+    from ..contacts.base import contact_kind, qualified_quantities
+    entry = qualified_quantities().get(claim.quantity)
+    if entry is None:
+        raise ClaimError(f"{_where(claim)}: quantity {claim.quantity!r} is not implemented")
+    kind, name, quantity = entry
+    t0 = time.perf_counter()
+    c = ctx.contact(profile, claim.range_of)
+    contact = ctx.kinds.get((id(c), kind))
+    if contact is None:
+        contact = ctx.kinds[(id(c), kind)] = contact_kind(kind).from_frictionless(c)
+    if quantity.method:   # a(P), c_s(Q): the symbolic form is the method's default
+        d = getattr(contact, name)()
+        d = d[0] if isinstance(d, tuple) else d
+    else:
+        d = contact.derivation(name)
+    out = _from_derivation(d, profile, c.profile.slope_at_origin)
+    out.seconds = time.perf_counter() - t0
+    return out
 
 
 def placeholder_laws(claim: Claim, profile, ctx: Context):

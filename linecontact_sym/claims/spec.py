@@ -89,6 +89,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..core import symbols as S
+from ..contacts.base import qualified_quantities
 from ..core.errors import ClaimError
 from ..parsing import declare_symbols, parse_expr
 from .fields import _names, _num, _parse_range, _text, _typed, _w, read_text_file
@@ -122,6 +123,12 @@ QUANTITIES = {
                             "rate (Griffith) and the stress-intensity factor",
 }
 
+# every quantity of every contact kind, by its registry name ('force', 'adhesive.force',
+# 'tangential.traction', ...), unless the checker has its own route above
+for _key, (_kind, _name, _q) in qualified_quantities().items():
+    QUANTITIES.setdefault(_key, f"{_q.symbol}{', ' + _q.equation if _q.equation else ''}: {_q.doc} "
+                                f"(engine, {_kind} contact)")
+
 #: quantities derived without a profile
 PROFILE_FREE = ("flat_punch_pressure", "flat_punch_displacement", "punch_adhesion_force", "inverse_profile")
 
@@ -137,10 +144,12 @@ DEFAULT_RANGES = {"a": (0.1, 2.0), "x": (0.1, 2.0), "P": (0.1, 3.0), "E_star": (
                   "theta": (0.05, 1.2)}
 #: the range of a symbol that no table names
 FALLBACK_RANGE = (0.5, 2.5)
-#: x relative to a, by quantity
-X_RANGES = {"pressure": (0.02, 0.98), "adhesive_pressure": (0.02, 0.98),
-            "flat_punch_pressure": (0.02, 0.98), "gap": (1.05, 3.0),
-            "flat_punch_displacement": (1.05, 3.0)}
+#: x relative to a, by quantity (the contacts' quantities: from their registry domain)
+X_RANGES = {"flat_punch_pressure": (0.02, 0.98), "flat_punch_displacement": (1.05, 3.0)}
+_DOMAIN_X = {"inside": (0.02, 0.98), "outside": (1.05, 3.0)}
+for _key, (_kind, _name, _q) in qualified_quantities().items():
+    if _q.domain in _DOMAIN_X:
+        X_RANGES.setdefault(_key, _DOMAIN_X[_q.domain])
 
 _TOP_KEYS = {"key", "title", "reference", "definitions", "ranges", "claims", "source", "symbols", "figures"}
 _CLAIM_KEYS = {"label", "title", "description", "quantity", "profile", "profiles", "profile_names", "formula", "forms",
