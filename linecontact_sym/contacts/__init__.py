@@ -2,4 +2,6 @@
 frictionless line contact, its JKR-adhesive and tangential forms, the
 catalogue of the paper's profiles.  Importing the package registers every
 contact kind (:data:`~.base.CONTACT_KINDS`)."""
-from . import frictionless, adhesive, tangential  # noqa: F401  (registers the kinds)
+from . import frictionless, adhesive, tangential  # importing registers the kinds
+
+__all__ = ["frictionless", "adhesive", "tangential"]
