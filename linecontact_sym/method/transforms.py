@@ -136,14 +136,20 @@ class NumericProfile:
     def kinks(self, lo, hi):
         """The breakpoints in (lo, hi), ascending, at the working precision
         (to 80 digits, found once): sign changes of each switching function
-        on a grid of :data:`SAMPLES` points per searched interval, solved by
-        bisection + secant."""
+        on a grid of the searched interval (0 or the end of the last search up
+        to ``hi``: :data:`SAMPLES` evenly spaced points and 4 :data:`SAMPLES`
+        log-spaced ones from 1e-15 of its end), solved by bisection + secant.
+        Two zeros of one switching function between neighbouring grid points
+        are not seen (they would be a switch on and off within 1.4 % of x)."""
         hi = mpmath.mpf(hi)
         if self._switches and hi > self._searched:
             with mpmath.workdps(80):
                 top = max(hi, 2 * self._searched)
-                grid = [self._searched + (top - self._searched) * k / self.SAMPLES
-                        for k in range(self.SAMPLES + 1)]
+                low = self._searched
+                grid = {low + (top - low) * k / self.SAMPLES for k in range(self.SAMPLES + 1)}
+                g0 = max(low, top * mpmath.mpf(10)**-15)
+                grid |= {g0 * (top / g0)**(mpmath.mpf(k) / (4 * self.SAMPLES)) for k in range(4 * self.SAMPLES + 1)}
+                grid = sorted(grid)
                 for g in self._switches:
                     vals = []
                     for xv in grid:
