@@ -24,7 +24,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..core.errors import DomainError, LineContactError
+import mpmath
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.errors import DomainError, InadmissibleProfileError, LineContactError
 from ..method.derivation import Derivation
 from ..parsing import to_sympy
 
@@ -155,6 +159,7 @@ class Contact:
                 if v.is_number and not v.is_positive:
                     what = "the half-width" if name == "a" else "the reduced modulus E*"
                     raise DomainError(f"{what} must be positive, got {name} = {vals[name]}")
+        self._check_admissible(vals)
         if "x" in vals and "a" in vals and q.domain != "any":
             xv, av = abs(to_sympy(vals["x"])), to_sympy(vals["a"])
             if q.domain == "inside" and xv > av:
@@ -165,6 +170,54 @@ class Contact:
                                   f"the {q.name} is defined outside (zero inside)")
             vals["x"] = xv
         return vals
+
+    def _check_admissible(self, vals):
+        """Parameter values against their symbols' assumptions (R = -1 for a
+        positive R is a :class:`DomainError`), and, with a numeric half-width,
+        the admissibility of the frictionless solution at the point: the
+        profile real and not decreasing on (0, a)
+        (:meth:`~linecontact_sym.method.profile.Profile.rising_on`) and
+        dP0/da >= 0 at a where the force law has a closed form (else the
+        edge pressure is tensile); :class:`InadmissibleProfileError` names
+        what fails."""
+        base = getattr(self, "contact", self)
+        syms = {s.name: s for s in getattr(self, "variables", ())}
+        nums = {}
+        for name, v in vals.items():
+            sym = syms.get(name)
+            if sym is None or v is None:
+                continue
+            val = to_sympy(v)
+            if not val.is_number:
+                return
+            if sym.is_positive and not val.is_positive:
+                raise DomainError(f"{name} = {v} but {name} is declared positive")
+            if sym.is_nonnegative and val.is_negative:
+                raise DomainError(f"{name} = {v} but {name} is declared non-negative")
+            nums[sym] = val
+        prof = getattr(base, "profile", None)
+        if prof is None or vals.get("a") is None or any(p not in nums for p in prof.params):
+            return
+        av = to_sympy(vals["a"])
+        if not av.is_number or not av.is_positive:
+            return
+        why = prof.rising_on({p: nums[p] for p in prof.params}, av)
+        if why is not None:
+            raise InadmissibleProfileError(f"profile {prof.name!r} at a = {vals['a']}: {why} inside the contact "
+                                           f"(0, a): the frictionless compact-contact solution needs f' >= 0 there")
+        slope = base._admissibility_slope() if hasattr(base, "_admissibility_slope") else None
+        if slope is not None and S.E_star in nums:
+            fn, args = slope
+            try:
+                with mpmath.workdps(30):
+                    d = fn(*[mpmath.mpf(sp.N(av if s.name == "a" else nums[s], 30)) for s in args])
+            except Exception:
+                return
+            if not isinstance(d, mpmath.mpc) and d < 0:
+                raise InadmissibleProfileError(
+                    f"profile {prof.name!r} at a = {vals['a']}: dP0/da = {mpmath.nstr(d, 6)} < 0, the pressure "
+                    f"at the edges of the contact is tensile; the frictionless solution holds only while "
+                    f"dP0/da >= 0 (see admissible_range)")
 
     # ----------------------------------------------------------- numbers
     def evaluate_at(self, quantity: str, dps: int = 30, **values):

@@ -21,10 +21,10 @@ The admissible range (:func:`admissible_range`): a* is the first a where
 the non-adhesive slope dP0/da turns negative (the edge pressure is
 p ~ dP0/da sqrt(a - |x|)/pi, tensile beyond) or the end of the real domain
 of the law (the exact cylinder at a = R), whichever comes first; without
-either, the search runs up to 2**80 times the law's length scale.
+either, the search runs up to 4**40 times the law's length scale.
 
 **None missed** (:func:`landscape`).  Every sign change of dP/da on
-[2**-80 s, a*] (s the length scale) is found by subdivision in ln a, split
+[4**-20 s, a*] (s the length scale, :data:`SPAN`) is found by subdivision in ln a, split
 at the profile's breakpoints:
 
 * closed-form law with python-flint: dP/da (and d2P/da2) evaluated in ball
@@ -65,12 +65,17 @@ from .force_law import GUARD, PullOff
 MIN_WIDTH = mpmath.mpf("1e-10")
 #: relative distance from a breakpoint where the one-sided signs are read
 KINK_GAP = mpmath.mpf("1e-12")
-#: the search covers SPAN**-1 .. SPAN times the law's length scale
-SPAN = mpmath.mpf(2)**80
+#: the search covers 4**-20 (about 1e-12) .. 4**40 (about 1e24) times the
+#: law's length scale (below, the closed forms of the catalogue cancel to
+#: nothing at 20 digits and the adhesive term dominates every pull-off)
+SPAN = (mpmath.mpf(4)**-20, mpmath.mpf(4)**40)
+#: relative width (in ln a) below which an inconclusive ball (the dependency
+#: problem of interval arithmetic) hands the interval to the sampled bound
+BALL_GIVEUP = mpmath.mpf("1e-3")
 #: intervals examined per search before it gives up
 MAX_INTERVALS = 20000
 #: bits of the ball arithmetic
-BALL_PREC = 128
+BALL_PREC = 192
 
 
 @dataclass(frozen=True)
@@ -107,8 +112,10 @@ class Landscape:
     def describe(self) -> str:
         end = {"admissible": "the end of the admissible range (dP0/da turns negative there)",
                "domain": "the end of the law's real domain", "search": "the search limit"}[self.end]
-        how = ("ball arithmetic on dP/da (python-flint): no stationary point missed" if self.method == "ball"
-               else "adaptive subdivision of dP/da with a sampled error bound")
+        how = {"ball": "ball arithmetic on dP/da (python-flint): no stationary point missed",
+               "ball+adaptive": "ball arithmetic on dP/da, with the sampled bound where the balls were "
+                                "inconclusive"}.get(self.method, "adaptive subdivision of dP/da with a sampled "
+                                                                 "error bound")
         return (f"searched a in [{mpmath.nstr(self.lo, 4)}, {mpmath.nstr(self.hi, 8)}] up to {end}, by {how}; "
                 f"{len(self.minima)} local minimum(s): "
                 + ", ".join(f"{e.kind} at a = {mpmath.nstr(e.half_width, 8)} (P = {mpmath.nstr(e.force, 8)})"
@@ -122,6 +129,7 @@ class _Balls:
 
     def __init__(self, law, which="dP"):
         self.reason = None
+        self.gave_up = 0
         self.f = self.df = None
         expr = law.expr
         if expr is None:
@@ -165,6 +173,22 @@ class _Balls:
             return None
 
 
+def reliable(fn):
+    """``fn`` (a closed-form law's P or dP) evaluated at 20 digits, raising the
+    precision (40, 80, ... 640) until two levels agree to 10 digits: closed
+    forms such as K(m) - E(m) cancel at small a."""
+    def g(A):
+        v, k = None, 20
+        while k <= 640:
+            with mpmath.workdps(k):
+                w = fn(A)
+            if v is not None and abs(w - v) <= abs(w) * mpmath.mpf(10)**-10:
+                return +w
+            v, k = w, 2 * k
+        return +v
+    return g
+
+
 def _excludes_zero(y):
     return y is not None and (y > 0 or y < 0 or y.is_zero())
 
@@ -204,7 +228,10 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
                     if first:
                         break
                 continue
-        else:   # no ball here (not available, not finite, outside the closed form's conditions)
+            if mpmath.log(r / l) < BALL_GIVEUP:
+                y = None
+                balls.gave_up += 1
+        if y is None:   # no ball here (not available, not finite, outside the closed form's conditions)
             gm = G(m)
             same = (gl < 0) == (gm < 0) == (gr < 0)
             if same and min(abs(gl), abs(gm), abs(gr)) > 2 * max(abs(gm - gl), abs(gr - gm)):
@@ -237,10 +264,10 @@ def _segments(law, lo, hi):
 # ---------------------------------------------------------------- ranges
 def real_range(law):
     """(lo, hi, end): where the law is real, on a factor-4 grid from
-    SPAN**-1 to SPAN times its scale, the end bisected ('domain') or the
+    SPAN[0] to SPAN[1] times its scale, the end bisected ('domain') or the
     grid's end ('search')."""
     with mpmath.workdps(20):
-        grid = [law.scale * mpmath.mpf(4)**j for j in range(-40, 41)]
+        grid = [law.scale * mpmath.mpf(4)**j for j in range(-20, 41)]
         first = good = None
         for A in grid:
             try:
@@ -260,12 +287,13 @@ def real_range(law):
 def _falling(base, l, r, balls, notes):
     """The first sign change of dP0/da from >= 0 to < 0 on [l, r] (as a
     one-element list), or []."""
+    g = reliable(base.dP) if base.expr is not None else base.dP
     while l < r:
-        got = crossings(base.dP, l, r, balls, notes, first=True)
+        got = crossings(g, l, r, balls, notes, first=True)
         if not got:
             return []
         cl, cr = got[0]
-        if base.dP(cr) < 0:
+        if g(cr) < 0:
             return [(cl, cr)]
         l = cr
     return []
@@ -286,7 +314,7 @@ def admissible_range(law):
         notes = []
         first_neg = None
         segs, kinks = _segments(base, lo, hi)
-        if base.dP(lo) < 0:
+        if (reliable(base.dP) if base.expr is not None else base.dP)(lo) < 0:
             raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(lo, 6)}: no admissible "
                                            f"half-width (tensile edge pressure)")
         for (l, r), b in zip(segs, kinks + [None]):
@@ -324,17 +352,22 @@ def landscape(law) -> Landscape:
         hi_eval = hi * (1 - KINK_GAP) if end != "search" else hi
         segs, kinks = _segments(law, lo, hi_eval)
         ext = []
+        g = reliable(law.dP) if law.expr is not None else law.dP
         for (l, r), b in zip(segs, kinks + [None]):
-            for cl, cr in crossings(law.dP, l, r, balls, notes):
-                A = root_in_log(law.dP, cl, cr)
-                ext.append(Extremum(A, law.P(A), "stationary", law.dP(cl) < 0, (cl, cr)))
+            for cl, cr in crossings(g, l, r, balls, notes):
+                A = root_in_log(g, cl, cr)
+                ext.append(Extremum(A, law.P(A), "stationary", g(cl) < 0, (cl, cr)))
             if b is not None:
                 left, right = law.dP(b * (1 - KINK_GAP)), law.dP(b * (1 + KINK_GAP))
                 if (left < 0) != (right < 0):
                     ext.append(Extremum(b, law.P(b), "kink", left < 0, (b * (1 - KINK_GAP), b * (1 + KINK_GAP))))
-        rising = law.dP(hi_eval) >= 0
+        rising = g(hi_eval) >= 0
         if not rising and end != "search":
             ext.append(Extremum(hi_eval, law.P(hi_eval), "end", True, (hi_eval, hi_eval)))
+        if balls.gave_up:
+            method = "ball+adaptive"
+            notes.append(f"ball arithmetic was inconclusive on {balls.gave_up} interval(s) (the dependency "
+                         f"problem); the sampled bound decided there")
     law._landscape = Landscape(lo, hi_eval, end, tuple(ext), method, tuple(notes), rising)
     return law._landscape
 
@@ -418,10 +451,12 @@ def _float_P0(quad):
     return P0
 
 
-def _parabolic_polish(P, A, h, steps: int = 4):
+def _parabolic_polish(P, A, h, steps: int = 5):
     """Successive parabolic interpolation of a smooth minimum from a location
     ``A`` known to about ``h``: each step fits P at A - h, A, A + h and moves
-    to the vertex; h becomes the size of the move (quadratic convergence)."""
+    to the vertex; h becomes the size of the move (quadratic convergence),
+    but not below 10**(-dps/3) A, where rounding in P (10**-dps) starts to
+    move the vertex: the location ends near 10**(-2 dps/3)."""
     for _ in range(steps):
         pm, p0, pp = P(A - h), P(A), P(A + h)
         curv = pp - 2 * p0 + pm
@@ -429,7 +464,7 @@ def _parabolic_polish(P, A, h, steps: int = 4):
             raise VerificationError(f"P(a) is not convex near its grid minimum a = {mpmath.nstr(A, 12)}")
         step = h * (pm - pp) / (2 * curv)
         A = A + step
-        h = max(abs(step), A * mpmath.mpf(10)**(-mpmath.mp.dps // 2 - 2))
+        h = max(abs(step), A * mpmath.mpf(10)**(-(mpmath.mp.dps // 3)))
     return A
 
 

@@ -34,7 +34,7 @@ from ..core import symbols as S
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import DomainError
 from ..core.roots import UNDEFINED, Outside, real_value
-from ..method.transforms import NumericProfile
+from ..method.transforms import NumericProfile, inside
 
 #: extra working digits of the numeric searches
 GUARD = 15
@@ -138,7 +138,8 @@ class ForceLaw:
             total = mpmath.mpf(0)
             e = edges(A)
             for lo, hi in zip(e[:-1], e[1:]):
-                total += mpmath.quad(lambda ph: mpmath.sin(ph) * f1(A * mpmath.sin(ph)),
+                fn = inside(f1, lo, hi)
+                total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
                                      [mpmath.asin(lo / A), mpmath.asin(hi / A)])
             return real_value(to_mpf(E) * A * total)
 
@@ -146,7 +147,8 @@ class ForceLaw:
             total = mpmath.mpf(0)
             e = edges(A)
             for lo, hi in zip(e[:-1], e[1:]):
-                total += mpmath.quad(lambda ph: mpmath.sin(ph) * h1(A * mpmath.sin(ph)),
+                fn = inside(h1, lo, hi)
+                total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
                                      [mpmath.asin(lo / A), mpmath.asin(hi / A)])
             for bv in e[1:-1]:
                 eps = bv * mpmath.mpf(10)**(-mpmath.mp.dps - 5)

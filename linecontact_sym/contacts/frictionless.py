@@ -136,6 +136,20 @@ class LineContact(Contact):
             raise DomainError(f"the force law needs values for {', '.join(missing)}")
         return ForceLaw.from_contact(self, vals, mode)
 
+    def _admissibility_slope(self):
+        """(fn, args): dP0/da of the closed force law as an mpmath function of
+        (a, E_star, parameters), compiled once; None without a closed form
+        (read by :meth:`~.base.Contact._check_admissible`)."""
+        cache = self._caches()
+        if "_adm_slope" not in cache:
+            fd = self.derivation("force")
+            slope = None
+            if fd.closed_form and not fd.expr.has(sp.Integral):
+                args = (S.a,) + self.variables
+                slope = (sp.lambdify(args, sp.diff(fd.expr, S.a), "mpmath"), args)
+            cache["_adm_slope"] = slope
+        return cache["_adm_slope"]
+
     # --------------------------------------------------------------- derivations
     def _derive_force(self) -> Derivation:
         slope = self.profile.slope_at_origin

@@ -350,14 +350,15 @@ def at_values(ad, vals, dps) -> PullOff:
         with mpmath.workdps(dps + 10):
             Pm = real_mpf(sp.N(fd.expr.xreplace(fv), dps + 10))
             A = real_mpf(sp.N(ad.derivation("pull_off_half_width").expr.xreplace(fv), dps + 10))
+            adh = -Pm
         if single is not None:   # one power term: one stationary point, the global minimum
-            return PullOff(Pm, -Pm, A, "stationary", None, (), "closed form (single power term)")
+            return PullOff(Pm, adh, A, "stationary", None, (), "closed form (single power term)")
         # the closed form is one stationary point: is it the global minimum here?
         land = landscape(ad._law(vals, "closed"))
         with mpmath.workdps(20):
             best = min(land.minima, key=lambda e: e.force, default=None)
             if best is not None and best.kind == "stationary" and digits_agreeing(best.half_width, A, 20) >= 8:
-                return PullOff(Pm, -Pm, A, "stationary", None, land.minima, land.describe())
+                return PullOff(Pm, adh, A, "stationary", None, land.minima, land.describe())
     return checked_or_fail(ad, vals, dps)
 
 

@@ -119,14 +119,16 @@ def fallback_step(why: str = "no closed form found") -> Step:
 
 def values_by_name(symbols, values):
     """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
-    floats become exact rationals of their binary value's shortest decimal."""
+    floats become the exact rational of their shortest decimal repr (0.1 -> 1/10)."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = sp.nsimplify(v, rational=True) if isinstance(v, float) else to_sympy(v)
+        # a float is the exact Rational of its shortest decimal repr (nsimplify(rational=True)
+        # rounds: 0.5000000005 became 1/2)
+        out[sym] = sp.Rational(repr(v)) if isinstance(v, float) else to_sympy(v)
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")

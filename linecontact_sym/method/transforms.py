@@ -173,6 +173,17 @@ class NumericProfile:
             self._found.sort()
 
 
+def inside(fn, lo, hi):
+    """``fn`` restricted to the open piece (lo, hi): its argument is kept
+    10**-dps (relative) inside, so a node that rounds onto a breakpoint still
+    takes this piece's branch of a Piecewise (the worn cylinder's f' is 0 on
+    the flat and b/R at x = b)."""
+    def g(t):
+        d = hi * mpmath.mpf(10)**(-mpmath.mp.dps)
+        return fn(min(max(t, lo + d), hi - d))
+    return g
+
+
 def _sign_change(g, x0, x1):
     """A zero of g in the sign-change bracket [x0, x1] (bisection, then secant)."""
     g0 = mpmath.re(g(x0))
@@ -203,10 +214,10 @@ def force_quad(profile, values: dict, dps: int = 50):
         A = _mpf(values[S.a])
         E = _mpf(values.get(S.E_star, 1))
         npf = NumericProfile(profile, values)
-        fn = npf.f1
         edges = [mpmath.mpf(0)] + npf.kinks(0, A) + [A]
         total = mpmath.mpf(0)
         for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
+            fn = inside(npf.f1, lo, hi)
             p0, p1 = mpmath.asin(lo / A), mpmath.asin(hi / A)
             integrand = lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph))  # noqa: E731
             total += quad0(integrand, [p0, p1]) if i == 0 else mpmath.quad(integrand, [p0, p1], maxdegree=10)
