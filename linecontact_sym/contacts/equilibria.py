@@ -436,6 +436,7 @@ def _float_P0(quad):
     kinks = [float(k) for k in quad.breaks()]
 
     def P0(A):
+        A = float(A)
         edges = [0.0] + [k for k in kinks if k < A] + [A]
         total = 0.0
         with np.errstate(all="ignore"):
@@ -484,7 +485,7 @@ def minimum_by_grid(law, dps: int) -> PullOff:
     B1 = float(quad.B1()) if quad.B1 is not None else 0.0
 
     def Pf(A):
-        return P0f(A) - B1 * math.sqrt(A)
+        return P0f(A) - B1 * math.sqrt(float(A))
     s = float(quad.scale)
     grid = [s * 10.0**(-8 + 16 * k / (GRID_POINTS - 1)) for k in range(GRID_POINTS)]
     pts, last0 = [], None
