@@ -212,6 +212,30 @@ def test_item10_inside_the_flat_is_zero_not_overflow():
     assert r.value == 0 and r.error == 0
 
 
+# ---------------------------------------------------------------- item 11
+def test_item11_pressure_of_a_piecewise_profile_to_30_digits():
+    """Rounded wedge f = x^2/(2R) (x < R tan th), x tan th - R tan^2 th / 2:
+    before: 28.6 correct digits of 30 at x = 3/10 (the quadrature lost
+    digits next to the breakpoint); after: 30."""
+    f = sp.Piecewise((x**2 / (2 * R), x < R * sp.tan(th)), (x * sp.tan(th) - R * sp.tan(th)**2 / 2, True))
+    c = lcs.LineContact(f, params={R: (0.5, 2), th: (0.1, 0.6)}, verify=False)
+    got = c.evaluate_at("pressure", dps=30, a=1, x=sp.Rational(3, 10), R=1, theta=sp.Rational(1, 2), E_star=1)
+    with mpmath.workdps(60):
+        # by hand: P'(s) = E* int_0^{pi/2} sin(p) h'(s sin p) dp, h = t f'(t): h' = 2t/R (t < b), tan th
+        # (f' is continuous: no slope-jump term); Eq. (12) after s = sqrt(x^2 + w^2)
+        b, X = mpmath.tan(mpmath.mpf(1) / 2), mpmath.mpf(3) / 10
+        hp = lambda t: 2 * t if t < b else b  # noqa: E731
+
+        def dP(sv):
+            pts = [0] + ([mpmath.asin(b / sv)] if b < sv else []) + [mpmath.pi / 2]
+            return mpmath.quad(lambda p: mpmath.sin(p) * hp(sv * mpmath.sin(p)), pts)
+        wb, W = mpmath.sqrt(b**2 - X**2), mpmath.sqrt(1 - X**2)
+        g = lambda w: dP(mpmath.sqrt(X**2 + w**2)) / mpmath.sqrt(X**2 + w**2)  # noqa: E731
+        ref = (mpmath.quad(g, [0, wb]) + mpmath.quad(lambda t: 2 * t * g(wb + t * t), [0, mpmath.sqrt(W - wb)])) \
+            / mpmath.pi
+        assert abs(got - ref) < mpmath.mpf(10)**-30 * abs(ref)
+
+
 # ---------------------------------------------------------------- property test
 def _poly_law(roots, k, rigorous):
     """A force law with dP/da = k prod(a - r_i): minima at roots[0], [2], ..."""
@@ -251,7 +275,7 @@ def _check(roots, k, load_frac, rigorous):
         assert abs(g - mpmath.mpf(w)) < mpmath.mpf(10)**-12 * mpmath.mpf(w)
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=15, deadline=None)
 @given(roots_strategy, st.integers(min_value=1, max_value=50), st.floats(0.05, 0.95))
 def test_property_every_minimum_found_ball(roots, k, frac):
     """Random force laws with 2 or 3 minima at known places (some a few per
@@ -261,7 +285,7 @@ def test_property_every_minimum_found_ball(roots, k, frac):
     _check(roots, sp.Rational(k, 10), frac, True)
 
 
-@settings(max_examples=6, deadline=None)
+@settings(max_examples=5, deadline=None)
 @given(roots_strategy, st.integers(min_value=1, max_value=50), st.floats(0.05, 0.95))
 def test_property_every_minimum_found_adaptive(roots, k, frac):
     """The same for a law without closed form (adaptive subdivision)."""

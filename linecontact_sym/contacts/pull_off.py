@@ -35,7 +35,8 @@ from ..method.hyperseries import NotDecomposable, decompose
 from ..method.rules import Step
 from ..method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
                                    verify_many)
-from .equilibria import landscape, minimum, minimum_by_grid
+from .brute_force import minimum_by_grid
+from .equilibria import landscape, minimum
 from .force_law import PullOff
 
 
@@ -300,7 +301,7 @@ def _key(ad, vals):
 
 
 def reference(ad, vals, dps, mode="quad") -> PullOff:
-    """The independent pull-off (method B, :func:`~.equilibria.minimum_by_grid`:
+    """The independent pull-off (method B, :func:`~.brute_force.minimum_by_grid`:
     dense grid + golden section + parabolic polish on the quadrature law),
     cached; what a closed-form pull-off is verified against."""
     key = ("po_ref", mode, dps, _key(ad, vals))

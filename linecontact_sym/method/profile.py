@@ -235,63 +235,8 @@ class Profile:
         return bad
 
     def _check_real_and_rising(self):
-        """Refuse a profile that is not real, or that decreases arbitrarily
-        close to x = 0 for every parameter value tried (``-x**2``,
-        ``x*sin(1/x)``: no compact contact exists for any half-width); cut the
-        default range of each undeclared parameter to the longest run of the
-        24 values tried (others at their range midpoints) where f is real at
-        :data:`NEAR_ORIGIN` and f' >= 0 at those up to 1e-4, its ends found by bisection
-        (``x*tan(theta)``: theta < pi/2).  A declared range is the user's
-        word and is kept."""
-        mids = {p: sp.Rational(round((lo + hi) / 2 * 1000), 1000) for p, (lo, hi) in self.ranges.items()}
-        why = self._near_origin_ok(mids)
-        free = [p for p in self.params if p not in self.declared_ranges]
-        notes = []
-        for p in free:
-            lo, hi = self.ranges[p]
-            grid = [lo + (hi - lo) * k / 23 for k in range(24)]
-            oks = [self._near_origin_ok({**mids, p: sp.Rational(round(v * 10**6), 10**6)}) is None for v in grid]
-            runs, start = [], None
-            for k, ok in enumerate(oks + [False]):
-                if ok and start is None:
-                    start = k
-                if not ok and start is not None:
-                    runs.append((start, k - 1))
-                    start = None
-            if not runs:
-                continue
-            i0, i1 = max(runs, key=lambda r: r[1] - r[0])
-            if (i0, i1) == (0, 23):
-                continue
-            new_lo, new_hi = grid[i0], grid[i1]
-            for end, outside in ((0, i0 - 1), (1, i1 + 1)):
-                if not 0 <= outside < 24:
-                    continue
-                good, bad = (grid[i0], grid[outside]) if end == 0 else (grid[i1], grid[outside])
-                for _ in range(24):
-                    m = (good + bad) / 2
-                    if self._near_origin_ok({**mids, p: sp.Rational(round(m * 10**9), 10**9)}) is None:
-                        good = m
-                    else:
-                        bad = m
-                if end == 0:
-                    new_lo = good
-                else:
-                    new_hi = good
-            self.ranges[p] = (new_lo, new_hi)
-            mids[p] = sp.Rational(round((new_lo + new_hi) / 2 * 1000), 1000)
-            notes.append(f"{p} sampled in ({new_lo:.6g}, {new_hi:.6g}): outside it the profile is "
-                         f"not real or decreases near x = 0 (default range ({lo:g}, {hi:g}))")
-        self.range_notes = tuple(notes)
-        why = self._near_origin_ok(mids)
-        if why == "complex":
-            raise ProfileError(f"profile {self.name!r} is not real near x = 0 (at x = 1e-6 .. 5e-2 and the "
-                               f"parameter values tried): a gap must be a real function")
-        if why == "decreasing":
-            raise InadmissibleProfileError(
-                f"profile {self.name!r} decreases arbitrarily close to x = 0 (f'(x) < 0 at some x in "
-                f"(1e-6, 1e-4) for every parameter value tried): no compact contact exists for any "
-                f"half-width; the method needs f' >= 0 on (0, a)")
+        """See :func:`check_real_and_rising`."""
+        check_real_and_rising(self)
 
     def _split(self) -> tuple[Piece, ...]:
         """The pieces of a Piecewise profile, ordered in x, read at one sample
@@ -437,6 +382,66 @@ class Profile:
 
     def __repr__(self):
         return f"Profile({self.expr})"
+
+
+def check_real_and_rising(profile):
+    """Refuse a profile that is not real, or that decreases arbitrarily
+    close to x = 0 for every parameter value tried (``-x**2``,
+    ``x*sin(1/x)``: no compact contact exists for any half-width); cut the
+    default range of each undeclared parameter to the longest run of the
+    24 values tried (others at their range midpoints) where f is real at
+    :data:`NEAR_ORIGIN` and f' >= 0 at those up to 1e-4, its ends found by bisection
+    (``x*tan(theta)``: theta < pi/2).  A declared range is the user's
+    word and is kept."""
+    mids = {p: sp.Rational(round((lo + hi) / 2 * 1000), 1000) for p, (lo, hi) in profile.ranges.items()}
+    why = profile._near_origin_ok(mids)
+    free = [p for p in profile.params if p not in profile.declared_ranges]
+    notes = []
+    for p in free:
+        lo, hi = profile.ranges[p]
+        grid = [lo + (hi - lo) * k / 23 for k in range(24)]
+        oks = [profile._near_origin_ok({**mids, p: sp.Rational(round(v * 10**6), 10**6)}) is None for v in grid]
+        runs, start = [], None
+        for k, ok in enumerate(oks + [False]):
+            if ok and start is None:
+                start = k
+            if not ok and start is not None:
+                runs.append((start, k - 1))
+                start = None
+        if not runs:
+            continue
+        i0, i1 = max(runs, key=lambda r: r[1] - r[0])
+        if (i0, i1) == (0, 23):
+            continue
+        new_lo, new_hi = grid[i0], grid[i1]
+        for end, outside in ((0, i0 - 1), (1, i1 + 1)):
+            if not 0 <= outside < 24:
+                continue
+            good, bad = (grid[i0], grid[outside]) if end == 0 else (grid[i1], grid[outside])
+            for _ in range(24):
+                m = (good + bad) / 2
+                if profile._near_origin_ok({**mids, p: sp.Rational(round(m * 10**9), 10**9)}) is None:
+                    good = m
+                else:
+                    bad = m
+            if end == 0:
+                new_lo = good
+            else:
+                new_hi = good
+        profile.ranges[p] = (new_lo, new_hi)
+        mids[p] = sp.Rational(round((new_lo + new_hi) / 2 * 1000), 1000)
+        notes.append(f"{p} sampled in ({new_lo:.6g}, {new_hi:.6g}): outside it the profile is "
+                     f"not real or decreases near x = 0 (default range ({lo:g}, {hi:g}))")
+    profile.range_notes = tuple(notes)
+    why = profile._near_origin_ok(mids)
+    if why == "complex":
+        raise ProfileError(f"profile {profile.name!r} is not real near x = 0 (at x = 1e-6 .. 5e-2 and the "
+                           f"parameter values tried): a gap must be a real function")
+    if why == "decreasing":
+        raise InadmissibleProfileError(
+            f"profile {profile.name!r} decreases arbitrarily close to x = 0 (f'(x) < 0 at some x in "
+            f"(1e-6, 1e-4) for every parameter value tried): no compact contact exists for any "
+            f"half-width; the method needs f' >= 0 on (0, a)")
 
 
 def _power_limit(d):
