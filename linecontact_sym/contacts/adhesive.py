@@ -314,10 +314,10 @@ class AdhesiveLineContact(Contact):
             po = self.pull_off_at(30, **{s.name: v for s, v in self.values.items()})
             return {"pull_off_force": po.force, "adhesion_force": po.adhesion_force,
                     "pull_off_half_width": po.half_width}[quantity]
+        why = "; ".join(self._pull_off_closed()["notes"]) or "the force law has no closed form"
         raise NumericValuesRequired(
-            f"{quantity} of {self.profile.name!r} has no closed form (dP/da = 0 is transcendental "
-            f"here); give numbers: ad.{quantity}_at({', '.join(s.name + '=...' for s in self.variables)})"
-            f" or ad.at(...).{quantity}")
+            f"{quantity} of {self.profile.name!r} has no closed form ({why}); give numbers: "
+            f"ad.{quantity}_at({', '.join(s.name + '=...' for s in self.variables)}) or ad.at(...).{quantity}")
 
     # ----------------------------------------------------------- equilibria
     def _derive_jump_in_half_width(self) -> Derivation:

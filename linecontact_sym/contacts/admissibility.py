@@ -1,6 +1,18 @@
 """Where the frictionless compact-contact solution holds: the profile does
-not decrease on (0, a), the pressure is compressive inside, the gap is
-non-negative outside (no second contact)."""
+not decrease on (0, a), dP0/da >= 0 (else the pressure at the edges,
+p ~ (dP0/da) sqrt(a - |x|)/pi, is tensile), the pressure is compressive
+inside, the gap is non-negative outside (no second contact).
+
+How far out the gap is checked: to 1000 a, on a geometric grid.  In 2-D the
+elastic displacement outside the contact grows like ln|x|, so for a bounded
+profile (a bump, a periodic profile) the gap turns negative far enough away
+whatever a is: such profiles are admissible only "within 1000 a".
+
+The same conditions, cheaply, are part of every result: the verification
+points (:mod:`.sampling`), the pull-off search range
+(:func:`.equilibria.admissible_range`: dP0/da >= 0 and the real domain) and
+``evaluate`` / ``evaluate_at`` (:meth:`.base.Contact._check_admissible`:
+parameter assumptions, f' >= 0 on (0, a), dP0/da >= 0)."""
 from __future__ import annotations
 
 import mpmath
@@ -36,6 +48,13 @@ def check_admissible(contact, dps: int = 20, **values):
                 raise InadmissibleProfileError(
                     f"profile {prof.name!r} decreases at x = {float(xv):.6g} < a = {A:g}: "
                     f"the contact is not compact there (it would open and close again)")
+        fd = contact.derivation("force")
+        if fd.closed_form and not fd.expr.has(sp.Integral):
+            d = sp.N(sp.diff(fd.expr, S.a).xreplace(vals), dps)
+            if d.is_real and d < 0:
+                raise InadmissibleProfileError(
+                    f"profile {prof.name!r}: dP0/da = {float(d):.3g} < 0 at a = {A:g}: tensile pressure at "
+                    f"the edges of the contact; the frictionless solution does not hold")
         pfun = _mp_function(contact, "pressure", dps)
         gfun = _mp_function(contact, "gap", dps)
         kw = {k: v for k, v in values.items() if k != "x"}

@@ -29,7 +29,7 @@ import math
 import numpy as np
 import sympy as sp
 
-from ..core.errors import DomainError, LineContactError
+from ..core.errors import DomainError, InadmissibleProfileError, LineContactError
 from ..method.derivation import Derivation
 from ..parsing import to_sympy
 from ..method.verification import holds
@@ -170,6 +170,7 @@ class Contact:
             raise DomainError(f"{name} takes no value named {', '.join(map(repr, unknown))}; "
                               f"it takes {', '.join(sorted(known)) or 'none'}")
         vals = {k: _checked_value(k, v, known.get(k)) for k, v in values.items()}
+        self._check_admissible(vals)
         if "x" in vals and "a" in vals and q.domain != "any":
             xv, av = _abs(vals["x"]), vals["a"]
             if q.domain == "inside" and np.any(xv > av):
@@ -203,6 +204,50 @@ class Contact:
             fn = sp.lambdify(list(known.values()), sp.And(*conds), "numpy") if conds else None
             cache[key] = (known, conds, fn)
         return cache[key]
+
+    def _check_admissible(self, vals):
+        """With a numeric half-width and parameters (already checked against
+        their symbols' assumptions), the admissibility of the frictionless
+        solution at the point: the profile real and not decreasing on (0, a]
+        (sampled at 24 points) and dP0/da >= 0 at a where the force law has a
+        closed form (else the pressure at the edges is tensile).  Evaluated in
+        float64 (a sign test; cached functions), so it costs microseconds.
+        :class:`InadmissibleProfileError` names what fails."""
+        base = getattr(self, "contact", self)
+        prof = getattr(base, "profile", None)
+        av = vals.get("a")
+        if prof is None or av is None or isinstance(av, np.ndarray) or \
+                any(p.name not in vals or isinstance(vals[p.name], np.ndarray) for p in prof.params):
+            return
+        checks = base._admissibility_fns() if hasattr(base, "_admissibility_fns") else None
+        if checks is None:
+            return
+        fprime, slope, names = checks
+        try:
+            A = float(av)
+            pv = [float(vals[n]) for n in names]
+        except (TypeError, ValueError):
+            return
+        with np.errstate(all="ignore"):
+            xs = A * np.arange(1, 25) / 24
+            d = np.asarray(fprime(xs, *pv), dtype=complex) if fprime is not None else None
+            if d is not None:
+                bad = np.flatnonzero(np.abs(d.imag) > 1e-12 * (np.abs(d.real) + 1e-300))
+                if bad.size:
+                    raise InadmissibleProfileError(f"profile {prof.name!r} at a = {av}: f is not real at "
+                                                   f"x = {xs[bad[0]]:.6g} inside the contact")
+                neg = np.flatnonzero(d.real < -1e-12 * np.max(np.abs(d.real)))
+                if neg.size:
+                    raise InadmissibleProfileError(
+                        f"profile {prof.name!r} at a = {av}: f decreases at x = {xs[neg[0]]:.6g} inside the contact "
+                        f"(0, a): the frictionless compact-contact solution needs f' >= 0 there")
+            if slope is not None and "E_star" in vals:
+                k = float(np.real(slope(A, float(vals["E_star"]), *pv)))
+                if k < 0:
+                    raise InadmissibleProfileError(
+                        f"profile {prof.name!r} at a = {av}: dP0/da = {k:.6g} < 0, the pressure at the edges of "
+                        f"the contact is tensile; the frictionless solution holds only while dP0/da >= 0 "
+                        f"(see admissible_range)")
 
     # ----------------------------------------------------------- numbers
     def evaluate_at(self, quantity: str, dps: int = 30, **values):

@@ -18,7 +18,7 @@ from ..method.derivation import Derivation
 from ..method.transforms import mean_quad
 from ..method.rules import Step
 from ..method.verification import VERIFY_DPS, VerificationRecord, digits_agreeing, verify
-from .equilibria import equilibria, minimum, scan
+from .equilibria import equilibria, landscape, minimum
 from .jkr import GAMMA_RANGE, flat_punch_force, phat_energy
 from .pull_off import NumericDerivation, sample_points, single_power, solve_load, tidy_checked
 
@@ -170,19 +170,22 @@ def derive_jump_in(ad) -> Derivation:
 
 
 def why_no_equilibrium(law, load) -> str:
-    """Why P(a) = load has no root on the law's scan, in words."""
-    pts, edge = scan(law)
+    """Why P(a) = load has no root over the admissible range, in words."""
+    land = landscape(law)
     with mpmath.workdps(20):
-        lo = min(Pv for _, Pv, _ in pts)
-        if to_mpf(load) <= lo:
+        values = [e.force for e in land.extrema] + [law.P(land.lo), law.P(land.hi)]
+        if to_mpf(load) <= min(values):
             return "below the pull-off force (the minimum of P(a)): the surfaces separate"
-        if edge:
-            return (f"above the loads reached for a <= {mpmath.nstr(pts[-1][0], 12)}, within "
+        if land.end == "admissible":
+            return (f"above the loads reached for a <= a* = {mpmath.nstr(land.hi, 12)}, the end of the "
+                    f"admissible range (dP0/da < 0 beyond: tensile edge pressure)")
+        if land.end == "domain":
+            return (f"above the loads reached for a <= {mpmath.nstr(land.hi, 12)}, within "
                     f"1e-12 of the end of the profile's domain")
-        if pts[-1][2] < 0:
+        if not land.rising_at_end:
             return ("above the maximum of P(a) (P decreases at large a, e.g. a power law with "
                     "n < 1/2): the contact would spread without bound")
-        return f"above the loads reached on the search range a <= {mpmath.nstr(pts[-1][0], 6)}"
+        return f"above the loads reached on the search range a <= {mpmath.nstr(land.hi, 6)}"
 
 
 def derive_half_widths(ad, load):

@@ -1,213 +1,486 @@
 """Stationary points, minima and equilibria of a :class:`~.force_law.ForceLaw`:
 the one scan / bracket / root / minimum toolkit of the contacts layer.
 
-Load control: a contact at load P sits at a half-width a with P(a) = P; it is
-stable where dP/da > 0.  The *pull-off* of a contact pulled from a contact
-larger than every local minimum of P(a) is the global minimum of P(a): the
-contact follows the stable branch down to the largest-a local minimum, jumps
-to a stable equilibrium at the same load at smaller a if there is one (and
-continues), and separates when there is none, which happens exactly at the
-global minimum.  Minima are stationary (dP/da = 0) or at a kink of the
-profile (a breakpoint where dP/da jumps from negative to positive).
+Load control.  A contact at load P sits at a half-width a with P(a) = P; it
+is stable where dP/da > 0.  **Pull-off**: a contact pulled from one larger
+than every local minimum of P(a) follows the stable branch down to the
+largest-a local minimum; there it jumps, at the same load, to a stable
+equilibrium at smaller a if one exists (and follows that branch on), and
+separates when there is none.  Every jump lands on a branch whose minimum
+is lower, so the contact separates at the **global minimum of P over the
+admissible range** 0 < a <= a*: that minimum is the pull-off load.
+Minima are of three kinds: 'stationary' (dP/da = 0), 'kink' (a profile
+breakpoint where dP/da jumps from negative to positive) and 'end' (the end
+a* of the admissible range with dP/da < 0 there).  At an 'end' minimum the
+frictionless solution stops holding (beyond a* the pressure at the edges
+of the non-adhesive contact turns tensile, or the profile is not defined):
+the contact is not followed further, and a pull-off of kind 'end' is the
+lowest load the model describes, not a separation it can prove.
+
+The admissible range (:func:`admissible_range`): a* is the first a where
+the non-adhesive slope dP0/da turns negative (the edge pressure is
+p ~ dP0/da sqrt(a - |x|)/pi, tensile beyond) or the end of the real domain
+of the law (the exact cylinder at a = R), whichever comes first; without
+either, the search runs up to 4**40 times the law's length scale.
+
+**None missed** (:func:`landscape`).  Every sign change of dP/da on
+[4**-20 s, a*] (s the length scale, :data:`SPAN`) is found by subdivision in ln a, split
+at the profile's breakpoints:
+
+* closed-form law with python-flint: dP/da (and d2P/da2) evaluated in ball
+  arithmetic on each interval; an interval whose ball excludes 0 holds no
+  stationary point, one with dP/da of opposite signs at its ends and a ball
+  of d2P/da2 that excludes 0 holds exactly one.  This is a proof, up to the
+  widths below.
+* quadrature law (or no python-flint, or a function without a ball
+  translation; the landscape's ``method`` and ``notes`` say which): an
+  interval is excluded when the values of dP/da at its ends and log-midpoint
+  have one sign and each is more than twice the largest change between them
+  (the error bound assumes dP/da varies by at most twice its sampled change
+  within the interval).
+
+An interval is not split below a relative width of 1e-10; one that is
+neither excluded nor holds a sign change there is listed in ``notes`` as a
+possible touching zero.  Within 1e-12 (relative) of a breakpoint the sign
+of dP/da is the one at that distance (the slope jump term
+J b**2/sqrt(a**2 - b**2) dominates there).
+
+Equilibria at a load (:func:`equilibria`): between two neighbouring extrema
+P is monotone, so each such segment holds at most one root of P(a) = load;
+stable where P increases.
 """
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import mpmath
 
 from ..core.conversion import to_mpf
-from ..core.errors import DomainError, NoPullOffError, VerificationError
+from ..core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
 from ..core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
 
+#: relative width below which an interval is not split
+MIN_WIDTH = mpmath.mpf("1e-10")
+#: relative distance from a breakpoint where the one-sided signs are read
+KINK_GAP = mpmath.mpf("1e-12")
+#: the search covers 4**-20 (about 1e-12) .. 4**40 (about 1e24) times the
+#: law's length scale (below, the closed forms of the catalogue cancel to
+#: nothing at 20 digits and the adhesive term dominates every pull-off)
+SPAN = (mpmath.mpf(4)**-20, mpmath.mpf(4)**40)
+#: relative width (in ln a) below which an inconclusive ball (the dependency
+#: problem of interval arithmetic) hands the interval to the sampled bound
+BALL_GIVEUP = mpmath.mpf("1e-3")
+#: intervals examined per search before it gives up
+MAX_INTERVALS = 20000
+#: bits of the ball arithmetic
+BALL_PREC = 192
 
-def scan(law):
-    """Values (a, P, dP) on a geometric grid (factor 4, 2**-80 .. 2**80 times
-    the law's length scale, breakpoints bracketed at 1e-10), at 20 digits,
-    cut at the end of the law's real domain.  Returns ``(points, edge)``, edge
-    True when the grid stops at a domain end.  Cached on the law."""
-    if law._scan_cache is not None:
-        return law._scan_cache
+
+@dataclass(frozen=True)
+class Extremum:
+    """A local extremum of P(a): half-width, force, kind ('stationary',
+    'kink', 'end') and whether it is a minimum."""
+
+    half_width: mpmath.mpf
+    force: mpmath.mpf
+    kind: str
+    minimum: bool = True
+    bracket: tuple = ()
+
+
+@dataclass
+class Landscape:
+    """Every extremum of P(a) over the searched range [lo, hi] (see the module
+    docstring).  ``end`` says why the range stops at hi: 'admissible' (dP0/da
+    turns negative), 'domain' (the law stops being real) or 'search' (the
+    search limit); ``rising_at_end`` whether dP/da > 0 just below hi."""
+
+    lo: mpmath.mpf
+    hi: mpmath.mpf
+    end: str
+    extrema: tuple
+    method: str
+    notes: tuple = ()
+    rising_at_end: bool = True
+
+    @property
+    def minima(self):
+        return tuple(e for e in self.extrema if e.minimum)
+
+    def describe(self) -> str:
+        end = {"admissible": "the end of the admissible range (dP0/da turns negative there)",
+               "domain": "the end of the law's real domain", "search": "the search limit"}[self.end]
+        how = {"ball": "ball arithmetic on dP/da (python-flint): no stationary point missed",
+               "ball+adaptive": "ball arithmetic on dP/da, with the sampled bound where the balls were "
+                                "inconclusive"}.get(self.method, "adaptive subdivision of dP/da with a sampled "
+                                                                 "error bound")
+        return (f"searched a in [{mpmath.nstr(self.lo, 4)}, {mpmath.nstr(self.hi, 8)}] up to {end}, by {how}; "
+                f"{len(self.minima)} local minimum(s): "
+                + ", ".join(f"{e.kind} at a = {mpmath.nstr(e.half_width, 8)} (P = {mpmath.nstr(e.force, 8)})"
+                            for e in self.minima))
+
+
+# ---------------------------------------------------------------- sign changes
+class _Balls:
+    """dP/da and d2P/da2 of a closed-form law in ball arithmetic, or the
+    reason there are none."""
+
+    def __init__(self, law, which="dP"):
+        self.reason = None
+        self.gave_up = 0
+        self.f = self.df = None
+        expr = law.expr
+        if expr is None:
+            self.reason = "no closed form (quadrature law)"
+            return
+        try:
+            from ..numeric.certified import compile_arb
+            import sympy as sp
+            from ..core import symbols as S
+            d1 = sp.diff(expr, S.a)
+            self.f = compile_arb(d1, [S.a])
+            self.df = compile_arb(sp.diff(d1, S.a), [S.a])
+            self.flint = __import__("flint")
+        except Exception as exc:  # MissingExtraError, CertificationError: the numeric method
+            self.reason = f"{type(exc).__name__}: {str(exc).splitlines()[0]}"
+            self.f = None
+        self.ok = None
+        if law.conditions:
+            import sympy as sp
+            from ..core import symbols as S
+            self.ok = sp.lambdify(S.a, sp.And(*law.conditions), "mpmath")
+
+    def __call__(self, fn, lo, hi):
+        """The ball of fn over [lo, hi], or None (not finite, not available,
+        the closed form's conditions fail at an end)."""
+        if self.f is None:
+            return None
+        try:
+            if self.ok is not None and not (bool(self.ok(lo)) and bool(self.ok(hi))):
+                return None
+        except Exception:
+            return None
+        from ..numeric.certified import to_arb
+        flint = self.flint
+        try:
+            with flint.ctx.workprec(BALL_PREC):
+                A = to_arb(lo).union(to_arb(hi))
+                y = fn(A)
+                return y if y.is_finite() else None
+        except Exception:
+            return None
+
+
+def reliable(fn):
+    """``fn`` (a closed-form law's P or dP) evaluated at 20 digits, raising the
+    precision (40, 80, ... 640) until two levels agree to 10 digits: closed
+    forms such as K(m) - E(m) cancel at small a."""
+    def g(A):
+        v, k = None, 20
+        while k <= 640:
+            with mpmath.workdps(k):
+                w = fn(A)
+            if v is not None and abs(w - v) <= abs(w) * mpmath.mpf(10)**-10:
+                return +w
+            v, k = w, 2 * k
+        return +v
+    return g
+
+
+def _excludes_zero(y):
+    return y is not None and (y > 0 or y < 0 or y.is_zero())
+
+
+def crossings(g, lo, hi, balls=None, notes=None, first=False):
+    """Sign changes of g on [lo, hi] (0 < lo < hi) by subdivision in ln a
+    (module docstring): a list of brackets (l, r), ascending, with g(l) and
+    g(r) of opposite signs (zero counts as positive).  ``balls``: a
+    :class:`_Balls` of g (rigorous exclusion); else the sampled bound.
+    Possible touching zeros are appended to ``notes``.  ``first``: stop at
+    the first (lowest) sign change (intervals are examined left to right)."""
+    vals = {}
+
+    def G(A):
+        if A not in vals:
+            vals[A] = g(A)
+        return vals[A]
+    out, stack, count = [], [(lo, hi)], 0
+    rigorous = balls is not None and balls.f is not None
+    while stack:
+        l, r = stack.pop()
+        count += 1
+        if count > MAX_INTERVALS:
+            raise VerificationError(f"the search for stationary points of P(a) on [{mpmath.nstr(lo, 6)}, "
+                                    f"{mpmath.nstr(hi, 6)}] needed more than {MAX_INTERVALS} intervals")
+        gl, gr = G(l), G(r)
+        change = (gl < 0) != (gr < 0)
+        m = mpmath.sqrt(l * r)
+        y = balls(balls.f, l, r) if rigorous else None
+        if y is not None:
+            if _excludes_zero(y):
+                continue
+            d = balls(balls.df, l, r)
+            if d is not None and (d > 0 or d < 0):
+                if change:
+                    out.append((l, r))
+                    if first:
+                        break
+                continue
+            if mpmath.log(r / l) < BALL_GIVEUP:
+                y = None
+                balls.gave_up += 1
+        if y is None:   # no ball here (not available, not finite, outside the closed form's conditions)
+            gm = G(m)
+            same = (gl < 0) == (gm < 0) == (gr < 0)
+            if same and min(abs(gl), abs(gm), abs(gr)) > 2 * max(abs(gm - gl), abs(gr - gm)):
+                continue
+        if mpmath.log(r / l) < MIN_WIDTH:
+            if change:
+                out.append((l, r))
+                if first:
+                    break
+            elif notes is not None:
+                notes.append(f"dP/da comes within the search resolution of 0 near a = {mpmath.nstr(m, 12)} "
+                             f"without changing sign (a possible touching zero, treated as none)")
+            continue
+        stack.append((m, r))
+        stack.append((l, m))
+    return sorted(out)
+
+
+def _segments(law, lo, hi):
+    """[lo, hi] cut at the breakpoints (KINK_GAP around each)."""
+    edges, kinks = [lo], []
+    for b in law.breaks():
+        if lo < b * (1 - KINK_GAP) and b * (1 + KINK_GAP) < hi:
+            edges += [b * (1 - KINK_GAP), b * (1 + KINK_GAP)]
+            kinks.append(b)
+    edges.append(hi)
+    return list(zip(edges[0::2], edges[1::2])), kinks
+
+
+# ---------------------------------------------------------------- ranges
+def real_range(law):
+    """(lo, hi, end): where the law is real, on a factor-4 grid from
+    SPAN[0] to SPAN[1] times its scale, the end bisected ('domain') or the
+    grid's end ('search')."""
     with mpmath.workdps(20):
-        grid = [law.scale * mpmath.mpf(2)**j for j in range(-80, 81, 2)]
-        near = mpmath.mpf("1e-8")
-        grid = [A for A in grid if all(abs(A - bv) > near * bv for bv in law.breaks())]
-        for bv in law.breaks():
-            grid += [bv * (1 - mpmath.mpf("1e-10")), bv * (1 + mpmath.mpf("1e-10"))]
-        grid.sort()
-        pts, edge, last_good = [], False, None
+        grid = [law.scale * mpmath.mpf(4)**j for j in range(-20, 41)]
+        first = good = None
         for A in grid:
             try:
-                pts.append((A, law.P(A), law.dP(A)))
-                last_good = A
+                law.P(A)
+                law.dP(A)
             except UNDEFINED:
-                if last_good is None:
+                if good is None:
                     continue
-                edge = True
-                end = domain_end(lambda v: (law.P(v), law.dP(v)), last_good, A)
-                for k in range(1, 40):  # approach it
-                    Ak = last_good + (end - last_good) * (1 - mpmath.mpf(2)**(-k))
-                    try:
-                        pts.append((Ak, law.P(Ak), law.dP(Ak)))
-                    except UNDEFINED:
-                        break
-                break
-    if not pts:
-        raise DomainError("the force law could not be evaluated at any half-width")
-    law._scan_cache = (pts, edge)
-    return law._scan_cache
+                return first, domain_end(lambda v: (law.P(v), law.dP(v)), good, A), "domain"
+            first = A if first is None else first
+            good = A
+        if good is None:
+            raise DomainError("the force law could not be evaluated at any half-width")
+        return first, good, "search"
 
 
-def candidates(law):
-    """Local minima of P located on the scan (at 20 digits):
-    [(a_approx, kind, (lo, hi))]."""
-    pts, _ = scan(law)
-    out = []
+def _falling(base, l, r, balls, notes):
+    """The first sign change of dP0/da from >= 0 to < 0 on [l, r] (as a
+    one-element list), or []."""
+    g = reliable(base.dP) if base.expr is not None else base.dP
+    while l < r:
+        got = crossings(g, l, r, balls, notes, first=True)
+        if not got:
+            return []
+        cl, cr = got[0]
+        if g(cr) < 0:
+            return [(cl, cr)]
+        l = cr
+    return []
+
+
+def admissible_range(law):
+    """(lo, hi, end, note): the half-widths where the frictionless solution
+    under ``law`` holds (module docstring): dP0/da >= 0 for the non-adhesive
+    law P0 = ``law.base``, within the real domain.  Raises
+    :class:`InadmissibleProfileError` when dP0/da < 0 from the start."""
+    cache = getattr(law.base, "_admissible", None)
+    if cache is not None:
+        return cache
+    base = law.base
+    lo, hi, end = real_range(base)
     with mpmath.workdps(20):
-        brs = law.breaks()
-        for (a0, _, d0), (a1, _, d1) in zip(pts[:-1], pts[1:]):
-            if not (d0 < 0 < d1):
-                continue
-            kink = [bv for bv in brs if a0 < bv < a1]
-            if kink:
-                out.append((kink[0], "kink", (a0, a1)))
-                continue
-            out.append((root_in_log(law.dP, a0, a1), "stationary", (a0, a1)))
-    return out
+        balls = _Balls(base)
+        notes = []
+        first_neg = None
+        segs, kinks = _segments(base, lo, hi)
+        if (reliable(base.dP) if base.expr is not None else base.dP)(lo) < 0:
+            raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(lo, 6)}: no admissible "
+                                           f"half-width (tensile edge pressure)")
+        for (l, r), b in zip(segs, kinks + [None]):
+            for cl, cr in _falling(base, l, r, balls, notes):
+                first_neg = root_in_log(base.dP, cl, cr)
+                break
+            if first_neg is not None:
+                break
+            if b is not None and base.dP(b * (1 + KINK_GAP)) < 0:
+                first_neg = b
+                break
+        note = ""
+        if first_neg is not None:
+            hi, end = first_neg, "admissible"
+            note = (f"admissible for a <= a* = {mpmath.nstr(hi, 12)}: dP0/da turns negative there (tensile "
+                    f"pressure at the edges of the non-adhesive contact beyond)")
+    res = (lo, hi, end, note)
+    law.base._admissible = res
+    return res
+
+
+# ---------------------------------------------------------------- landscape
+def landscape(law) -> Landscape:
+    """Every local extremum of P(a) over the admissible range (module
+    docstring), at 20 digits; cached on the law."""
+    if law._landscape is not None:
+        return law._landscape
+    lo, hi, end, note = admissible_range(law)
+    notes = [note] if note else []
+    with mpmath.workdps(20):
+        balls = _Balls(law)
+        method = "ball" if balls.f is not None else "adaptive"
+        if balls.f is None and law.expr is not None:
+            notes.append(f"ball arithmetic unavailable ({balls.reason}): adaptive subdivision instead")
+        hi_eval = hi * (1 - KINK_GAP) if end != "search" else hi
+        segs, kinks = _segments(law, lo, hi_eval)
+        ext = []
+        g = reliable(law.dP) if law.expr is not None else law.dP
+        for (l, r), b in zip(segs, kinks + [None]):
+            for cl, cr in crossings(g, l, r, balls, notes):
+                A = root_in_log(g, cl, cr)
+                ext.append(Extremum(A, law.P(A), "stationary", g(cl) < 0, (cl, cr)))
+            if b is not None:
+                left, right = law.dP(b * (1 - KINK_GAP)), law.dP(b * (1 + KINK_GAP))
+                if (left < 0) != (right < 0):
+                    ext.append(Extremum(b, law.P(b), "kink", left < 0, (b * (1 - KINK_GAP), b * (1 + KINK_GAP))))
+        rising = g(hi_eval) >= 0
+        if not rising and end != "search":
+            ext.append(Extremum(hi_eval, law.P(hi_eval), "end", True, (hi_eval, hi_eval)))
+        if balls.gave_up:
+            method = "ball+adaptive"
+            notes.append(f"ball arithmetic was inconclusive on {balls.gave_up} interval(s) (the dependency "
+                         f"problem); the sampled bound decided there")
+    law._landscape = Landscape(lo, hi_eval, end, tuple(ext), method, tuple(notes), rising)
+    return law._landscape
+
+
+# ---------------------------------------------------------------- minimum (method A)
+def _refine(law, e, dps):
+    """An extremum at the working precision (dps + GUARD)."""
+    if e.kind == "stationary":
+        lo, hi = e.bracket
+        A = root_in_log(law.dP, to_mpf(lo), to_mpf(hi), approx=to_mpf(e.half_width))
+    elif e.kind == "kink":
+        A = [b for b in law.breaks() if abs(b - e.half_width) <= abs(e.half_width) * mpmath.mpf("1e-15")][0]
+    else:
+        A = to_mpf(e.half_width)
+    return Extremum(+A, law.P(A), e.kind, e.minimum, e.bracket)
 
 
 def minimum(law, dps: int, scan_law=None) -> PullOff:
-    """Global minimum of P(a) (the pull-off under load control) from ``law``'s
-    own values; the brackets come from the scan of ``scan_law`` (default
-    ``law``).  Raises :class:`NoPullOffError` where P has no finite negative
-    minimum."""
+    """The pull-off (module docstring): the global minimum of P(a) over the
+    admissible range from ``law``'s own values, with every local minimum
+    listed; the extrema are located on ``scan_law`` (default ``law``).
+    Raises :class:`NoPullOffError` where P has no finite negative minimum."""
     scan_law = scan_law or law
-    pts, edge = scan(scan_law)
     if getattr(law, "gamma", None) == 0:
         raise NoPullOffError("no adhesion (gamma = 0): P(a) = P0(a) >= 0, no tensile pull-off")
-    aN, _, dN = pts[-1]
-    if dN < 0:
-        where = "the end of the profile's domain" if edge else "the end of the search range"
+    land = landscape(scan_law)
+    if not land.rising_at_end and land.end == "search":
         raise NoPullOffError(
-            f"P(a) is still decreasing at a = {mpmath.nstr(aN, 6)} ({where}): P(a) has no "
-            f"finite minimum, no finite pull-off (the profile grows no faster than "
-            f"sqrt(x) there, so the adhesive term sqrt(2 pi a gamma E*) dominates)")
-    found = []
+            f"P(a) is still decreasing at a = {mpmath.nstr(land.hi, 6)} (the end of the search range): P(a) "
+            f"has no finite minimum, no finite pull-off (the profile grows no faster than sqrt(x) there, "
+            f"so the adhesive term sqrt(2 pi a gamma E*) dominates)")
     with mpmath.workdps(dps + GUARD):
-        for approx, kind, (lo, hi) in candidates(scan_law):
-            if kind == "kink":
-                bv = [b for b in law.breaks() if abs(b - approx) <= abs(approx) * mpmath.mpf("1e-15")][0]
-                eps = mpmath.mpf(10)**(-dps)
-                if not (law.dP(bv * (1 - eps)) < 0 < law.dP(bv * (1 + eps))):
-                    continue
-                found.append((bv, law.P(bv), "kink", (lo, hi)))
-            else:
-                A = root_in_log(law.dP, to_mpf(lo), to_mpf(hi), approx=to_mpf(approx))
-                found.append((A, law.P(A), "stationary", (lo, hi)))
-        neg = [cnd for cnd in found if cnd[1] < 0]
+        mins = [_refine(law, e, dps) for e in land.minima]
+        neg = [e for e in mins if e.force < 0]
         if not neg:
             raise NoPullOffError(
                 "P(a) has no negative minimum: no tensile load is sustained (the infimum 0 is "
                 "reached only as a -> 0); no finite pull-off")
-        A, Pm, kind, br = min(neg, key=lambda cnd: cnd[1])
-        po = PullOff(+Pm, -Pm, +A, kind)
-        law._last_bracket = br
-        return po
+        best = min(neg, key=lambda e: e.force)
+        note = land.describe()
+        if best.kind == "end":
+            note += ("; the global minimum is at the end of the admissible range: the lowest load the "
+                     "frictionless JKR solution describes, not a proven separation load")
+        return PullOff(+best.force, -best.force, +best.half_width, best.kind, None, tuple(mins), note)
 
 
-def minimum_by_differences(law, dps: int, po: PullOff) -> PullOff:
-    """Second, independent method: the quadrature force law (10*) minus
-    Phat, differentiated numerically (mpmath.diff) and solved for
-    dP/da = 0 near the first method's minimum; at a kink, one-sided
-    differences confirm the minimum and P is evaluated there."""
-    quad = law.quadrature_law
+# ---------------------------------------------------------------- equilibria
+@dataclass(frozen=True)
+class Equilibrium:
+    """A half-width with P(a) = load; stable where dP/da > 0."""
+
+    half_width: mpmath.mpf
+    stable: bool
+
+
+def equilibria_at(law, load, dps: int, scan_law=None):
+    """Every equilibrium at ``load`` over the admissible range (module
+    docstring): :class:`Equilibrium` s, stable first, then by decreasing a."""
+    sl = scan_law or law
+    land = landscape(sl)
+    with mpmath.workdps(20):
+        L20 = to_mpf(load)
+        nodes = [land.lo] + [e.half_width for e in sorted(land.extrema, key=lambda e: e.half_width)
+                             if e.kind != "end"] + [land.hi]
+        vals = [sl.P(A) for A in nodes]
+        # below lo: P(0+) = 0 and P is monotone there
+        a0, p0 = nodes[0], vals[0]
+        k = 0
+        while L20 != 0 and (p0 - L20 > 0) != (0 - L20 > 0) and k < 200:
+            a0 = a0 / 16
+            p0 = sl.P(a0)
+            k += 1
+        nodes[0], vals[0] = a0, p0
+        if land.end == "search":  # beyond the search range, while P keeps moving towards the load
+            k = 0
+            while k < 200 and ((land.rising_at_end and vals[-1] < L20) or (not land.rising_at_end and vals[-1] > L20)):
+                try:
+                    A = nodes[-1] * 16
+                    vals[-1] = sl.P(A)
+                    nodes[-1] = A
+                except UNDEFINED:
+                    break
+                k += 1
+        brackets = [(n0, n1, v1 > v0) for (n0, v0), (n1, v1) in zip(zip(nodes, vals), zip(nodes[1:], vals[1:]))
+                    if (v0 - L20) * (v1 - L20) < 0]
     with mpmath.workdps(dps + GUARD):
-        if po.kind == "kink":
-            A = to_mpf(po.half_width)
-            h = A * mpmath.mpf(10)**(-dps // 2)
-            left = quad.P(A) - quad.P(A - h)
-            right = quad.P(A + h) - quad.P(A)
-            if not (left < 0 < right):
-                raise VerificationError("the kink at the pull-off is not a minimum of the quadrature force law")
-            Pm = quad.P(A)
-            return PullOff(+Pm, -Pm, A, "kink")
-        lo, hi = law._last_bracket
-        fn = lambda A: mpmath.diff(quad.P, A)  # noqa: E731
-        A = root_in_log(fn, to_mpf(lo), to_mpf(hi), approx=to_mpf(po.half_width) * (1 + mpmath.mpf("1e-9")))
-        Pm = quad.P(A)
-        return PullOff(+Pm, -Pm, A, "stationary")
+        L = to_mpf(load)
+        out = [Equilibrium(+root_in_log(lambda A: law.P(A) - L, to_mpf(n0), to_mpf(n1)), st)
+               for n0, n1, st in brackets]
+    out.sort(key=lambda e: (not e.stable, -e.half_width))
+    return out
 
 
 def equilibria(law, load, dps: int, scan_law=None):
-    """All half-widths with P(a) = load: list of (a, stable), stable first
-    (then by decreasing a)."""
-    sl = scan_law or law
-    pts, edge = scan(sl)
-    with mpmath.workdps(20):
-        L20 = to_mpf(load)
-        pts = list(pts)
-        if L20 != 0:  # below the grid: P(0+) = 0
-            a0, P0v, _ = pts[0]
-            k = 0
-            while (P0v - L20 > 0) != (0 - L20 > 0) and k < 200:
-                a0 = a0 / 16
-                P0v = sl.P(a0)
-                pts.insert(0, (a0, P0v, sl.dP(a0)))
-                k += 1
-        if not edge:  # beyond the grid (not at a domain end)
-            k = 0
-            while k < 200:
-                aN, PN, dN = pts[-1]
-                if (dN > 0 and PN < L20) or (dN < 0 and PN > L20):
-                    try:
-                        A = aN * 16
-                        pts.append((A, sl.P(A), sl.dP(A)))
-                    except UNDEFINED:
-                        break
-                    k += 1
-                else:
-                    break
-        # stationary points between grid nodes: two roots close to a minimum
-        # (or maximum) may both lie inside one grid interval
-        extra = []
-        for (a0, _, d0), (a1, _, d1) in zip(pts[:-1], pts[1:]):
-            if (d0 < 0) != (d1 < 0):
-                kink = [bv for bv in sl.breaks() if a0 < bv < a1]
-                A = kink[0] if kink else root_in_log(sl.dP, a0, a1)
-                extra.append((A, sl.P(A), sl.dP(A)))
-        pts = sorted(pts + extra, key=lambda r: r[0])
-        brackets = []
-        for (a0, P0v, _), (a1, P1v, _) in zip(pts[:-1], pts[1:]):
-            if (P0v - L20) * (P1v - L20) < 0:
-                brackets.append((a0, a1, root_in_log(lambda A: sl.P(A) - L20, a0, a1)))
-    with mpmath.workdps(dps + GUARD):
-        L = to_mpf(load)
-        out = []
-        for a0, a1, approx in brackets:
-            A = root_in_log(lambda A: law.P(A) - L, to_mpf(a0), to_mpf(a1), approx=to_mpf(approx))
-            out.append((+A, law.dP(A) > 0))
-        out.sort(key=lambda r: (not r[1], -r[0]))
-        return out
+    """All half-widths with P(a) = load over the admissible range:
+    list of (a, stable), stable first (then by decreasing a)."""
+    return [(e.half_width, e.stable) for e in equilibria_at(law, load, dps, scan_law)]
 
 
 def half_width_at(law, load, dps: int = 30):
-    """The half-width of an increasing (non-adhesive) law at a positive load:
-    bracketing from a = 1e-3 upwards, then the root."""
-    with mpmath.workdps(dps + 10):
-        L = to_mpf(load)
-        lo, hi = mpmath.mpf(0), mpmath.mpf("1e-3")
-        for _ in range(200):
-            try:
-                v = law.P(hi)
-            except UNDEFINED:
-                raise DomainError(f"no half-width found for load {load}: the force law is "
-                                  f"undefined beyond a = {float(lo):.6g}")
-            if v >= L:
-                break
-            lo, hi = hi, hi * 2
-        else:
-            raise DomainError(f"no half-width found for load {load}")
-        root = mpmath.findroot(lambda av: law.P(av) - L, (lo, hi), solver="anderson")
-        return +root
+    """The half-width of a non-adhesive law at a positive load: the stable
+    equilibrium within the admissible range; :class:`DomainError` when the
+    load is not reached there."""
+    roots = [a for a, st in equilibria(law, load, dps) if st]
+    if not roots:
+        lo, hi, end, note = admissible_range(law)
+        with mpmath.workdps(20):
+            top = law.P(hi)
+        raise DomainError(f"no half-width found for load {load}: the largest load of the admissible range "
+                          f"is P({mpmath.nstr(hi, 8)}) = {mpmath.nstr(top, 8)}"
+                          + (f" ({note})" if note else f" ({'domain end' if end == 'domain' else 'search end'})"))
+    return roots[0]
 
 
-__all__ = ["scan", "candidates", "minimum", "minimum_by_differences", "equilibria", "half_width_at"]
+__all__ = ["Extremum", "Landscape", "Equilibrium", "crossings", "real_range", "admissible_range", "landscape",
+           "minimum", "equilibria", "equilibria_at", "half_width_at",
+           "MIN_WIDTH", "KINK_GAP", "SPAN"]

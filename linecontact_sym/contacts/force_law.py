@@ -34,6 +34,7 @@ from ..core import symbols as S
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import DomainError
 from ..core.roots import UNDEFINED, Outside, real_value
+from ..method.transforms import NumericProfile, inside
 
 #: extra working digits of the numeric searches
 GUARD = 15
@@ -41,13 +42,19 @@ GUARD = 15
 
 @dataclass(frozen=True)
 class PullOff:
-    """A minimum of P(a) under load control.
+    """The pull-off under load control: the global minimum of P(a) over the
+    admissible range (defined in :mod:`.equilibria`).
 
     force          P_min < 0 (the pull-off *load*)
     adhesion_force P_adh = -P_min > 0 (the paper's P_adh)
     half_width     a at the minimum
-    kind           'stationary' (dP/da = 0) or 'kink' (at a profile breakpoint)
+    kind           'stationary' (dP/da = 0), 'kink' (at a profile breakpoint)
+                   or 'end' (the end of the admissible range)
     digits         agreement of two independent methods (None if not run)
+    minima         every local minimum of P over the admissible range, as
+                   :class:`~.equilibria.Extremum` (half-width, force, kind)
+    note           what the search covered and how (ball arithmetic or
+                   adaptive subdivision), and what a kind 'end' means
     """
 
     force: mpmath.mpf
@@ -55,6 +62,8 @@ class PullOff:
     half_width: mpmath.mpf
     kind: str
     digits: float | None = None
+    minima: tuple = ()
+    note: str = ""
 
 
 class ForceLaw:
@@ -66,13 +75,18 @@ class ForceLaw:
     where the law is not real.  ``breaks`` are the profile's breakpoints
     (kinks of P), ``scale`` a length scale for the scans."""
 
-    def __init__(self, P, dP, breaks=(), mode: str = "closed", fallback=None, B1=None):
+    def __init__(self, P, dP, breaks=(), mode: str = "closed", fallback=None, B1=None, expr=None,
+                 conditions=()):
         self._P, self._dP = P, dP
         self.breaks_exact = tuple(sorted(breaks))
         self.mode = mode
         self.fallback = fallback   # a quadrature law used where the closed form does not hold
         self.B1 = B1               # adhesive term sqrt(2 pi gamma E*) (None: non-adhesive)
-        self._scan_cache = None
+        self.expr = expr           # P(a) as a SymPy expression in a (closed form), else None
+        self.conditions = tuple(conditions)   # where ``expr`` holds (relations in a)
+        self.base = self           # the non-adhesive law P0 (admissibility is read from it)
+        self._landscape = None
+        self._balls = None
 
     # ----------------------------------------------------------- builders
     @classmethod
@@ -101,44 +115,45 @@ class ForceLaw:
                     # cuts): the profile's own quadrature decides the domain
                     return getattr(fallback, name)(A)
             return g
-        return cls(guarded(fP, "P"), guarded(fdP, "dP"), breaks, "closed", fallback)
+        return cls(guarded(fP, "P"), guarded(fdP, "dP"), breaks, "closed", fallback, expr=P0, conditions=conds)
 
     @classmethod
     def from_profile(cls, profile, values: dict):
         """The quadrature law of Eq. (10*) for a profile at ``values``
-        (E_star and the profile's parameters)."""
+        (E_star and the profile's parameters), read from the profile's
+        expression at this point (:class:`~linecontact_sym.method.transforms.NumericProfile`:
+        breakpoints found numerically here, not the engine's pieces)."""
         pf = {k: v for k, v in values.items() if k not in (S.a, S.x)}
         E = to_basic_number(pf[S.E_star])
-        f1 = [sp.lambdify(S.x, sp.diff(pc.expr, S.x).xreplace(pf), "mpmath") for pc in profile.pieces]
-        f2 = [sp.lambdify(S.x, sp.diff(pc.expr, S.x, 2).xreplace(pf), "mpmath") for pc in profile.pieces]
-        breaks = tuple(sorted(sp.N(bp.xreplace(pf), 80) for bp in profile.breakpoints))
+        npf = NumericProfile(profile, pf)
+        f1, f2 = npf.f1, npf.f2
 
-        def pieces(A):
-            edges = [mpmath.mpf(0)] + [to_mpf(b) for b in breaks if to_mpf(b) < A] + [A]
-            return list(zip(range(len(edges) - 1), edges[:-1], edges[1:]))
+        def h1(t):
+            return f1(t) + t * f2(t)
+
+        def edges(A):
+            return [mpmath.mpf(0)] + npf.kinks(0, A) + [A]
 
         def P(A):
             total = mpmath.mpf(0)
-            for i, lo, hi in pieces(A):
-                fn = f1[i]
+            e = edges(A)
+            for lo, hi in zip(e[:-1], e[1:]):
+                fn = inside(f1, lo, hi)
                 total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
                                      [mpmath.asin(lo / A), mpmath.asin(hi / A)])
             return real_value(to_mpf(E) * A * total)
 
         def dP(A):
             total = mpmath.mpf(0)
-            for i, lo, hi in pieces(A):
-                g1, g2 = f1[i], f2[i]
-
-                def integrand(ph):
-                    t = A * mpmath.sin(ph)
-                    return mpmath.sin(ph) * (g1(t) + t * g2(t))
-                total += mpmath.quad(integrand, [mpmath.asin(lo / A), mpmath.asin(hi / A)])
-            for i, bv in enumerate(breaks):
-                bv = to_mpf(bv)
-                if bv < A:
-                    J = f1[i + 1](bv) - f1[i](bv)
-                    total += J * bv**2 / mpmath.sqrt(A**2 - bv**2)
+            e = edges(A)
+            for lo, hi in zip(e[:-1], e[1:]):
+                fn = inside(h1, lo, hi)
+                total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
+                                     [mpmath.asin(lo / A), mpmath.asin(hi / A)])
+            for bv in e[1:-1]:
+                eps = bv * mpmath.mpf(10)**(-mpmath.mp.dps - 5)
+                J = f1(bv + eps) - f1(bv - eps)
+                total += J * bv**2 / mpmath.sqrt(A**2 - bv**2)
             return real_value(to_mpf(E) * total)
 
         def guard(fn):
@@ -148,7 +163,11 @@ class ForceLaw:
                 except UNDEFINED:
                     raise Outside
             return g
-        return cls(guard(P), guard(dP), breaks, "quad")
+        with mpmath.workdps(80):
+            found = npf.kinks(0, mpmath.mpf(10)**6)
+        law = cls(guard(P), guard(dP), tuple(sp.Float(k, 80) for k in found), "quad")
+        law.numeric_profile, law.E = npf, E
+        return law
 
     @classmethod
     def from_contact(cls, contact, values: dict, mode: str = "closed"):
@@ -159,7 +178,9 @@ class ForceLaw:
         fd = contact.derivation("force")
         if mode == "quad" or not fd.closed_form:
             return quad
-        return cls.from_closed_form(fd.expr, values, fd.conditions, quad.breaks_exact, fallback=quad)
+        pf = {k: v for k, v in values.items() if k not in (S.a, S.x)}
+        breaks = [sp.N(bp.xreplace(pf), 80) for bp in contact.profile.breakpoints]
+        return cls.from_closed_form(fd.expr, values, fd.conditions, [bp for bp in breaks if bp > 0], fallback=quad)
 
     def with_adhesion(self, gamma, E_star) -> "ForceLaw":
         """The JKR law P(a) = P0(a) - sqrt(2 pi a gamma E*) (Eq. 33)."""
@@ -170,9 +191,11 @@ class ForceLaw:
         def B1():
             return mpmath.sqrt(2 * mpmath.pi * to_mpf(g) * to_mpf(E))
         P0, dP0 = self._P, self._dP
+        expr = None if self.expr is None else self.expr - sp.sqrt(2 * sp.pi * g * E * S.a)
         law = ForceLaw(lambda A: P0(A) - B1() * mpmath.sqrt(A), lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
-                       self.breaks_exact, self.mode, B1=B1)
+                       self.breaks_exact, self.mode, B1=B1, expr=expr, conditions=self.conditions)
         law.gamma = g
+        law.base = self
         if self.fallback is not None:
             law.quad = self.fallback.with_adhesion(g, E)
         elif self.mode == "quad":

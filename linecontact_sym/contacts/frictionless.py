@@ -3,6 +3,7 @@ one object per physical system, each quantity declared once in the registry
 of :mod:`.base` and derived by the engine from the profile."""
 from __future__ import annotations
 
+import dataclasses
 import random
 import time
 
@@ -103,9 +104,27 @@ class LineContact(Contact):
         return point_sampler(self.profile, domain)
 
     def _derive(self, quantity, problem, reference, fallback, domain, notes=(), t0=None):
-        return derive(quantity, problem, reference=reference, sampler=self._sampler(domain), fallback=fallback,
-                      budget=self.budget, check=self.verify, points=self.points, notes=notes,
-                      variables=(S.a,) + (() if domain == "any" else (S.x,)) + self.variables, t0=t0)
+        d = derive(quantity, problem, reference=reference, sampler=self._sampler(domain), fallback=fallback,
+                   budget=self.budget, check=self.verify, points=self.points, notes=notes,
+                   variables=(S.a,) + (() if domain == "any" else (S.x,)) + self.variables, t0=t0)
+        return self._restricted(d)
+
+    def _restricted(self, d: Derivation) -> Derivation:
+        """A closed form holds where the profile's pieces do: its
+        :attr:`~linecontact_sym.method.profile.Profile.assumptions` (the case
+        of a parameter-dependent Piecewise, the order of breakpoints) join its
+        conditions, and the notes say so (the verification points satisfy
+        them, see :mod:`.sampling`)."""
+        extra = tuple(r for r in self.profile.assumptions if r not in d.conditions)
+        notes = tuple(self.profile.range_notes)
+        if not d.closed_form or not (extra or notes):
+            return d
+        if extra:
+            notes += (f"holds under the profile's assumptions {', '.join(map(str, extra))} (the pieces "
+                      f"of its Piecewise were read there); elsewhere derive the other case",)
+        conds = d.conditions + extra
+        return dataclasses.replace(d, conditions=conds, step=dataclasses.replace(d.step, conditions=conds),
+                                   notes=d.notes + notes)
 
     def force_law(self, mode: str = "closed", **values) -> ForceLaw:
         """The numeric force law at parameter values (keywords by name):
@@ -116,6 +135,21 @@ class LineContact(Contact):
         if missing:
             raise DomainError(f"the force law needs values for {', '.join(missing)}")
         return ForceLaw.from_contact(self, vals, mode)
+
+    def _admissibility_fns(self):
+        """(f'(x, *params), dP0/da(a, E_star, *params) or None, parameter names):
+        float64 NumPy functions for the admissibility test of
+        :meth:`~.base.Contact._check_admissible`, compiled once."""
+        cache = self._caches()
+        if "_adm_fns" not in cache:
+            params = list(self.params)
+            fprime = sp.lambdify([S.x] + params, sp.diff(self.profile.expr, S.x), "numpy")
+            fd = self.derivation("force")
+            slope = None
+            if fd.closed_form and not fd.expr.has(sp.Integral):
+                slope = sp.lambdify([S.a, S.E_star] + params, sp.diff(fd.expr, S.a), ["scipy", "numpy"])
+            cache["_adm_fns"] = (fprime, slope, [p.name for p in params])
+        return cache["_adm_fns"]
 
     # --------------------------------------------------------------- derivations
     def _derive_force(self) -> Derivation:

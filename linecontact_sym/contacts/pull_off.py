@@ -35,7 +35,8 @@ from ..method.hyperseries import NotDecomposable, decompose
 from ..method.rules import Step
 from ..method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
                                    verify_many)
-from .equilibria import minimum, minimum_by_differences
+from .brute_force import minimum_by_grid
+from .equilibria import landscape, minimum
 from .force_law import PullOff
 
 
@@ -165,6 +166,8 @@ def closed_attempt(ad):
         raise NoPullOffError(f"{ad.profile.name!r}: no adhesion (gamma = 0): P(a) = P0(a) >= 0, "
                              f"no tensile pull-off")
     a_star = Pmin = adh = method = None
+    if not fd.closed_form:
+        notes.append("the force law P0(a) has no closed form")
     if fd.closed_form:
         if single is not None:
             C, m = single
@@ -178,8 +181,10 @@ def closed_attempt(ad):
         except BudgetExceeded:
             notes.append(f"sympy.solve(dP/da = 0) found nothing within {ad.contact.budget:g} s")
         except (NotImplementedError, ValueError, TypeError) as exc:
-            notes.append(f"sympy.solve(dP/da = 0): {type(exc).__name__}")
+            notes.append(f"sympy.solve(dP/da = 0) gave up: {type(exc).__name__}")
         a_star = pick_minimum(ad, cands, P, conds)
+        if a_star is None and cands:
+            notes.append("none of them is a real positive minimum at every admissible sample point")
         if a_star is not None:
             method = "sympy.solve of dP/da = 0, minimum checked numerically (P'' > 0)"
             compact = False
@@ -217,10 +222,10 @@ def derivations(ad):
             return {"P": po.force, "adh": po.adhesion_force, "a": po.half_width}
         recs = verify_many(
             {"P": Pmin, "adh": adh, "a": a_star}, reference, ad._sampler(), conds, ad.contact.points,
-            reference_name={"P": "global minimisation of the quadrature force law (10*) minus Phat: scan + "
-                                  "findroot of the quadrature dP/da",
-                            "adh": "minus the quadrature-based minimum of P(a)",
-                            "a": "half-width of the quadrature-based minimum of P(a)"})
+            reference_name={"P": "global minimum of the quadrature force law (10*) minus Phat over its "
+                                  "admissible range: dense grid + golden section + parabolic polish",
+                            "adh": "minus the quadrature-based global minimum of P(a)",
+                            "a": "half-width of the quadrature-based global minimum of P(a)"})
         for k, what in (("P", "pull_off_force"), ("a", "pull_off_half_width"), ("adh", "adhesion_force")):
             ad._require(recs[k], what)
     dt = time.perf_counter() - t0
@@ -248,9 +253,10 @@ def numeric_derivations(ad, P, notes, t0):
     """No closed form: Derivations whose evalf is the numeric minimum,
     verified at random points by two independent methods."""
     notes = list(notes) + [
-        "no closed form: method A = scan + findroot of dP/da from the engine's force law "
-        "(closed form if any, else the quadrature P0'(a) with kink terms); method B = "
-        "mpmath.diff of the quadrature force law (10*) + findroot (kinks: one-sided differences)"]
+        "no closed form: method A = every sign change of dP/da over the admissible range by ball "
+        "arithmetic on the engine's closed force law (adaptive subdivision for a quadrature law), "
+        "kinks and the range's end included, then the global minimum; method B = dense grid + "
+        "golden section + parabolic polish on the quadrature force law (10*) minus Phat"]
     rec = None
     if ad.contact.verify and ad.gamma != 0:
         sample, n_points = ad._sampler(), ad.contact.points
@@ -271,8 +277,8 @@ def numeric_derivations(ad, P, notes, t0):
                 pts.append(v)
                 digs.append(po.digits)
             return pts, digs
-        name = "two independent minimisations (A: analytic dP/da, B: numerical differentiation of the " \
-               "quadrature force law)"
+        name = "two independent minimisations (A: every stationary point and kink of the engine's law, " \
+               "B: dense grid + golden section on the quadrature force law)"
         try:
             pts, digs = run_with_budget(work, seconds=VERIFY_BUDGET)
         except BudgetExceeded:
@@ -295,11 +301,13 @@ def _key(ad, vals):
 
 
 def reference(ad, vals, dps, mode="quad") -> PullOff:
-    """Minimum of the quadrature law (brackets from the closed law's scan), cached."""
+    """The independent pull-off (method B, :func:`~.brute_force.minimum_by_grid`:
+    dense grid + golden section + parabolic polish on the quadrature law),
+    cached; what a closed-form pull-off is verified against."""
     key = ("po_ref", mode, dps, _key(ad, vals))
     if key not in ad._cache:
         try:
-            ad._cache[key] = minimum(ad._law(vals, mode), dps, scan_law=ad._law(vals, "closed"))
+            ad._cache[key] = minimum_by_grid(ad._law(vals, "quad"), dps)
         except NoPullOffError as exc:
             ad._cache[key] = exc
     res = ad._cache[key]
@@ -309,16 +317,22 @@ def reference(ad, vals, dps, mode="quad") -> PullOff:
 
 
 def checked(ad, vals, dps) -> PullOff:
-    """Numeric pull-off at a point by method A, checked by method B (cached)."""
+    """Numeric pull-off at a point by method A (every extremum of the engine's
+    law by ball arithmetic / adaptive subdivision, :func:`~.equilibria.minimum`),
+    checked by method B (:func:`reference`), cached.  ``digits``: their
+    agreement (force; and half-width at a stationary minimum)."""
     key = ("po_checked", dps, _key(ad, vals))
     if key not in ad._cache:
         law = ad._law(vals, "closed")
         po = minimum(law, dps)
-        po_b = minimum_by_differences(law, dps, po)
+        po_b = reference(ad, vals, dps)
         with mpmath.workdps(dps):
             d = min(digits_agreeing(po.force, po_b.force),
                     digits_agreeing(po.half_width, po_b.half_width) if po.kind == "stationary" else float(dps))
-        ad._cache[key] = PullOff(po.force, po.adhesion_force, po.half_width, po.kind, d)
+            if po.kind != po_b.kind:
+                d = 0.0
+        note = po.note + f"; method B ({po_b.note}) agrees to {d:.1f} digits"
+        ad._cache[key] = PullOff(po.force, po.adhesion_force, po.half_width, po.kind, d, po.minima, note)
     return ad._cache[key]
 
 
@@ -337,7 +351,21 @@ def at_values(ad, vals, dps) -> PullOff:
         with mpmath.workdps(dps + 10):
             Pm = real_mpf(sp.N(fd.expr.xreplace(fv), dps + 10))
             A = real_mpf(sp.N(ad.derivation("pull_off_half_width").expr.xreplace(fv), dps + 10))
-            return PullOff(Pm, -Pm, A, "stationary", None)
+            adh = -Pm
+        if single is not None:   # one power term: one stationary point, the global minimum
+            return PullOff(Pm, adh, A, "stationary", None, (), "closed form (single power term)")
+        # the closed form is one stationary point: is it the global minimum here?
+        land = landscape(ad._law(vals, "closed"))
+        with mpmath.workdps(20):
+            best = min(land.minima, key=lambda e: e.force, default=None)
+            if best is not None and best.kind == "stationary" and digits_agreeing(best.half_width, A, 20) >= 8:
+                return PullOff(Pm, adh, A, "stationary", None, land.minima, land.describe())
+    return checked_or_fail(ad, vals, dps)
+
+
+def checked_or_fail(ad, vals, dps) -> PullOff:
+    """:func:`checked`, raising :class:`VerificationError` when the two
+    methods agree to fewer than ``dps`` digits."""
     po = checked(ad, vals, dps)
     if po.digits < dps:
         raise VerificationError(f"pull-off of {ad.profile.name!r}: the two methods agree to "

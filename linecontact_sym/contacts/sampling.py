@@ -4,6 +4,13 @@ and, for quantities defined inside or outside the contact, an x.
 The one place that decides where closed forms are checked; every contact
 class draws its points here.  Points are exact rationals (six decimals), so
 the closed form and its reference see the same number.
+
+Points are admissible: the parameters lie in the profile's ranges (a
+default range is cut to where the profile is real and rising near x = 0,
+see :meth:`~linecontact_sym.method.profile.Profile._check_real_and_rising`:
+``x*tan(theta)`` is sampled at theta < pi/2 only) and satisfy its
+assumptions (the case of a parameter-dependent Piecewise), and the profile
+does not decrease on (0, a).
 """
 from __future__ import annotations
 
@@ -21,7 +28,9 @@ X_RANGES = {"inside": (0.02, 0.98), "outside": (1.05, 2.5)}
 def sample_half_width(profile, rng, vals):
     """A half-width inside a random piece of the profile (a single-piece
     profile: in (0.05, 1.5)), shrunk until the profile's slope is real and
-    finite there; None when no such point is found."""
+    finite there and the profile does not decrease on (0, a)
+    (:meth:`~linecontact_sym.method.profile.Profile.rising_on`: the
+    frictionless compact contact needs it); None when no such point is found."""
     pcs = profile.pieces
     pc = pcs[rng.randrange(len(pcs))] if len(pcs) > 1 else pcs[0]
     lo = float(sp.N(pc.lo.xreplace(vals)))
@@ -32,7 +41,7 @@ def sample_half_width(profile, rng, vals):
     for _ in range(12):  # shrink into the profile's real domain
         try:
             fp = complex(sp.N(profile.piece_at(av, vals).derivative.xreplace(vals).subs(S.x, av)))
-            if abs(fp.imag) < 1e-30 and abs(fp) < 1e30:
+            if abs(fp.imag) < 1e-30 and abs(fp) < 1e30 and profile.rising_on(vals, av) is None:
                 return rational(av)
         except (TypeError, ValueError):
             pass

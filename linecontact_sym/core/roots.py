@@ -54,8 +54,9 @@ def bisect(fn, lo, hi, iters: int = 60):
 
 def root_in_log(fn, lo, hi, approx=None):
     """The root of ``fn`` in the sign-change bracket [lo, hi] (0 < lo < hi),
-    solved in u = ln a at the working precision: Anderson-Bjorck, with
-    bisection + secant as the fallback.  With ``approx`` the bracket is first
+    solved in u = ln a at the working precision: bisection down to a
+    bracket of 1e-3 in u, then Anderson-Bjorck, checked to be a sign change
+    (else bisection to the working precision).  With ``approx`` the bracket is first
     narrowed around it (a cheap high-precision refinement of a root known
     to lower precision)."""
     g = lambda u: fn(mpmath.exp(u))  # noqa: E731
@@ -69,14 +70,32 @@ def root_in_log(fn, lo, hi, approx=None):
                 ul, uh = l2, h2
                 break
             d *= 1000
+    # shrink the bracket first: Anderson-Bjorck on a bracket spanning many
+    # decades may stop at a point that is not a root (verify=False)
+    while uh - ul > mpmath.mpf("1e-3"):
+        um = (ul + uh) / 2
+        if (g(um) < 0) == (g(ul) < 0):
+            ul = um
+        else:
+            uh = um
     try:
         u = mpmath.findroot(g, (ul, uh), solver="anderson", verify=False)
     except (ZeroDivisionError, ValueError):
         u = None
-    if u is None or isinstance(u, mpmath.mpc) or not (ul <= u <= uh):
-        ul, uh = bisect(g, ul, uh, iters=45)
-        u = mpmath.findroot(g, (ul, uh), solver="secant", verify=False)
+    if u is None or isinstance(u, mpmath.mpc) or not (ul <= u <= uh) or not _is_root(g, u, ul, uh):
+        ul, uh = bisect(g, ul, uh, iters=int(3.4 * mpmath.mp.dps) + 10)
+        u = (ul + uh) / 2
     return mpmath.exp(u)
+
+
+def _is_root(g, u, ul, uh):
+    """Does g change sign within 10**(5 - dps) (relative) of u (or vanish there)?"""
+    d = mpmath.mpf(10)**(5 - mpmath.mp.dps) * max(1, abs(u))
+    g0 = g(u)
+    if g0 == 0:
+        return True
+    lo, hi = max(u - d, ul), min(u + d, uh)
+    return (g(lo) < 0) != (g(hi) < 0)
 
 
 def domain_end(fn, good, bad, iters: int = 60):

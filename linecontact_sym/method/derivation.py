@@ -119,7 +119,7 @@ def fallback_step(why: str = "no closed form found") -> Step:
 
 def values_by_name(symbols, values):
     """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
-    floats become exact rationals of their binary value's shortest decimal."""
+    floats become the exact rational of their shortest decimal repr (0.1 -> 1/10)."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():

@@ -16,7 +16,7 @@ import mpmath
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.errors import ProfileError, UnknownSymbolError
+from ..core.errors import InadmissibleProfileError, ProfileError, UnknownSymbolError
 
 
 @dataclass(frozen=True)
@@ -39,7 +39,37 @@ MAX_DERIVATIVE_ORDER = 20
 
 
 def _default_range(sym: sp.Symbol) -> tuple[float, float]:
+    """The range a parameter without a declared one is drawn from, before it
+    is cut to where the profile is admissible (:meth:`Profile._admissible_ranges`)."""
     return (0.5, 2.5)
+
+
+#: functions that hide a breakpoint (a kink or a switch) in a profile
+KINK_FUNCTIONS = (sp.Abs, sp.Min, sp.Max, sp.sign, sp.Heaviside)
+
+#: x at which a profile is checked near its first point of contact (relative
+#: to 1: f real and f' >= 0 there), log-spaced from 1e-6 to 5e-2
+NEAR_ORIGIN = tuple(10.0**(-6 + 4.7 * k / 23) for k in range(24))
+
+
+def expose_kinks(expr):
+    """``expr`` with every Abs, Min, Max, sign and Heaviside of x rewritten as
+    a Piecewise in x, so that their breakpoints are breakpoints of the
+    profile (the transforms are split there) instead of kinks hidden inside
+    one analytic-looking piece.
+
+    >>> x = sp.Symbol("x", positive=True)
+    >>> expose_kinks(sp.Abs(x - 1) - 1 + 2*x)
+    Piecewise((3*x - 2, x >= 1), (x, True))
+    """
+    hidden = [e for e in expr.atoms(*KINK_FUNCTIONS) if e.has(S.x)]
+    if not hidden:
+        return expr
+    # innermost first: a rewritten inner function must not be rewritten twice
+    hidden.sort(key=lambda e: sp.count_ops(e))
+    for e in hidden:
+        expr = expr.xreplace({e: e.rewrite(sp.Piecewise)})
+    return sp.piecewise_fold(expr)
 
 
 def _sanitize(expr, params):
@@ -125,47 +155,167 @@ class Profile:
                     f"LineContact(expr, params=[{s}]) or create it with Symbol('{s}', positive=True)")
         if S.x not in expr.free_symbols:
             raise ProfileError(f"profile {self.name!r} does not depend on x")
-        self.expr = expr
+        self.original = expr
+        self.expr = expose_kinks(expr)
         self.params = tuple(sorted(free, key=lambda s: s.name))
+        self.declared_ranges = dict(ranges)
         self.ranges = {p: ranges.get(p, _default_range(p)) for p in self.params}
+        #: relations in the parameters under which ``pieces`` hold (the cases
+        #: of a parameter-dependent Piecewise, the order of the breakpoints)
+        self.assumptions: tuple = ()
+        self.range_notes: tuple = ()
+        self._check_real_and_rising()
         self.pieces = self._split()
         self._check_f0()
         self._check_continuity()
 
     # ------------------------------------------------------------------ structure
     def sample_params(self, rng: random.Random | None = None) -> dict:
-        """Random parameter values (exact rationals) inside the declared ranges."""
+        """Random parameter values (exact rationals) inside the ranges (the
+        declared ones, or the default cut to where the profile is admissible,
+        see :meth:`_check_real_and_rising`) where the :attr:`assumptions` hold."""
         rng = rng or random.Random(12345)
         out = {}
-        for p in self.params:
-            lo, hi = self.ranges[p]
-            out[p] = sp.Rational(round(rng.uniform(lo, hi) * 1000), 1000)
+        for _ in range(50):
+            out = {}
+            for p in self.params:
+                lo, hi = self.ranges[p]
+                out[p] = sp.Rational(round(rng.uniform(lo, hi) * 1000), 1000)
+            if self.holds(out):
+                return out
         return out
 
+    def holds(self, values) -> bool:
+        """Do the profile's :attr:`assumptions` hold at ``values``?"""
+        for rel in self.assumptions:
+            v = rel.xreplace(values)
+            if v not in (sp.true, sp.false):
+                try:
+                    v = sp.true if bool(sp.N(rel.lhs.xreplace(values) - rel.rhs.xreplace(values), 30) > 0) \
+                        == isinstance(rel, (sp.StrictGreaterThan, sp.GreaterThan)) else sp.false
+                except TypeError:
+                    return False
+            if v != sp.true:
+                return False
+        return True
+
+    # ------------------------------------------------------------------ admissibility near x = 0
+    def _numeric_fns(self, values):
+        """(f, f') of x as mpmath callables at these parameter values (the
+        profile's expression compiled once with the parameters as arguments)."""
+        if "_near_fns" not in self.__dict__:
+            args = [S.x] + list(self.params)
+            try:
+                self._near_fns = (sp.lambdify(args, self.expr, "mpmath"),
+                                  sp.lambdify(args, sp.diff(self.expr, S.x), "mpmath"))
+            except Exception:  # pragma: no cover - lambdify of exotic functions
+                self._near_fns = None
+        if self._near_fns is None:
+            return None
+        pv = [mpmath.mpf(values[p]) if isinstance(values[p], (int, float)) else mpmath.mpf(sp.N(values[p], 30))
+              for p in self.params]
+        return (lambda xv: self._near_fns[0](xv, *pv)), (lambda xv: self._near_fns[1](xv, *pv))
+
+    def rising_on(self, values, a, n: int = 24):
+        """None if f is real and f' >= 0 at n points evenly spread over (0, a]
+        (the frictionless compact contact of half-width a needs a profile that
+        does not decrease inside it), else where it fails, in words."""
+        fns = self._numeric_fns(values)
+        if fns is None:
+            return None
+        f, fp = fns
+        with mpmath.workdps(30):
+            A = mpmath.mpf(a) if isinstance(a, (int, float)) else mpmath.mpf(sp.N(a, 30))
+            for k in range(1, n + 1):
+                xv = A * k / n
+                try:
+                    v, d = f(xv), fp(xv)
+                except (ValueError, ZeroDivisionError, TypeError):
+                    return f"f is not defined at x = {mpmath.nstr(xv, 6)}"
+                if isinstance(v, mpmath.mpc) and abs(v.imag) > 1e-20 * (abs(v.real) + 1e-300):
+                    return f"f is not real at x = {mpmath.nstr(xv, 6)}"
+                d = d.real if isinstance(d, mpmath.mpc) else d
+                if mpmath.isfinite(d) and d < 0:
+                    return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
+        return None
+
+    def _near_origin_ok(self, values) -> str | None:
+        """None if f is real at the points :data:`NEAR_ORIGIN` and f' >= 0 at
+        those up to 1e-4 for these parameter values, else what is wrong
+        ('complex', 'decreasing')."""
+        fns = self._numeric_fns(values)
+        if fns is None:
+            return None
+        ff, ffp = fns
+        bad = None
+        with mpmath.workdps(30):
+            for xv in NEAR_ORIGIN:
+                try:
+                    v, d = ff(mpmath.mpf(xv)), ffp(mpmath.mpf(xv))
+                except (ValueError, ZeroDivisionError, TypeError, NameError):
+                    continue
+                for w in (v, d):
+                    if isinstance(w, mpmath.mpc) and abs(w.imag) > 1e-20 * (abs(w.real) + 1e-300):
+                        return "complex"
+                d = d.real if isinstance(d, mpmath.mpc) else d
+                if mpmath.isfinite(d) and d < 0 and xv <= 1.01e-4:
+                    bad = "decreasing"
+        return bad
+
+    def _check_real_and_rising(self):
+        """See :func:`check_real_and_rising`."""
+        check_real_and_rising(self)
+
     def _split(self) -> tuple[Piece, ...]:
+        """The pieces of a Piecewise profile, ordered in x, read at one sample
+        parameter point.  Every choice that depends on the parameters is
+        recorded in :attr:`assumptions` (a relation true at the sample point):
+        a condition free of x (``Piecewise((x**2, R < 1), (x**3, True))``
+        holds for R < 1 only), the order of two breakpoints, a breakpoint's
+        sign.  Results derived from the pieces hold under these assumptions."""
         expr = self.expr
         if not expr.has(sp.Piecewise):
             return (Piece(expr, sp.S.Zero, sp.oo),)
         expr = sp.piecewise_fold(expr)
         if not isinstance(expr, sp.Piecewise):
             raise ProfileError(f"profile {self.name!r}: could not bring the Piecewise to a single level")
+        vals = self.sample_params()
+        assumed = []
+
+        def assume(rel):
+            rel = sp.simplify(rel)
+            if rel in (sp.true, sp.false) or not rel.free_symbols:
+                return
+            if rel.xreplace(vals) == sp.false:
+                rel = rel.negated
+            if rel not in assumed:
+                assumed.append(rel)
         breaks = set()
         for _, cond in expr.args:
             for rel in cond.atoms(sp.Rel):
                 side = rel.lhs - rel.rhs
                 if not side.has(S.x):
+                    assume(rel)     # a case of the parameters, not a breakpoint
                     continue
-                sol = sp.solve(sp.Eq(side, 0), S.x)
-                if len(sol) != 1:
+                sols = [sp.sympify(r, strict=True) for r in sp.solve(sp.Eq(side, 0), S.x)]  # safe: solve() results
+                kept = []
+                for r in sols:
+                    try:
+                        v = complex(sp.N(r.xreplace(vals)))
+                    except TypeError:
+                        continue
+                    if abs(v.imag) < 1e-12 * (1 + abs(v.real)) and v.real > 0:
+                        kept.append(r)
+                        if r.free_symbols:
+                            assume(sp.Gt(r, 0))
+                if not kept and not sols:
                     raise ProfileError(f"profile {self.name!r}: cannot read the breakpoint of {rel}")
-                breaks.add(sp.sympify(sol[0], strict=True))  # safe: a solve() result
-        vals = self.sample_params()
-        num = {}
-        for bp in breaks:
-            v = float(bp.subs(vals))
-            if v > 0:
-                num[bp] = v
+                breaks.update(kept)
+        num = {bp: float(sp.N(bp.xreplace(vals))) for bp in breaks}
         ordered = sorted(num, key=num.get)
+        for lo_bp, hi_bp in zip(ordered[:-1], ordered[1:]):
+            if (lo_bp.free_symbols or hi_bp.free_symbols) and sp.simplify(hi_bp - lo_bp).is_positive is not True:
+                assume(sp.Lt(lo_bp, hi_bp))
         edges = [sp.S.Zero] + ordered + [sp.oo]
         pieces = []
         for lo, hi in zip(edges[:-1], edges[1:]):
@@ -184,6 +334,7 @@ class Profile:
                 pieces[-1] = Piece(chosen, pieces[-1].lo, hi)
             else:
                 pieces.append(Piece(chosen, lo, hi))
+        self.assumptions = tuple(assumed)
         return tuple(pieces)
 
     @property
@@ -259,6 +410,66 @@ class Profile:
 
     def __repr__(self):
         return f"Profile({self.expr})"
+
+
+def check_real_and_rising(profile):
+    """Refuse a profile that is not real, or that decreases arbitrarily
+    close to x = 0 for every parameter value tried (``-x**2``,
+    ``x*sin(1/x)``: no compact contact exists for any half-width); cut the
+    default range of each undeclared parameter to the longest run of the
+    24 values tried (others at their range midpoints) where f is real at
+    :data:`NEAR_ORIGIN` and f' >= 0 at those up to 1e-4, its ends found by bisection
+    (``x*tan(theta)``: theta < pi/2).  A declared range is the user's
+    word and is kept."""
+    mids = {p: sp.Rational(round((lo + hi) / 2 * 1000), 1000) for p, (lo, hi) in profile.ranges.items()}
+    why = profile._near_origin_ok(mids)
+    free = [p for p in profile.params if p not in profile.declared_ranges]
+    notes = []
+    for p in free:
+        lo, hi = profile.ranges[p]
+        grid = [lo + (hi - lo) * k / 23 for k in range(24)]
+        oks = [profile._near_origin_ok({**mids, p: sp.Rational(round(v * 10**6), 10**6)}) is None for v in grid]
+        runs, start = [], None
+        for k, ok in enumerate(oks + [False]):
+            if ok and start is None:
+                start = k
+            if not ok and start is not None:
+                runs.append((start, k - 1))
+                start = None
+        if not runs:
+            continue
+        i0, i1 = max(runs, key=lambda r: r[1] - r[0])
+        if (i0, i1) == (0, 23):
+            continue
+        new_lo, new_hi = grid[i0], grid[i1]
+        for end, outside in ((0, i0 - 1), (1, i1 + 1)):
+            if not 0 <= outside < 24:
+                continue
+            good, bad = (grid[i0], grid[outside]) if end == 0 else (grid[i1], grid[outside])
+            for _ in range(24):
+                m = (good + bad) / 2
+                if profile._near_origin_ok({**mids, p: sp.Rational(round(m * 10**9), 10**9)}) is None:
+                    good = m
+                else:
+                    bad = m
+            if end == 0:
+                new_lo = good
+            else:
+                new_hi = good
+        profile.ranges[p] = (new_lo, new_hi)
+        mids[p] = sp.Rational(round((new_lo + new_hi) / 2 * 1000), 1000)
+        notes.append(f"{p} sampled in ({new_lo:.6g}, {new_hi:.6g}): outside it the profile is "
+                     f"not real or decreases near x = 0 (default range ({lo:g}, {hi:g}))")
+    profile.range_notes = tuple(notes)
+    why = profile._near_origin_ok(mids)
+    if why == "complex":
+        raise ProfileError(f"profile {profile.name!r} is not real near x = 0 (at x = 1e-6 .. 5e-2 and the "
+                           f"parameter values tried): a gap must be a real function")
+    if why == "decreasing":
+        raise InadmissibleProfileError(
+            f"profile {profile.name!r} decreases arbitrarily close to x = 0 (f'(x) < 0 at some x in "
+            f"(1e-6, 1e-4) for every parameter value tried): no compact contact exists for any "
+            f"half-width; the method needs f' >= 0 on (0, a)")
 
 
 def _power_limit(d):

@@ -87,19 +87,130 @@ def _mpf(v):
     return mpmath.mpf(sp.N(v, mpmath.mp.dps + 10)) if not isinstance(v, mpmath.mpf) else v
 
 
+class NumericProfile:
+    """The profile at numeric parameter values, read from its expression and
+    *not* from the engine's pieces: f, f' and f'' as mpmath callables of x,
+    and :meth:`kinks`, the breakpoints in an interval found numerically at
+    this point (the zeros of every switching function: each relation of a
+    Piecewise, after Abs/Min/Max/sign/Heaviside are rewritten as Piecewise).
+
+    This is what the references use: the engine splits the profile once, at
+    one sample parameter point (:meth:`~.profile.Profile._split`); a reference
+    that reused that split could not disagree with it where the split is
+    wrong (a condition on the parameters, breakpoints in another order).
+
+    >>> x = sp.Symbol("x", positive=True)
+    >>> npf = NumericProfile(sp.Abs(x - 1) + x, {})
+    >>> [mpmath.nstr(k, 15) for k in npf.kinks(0, 3)]
+    ['1.0']
+    """
+
+    #: samples of each switching function per interval searched
+    SAMPLES = 64
+
+    def __init__(self, profile, values: dict):
+        from .profile import expose_kinks
+        expr = profile.expr if hasattr(profile, "expr") else expose_kinks(profile)
+        pv = {k: v for k, v in values.items() if k not in (S.x, S.a, S.E_star)}
+        e = expr.xreplace(pv)
+        if e.has(sp.Piecewise):
+            e = sp.piecewise_fold(e)
+        self.expr = e
+        self.f = sp.lambdify(S.x, e, "mpmath")
+        self.f1 = sp.lambdify(S.x, sp.diff(e, S.x), "mpmath")
+        self.f2 = sp.lambdify(S.x, sp.diff(e, S.x, 2), "mpmath")
+        rels = {r for r in e.atoms(sp.Rel) if r.has(S.x)}
+        self._switches = [sp.lambdify(S.x, r.lhs - r.rhs, "mpmath") for r in rels]
+        self._found: list = []
+        self._searched = mpmath.mpf(0)
+
+    def kinks(self, lo, hi):
+        """The breakpoints in (lo, hi), ascending, at the working precision
+        (to 80 digits, found once): sign changes of each switching function
+        on a grid of the searched interval (0 or the end of the last search up
+        to ``hi``: :data:`SAMPLES` evenly spaced points and 4 :data:`SAMPLES`
+        log-spaced ones from 1e-15 of its end), solved by bisection + secant.
+        Two zeros of one switching function between neighbouring grid points
+        are not seen (they would be a switch on and off within 1.4 % of x)."""
+        hi = mpmath.mpf(hi)
+        if self._switches and hi > self._searched:
+            with mpmath.workdps(80):
+                top = max(hi, 2 * self._searched)
+                low = self._searched
+                grid = {low + (top - low) * k / self.SAMPLES for k in range(self.SAMPLES + 1)}
+                g0 = max(low, top * mpmath.mpf(10)**-15)
+                grid |= {g0 * (top / g0)**(mpmath.mpf(k) / (4 * self.SAMPLES)) for k in range(4 * self.SAMPLES + 1)}
+                grid = sorted(grid)
+                for g in self._switches:
+                    vals = []
+                    for xv in grid:
+                        try:
+                            vals.append(mpmath.re(g(xv)))
+                        except (ValueError, ZeroDivisionError):
+                            vals.append(None)
+                    for (x0, v0), (x1, v1) in zip(zip(grid, vals), zip(grid[1:], vals[1:])):
+                        if v0 is None or v1 is None:
+                            continue
+                        if v1 == 0 and x1 > 0:
+                            self._add(x1)
+                        elif v0 * v1 < 0:
+                            self._add(_sign_change(g, x0, x1))
+                self._searched = top
+        return [+k for k in self._found if lo < k < hi]
+
+    def _add(self, xv):
+        if xv > 0 and all(abs(xv - k) > abs(k) * mpmath.mpf(10)**-60 for k in self._found):
+            self._found.append(xv)
+            self._found.sort()
+
+
+def inside(fn, lo, hi):
+    """``fn`` restricted to the open piece (lo, hi): its argument is kept
+    10**-dps (relative) inside, so a node that rounds onto a breakpoint still
+    takes this piece's branch of a Piecewise (the worn cylinder's f' is 0 on
+    the flat and b/R at x = b)."""
+    def g(t):
+        d = hi * mpmath.mpf(10)**(-mpmath.mp.dps)
+        return fn(min(max(t, lo + d), hi - d))
+    return g
+
+
+def _sign_change(g, x0, x1):
+    """A zero of g in the sign-change bracket [x0, x1] (bisection, then secant)."""
+    g0 = mpmath.re(g(x0))
+    for _ in range(40):
+        m = (x0 + x1) / 2
+        gm = mpmath.re(g(m))
+        if gm == 0:
+            return m
+        if (gm < 0) == (g0 < 0):
+            x0, g0 = m, gm
+        else:
+            x1 = m
+    try:
+        r = mpmath.findroot(lambda v: mpmath.re(g(v)), (x0, x1), solver="anderson", verify=False)
+        if x0 <= r <= x1:
+            return r
+    except (ZeroDivisionError, ValueError):
+        pass
+    return (x0 + x1) / 2
+
+
 def force_quad(profile, values: dict, dps: int = 50):
-    """Eq. (10*) by tanh-sinh quadrature after t = a sin(phi), split at the
-    breakpoints: E* a int_0^{pi/2} sin(phi) f'(a sin(phi)) dphi."""
+    """Eq. (10*) by tanh-sinh quadrature after t = a sin(phi):
+    E* a int_0^{pi/2} sin(phi) f'(a sin(phi)) dphi, split at the breakpoints
+    that :class:`NumericProfile` finds at this point (independent of the
+    engine's split of the profile into pieces)."""
     with mpmath.workdps(dps + 10):
         A = _mpf(values[S.a])
         E = _mpf(values.get(S.E_star, 1))
-        fns, breaks = profile.mp_functions(values, derivative=1)
-        edges = [mpmath.mpf(0)] + [bp for bp in breaks if bp < A] + [A]
+        npf = NumericProfile(profile, values)
+        edges = [mpmath.mpf(0)] + npf.kinks(0, A) + [A]
         total = mpmath.mpf(0)
         for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
-            fn = fns[i]
+            fn = inside(npf.f1, lo, hi)
             p0, p1 = mpmath.asin(lo / A), mpmath.asin(hi / A)
-            integrand = lambda ph, fn=fn: mpmath.sin(ph) * fn(A * mpmath.sin(ph))  # noqa: E731
+            integrand = lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph))  # noqa: E731
             total += quad0(integrand, [p0, p1]) if i == 0 else mpmath.quad(integrand, [p0, p1], maxdegree=10)
         return +(E * A * total)
 
@@ -109,14 +220,40 @@ def pressure_quad(dP, breaks, values: dict, dps: int = 50):
 
     ``dP`` is an mpmath callable of s (the derivative of the force law)."""
     with mpmath.workdps(dps + 10):
+        work = mpmath.mp.dps
         A, X = _mpf(values[S.a]), abs(_mpf(values[S.x]))
-        W = mpmath.sqrt(A**2 - X**2)
-        pts = [mpmath.mpf(0)] + [mpmath.sqrt(bp**2 - X**2) for bp in breaks if X < bp < A] + [W]
+        with mpmath.workdps(2 * work + 10):
+            W = mpmath.sqrt(A**2 - X**2)
+            inner = [mpmath.sqrt(bp**2 - X**2) for bp in breaks if X < bp < A]
 
         def integrand(w):
             sv = mpmath.sqrt(X**2 + w**2)
             return dP(sv) / sv
-        return +(quad0(integrand, pts) / mpmath.pi)
+        if not inner:
+            return +(quad0(integrand, [mpmath.mpf(0), W]) / mpmath.pi)
+        # nodes that round past the first breakpoint would take the other branch
+        total = quad0(inside(integrand, mpmath.mpf(0), inner[0]), [mpmath.mpf(0), inner[0]])
+        for lo, hi in zip(inner, inner[1:] + [W]):
+            total += offset_quad(integrand, lo, hi, work)
+        return +(total / mpmath.pi)
+
+
+def offset_quad(fn, lo, hi, work):
+    """int_lo^hi fn over a piece that starts at a breakpoint, where the
+    integrand may be singular like 1/sqrt(w - lo) (a slope jump of the
+    profile): integrated in the offset v = w - lo = t**2, with lo held to twice the
+    working precision and fn evaluated there, so that nodes within 10**-dps
+    of lo still fall on the right side of the singularity (before: the
+    pressure behind a kink to 20 of 30 digits)."""
+    with mpmath.workdps(2 * work + 10):
+        width = hi - lo
+    top = width * (1 - mpmath.mpf(10)**(-work))
+
+    def g(t):   # v = t**2: a 1/sqrt(v) singularity becomes smooth
+        with mpmath.workdps(2 * work + 10):
+            val = 2 * t * fn(lo + min(t * t, top))
+        return +val
+    return mpmath.quad(g, [0, mpmath.sqrt(width)], maxdegree=10)
 
 
 def gap_quad(f, dP, breaks, values: dict, dps: int = 50):
@@ -124,8 +261,15 @@ def gap_quad(f, dP, breaks, values: dict, dps: int = 50):
     with mpmath.workdps(dps + 10):
         A, X = _mpf(values[S.a]), abs(_mpf(values[S.x]))
         E = _mpf(values.get(S.E_star, 1))
-        pts = [mpmath.mpf(0)] + [bp for bp in breaks if bp < A] + [A]
-        I = quad0(lambda sv: mpmath.acosh(X / sv) * dP(sv), pts)
+        work = mpmath.mp.dps
+        inner = [bp for bp in breaks if bp < A]
+
+        def integrand(sv):
+            return mpmath.acosh(X / sv) * dP(sv)
+        first = inner[0] if inner else A
+        I = quad0(inside(integrand, mpmath.mpf(0), first) if inner else integrand, [mpmath.mpf(0), first])
+        for lo, hi in zip(inner, inner[1:] + [A]):
+            I += offset_quad(integrand, lo, hi, work)
         return +(f(X) - 2 * I / (mpmath.pi * E))
 
 

@@ -45,6 +45,13 @@ class VerificationRecord:
         return bool(self.digits) and self.min_digits >= self.required
 
     def __str__(self):
+        if not self.points:
+            return (f"NOT verified: no admissible point could be checked against {self.reference} "
+                    f"(a verification with 0 points never counts)")
+        if not self.passed:
+            return (f"FAILED verification at {len(self.points)} random admissible points against "
+                    f"{self.reference} ({self.dps} digits): only {self.min_digits:.1f} digits agree "
+                    f"(required {self.required})")
         return (f"verified at {len(self.points)} random admissible points against "
                 f"{self.reference} ({self.dps} digits): >= {self.min_digits:.1f} digits agree")
 

@@ -13,6 +13,7 @@ ball, so the stable form just reaches the target at a lower precision.
 
 Supported: + - * /, powers, sqrt, exp, log, trigonometric, hyperbolic and
 their inverses, gamma / loggamma, elliptic_k / elliptic_e, 2F1 (``hyper``),
+Bessel J, I, K, Y (real argument),
 Piecewise (conditions decided on balls; where a ball straddles a
 breakpoint the union of the branches is returned, which encloses the value
 of a continuous piecewise function), and the stable primitives carlson_rf,
@@ -69,7 +70,10 @@ def to_arb(v):
     if isinstance(v, Fraction):
         return arb(flint.fmpq(v.numerator, v.denominator))
     if isinstance(v, mpmath.mpf):
-        man, exp = v.man_exp
+        if not mpmath.isfinite(v):
+            raise CertificationError(f"non-finite input {v}")
+        sign, man, exp, _ = v._mpf_      # man_exp drops the sign
+        man = -man if sign else man
         return arb(flint.fmpz(int(man))) * arb(2) ** int(exp) if exp >= 0 else \
             arb(flint.fmpz(int(man))) / arb(2) ** int(-exp)
     if isinstance(v, str):
@@ -214,6 +218,11 @@ def compile_arb(expr, args):
             meth = {carlson_rf: acb.elliptic_rf, carlson_rd: acb.elliptic_rd,
                     carlson_rg: acb.elliptic_rg}[type(e)]
             return lambda v: _real(meth(*[acb(f(v)) for f in fx]))
+        if isinstance(e, (sp.besselj, sp.besseli, sp.besselk, sp.bessely)):
+            fo, fz = build(e.args[0]), build(e.args[1])
+            meth = {sp.besselj: "bessel_j", sp.besseli: "bessel_i", sp.besselk: "bessel_k",
+                    sp.bessely: "bessel_y"}[type(e)]
+            return lambda v: getattr(fz(v), meth)(fo(v))
         if isinstance(e, gamma_ratio):
             fu, fv = build(e.args[0]), build(e.args[1])
             return lambda v: fu(v).gamma() * fv(v).rgamma()

@@ -1,0 +1,130 @@
+"""The second pull-off method, independent of :func:`.equilibria.minimum`:
+a brute-force search that shares nothing with it (no dP/da, no closed form,
+no subdivision, no breakpoints of the engine's split).  The closed-form
+pull-offs are verified against it, and the numeric ones are reported with
+the number of digits in which the two methods agree.
+"""
+from __future__ import annotations
+
+import math
+
+import mpmath
+
+from ..core.errors import NoPullOffError, VerificationError
+from ..core.roots import Outside, golden_minimum
+from .force_law import GUARD, PullOff
+
+#: points of the brute-force grid of method B
+GRID_POINTS = 241
+
+
+def _float_P0(quad):
+    """P0(a) of the quadrature law in float64 (Eq. 10* after t = a sin phi, a
+    fixed double-exponential rule of 97 nodes per piece, the pieces cut at
+    the breakpoints the profile's expression has at this point): the cheap
+    function the grid of :func:`minimum_by_grid` is sampled with."""
+    import numpy as np
+    import sympy as sp
+    from ..core import symbols as S
+    npf = quad.base.numeric_profile
+    E = float(quad.base.E)
+    f1 = sp.lambdify(S.x, sp.diff(npf.expr, S.x), "numpy")
+    t = np.linspace(-3.0, 3.0, 97)
+    u = np.tanh(np.pi / 2 * np.sinh(t))
+    w = (np.pi / 2 * np.cosh(t) / np.cosh(np.pi / 2 * np.sinh(t))**2) * (t[1] - t[0])
+    kinks = [float(k) for k in quad.breaks()]
+
+    def P0(A):
+        A = float(A)
+        edges = [0.0] + [k for k in kinks if k < A] + [A]
+        total = 0.0
+        with np.errstate(all="ignore"):
+            for lo, hi in zip(edges[:-1], edges[1:]):
+                p0, p1 = math.asin(min(lo / A, 1.0)), math.asin(min(hi / A, 1.0))
+                ph = (p0 + p1) / 2 + (p1 - p0) / 2 * u
+                vals = np.sin(ph) * np.broadcast_to(np.asarray(f1(A * np.sin(ph)), dtype=complex), ph.shape)
+                if np.any(np.abs(vals.imag) > 1e-9 * (np.abs(vals.real) + 1e-300)):
+                    raise Outside
+                v = np.where(np.isfinite(vals.real), vals.real, 0.0)
+                total += (p1 - p0) / 2 * float(np.dot(w, v))
+        return E * A * total
+    return P0
+
+
+def _parabolic_polish(P, A, h, steps: int = 5):
+    """Successive parabolic interpolation of a smooth minimum from a location
+    ``A`` known to about ``h``: each step fits P at A - h, A, A + h and moves
+    to the vertex; h becomes the size of the move (quadratic convergence),
+    but not below 10**(-dps/3) A, where rounding in P (10**-dps) starts to
+    move the vertex: the location ends near 10**(-2 dps/3)."""
+    for _ in range(steps):
+        pm, p0, pp = P(A - h), P(A), P(A + h)
+        curv = pp - 2 * p0 + pm
+        if not curv > 0:
+            raise VerificationError(f"P(a) is not convex near its grid minimum a = {mpmath.nstr(A, 12)}")
+        step = h * (pm - pp) / (2 * curv)
+        A = A + step
+        h = max(abs(step), A * mpmath.mpf(10)**(-(mpmath.mp.dps // 3)))
+    return A
+
+
+def minimum_by_grid(law, dps: int) -> PullOff:
+    """The second, independent pull-off: shares nothing with :func:`minimum`
+    (no dP/da, no closed form, no subdivision, no breakpoints of the engine).
+    On the quadrature force law (10*) minus Phat: P on a dense grid
+    (:data:`GRID_POINTS` log-spaced points, 1e-8 .. 1e8 times the scale, in
+    float64), cut where P0 stops increasing or stops being real (its own
+    admissible range); golden-section search around the lowest grid point;
+    then at full precision (mpmath quadrature) either the breakpoint the
+    profile's expression has there (found numerically at this point; a kink
+    minimum, confirmed by one-sided differences) or successive parabolic
+    interpolation (a stationary minimum)."""
+    quad = law.quadrature_law
+    P0f = _float_P0(quad)
+    B1 = float(quad.B1()) if quad.B1 is not None else 0.0
+
+    def Pf(A):
+        return P0f(A) - B1 * math.sqrt(float(A))
+    s = float(quad.scale)
+    grid = [s * 10.0**(-8 + 16 * k / (GRID_POINTS - 1)) for k in range(GRID_POINTS)]
+    pts, last0 = [], None
+    for A in grid:
+        try:
+            p0 = P0f(A)
+        except (Outside, ValueError, ZeroDivisionError):
+            break
+        if not math.isfinite(p0) or (last0 is not None and p0 < last0):
+            break
+        last0 = p0
+        pts.append((A, p0 - B1 * math.sqrt(A)))
+    if len(pts) < 3:
+        raise NoPullOffError("the quadrature force law is real and rising at fewer than 3 grid points")
+    k = min(range(len(pts)), key=lambda i: pts[i][1])
+    if pts[k][1] >= 0:
+        raise NoPullOffError("P(a) is nowhere negative on the grid: no finite pull-off")
+    if k == len(pts) - 1:
+        kind, A = "end", pts[k][0]
+    else:
+        lo, hi = pts[max(k - 1, 0)][0], pts[k + 1][0]
+        A = float(golden_minimum(Pf, lo, hi, tol=hi * 1e-7))
+        kind = "stationary"
+    # the polish runs at 3/2 of the digits: from function values alone the
+    # location comes to 2/3 of the working digits (see _parabolic_polish)
+    with mpmath.workdps(3 * dps // 2 + GUARD):
+        A = mpmath.mpf(A)
+        if kind != "end":
+            near = [b for b in quad.breaks() if abs(b - A) <= A * mpmath.mpf("1e-6")]
+            if near:
+                A = near[0]
+                h = A * mpmath.mpf(10)**(-dps // 2)
+                if not (quad.P(A) - quad.P(A - h) < 0 < quad.P(A + h) - quad.P(A)):
+                    raise VerificationError("the kink at the grid minimum is not a minimum of the quadrature law")
+                kind = "kink"
+            else:
+                A = _parabolic_polish(quad.P, A, A * mpmath.mpf("1e-6"))
+        Pm = quad.P(A)
+        return PullOff(+Pm, -Pm, +A, kind, None, (), "dense float64 grid + golden section + parabolic polish "
+                                                        "on the quadrature law")
+
+
+__all__ = ["minimum_by_grid", "GRID_POINTS"]
