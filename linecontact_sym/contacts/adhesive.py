@@ -33,7 +33,7 @@ import mpmath
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.conversion import exact_number, float_values
+from ..core.conversion import exact_number, float_values, point_value
 from ..core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
                            VerificationError)
 from ..method.derivation import Derivation, values_by_name
@@ -202,7 +202,7 @@ class AdhesiveLineContact(Contact):
             raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
         for s in self.variables:
             if isinstance(vals[s], float):
-                vals[s] = exact_number(vals[s])
+                vals[s] = point_value(vals[s])
             if not to_sympy(vals[s]).is_number:
                 raise DomainError(f"{s.name} = {vals[s]} is not a number")
         return vals

@@ -56,6 +56,7 @@ from dataclasses import dataclass
 import mpmath
 
 from ..core.conversion import to_mpf
+from ..core.extras import require
 from ..core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
 from ..core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
@@ -141,7 +142,7 @@ class _Balls:
             d1 = sp.diff(expr, S.a)
             self.f = compile_arb(d1, [S.a])
             self.df = compile_arb(sp.diff(d1, S.a), [S.a])
-            self.flint = __import__("flint")
+            self.flint = require("certified", "flint")
         except Exception as exc:  # MissingExtraError, CertificationError: the numeric method
             self.reason = f"{type(exc).__name__}: {str(exc).splitlines()[0]}"
             self.f = None

@@ -17,6 +17,7 @@ from ..core.errors import BudgetExceeded, DomainError
 from ..method import transforms as T
 from ..method.derivation import Derivation, derive, fallback_step
 from ..method.profile import Profile
+from ..numeric.exports import lambdify_numpy
 from ..method.rules import Problem, Step
 from ..method.verification import REQUIRED_DIGITS, verify
 from ..parsing import to_sympy
@@ -143,11 +144,11 @@ class LineContact(Contact):
         cache = self._caches()
         if "_adm_fns" not in cache:
             params = list(self.params)
-            fprime = sp.lambdify([S.x] + params, sp.diff(self.profile.expr, S.x), "numpy")
+            fprime = lambdify_numpy(sp.diff(self.profile.expr, S.x), [S.x] + params, stable=False)
             fd = self.derivation("force")
             slope = None
             if fd.closed_form and not fd.expr.has(sp.Integral):
-                slope = sp.lambdify([S.a, S.E_star] + params, sp.diff(fd.expr, S.a), ["scipy", "numpy"])
+                slope = lambdify_numpy(sp.diff(fd.expr, S.a), [S.a, S.E_star] + params, stable=False)
             cache["_adm_fns"] = (fprime, slope, [p.name for p in params])
         return cache["_adm_fns"]
 

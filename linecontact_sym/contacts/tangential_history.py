@@ -13,7 +13,7 @@ import scipy.special
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.conversion import to_mpf
+from ..core.conversion import exact_number, to_mpf
 from ..core.errors import DomainError, GrossSlidingError, LineContactError
 from ..core.roots import root_in_log
 from ..numeric.exports import make_callable
@@ -267,7 +267,7 @@ def reversal(t, Q_max, Q, values, branch) -> TangentialState:
 def to_sympy_number(v):
     """An exact SymPy number for a value (floats as the rational of their
     shortest decimal, like the rest of the package)."""
-    return sp.nsimplify(v, rational=True) if isinstance(v, float) else to_sympy(v)
+    return exact_number(v) if isinstance(v, float) else to_sympy(v)
 
 
 @dataclass

@@ -51,6 +51,24 @@ def exact_number(v) -> sp.Basic:
     return to_basic(v)
 
 
+def point_value(v) -> sp.Basic:
+    """A value at which a quantity is *evaluated*, as an exact SymPy number:
+    a Python float is its exact binary value (the number the float64, mpmath
+    and Arb paths all see), other values go through :func:`to_basic`.
+    Parameters that appear in *displayed* expressions (a work of adhesion, a
+    friction coefficient) and numbers typed as text use
+    :func:`exact_number` (the shortest decimal) instead.
+
+    >>> point_value(0.5), point_value(0.1) == sp.Rational(1, 10)
+    (1/2, False)
+    """
+    if isinstance(v, float):
+        if v != v or v in (float("inf"), float("-inf")):
+            raise DomainError(f"expected a finite number, got {v}")
+        return sp.Rational(v)
+    return to_basic(v)
+
+
 def nsimplify_basic(e, **kw) -> sp.Basic:
     """``sympy.nsimplify`` for a value that is already a SymPy object or a
     float (never a string: ``nsimplify`` would evaluate text as code)."""
@@ -132,4 +150,4 @@ def float_values(vals: dict, digits: int) -> dict:
     return out
 
 
-__all__ = ["to_basic", "exact_number", "nsimplify_basic", "rational", "to_mpf", "real_mpf", "float_values"]
+__all__ = ["to_basic", "exact_number", "point_value", "nsimplify_basic", "rational", "to_mpf", "real_mpf", "float_values"]

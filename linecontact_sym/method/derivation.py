@@ -18,7 +18,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.budget import run_with_budget
-from ..core.conversion import exact_number, float_values, real_mpf
+from ..core.conversion import float_values, point_value, real_mpf
 from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError
 from ..parsing import to_sympy
 from .rules import RULES, NotApplicable, Problem, Step
@@ -119,14 +119,15 @@ def fallback_step(why: str = "no closed form found") -> Step:
 
 def values_by_name(symbols, values):
     """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
-    floats become the exact rational of their shortest decimal repr (0.1 -> 1/10)."""
+    a float is its exact binary value (:func:`~linecontact_sym.core.conversion.point_value`),
+    as in every evaluation path of the package."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = exact_number(v) if isinstance(v, float) else to_sympy(v)
+        out[sym] = point_value(v) if isinstance(v, float) else to_sympy(v)
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
