@@ -280,6 +280,12 @@ class LineContact(Contact):
         from .adhesive import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
 
+    def stresses(self, tangential=None, **kw):
+        """The subsurface stress field under this contact (plane strain), with
+        an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses`."""
+        from .stresses import StressField
+        return StressField(self, tangential, **kw)
+
     def check_admissible(self, dps: int = 20, **values):
         """See :func:`linecontact_sym.contacts.admissibility.check_admissible`."""
         return admissibility.check_admissible(self, dps, **values)

@@ -20,6 +20,12 @@ Conventions (Popov 2017):
 * ``R``, ``b``, ``n``, ``c``, ``theta`` -- the paper's profile parameters:
   radius, flat half-width, power-law exponent, power-law coefficient c_n and
   wedge angle.
+* ``z``      -- depth below the surface (z > 0 into the body), for the
+  subsurface stresses.
+* ``zeta``   -- the complex coordinate x + i z of the complex potentials
+  (no assumptions: complex).
+* ``nu``     -- Poisson's ratio (plane strain: sigma_y = nu (sigma_x + sigma_z)).
+* ``mu``     -- coefficient of friction (sliding: q = mu p).
 """
 from __future__ import annotations
 
@@ -37,6 +43,11 @@ n = sp.Symbol("n", positive=True)
 c = sp.Symbol("c", positive=True)
 theta = sp.Symbol("theta", positive=True)
 
+z = sp.Symbol("z", positive=True)
+zeta = sp.Symbol("zeta")
+nu = sp.Symbol("nu", positive=True)
+mu = sp.Symbol("mu", positive=True)
+
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
 
@@ -45,7 +56,10 @@ LATEX_NAMES = {
     E_star: r"E^{*}",
     gamma: r"\gamma_{12}",
     theta: r"\theta",
+    zeta: r"\zeta",
+    nu: r"\nu",
+    mu: r"\mu",
 }
 
-__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta",
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "z", "zeta", "nu", "mu",
            "RESERVED", "LATEX_NAMES"]
