@@ -19,7 +19,7 @@ from ..method.verification import verify_many
 from . import stress_field as F
 from .kolosov import density_breakpoints, symbolic_stresses, t
 from .sampling import point_sampler
-from .stress_reference import flamant_stresses
+from .stress_reference import flamant_stresses, punch_potentials
 
 
 def sampler(sf):
@@ -100,12 +100,42 @@ def _mp_tractions(sf, vals, dps):
 
 
 def flamant_reference(sf):
+    """``reference(vals, dps) -> {sigma_x, sigma_z, tau_xz}``: the Flamant
+    quadrature of the tractions (independent of the closed forms) where the
+    pressure is closed; otherwise Popov's punch superposition in mpmath
+    (:func:`.stress_reference.punch_potentials`, no nested quadrature)."""
+    if not sf.contact.derivation("pressure").closed_form and sf.tangential in (None, "sliding", "partial_slip"):
+        return _punch_reference(sf)
+
     def reference(vals, dps):
         with mpmath.workdps(dps + 10):
             p, q, breaks = _mp_tractions(sf, vals, dps)
             num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
             sx, sz, txz = flamant_stresses(p, q, *num, breaks=breaks, dps=dps)
         return {"sigma_x": sx, "sigma_z": sz, "tau_xz": txz}
+    return reference
+
+
+def _punch_reference(sf):
+    from .force_law import ForceLaw
+    from .kolosov import kolosov_stresses
+
+    def reference(vals, dps):
+        with mpmath.workdps(dps + 10):
+            fixed = {k: v for k, v in vals.items() if k in (S.E_star,) + tuple(sf.contact.params)}
+            law = ForceLaw.from_contact(sf.contact, fixed)
+            num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
+            G, dG = punch_potentials(law.dP, *num, breaks=law.breaks(), dps=dps)
+            H = dH = 0
+            if sf.tangential is not None:
+                m = mpmath.mpf(sp.N(sf.mu.xreplace(vals), dps + 20))
+                H, dH = m * G, m * dG
+                if sf.tangential == "partial_slip":
+                    cv = mpmath.mpf(sp.N(sf.stick.xreplace(vals), dps + 20))
+                    Gc, dGc = punch_potentials(law.dP, cv, num[1], num[2], law.breaks(), dps)
+                    H, dH = H - m * Gc, dH - m * dGc
+            sx, sz, txz = kolosov_stresses(G, dG, H, dH, num[2], mpmath.re, mpmath.im, mpmath.pi)
+        return {"sigma_x": +sx, "sigma_z": +sz, "tau_xz": +txz}
     return reference
 
 
@@ -171,9 +201,27 @@ def _potential(sf, vals, a_value):
                                  sp.lambdify(S.zeta, sp.diff(G, S.zeta), "numpy"), float(a_value))
     from ..numeric.exports import lambdify_numpy
     D = sf._density().xreplace({k: v for k, v in at.items() if k != S.a})
-    breaks = [float(sp.N(b.xreplace(at))) for b in density_breakpoints(D)]
+    bps = [sp.nsimplify(b.xreplace(at)) for b in density_breakpoints(D)]
+    near = {float(b): (_offset_density(D, b, 1), _offset_density(D, b, -1)) for b in bps}
     dens = lambdify_numpy(D.subs(S.a, t), [t])
-    return F.PunchPotential(dens, float(a_value), breaks)
+    return F.PunchPotential(dens, float(a_value), [float(b) for b in bps], near=near)
+
+
+def _offset_density(D, b, side):
+    """D(b + side*d) as a float64 function of the offset d > 0, the
+    arguments of its square roots put over one denominator and factored, so
+    that no t - b is formed (the density may be singular at a kink, b)."""
+    from ..numeric.exports import lambdify_numpy
+    d = sp.Dummy("d", positive=True)
+    e = D.subs(S.a, b + side * d)
+    if e.has(sp.Piecewise):
+        return None
+    e = e.replace(lambda q: q.is_Pow and q.exp.is_Rational and q.exp.q == 2,
+                  lambda q: sp.factor(sp.together(sp.expand(q.base)))**q.exp)
+    try:
+        return lambdify_numpy(e, [d])
+    except Exception:  # no float64 export of this form: the plain density is used there
+        return None
 
 
 def build_field(sf, vals) -> F.FieldEvaluator:

@@ -42,7 +42,7 @@ SURFACE_DEPTH = 1e-12
 _CHUNK = 2048
 
 
-def _ts_levels(hs=(4, 8, 16, 32, 64), tmax=3.2):
+def _ts_levels(hs=(4, 8, 16, 32, 64), tmax=4.0):
     """Nested tanh-sinh node sets on (0, 1): per level the new nodes v, w = 1 - v
     (ascending; both to full relative precision), weights (the level value is
     h * sum weight * f), the number of nodes below 1/2 and the weights
@@ -70,12 +70,14 @@ _LEVELS = _ts_levels()
 
 def _pieces(edges, c):
     """Per point the pieces [lo, hi] between fixed ``edges`` split at the
-    anchor ``c`` (arrays); a piece of zero length contributes nothing."""
+    anchor ``c`` (arrays), with the index of the fixed edge each end sits on
+    (-1: the end is the anchor); a piece of zero length contributes nothing."""
     out = []
-    for e0, e1 in zip(edges[:-1], edges[1:]):
+    for i, (e0, e1) in enumerate(zip(edges[:-1], edges[1:])):
         m = np.clip(c, e0, e1)
-        out.append((np.full_like(c, e0), m))
-        out.append((m, np.full_like(c, e1)))
+        fixed_lo, fixed_hi = np.full(c.shape, i), np.full(c.shape, i + 1)
+        out.append((np.full_like(c, e0), m, fixed_lo, np.where(m == e1, i + 1, -1)))
+        out.append((m, np.full_like(c, e1), np.where(m == e0, i, -1), fixed_hi))
     return out
 
 
@@ -109,15 +111,22 @@ class _Quadrature:
         c = self.anchor(x)
         F = np.zeros(x.size, complex)
         dF = np.zeros(x.size, complex)
-        for lo, hi in _pieces(self.edges, c):
+        for lo, hi, elo, ehi in _pieces(self.edges, c):
             idx = np.flatnonzero(hi > lo)
             if idx.size:
-                f, df = self._piece(x[idx], z[idx], c[idx], lo[idx], hi[idx])
+                f, df = self._piece(x[idx], z[idx], c[idx], lo[idx], hi[idx], elo[idx], ehi[idx])
                 F[idx] += f
                 dF[idx] += df
         return F, dF
 
-    def _piece(self, x, z, c, lo, hi):
+    def values(self, t, dlo, dhi, elo, ehi, half):
+        """The traction (or density) at the nodes t; ``dlo`` = t - lo on the
+        first ``half`` columns, ``dhi`` = hi - t on the others, ``elo``/``ehi``
+        the fixed edges at the ends (-1: none): a subclass may evaluate there
+        from the offsets."""
+        return self.fn(t)
+
+    def _piece(self, x, z, c, lo, hi, elo, ehi):
         ul, uh = np.arcsinh((lo - c) / z), np.arcsinh((hi - c) / z)
         L = uh - ul
         off = self.offset(x) - c
@@ -132,10 +141,13 @@ class _Quadrature:
             # t = c + z sinh(u) from the nearer end: sinh(u) - sinh(u0) = expm1(u - u0) (e^u0 + e^-u)/2,
             # so t - lo and hi - t keep their relative precision
             t = np.empty_like(u)
-            t[:, :half] = lo[rows, None] + zz * np.expm1(dlo) * (np.exp(u0) + emu[:, :half]) / 2
-            t[:, half:] = hi[rows, None] - zz * np.expm1(dhi) * (eu[:, half:] + np.exp(-u1)) / 2
+            d_lo = zz * np.expm1(dlo) * (np.exp(u0) + emu[:, :half]) / 2
+            d_hi = zz * np.expm1(dhi) * (eu[:, half:] + np.exp(-u1)) / 2
+            t[:, :half] = lo[rows, None] + d_lo
+            t[:, half:] = hi[rows, None] - d_hi
             d = off[rows, None] - zz * ((eu - emu) / 2)
-            f, ratio = self.integrands(x[rows, None], zz, t, d)
+            Dv = self.scale * self.values(t, d_lo, d_hi, elo[rows], ehi[rows], half)
+            f, ratio = self.integrands(x[rows, None], zz, t, d, Dv)
             f = f * (LL * zz * ((eu + emu) / 2))
             df = f * ratio
             sums = _sums(f, W, h), _sums(df, W, h)
@@ -178,10 +190,24 @@ class PunchPotential(_Quadrature):
     sqrt(zeta - t) sqrt(zeta + t) there) and mirrored: the traction is even,
     so G(-conj(zeta)) = -conj(G(zeta)) and G'(-conj(zeta)) = conj(G'(zeta))."""
 
-    def __init__(self, density, a, breaks=(), scale=1.0):
-        self.density, self.a, self.scale = density, float(a), scale
+    def __init__(self, density, a, breaks=(), scale=1.0, near=None):
+        self.fn, self.a, self.scale = density, float(a), scale
         inner = sorted(float(b) for b in breaks if 0 < float(b) < self.a)
         self.edges = [0.0] + inner + [self.a]
+        # near[edge] = (D(edge + d), D(edge - d)) as functions of the offset d: the density
+        # at nodes close to a breakpoint where it is singular, without forming t - edge
+        self.near = {i: near[e_] for i, e in enumerate(self.edges) for e_ in (near or {}) if e == e_}
+
+    def values(self, t, dlo, dhi, elo, ehi, half):
+        D = self.fn(t)
+        for i, (right, left) in self.near.items():
+            rows = np.flatnonzero(elo == i)
+            if rows.size and right is not None:
+                D[rows, :half] = right(dlo[rows])
+            rows = np.flatnonzero(ehi == i)
+            if rows.size and left is not None:
+                D[rows, half:] = left(dhi[rows])
+        return D
 
     def _fold(self, x):
         return np.abs(x)
@@ -198,12 +224,12 @@ class PunchPotential(_Quadrature):
     def offset(self, x):
         return x
 
-    def integrands(self, x, z, t, d):
+    def integrands(self, x, z, t, d, D):
         # zeta^2 - t^2 = (zeta - t)(zeta + t) = d (x + t) - z^2 + 2i x z  (d = x - t formed without
         # cancellation; Im = 2xz >= 0 exactly, so the principal root is sqrt(zeta - t) sqrt(zeta + t))
         K2 = (d * (x + t) - z * z) + 2j * (x * z)
         inv = np.conj(K2) / (K2.real**2 + K2.imag**2)
-        f = (self.scale * self.density(t)) * (np.sqrt(K2) * inv)
+        f = D * (np.sqrt(K2) * inv)
         return f, -(x + 1j * z) * inv
 
 
@@ -213,7 +239,7 @@ class CauchyPotential(_Quadrature):
     ``breaks``."""
 
     def __init__(self, traction, a, breaks=(), scale=1.0):
-        self.traction, self.a, self.scale = traction, float(a), scale
+        self.fn, self.a, self.scale = traction, float(a), scale
         inner = sorted(float(b) for b in breaks if -self.a < float(b) < self.a)
         self.edges = [-self.a] + inner + [self.a]
 
@@ -223,9 +249,9 @@ class CauchyPotential(_Quadrature):
     def offset(self, x):
         return x
 
-    def integrands(self, x, z, t, d):
+    def integrands(self, x, z, t, d, q):
         k = 1 / (d + 1j * z)                       # 1/(zeta - s), d = x - s
-        return (self.scale * self.traction(t)) * k, -k
+        return q * k, -k
 
 
 class ClosedPotential:

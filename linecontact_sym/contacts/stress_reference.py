@@ -92,4 +92,37 @@ def cauchy_quad(p, a, x, z, breaks=(), dps: int = 30):
         return +mpmath.quad(f, us)
 
 
-__all__ = ["flamant_stresses", "cauchy_quad"]
+def punch_potentials(dP, a, x, z, breaks=(), dps: int = 30):
+    """G(zeta) = int_0^a P'(t) (zeta^2 - t^2)^(-1/2) dt and G'(zeta) at
+    zeta = x + i z by tanh-sinh after t = c + z sinh(u), c = min(|x|, a),
+    split at c and at the breakpoints of P' (``dP`` an mpmath callable).
+    The high-precision evaluation of the field where the pressure has no
+    closed form (Popov's superposition, the formula of the float64 field
+    at any precision); not independent of it."""
+    with mpmath.workdps(dps + 10):
+        a, x, z = mpmath.mpf(a), mpmath.mpf(x), mpmath.mpf(z)
+        X = abs(x)
+        c = min(X, a)
+        pts = sorted({mpmath.mpf(0), a, c} | {mpmath.mpf(b) for b in breaks if 0 < b < a})
+        us = [mpmath.asinh((t - c) / z) for t in pts]
+        zeta = mpmath.mpc(X, z)
+        memo: dict = {}
+
+        def parts(u):
+            if u not in memo:
+                t = c + z * mpmath.sinh(u)
+                if not 0 <= t <= a:
+                    memo[u] = (0, 0)
+                else:
+                    k = mpmath.sqrt(zeta - t) * mpmath.sqrt(zeta + t)
+                    f = dP(t) * z * mpmath.cosh(u) / k
+                    memo[u] = (f, -zeta * f / k**2)
+            return memo[u]
+        G = mpmath.quad(lambda u: parts(u)[0], us)
+        dG = mpmath.quad(lambda u: parts(u)[1], us)
+        if x < 0:  # an even traction: G(-conj zeta) = -conj G(zeta), G'(-conj zeta) = conj G'(zeta)
+            G, dG = -mpmath.conj(G), mpmath.conj(dG)
+        return +G, +dG
+
+
+__all__ = ["flamant_stresses", "cauchy_quad", "punch_potentials"]

@@ -278,20 +278,39 @@ class StressField(Contact):
             return self.derivation(name).evalf(dps=dps, **values)
         return super().evaluate_at(name, dps, **values)
 
-    def peak_pressure(self, **values) -> float:
-        """p(0; a), the usual scale of the plots (Hertz: p0); the mean pressure
-        P/(2a) where p(0) is infinite (wedge, power laws with n < 1)."""
+    def reference_pressure(self, **values):
+        """``(value, name)``: p0 = p(0; a), the usual scale of the plots (Hertz:
+        the peak pressure), or the mean pressure p_m = P/(2a) where p(0) is
+        infinite (wedge, power laws with n < 1)."""
         fe = self.field(**values)
         v = -float(fe.components(np.array([0.0]), np.array([0.0]))["sigma_z"][0])
         if np.isfinite(v) and v < 1e6 * fe.mean_pressure:
-            return v
-        return fe.mean_pressure
+            return v, "p_0"
+        return fe.mean_pressure, "p_m"
 
-    def plot(self, quantity="von_mises", **kw):
-        """Contour map of a stress in (x/a, z/a): :func:`linecontact_sym.views.stress_plots.contour`."""
+    def _plot_values(self, kw):
+        names = {q.name for q in (S.a,) + self.variables + self.nu_symbols}
+        return {k: kw.pop(k) for k in list(kw) if k in names}
+
+    def plot(self, quantity="von_mises", mark_maximum=True, **kw):
+        """Contour map of a stress over (x/a, z/a), scaled by the reference
+        pressure, the verified maximum marked; parameters by name, other
+        keywords to :func:`linecontact_sym.views.stress_plots.contour`."""
         from ..views.stress_plots import contour
-        values = {k: kw.pop(k) for k in list(kw) if k in {s.name for s in (S.a,) + self.variables}}
-        return contour(self.field(**values), float(values["a"]), quantity, scale=self.peak_pressure(**values), **kw)
+        values = self._plot_values(kw)
+        scale, label = self.reference_pressure(**values)
+        if mark_maximum and quantity in F.CRITERIA:
+            m = self.maximum(quantity, **values)
+            kw.setdefault("mark", (m.x, m.z))
+        return contour(self.field(**values), float(values["a"]), quantity, scale=scale, scale_label=label, **kw)
+
+    def plot_axis(self, quantities=("sigma_x", "sigma_z", "principal_shear", "von_mises"), **kw):
+        """The stresses along the axis x = 0 against z/a:
+        :func:`linecontact_sym.views.stress_plots.axis_profile`."""
+        from ..views.stress_plots import axis_profile
+        values = self._plot_values(kw)
+        scale, label = self.reference_pressure(**values)
+        return axis_profile(self.field(**values), float(values["a"]), quantities, scale=scale, scale_label=label, **kw)
 
     # --------------------------------------------------------------- maxima
     def _derive_max(self, name):
