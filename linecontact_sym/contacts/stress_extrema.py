@@ -18,10 +18,11 @@ agree.  A grid argmax is never returned as the answer.
 
 The critical friction mu_c of a sliding contact is the smallest mu at which
 the largest value of the criterion lies on the surface; two ways again: a
-root (Brent) of D(mu) = (surface maximum) - (largest interior maximum) where
-the interior maximum crosses the surface value, and a bisection on the
-predicate "the global maximum (found by the check method) lies at z = 0",
-which also covers an interior maximum that merges into the surface.
+root (Brent) of D(mu) = (surface maximum) - (interior maximum, tracked in mu)
+where a surface value overtakes the interior maximum (or, where the interior
+maximum rises into the surface, the zero of its depth^2 extrapolated
+linearly), and a bisection on the predicate "the global maximum lies at
+z = 0" from the full search at each mu.
 """
 from __future__ import annotations
 
@@ -203,27 +204,49 @@ def critical_friction(criterion_at, a, mu_max=1.0, step=0.05, xtol=1e-9):
         raise LineContactError(f"the maximum stays below the surface up to mu = {mu_max}")
     lo, hi, track = prev_mu, float(mu), (prev.x, prev.z)
 
-    def deficit(mu):
-        m = find_maximum(criterion_at(mu), a, starts=[track])
+    def deficit(mu, start):
+        """surface maximum - interior maximum (tracked from ``start``), or None
+        when the interior maximum has gone (merged into the surface)."""
+        m = find_maximum(criterion_at(mu), a, starts=[start])
         if m.interior is None:
-            return None
-        return m.surface[0] - m.interior[0]
-    d_lo, d_hi = deficit(lo), deficit(hi)
-    kind = "crossing" if (d_lo is not None and d_hi is not None and d_lo < 0 < d_hi) else "merge"
-    # the check: bisection on the predicate "the global maximum is on the surface"
-    blo, bhi = lo, hi
-    while bhi - blo > 1e-7:
+            return None, start
+        return m.surface[0] - m.interior[0], (m.interior[1], m.interior[2])
+
+    # a bracket of the crossing D(mu) = 0, both ends with an interior maximum
+    blo, bhi, start, kind = lo, hi, track, "merge"
+    for _ in range(40):
+        d_hi, _s = deficit(bhi, start)
+        if d_hi is not None and d_hi > 0:
+            kind = "crossing"
+            break
         mid = (blo + bhi) / 2
-        m = state(mid, [track])
-        if m.on_surface:
+        d_mid, s_mid = deficit(mid, start)
+        if d_mid is None or d_mid > 0:
             bhi = mid
         else:
-            blo, track = mid, (m.x, m.z)
-    check = (blo + bhi) / 2
+            blo, start = mid, s_mid
+        if bhi - blo < 1e-9:
+            break
+    # the check: bisection on the predicate "the global maximum is on the surface"
+    plo, phi_, ptrack = lo, hi, track
+    while phi_ - plo > 1e-8:
+        mid = (plo + phi_) / 2
+        m = state(mid, [ptrack])
+        if m.on_surface:
+            phi_ = mid
+        else:
+            plo, ptrack = mid, (m.x, m.z)
+    check = (plo + phi_) / 2
     if kind == "crossing":
-        muc = optimize.brentq(lambda mu: deficit(mu), lo, hi, xtol=xtol)
-    else:
-        muc = check
+        muc = optimize.brentq(lambda mu: deficit(mu, start)[0], blo, bhi, xtol=xtol)
+    else:  # merge: the depth of the interior maximum extrapolated to zero (z^2 is linear in mu there)
+        mus = [blo - k * (bhi - blo + 1e-3) for k in (0, 1, 2)]
+        zs2 = []
+        for m_ in mus:
+            mm = find_maximum(criterion_at(m_), a, starts=[start])
+            zs2.append(mm.interior[2]**2 if mm.interior else np.nan)
+        coef = np.polyfit(mus, zs2, 1)
+        muc = float(-coef[1] / coef[0])
     return muc, check, _agree(muc, check), kind
 
 

@@ -18,13 +18,14 @@ or a quadrature evaluated for a whole array of points at once:
 Near the surface the kernels peak over a width z around the point; the
 substitution t = c + z sinh(u), anchored at the nearest point c of the
 segment, spreads the peak (it becomes analytic in a strip of half-width pi/2
-in u), and nested tanh-sinh levels in u (h = 1/4 ... 1/64 on each piece
-between the ends, the anchor and the breakpoints of the traction) handle the
-integrable end singularities of the density (t^(n-1) at 0, (t - b)^(-1/2) at
-a kink).  A point is accepted when two levels agree to :data:`FIELD_RTOL`
-(relative to the integral of the absolute integrand).  The distance t - end
-is formed from the node position, not by subtracting two large numbers.
-The surface (z = 0) is the limit z -> 0+: depths below
+in u), and nested tanh-sinh levels in u (h = 1/4 ... 1/64, nodes out to
+t = 4, on each piece between the ends, the anchor and the breakpoints of
+the traction) handle the integrable end singularities of the density
+(t^(n-1) at 0, (t - b)^(-1/2) at a kink).  A point is accepted when two
+levels agree to :data:`LEVEL_ACCEPT`.  The distance t - end is formed from
+the node position, not by subtracting two large numbers, and a density
+singular at a breakpoint can be given there as a function of that distance
+(``near``).  The surface (z = 0) is the limit z -> 0+: depths below
 :data:`SURFACE_DEPTH` times a are evaluated at that depth.
 """
 from __future__ import annotations
@@ -34,9 +35,10 @@ import numpy as np
 from ..core.errors import DomainError
 from .kolosov import kolosov_stresses
 
-#: target relative error of the quadratures (relative to the integral of the absolute integrand)
-FIELD_RTOL = 1e-12
-_ACCEPT = FIELD_RTOL**0.5
+#: two successive tanh-sinh levels agreeing to this (relative to the integral of the absolute
+#: integrand) accept the finer one, whose error is then about its square (the error of
+#: tanh-sinh roughly squares from one level to the next): ~1e-14 against mpmath in the tests
+LEVEL_ACCEPT = 1e-8
 #: relative depth z/a at which the surface limit z -> 0+ is evaluated
 SURFACE_DEPTH = 1e-12
 _CHUNK = 2048
@@ -166,9 +168,7 @@ class _Quadrature:
             err = np.abs(newF - F[rows]) + zr * np.abs(newdF - dF[rows])
             F[rows], dF[rows] = newF, newdF
             A[rows] = A[rows] / 2 + a1
-            # the error of tanh-sinh roughly squares from one level to the next: the finer
-            # level is accepted when the difference is below sqrt(FIELD_RTOL)
-            rows = rows[~(err <= _ACCEPT * A[rows])]
+            rows = rows[~(err <= LEVEL_ACCEPT * A[rows])]
             if rows.size == 0:
                 break
         return F, dF
@@ -346,4 +346,4 @@ class FieldEvaluator:
 
 
 __all__ = ["PunchPotential", "CauchyPotential", "ClosedPotential", "Scaled", "FieldEvaluator", "principal_shear",
-           "principal_stresses", "von_mises", "tresca", "CRITERIA", "FIELD_RTOL", "SURFACE_DEPTH"]
+           "principal_stresses", "von_mises", "tresca", "CRITERIA", "LEVEL_ACCEPT", "SURFACE_DEPTH"]
