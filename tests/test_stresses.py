@@ -260,3 +260,28 @@ def test_to_numeric_field_and_plots(sliding, tmp_path):
     ax.figure.savefig(tmp_path / "vm.png")
     assert ax.get_xlabel() == "$x/a$" and ax2.get_ylabel() == "depth $z/a$"
     plt.close("all")
+
+
+def test_singular_tractions_give_unbounded_maxima():
+    """The wedge: the pressure is logarithmic at the tip, so sigma_x, sigma_z and with them von Mises
+    grow without bound there; tau_1 stays bounded, E* tan(theta)/pi on the axis at the surface."""
+    sf = lcs.wedge(verify=False).stresses(verify=False)
+    vm = sf.maximum("von_mises", a=1, E_star=1, theta=0.2, nu=0.3)
+    assert vm.unbounded and vm.value == math.inf and abs(vm.x) < 1e-6
+    t1 = sf.maximum("principal_shear", a=1, E_star=1, theta=0.2)
+    assert not t1.unbounded and abs(t1.value - math.tan(0.2) / math.pi) < 1e-7
+
+
+def test_principal_shear_reaches_the_surface_at_mu_one_over_sqrt7(sliding):
+    """At mu = 1/sqrt(7) the interior maximum of tau_1 is mu p0, the surface value, at
+    (3 sqrt(7)/8, 1/8) a: the value and a vanishing gradient there (float64 field)."""
+    fe = sliding.field(mu=1 / math.sqrt(7), **HERTZ)
+    x0, z0, h = 3 * math.sqrt(7) / 8, 1 / 8, 1e-5
+
+    def f(x, z):
+        return fe(np.array([x]), np.array([z]), "principal_shear")[0]
+    assert abs(f(x0, z0) - 1 / math.sqrt(7)) < 1e-14
+    assert abs(f(x0 + h, z0) - f(x0 - h, z0)) / (2 * h) < 1e-8
+    assert abs(f(x0, z0 + h) - f(x0, z0 - h)) / (2 * h) < 1e-8
+    m = sliding.maximum("principal_shear", mu=1 / math.sqrt(7) - 1e-3, **HERTZ)
+    assert not m.on_surface and m.value > 1 / math.sqrt(7) - 1e-3

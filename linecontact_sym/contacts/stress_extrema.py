@@ -14,7 +14,11 @@ A maximum is found in two independent ways and both are reported:
    root of d f/dx.
 
 ``digits`` is the number of significant digits on which the two values
-agree.  A grid argmax is never returned as the answer.
+agree.  A grid argmax is never returned as the answer.  Where the surface
+traction is singular (the wedge's tip, a kink of the profile: a logarithmic
+pressure) the equivalent stress grows without bound towards that surface
+point; the maximum is then reported as unbounded (value inf), detected by
+comparing the surface value with the value at depth 1e-6 a.
 
 The critical friction mu_c of a sliding contact is the smallest mu at which
 the largest value of the criterion lies on the surface; two ways again: a
@@ -39,6 +43,8 @@ X_SPAN, Z_SPAN = 2.0, 2.0
 GRID = (161, 101)
 #: depth (in units of a) below which a maximum counts as on the surface
 SURFACE_Z = 1e-6
+#: depth (in units of a) at which a surface maximum is probed for a singularity
+UNBOUNDED_PROBE = 1e-6
 
 
 @dataclass(frozen=True)
@@ -53,6 +59,9 @@ class StressMaximum:
     surface            (value, x) of the largest value along the surface
     plateau            True when the surface value is constant over an interval
                        (its x is then the first point of the plateau found)
+    unbounded          True when the criterion grows without bound towards the
+                       surface point (x, 0) (a singular traction: the wedge's
+                       tip, a kink of the profile); value is then inf
     """
 
     criterion: str
@@ -67,8 +76,12 @@ class StressMaximum:
     interior: tuple | None
     surface: tuple
     plateau: bool = False
+    unbounded: bool = False
 
     def __str__(self):
+        if self.unbounded:
+            return (f"max {self.criterion} is unbounded: it grows without limit towards the surface point "
+                    f"x = {self.x:.6g} (a singular surface traction)")
         where = "on the surface" if self.on_surface else "below the surface"
         return (f"max {self.criterion} = {self.value:.6g} at x = {self.x:.6g}, z = {self.z:.6g} ({where}); "
                 f"check {self.check:.6g} at ({self.check_x:.6g}, {self.check_z:.6g}): {self.digits:.1f} digits agree")
@@ -175,6 +188,12 @@ def find_maximum(criterion_fn, a, name="criterion", symmetric=False, starts=None
             cval, cx, cz = _gradient_root(f, a, best[1], best[2], symmetric)
         return StressMaximum(name, best[0], best[1], best[2], cval, cx, cz, _agree(best[0], cval), False,
                              best, (sval, sx), plateau)
+    # a singular traction: the surface value (at depth SURFACE_DEPTH a) exceeds the one a little deeper
+    # by far more than a smooth field allows (a log singularity grows by ~50 % from 1e-6 a to 1e-12 a)
+    deeper = f(sx, UNBOUNDED_PROBE * a)
+    if sval > deeper + 0.05 * abs(deeper) + 1e-300:
+        return StressMaximum(name, math.inf, sx, 0.0, math.inf, scx, 0.0, 0.0, True, best, (math.inf, sx),
+                             plateau, True)
     return StressMaximum(name, sval, sx, 0.0, scheck, scx, 0.0, _agree(sval, scheck), True, best, (sval, sx),
                          plateau)
 
