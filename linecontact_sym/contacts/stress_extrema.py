@@ -157,7 +157,13 @@ def find_maximum(criterion_fn, a, name="criterion", symmetric=False, starts=None
     """The maximum of ``criterion_fn(x, z)`` (vectorised float64, z >= 0) for a
     contact of half-width ``a``: see the module docstring.  ``symmetric``: the
     field is even in x (frictionless), so a maximum on the axis is checked by
-    the axis root of d f/dz.  ``starts``: extra starting points (x, z)."""
+    the axis root of d f/dz.  ``starts``: extra starting points (x, z).
+
+    >>> import numpy as np
+    >>> m = find_maximum(lambda x, z: z * np.exp(-x**2 - z**2), 1.0, "test", symmetric=True)
+    >>> bool(abs(m.value - np.exp(-0.5) / np.sqrt(2)) < 1e-14), round(m.z, 8), m.digits > 10
+    (True, 0.70710678, True)
+    """
     a = float(a)
 
     def f(xv, zv):

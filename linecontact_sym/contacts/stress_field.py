@@ -188,7 +188,15 @@ class PunchPotential(_Quadrature):
     density ``density`` (float64 function of t, e.g. P'(t)) on (0, a), with
     the density's breakpoints ``breaks``.  Evaluated at |x| (the branch
     sqrt(zeta - t) sqrt(zeta + t) there) and mirrored: the traction is even,
-    so G(-conj(zeta)) = -conj(G(zeta)) and G'(-conj(zeta)) = conj(G'(zeta))."""
+    so G(-conj(zeta)) = -conj(G(zeta)) and G'(-conj(zeta)) = conj(G'(zeta)).
+
+    Hertz (p0 = a = 1, P'(t) = pi t): G = pi (zeta - sqrt(zeta^2 - 1)), at zeta = i
+    pi i (1 - sqrt(2)):
+
+    >>> G, dG = PunchPotential(lambda t: np.pi * t, 1.0)(0.0, 1.0)
+    >>> bool(abs(G - np.pi * 1j * (1 - np.sqrt(2))) < 1e-15)
+    True
+    """
 
     def __init__(self, density, a, breaks=(), scale=1.0, near=None):
         self.fn, self.a, self.scale = density, float(a), scale
