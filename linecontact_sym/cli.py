@@ -8,11 +8,21 @@ Verbs::
     linecontact-sym table power-law --n 1,2,3,4,5,6,10 [--latex]
     linecontact-sym check FILE.toml | --profile PROFILE --force FORMULA ...
 
-Every verb has ``--help``; ``--json`` gives machine-readable output on
-stdout.  Errors go to stderr with a non-zero exit status (2: bad input,
-1: a claim without a verdict, 3: an internal error).  Formulas are parsed by
-the whitelisted parser of :mod:`linecontact_sym.parsing`; nothing typed on
-the command line is executed as code.
+Every verb has ``--help`` and ``--json`` (machine-readable output on stdout;
+``derive --format json`` is the same).  Progress goes to stderr (a bar on a
+terminal, one line per item otherwise; ``--quiet`` silences it); errors go to
+stderr.  Exit status (every verb)::
+
+    0  every claim holds (possibly under a condition the report states)
+    1  at least one claim does not hold (with --strict: or holds only under a condition)
+    2  bad input: a malformed claims file, formula, option or value; nothing was judged
+    3  internal error (a bug; LINECONTACT_SYM_DEBUG=1 prints the traceback)
+    4  no claim fails but at least one is undecided (the engine could not derive it)
+
+A formula that starts with '-' may be given as it is (``derive -x**2``
+works; so does ``--pull-off -pi*gamma``), or after ``--``.  Formulas are
+parsed by the whitelisted parser of :mod:`linecontact_sym.parsing`; nothing
+typed on the command line is executed as code.
 """
 from __future__ import annotations
 
@@ -20,20 +30,37 @@ import argparse
 import itertools
 import json
 import os
+import re
 import sys
 import time
 import traceback
 from pathlib import Path
 
 
+from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK
 from .core import symbols as S
 from .core.errors import LineContactError
+from .core.progress import Progress
 
-EXIT_OK, EXIT_NO_VERDICT, EXIT_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
+#: kept for scripts that imported the old name (1: a claim without a verdict)
+EXIT_NO_VERDICT = EXIT_FAILS
+
+EXIT_HELP = "exit status: " + "; ".join(f"{k} {v}" for k, v in EXIT_CODES.items()) + "."
 
 
 class _Parser(argparse.ArgumentParser):
     """argparse with errors on stderr, exit status 2 (its default)."""
+
+
+def _dps(text):
+    """--dps: an integer number of significant digits, 1 to 1000."""
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer number of digits, got {text!r}") from None
+    if not 1 <= v <= 1000:
+        raise argparse.ArgumentTypeError(f"digits must be 1 to 1000, got {v}")
+    return v
 
 
 def _emit_json(obj):
@@ -42,6 +69,13 @@ def _emit_json(obj):
 
 def _err(msg):
     print(f"linecontact-sym: error: {msg}", file=sys.stderr)
+
+
+def _cli_hint(msg: str) -> str:
+    """Error messages in command-line terms: the claims file's
+    ``symbols = ["k"]`` becomes ``--symbols k``."""
+    return re.sub(r'symbols = \[((?:"[^"]*"(?:, )?)+)\]',
+                  lambda m: "--symbols " + " ".join(re.findall(r'"([^"]*)"', m.group(1))), msg)
 
 
 # ------------------------------------------------------------------ helpers
@@ -73,8 +107,9 @@ def _derivation_dict(d, values=None):
 
 # ------------------------------------------------------------------ paper
 def cmd_paper(args):
-    from .claims.check import check_paper, load_paper
+    from .claims.check import check_paper
     from .claims.report import text_table, write_paper_outputs
+    from .claims.spec import load_paper
     paper = load_paper(args.name)
     out = Path(args.out or f"{paper.key}-report")
     only = set(args.only) if args.only else None
@@ -83,15 +118,13 @@ def cmd_paper(args):
         if unknown:
             raise LineContactError(f"no claim(s) {sorted(unknown)} in {paper.source}")
     t0 = time.perf_counter()
+    n = len(only) if only else len(paper.claims)
     if not args.quiet:
-        print(f"checking {len(only) if only else len(paper.claims)} claims of {paper.title or paper.key}",
-              file=sys.stderr, flush=True)
-
-    def progress(i, n, r):
-        if not args.quiet:
-            print(f"[{i + 1:2d}/{n}] {r.label:<10} {r.status:<24} {r.digits:5.1f} digits {r.seconds:6.1f} s",
-                  file=sys.stderr, flush=True)
-    result = check_paper(paper, budget=args.budget, progress=progress, only=only)
+        print(f"checking {n} claims of {paper.title or paper.key}", file=sys.stderr, flush=True)
+    bar = Progress(n, "checking", enabled=not args.quiet)
+    result = check_paper(paper, budget=args.budget, only=only, on_start=lambda i, n_, c: bar.start(c.label),
+                         progress=lambda i, n_, r: bar.done(r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
+    bar.close()
     written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget)
     if args.json:
         d = result.to_dict()
@@ -103,7 +136,7 @@ def cmd_paper(args):
         print(f"written to {out}/: " + ", ".join(
             Path(p).name for v in written.values() for p in (v if isinstance(v, list) else [v])))
         print(f"total {time.perf_counter() - t0:.0f} s")
-    return EXIT_OK if result.ok else EXIT_NO_VERDICT
+    return result.exit_code()
 
 
 # ------------------------------------------------------------------ derive
@@ -111,6 +144,9 @@ def cmd_derive(args):
     from .core.printing import to_latex
     prof = _profile(args.profile, args.symbols)
     values = _settings(args.set, args.symbols)
+    unused = sorted(str(k) for k in values if k not in prof.free_symbols)
+    if unused:
+        raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof)
     quantities = [q.strip() for q in args.quantities.split(",") if q.strip()]
@@ -120,17 +156,28 @@ def cmd_derive(args):
             raise LineContactError(f"unknown quantity {q!r} for derive; choose from {', '.join(known)}")
     out = {"profile": str(prof), "profile_latex": to_latex(prof),
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
-    for q in quantities:
-        out["quantities"][q] = c.derivation(q)
+    todo = [(q, c, q) for q in quantities]
     if args.adhesion:
         ad = c.adhesive(S.gamma)
         registry = type(ad).quantities()
-        for q in ("force", "pressure", "adhesion_force", "pull_off_half_width"):
-            key = (registry[q].aliases or (q,))[0]
-            try:
-                out["quantities"][key] = ad.derivation(q)
-            except LineContactError as exc:
-                out["quantities"][key] = exc
+        todo += [((registry[q].aliases or (q,))[0], ad, q)
+                 for q in ("force", "pressure", "adhesion_force", "pull_off_half_width")]
+    bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
+    for key, contact, q in todo:
+        bar.start(key)
+        t1 = time.perf_counter()
+        try:
+            out["quantities"][key] = contact.derivation(q)
+            status = out["quantities"][key].rule
+        except LineContactError as exc:
+            if contact is c:
+                raise
+            out["quantities"][key] = exc
+            status = "error"
+        bar.done(key, status, time.perf_counter() - t1)
+    bar.close()
+    if args.json:
+        args.format = "json"
     if args.format == "json":
         _emit_json({**out, "quantities": {k: (_derivation_dict(v) if not isinstance(v, Exception)
                                               else {"error": str(v)}) for k, v in out["quantities"].items()}})
@@ -203,12 +250,14 @@ def cmd_eval(args):
 
 
 def _eval_one(c, q, values, dps):
+    from .contacts.base import contact_kind
     kind, name, quantity = _registry()[q]
-    contact = c if kind == "frictionless" else c.adhesive(S.gamma)
-    if quantity.method:  # a(P): the load is an argument
-        if "P" not in values:
-            raise LineContactError(f"{q} needs the load: --at P=... or --set P=...")
-        load = values.pop("P")
+    contact = contact_kind(kind).from_frictionless(c)
+    if quantity.method:  # a(P), c_s(Q): the load is the last argument, passed first
+        load_name = quantity.arguments[-1]
+        if load_name not in values:
+            raise LineContactError(f"{q} needs {load_name}: --at {load_name}=... or --set {load_name}=...")
+        load = values.pop(load_name)
         out = getattr(contact, name)(load, **values)
         return out[0] if isinstance(out, tuple) else out
     return contact.evaluate_at(name, dps=dps, **values)
@@ -236,11 +285,13 @@ def cmd_table(args):
 
 # ------------------------------------------------------------------ check
 _CLI_QUANTITIES = {"force": "force", "pressure": "pressure", "gap": "gap",
-                   "adhesive_force": "adhesive_force", "pull_off": "pull_off_force", "Z_n": "Z_n"}
+                   "adhesive_force": "adhesive_force", "adhesion_force": "adhesion_force",
+                   "pull_off": "pull_off_force", "Z_n": "Z_n"}
 
 
 def cmd_check(args):
-    from .claims.check import Paper, check_paper, claim_from_cli, load_paper
+    from .claims.check import check_paper
+    from .claims.spec import Paper, claim_from_cli, load_paper
     from .claims.report import text_table
     formulas = [(q, getattr(args, q)) for q in _CLI_QUANTITIES if getattr(args, q, None)]
     if args.quantity or args.formula:
@@ -254,7 +305,7 @@ def cmd_check(args):
     else:
         if not formulas:
             raise LineContactError("nothing to check: give a claims FILE, or --profile with --force/--pressure/"
-                                   "--gap/--adhesive-force/--pull-off/--Z-n or --quantity Q --formula F")
+                                   "--gap/--adhesive-force/--adhesion-force/--pull-off/--Z-n or --quantity Q --formula F")
         ranges = {}
         for item in args.range or []:
             name, _, span = item.partition("=")
@@ -269,56 +320,60 @@ def cmd_check(args):
                                          assumptions=args.assume or (), ranges=ranges, symbols=args.symbols or (),
                                          force_law=args.force_law))
         paper = Paper("command-line", "claims from the command line", "", claims, {}, "command line")
-    result = check_paper(paper, budget=args.budget)
+    bar = Progress(len(paper.claims), "checking", enabled=not args.quiet, min_total=2)
+    result = check_paper(paper, budget=args.budget, on_start=lambda i, n, c: bar.start(c.label),
+                         progress=lambda i, n, r: bar.done(r.label, r.status, r.seconds))
+    bar.close()
     if args.json:
-        _emit_json(result.to_dict())
+        d = result.to_dict()
+        d["exit_status"] = result.exit_code(args.strict)
+        _emit_json(d)
     else:
-        print(text_table(result))
-        for r in result.results:
-            if r.status in ("holds", "holds under a condition"):
-                for t in r.targets:
-                    if t.derived is not None and t.derived.expr is not None:
-                        print(f"  {r.label}: derived {t.derived.expr}")
-    if not result.ok:
-        return EXIT_NO_VERDICT
-    if args.strict and any(r.status != "holds" for r in result.results):
-        return EXIT_NO_VERDICT
-    return EXIT_OK
+        from .claims.report import claim_details_text
+        print(text_table(result, notes=False))
+        print()
+        print(claim_details_text(result))
+    return result.exit_code(args.strict)
 
 
 # ------------------------------------------------------------------ parser
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="linecontact-sym",
                 description="Closed-form line (2-D) contact laws by Popov's (2017) flat-punch superposition: "
-                            "derive, evaluate, tabulate, and check published formulas.")
+                            "derive, evaluate, tabulate, and check published formulas.",
+                epilog=EXIT_HELP + " A formula starting with '-' may be typed as it is (or after --).")
     p.add_argument("--version", action="version", version="%(prog)s 0.1.0")
     sub = p.add_subparsers(dest="verb", metavar="VERB")
     sub.required = True
 
-    def common(sp_, json_flag=True):
+    def common(sp_, quiet=False):
         sp_.add_argument("--budget", type=float, default=20.0, metavar="S",
                          help="seconds allowed to each symbolic derivation (default 20)")
-        if json_flag:
-            sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
+        sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
+        if quiet:
+            sp_.add_argument("--quiet", action="store_true",
+                             help="no progress on stderr (a bar on a terminal, one line per item otherwise)")
 
     sym_help = "extra symbol names used by the formulas (created positive)"
 
     pp = sub.add_parser("paper", help="check every claim of a paper and write the reports",
                         description="Derive and check every claim of a paper (a shipped name such as "
                                     "popov2017, or a claims TOML file); print a report table and write a "
-                                    "Markdown and a LaTeX report, the LaTeX Table 1, the figures (PNG, PDF) "
-                                    "and results.json into DIR. Exit status 0 when every claim has a verdict.")
+                                    "Markdown and a LaTeX report, the LaTeX Table 1, the paper's figures (its [[figures]], PNG and PDF) "
+                                    "and results.json into DIR.",
+                        epilog=EXIT_HELP)
     pp.add_argument("name", help="shipped paper (popov2017) or path to a claims .toml file")
     pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
     pp.add_argument("--only", nargs="+", metavar="LABEL", help="check only these claims, e.g. --only 'Eq. (10)'")
     pp.add_argument("--no-figures", action="store_true", help="do not draw the figures")
-    pp.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
-    common(pp)
+    common(pp, quiet=True)
     pp.set_defaults(func=cmd_paper)
 
     pd = sub.add_parser("derive", help="derive the force law, pressure and gap of a profile",
                         description="Derive P(a), p(x; a) and the gap of a profile f(x) (x >= 0, mirrored), "
-                                    "e.g. linecontact-sym derive 'x**2/(2*R)'.")
+                                    "e.g. linecontact-sym derive 'x**2/(2*R)'.",
+                        epilog="exit status: 0 derived (a quantity without a closed form is given as an "
+                               "integral, evaluated numerically); 2 bad input; 3 internal error.")
     pd.add_argument("profile", help="the profile f(x) in SymPy syntax, e.g. 'x**2/(2*R)'")
     pd.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fix parameters, e.g. R=1")
     pd.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
@@ -326,14 +381,18 @@ def build_parser() -> argparse.ArgumentParser:
                     help="comma-separated, from: " + ", ".join(_expression_quantities("frictionless"))
                          + " (default force,pressure,gap)")
     pd.add_argument("--adhesion", action="store_true", help="also the JKR-adhesive laws (Eqs. 29-36)")
-    pd.add_argument("--format", choices=("text", "latex", "json"), default="text")
-    common(pd, json_flag=False)
+    pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
+                    help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
+                         "K(k), E(k) with the modulus k) or json (same as --json)")
+    common(pd, quiet=True)
     pd.set_defaults(func=cmd_derive)
 
     pe = sub.add_parser("eval", help="evaluate a derived quantity at points, to any precision",
                         description="Evaluate a quantity on the grid of --at values (all combinations), with "
                                     "--set fixing the rest, e.g. linecontact-sym eval 'x**2/(2*R)' pressure "
-                                    "--at a=1 x=0.1,0.5 --set R=1 E_star=1 --dps 50.")
+                                    "--at a=1 x=0.1,0.5 --set R=1 E_star=1 --dps 50.",
+                        epilog="exit status: 0 every point evaluated; 2 bad input or a point outside the "
+                               "quantity's domain (its row says why); 3 internal error.")
     pe.add_argument("profile", help="the profile f(x) in SymPy syntax")
     pe.add_argument("quantity", help="one of: " + ", ".join(_registry()) + " (adhesive quantities "
                                      "take gamma; a(P) quantities take P, the stable branch first)")
@@ -341,13 +400,14 @@ def build_parser() -> argparse.ArgumentParser:
                     help="grid values, e.g. a=0.1,0.2 x=0:1:5 (LOW:HIGH:COUNT)")
     pe.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fixed values, e.g. R=1 E_star=1")
     pe.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
-    pe.add_argument("--dps", type=int, default=30, help="significant digits (default 30)")
+    pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
 
     pt = sub.add_parser("table", help="tables of derived laws (power-law Z_n)",
                         description="Z_n and the force law P(a) = E* c Z_n a^n of the power-law profile c x^n "
-                                    "for a list of exponents, as text, LaTeX (booktabs) or JSON.")
+                                    "for a list of exponents, as text, LaTeX (booktabs) or JSON.",
+                        epilog="exit status: 0 done; 2 bad input (e.g. an exponent <= 0); 3 internal error.")
     pt.add_argument("kind", choices=("power-law",), help="the table (power-law)")
     pt.add_argument("--n", default="1,2,3,4,5,6,10", help="exponents, comma-separated (default 1,2,3,4,5,6,10)")
     pt.add_argument("--latex", action="store_true", help="LaTeX booktabs table")
@@ -357,17 +417,25 @@ def build_parser() -> argparse.ArgumentParser:
     pc = sub.add_parser("check", help="check claims: a claims file, or one formula typed here",
                         description="Check a claims TOML file, or a formula for a profile, e.g. "
                                     "linecontact-sym check --profile 'x**2/(2*R)' --force 'pi*E_star*a**2/(4*R)'. "
-                                    "Verdicts: holds / holds under a condition / does not hold (with a "
-                                    "counterexample).")
+                                    "Verdicts: holds / holds under a condition / does not hold (with the "
+                                    "derived formula, a counterexample and, for a common mistake such as "
+                                    "the elliptic modulus k passed for the parameter m = k**2, a diagnosis) "
+                                    "/ undecided.",
+                        epilog=EXIT_HELP)
     pc.add_argument("file", nargs="?", help="claims .toml file (or a shipped paper name)")
     pc.add_argument("--profile", help="the profile f(x)")
     pc.add_argument("--force", help="the claimed force law P(a)")
     pc.add_argument("--pressure", help="the claimed pressure p(x; a), 0 < x < a")
     pc.add_argument("--gap", help="the claimed gap g(x; a), x > a")
     pc.add_argument("--adhesive-force", dest="adhesive_force", help="the claimed JKR force law P(a)")
-    pc.add_argument("--pull-off", dest="pull_off", help="the claimed pull-off force P_adh > 0")
+    pc.add_argument("--adhesion-force", dest="adhesion_force",
+                    help="the claimed adhesion force P_adh = -min_a P(a) > 0 (e.g. Eqs. 34-36)")
+    pc.add_argument("--pull-off", dest="pull_off",
+                    help="the claimed pull-off load P_min = min_a P(a) < 0 (negative: a tensile load; "
+                         "write --pull-off='-...' for a leading minus; for the positive P_adh use "
+                         "--adhesion-force)")
     pc.add_argument("--Z-n", dest="Z_n", help="the claimed Z_n of a power law c*x**n")
-    pc.add_argument("--quantity", help="any checker quantity (with --formula)")
+    pc.add_argument("--quantity", help="any checker quantity (with --formula): " + ", ".join(_check_quantities()))
     pc.add_argument("--formula", help="the claimed formula for --quantity")
     pc.add_argument("--force-law", dest="force_law", help="force law for --quantity inverse_profile")
     pc.add_argument("--assume", nargs="+", action="extend", metavar="REL", help="assumptions, e.g. 'a < R'")
@@ -375,18 +443,53 @@ def build_parser() -> argparse.ArgumentParser:
                     help="sampling ranges, e.g. n=0.3:6")
     pc.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pc.add_argument("--strict", action="store_true", help="exit 1 unless every claim holds unconditionally")
-    common(pc)
+    common(pc, quiet=True)
     pc.set_defaults(func=cmd_check)
     return p
 
 
+def _check_quantities():
+    from .claims.spec import QUANTITIES
+    return sorted(QUANTITIES)
+
+
+def _option_strings(parser) -> set:
+    out = set()
+    for act in parser._actions:
+        out.update(act.option_strings)
+        if isinstance(act, argparse._SubParsersAction):
+            for sp_ in act.choices.values():
+                out |= _option_strings(sp_)
+    return out
+
+
+def protect_formulas(argv, options) -> list:
+    """Let formulas start with '-': an argument such as ``-x**2`` (one dash,
+    not an option of the parser) gets a leading space, which argparse does
+    not read as an option and the formula parser ignores.  Arguments after
+    ``--`` are left alone.
+
+    >>> protect_formulas(["derive", "-x**2", "-h"], {"-h", "--help"})
+    ['derive', ' -x**2', '-h']
+    """
+    out, rest = [], False
+    for tok in argv:
+        if not rest and tok == "--":
+            rest = True
+        elif not rest and len(tok) > 1 and tok[0] == "-" and tok[1] != "-" and tok not in options:
+            tok = " " + tok
+        out.append(tok)
+    return out
+
+
 def main(argv=None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    argv = list(sys.argv[1:] if argv is None else argv)
+    args = parser.parse_args(protect_formulas(argv, _option_strings(parser)))
     try:
         return args.func(args)
     except LineContactError as exc:
-        _err(str(exc))
+        _err(_cli_hint(str(exc)))
         return EXIT_INPUT
     except KeyboardInterrupt:
         _err("interrupted")

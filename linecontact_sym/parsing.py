@@ -1,23 +1,28 @@
 """A whitelisted parser for formulas typed by people: claims files, the
 command line, notebooks.
 
-Strings are never handed to ``eval`` or to ``sympify`` as they come.  Each
-string is first parsed by Python's own ``ast`` module and every node is
+No string is ever compiled, evaluated or handed to ``sympify``.  Each string
+is parsed by Python's own ``ast`` module (syntax only) and every node is
 checked against a whitelist: numbers, the arithmetic operators, comparisons
 and boolean connectives (for ``Piecewise`` conditions), tuples (for the
 arguments of ``Piecewise``, ``Integral`` and ``hyper``), known names, and
 calls of known functions by their bare name.  Anything else -- attribute
 access, subscripts, dunder names, lambdas, comprehensions, keyword arguments,
-strings, calls of unknown names, huge constant powers -- is rejected with a
-:class:`~linecontact_sym.errors.ClaimError` that names where the string came
-from (file, claim, field) and what is wrong.  Only then is the (re-printed)
-string given to :func:`sympy.parsing.sympy_parser.parse_expr`, with a
-namespace that holds exactly the whitelisted objects.
+strings, calls of unknown names -- is rejected with a
+:class:`~linecontact_sym.core.errors.ClaimError` that names where the string
+came from (file, claim, field) and what is wrong.  Sizes are bounded before
+anything is built (so nothing can hang or exhaust memory): at most
+:data:`MAX_LENGTH` characters, :data:`MAX_NODES` syntax nodes,
+:data:`MAX_DEPTH` levels of nesting (a flat sum or product of many terms is
+not nesting), constant exponents up to :data:`MAX_CONST_EXPONENT`,
+``gamma``/``binomial``/``beta`` of constants up to :data:`MAX_EXACT_ARGUMENT`,
+derivative orders up to :data:`MAX_DERIVATIVE_ORDER`.  Only then is the
+SymPy object built node by node from the whitelisted objects.
 
 Names
 -----
 * the standard symbols ``x, a, P, E_star, gamma, R, b, n, c, theta`` (with the
-  assumptions of :mod:`linecontact_sym.symbols`) and the integration
+  assumptions of :mod:`linecontact_sym.core.symbols`) and the integration
   variables ``t`` and ``s`` (the paper's a-tilde);
 * symbols the caller declares (``symbols=["k", "h"]``, created positive);
 * named definitions (``definitions={"Z_n": expr}``), e.g. Popov's Z_n;
@@ -35,8 +40,6 @@ import ast
 import math
 
 import sympy as sp
-from sympy.parsing.sympy_parser import convert_xor, rationalize, parse_expr as _sympy_parse_expr
-from sympy.parsing.sympy_parser import standard_transformations
 
 from .core import symbols as S
 from .core.conversion import to_basic
@@ -47,7 +50,8 @@ t = sp.Symbol("t", positive=True)
 s = sp.Symbol("s", positive=True)
 
 #: the standard symbols every formula may use
-SYMBOLS = {sym.name: sym for sym in (S.x, S.a, S.P, S.E_star, S.gamma, S.R, S.b, S.n, S.c, S.theta, t, s)}
+SYMBOLS = {sym.name: sym for sym in (S.x, S.a, S.P, S.E_star, S.gamma, S.R, S.b, S.n, S.c, S.theta,
+                                     S.mu, S.Q, S.c_s, S.c_r, t, s)}
 
 #: constants
 CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "True": sp.true, "False": sp.false}
@@ -87,12 +91,16 @@ MAX_LENGTH = 2000
 MAX_NODES = 800
 MAX_DIGITS = 40          # longest numeric literal
 MAX_CONST_EXPONENT = 1000
+MAX_DEPTH = 60           # nesting of the syntax tree
+MAX_EXACT_ARGUMENT = 1000  # |n| of gamma(n), binomial(n, k), beta(...) with constant arguments
+MAX_DERIVATIVE_ORDER = 20
+#: functions whose exact value at a large constant argument is astronomically long
+_FACTORIAL_LIKE = {"gamma", "binomial", "beta"}
 
 _ALLOWED_BINOPS = (ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow, ast.BitXor, ast.BitAnd, ast.BitOr)
 _ALLOWED_UNARY = (ast.UAdd, ast.USub, ast.Invert, ast.Not)
 _ALLOWED_CMP = (ast.Lt, ast.LtE, ast.Gt, ast.GtE, ast.Eq, ast.NotEq)
 
-_GAMMA_FN = "Gamma__fn"   # internal rename of gamma(...) calls (never user-visible)
 
 
 def _where(where: str) -> str:
@@ -110,6 +118,17 @@ class _Validator(ast.NodeVisitor):
     def fail(self, problem, node=None):
         pos = f" (at column {node.col_offset + 1})" if node is not None and hasattr(node, "col_offset") else ""
         raise ClaimError(f"{_where(self.where)}{problem}{pos} in {self.text!r}")
+
+    depth = 0
+
+    def visit(self, node):
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            self.fail(f"formula nested too deeply (more than {MAX_DEPTH} levels)")
+        try:
+            return super().visit(node)
+        finally:
+            self.depth -= 1
 
     def generic_visit(self, node):
         self.count += 1
@@ -148,6 +167,19 @@ class _Validator(ast.NodeVisitor):
             self.fail(f"{name!r} is a function; call it, e.g. {name}(x)", node)
 
     def visit_BinOp(self, node):
+        # a chain a + b + c + ... nests to the left in the syntax tree but is
+        # flat in the formula: walk it iteratively, its links are no nesting
+        links, cur = [], node
+        while isinstance(cur, ast.BinOp) and (not links or type(cur.op) is type(links[-1].op)):
+            links.append(cur)
+            cur = cur.left
+        for link in links:
+            self._check_binop(link)
+        self.visit(cur)
+        for link in reversed(links):
+            self.visit(link.right)
+
+    def _check_binop(self, node):
         if not isinstance(node.op, _ALLOWED_BINOPS):
             self.fail(f"operator {type(node.op).__name__} is not allowed", node)
         if isinstance(node.op, (ast.Pow, ast.BitXor)) and _is_constant(node.right):
@@ -155,14 +187,17 @@ class _Validator(ast.NodeVisitor):
                 e = _const_value(node.right)
             except OverflowError:
                 self.fail("constant exponent too large", node)
-            if isinstance(e, (int, float)) and abs(e) > MAX_CONST_EXPONENT and _is_constant(node.left):
-                self.fail(f"constant power with exponent {e:g} is too large", node)
+            if isinstance(e, (int, float)) and abs(e) > MAX_CONST_EXPONENT:
+                self.fail(f"power with the exponent {e:g} is too large (at most {MAX_CONST_EXPONENT} "
+                          f"in magnitude)", node)
         if isinstance(node.op, (ast.Pow, ast.BitXor)) and _is_constant(node.left) and _is_constant(node.right):
             try:
                 _const_value(node)
             except OverflowError:
                 self.fail("constant power too large", node)
-        self.generic_visit(node)
+        self.count += 1
+        if self.count > MAX_NODES:
+            self.fail(f"formula too large (more than {MAX_NODES} syntax nodes)")
 
     def visit_UnaryOp(self, node):
         if not isinstance(node.op, _ALLOWED_UNARY):
@@ -198,6 +233,17 @@ class _Validator(ast.NodeVisitor):
                       "; allowed functions: " + ", ".join(sorted(self.callables))), node)
         if node.keywords:
             self.fail(f"keyword arguments are not allowed (in the call of {name})", node)
+        if name in _FACTORIAL_LIKE:
+            for arg in node.args:
+                if _is_constant(arg) and _magnitude(arg) > MAX_EXACT_ARGUMENT:
+                    self.fail(f"{name}(...) of a constant larger than {MAX_EXACT_ARGUMENT} would be "
+                              f"astronomically long in exact arithmetic; use loggamma or a float", node)
+        if name == "Derivative":
+            for arg in node.args[1:]:
+                orders = arg.elts[1:] if isinstance(arg, ast.Tuple) else []
+                for o in orders:
+                    if not _is_constant(o) or _magnitude(o) > MAX_DERIVATIVE_ORDER:
+                        self.fail(f"derivative order must be a number <= {MAX_DERIVATIVE_ORDER}", node)
         self.count += 1
         for arg in node.args:
             if isinstance(arg, ast.Starred):
@@ -224,7 +270,18 @@ class _Validator(ast.NodeVisitor):
 
 
 def _is_constant(node) -> bool:
-    return all(not isinstance(n, ast.Name) and not isinstance(n, ast.Call) for n in ast.walk(node))
+    """No symbol in the subtree (calls of functions of constants count as constant)."""
+    funcs = {id(n.func) for n in ast.walk(node) if isinstance(n, ast.Call)}
+    return all(not isinstance(n, ast.Name) or id(n) in funcs for n in ast.walk(node))
+
+
+def _magnitude(node) -> float:
+    """|value| of a constant subtree (calls count as their largest argument,
+    a bound for sqrt, roots and the like); inf when astronomically large."""
+    try:
+        return abs(_const_value(node))
+    except (OverflowError, ValueError, TypeError):
+        return math.inf
 
 
 def _const_value(node):
@@ -256,17 +313,79 @@ def _const_value(node):
         if isinstance(node.op, ast.Div):
             return lf / rf if rf else math.inf
         return 0.0
+    if isinstance(node, ast.Call):
+        vals = [abs(float(_const_value(a_))) for a_ in node.args]
+        return max(vals, default=0.0)
     if isinstance(node, ast.Tuple):
         return 0.0
     return 0.0
 
 
-class _RenameGamma(ast.NodeTransformer):
-    def visit_Call(self, node):
-        self.generic_visit(node)
-        if isinstance(node.func, ast.Name) and node.func.id == "gamma":
-            node.func = ast.Name(id=_GAMMA_FN, ctx=ast.Load())
-        return node
+_BINOPS = {ast.Add: sp.Add, ast.Mult: sp.Mul}
+_RELATIONS = {ast.Lt: sp.Lt, ast.LtE: sp.Le, ast.Gt: sp.Gt, ast.GtE: sp.Ge, ast.Eq: sp.Eq, ast.NotEq: sp.Ne}
+
+
+class _Builder:
+    """Builds the SymPy object of a *validated* syntax tree node by node: no
+    text is ever compiled or evaluated.  Decimal literals are exact
+    (``0.1`` is 1/10), ``^`` is a power, ``&``/``|``/``~`` are And/Or/Not;
+    ``gamma(...)`` is Euler's Gamma function while the bare name ``gamma``
+    is the work of adhesion."""
+
+    def __init__(self, names, callables):
+        self.names, self.callables = names, callables
+
+    def build(self, node):
+        if isinstance(node, ast.Constant):
+            v = node.value
+            if isinstance(v, bool):
+                return sp.true if v else sp.false
+            if isinstance(v, int):
+                return sp.Integer(v)
+            return sp.Rational(repr(v))  # the literal's shortest decimal, exactly
+        if isinstance(node, ast.Name):
+            return {"True": sp.true, "False": sp.false}.get(node.id) or self.names[node.id]
+        if isinstance(node, ast.Tuple):
+            return tuple(self.build(e) for e in node.elts)
+        if isinstance(node, ast.UnaryOp):
+            v = self.build(node.operand)
+            if isinstance(node.op, ast.USub):
+                return -v
+            if isinstance(node.op, ast.UAdd):
+                return v
+            return sp.Not(v)
+        if isinstance(node, ast.Compare):
+            return _RELATIONS[type(node.ops[0])](self.build(node.left), self.build(node.comparators[0]))
+        if isinstance(node, ast.Call):
+            fn = sp.gamma if node.func.id == "gamma" else self.callables[node.func.id]
+            return fn(*[self.build(a_) for a_ in node.args])
+        if isinstance(node, ast.BinOp):
+            return self._binop(node)
+        raise ClaimError(f"cannot build {type(node).__name__}")  # not reached after validation
+
+    def _binop(self, node):
+        # a chain a + b + c ... (left-nested) is built iteratively
+        links, cur = [], node
+        while isinstance(cur, ast.BinOp) and (not links or type(cur.op) is type(links[-1].op)):
+            links.append(cur)
+            cur = cur.left
+        op = type(node.op)
+        operands = [self.build(cur)] + [self.build(link.right) for link in reversed(links)]
+        if op in _BINOPS:
+            return _BINOPS[op](*operands)
+        if op is ast.Sub:
+            return sp.Add(operands[0], *[-v for v in operands[1:]])
+        out = operands[0]
+        for v in operands[1:]:
+            if op is ast.Div:
+                out = out / v
+            elif op in (ast.Pow, ast.BitXor):
+                out = out**v
+            elif op is ast.BitAnd:
+                out = sp.And(out, v)
+            else:
+                out = sp.Or(out, v)
+        return out
 
 
 def declare_symbols(names, where: str = "") -> dict:
@@ -329,7 +448,8 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
     if len(text) > MAX_LENGTH:
         raise ClaimError(f"{_where(where)}formula longer than {MAX_LENGTH} characters")
     try:
-        tree = ast.parse(text.strip(), mode="eval")
+        # "^" means power with the precedence of "**" (token level, like SymPy's convert_xor)
+        tree = ast.parse(text.strip().replace("^", "**"), mode="eval")
     except SyntaxError as exc:
         raise ClaimError(f"{_where(where)}not a valid formula ({exc.msg}) in {text!r}") from None
     except (RecursionError, MemoryError, ValueError):
@@ -354,20 +474,15 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
     except RecursionError:
         raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
 
-    tree = _RenameGamma().visit(tree)
-    code = ast.unparse(tree)
-    local = {**names, **callables, _GAMMA_FN: sp.gamma}
+    local = dict(names)
     local.pop("True", None)
     local.pop("False", None)
-    # 'gamma' as a bare name is the work of adhesion; as a call it was renamed
-    local["gamma"] = sym_table["gamma"]
-    global_dict = {"__builtins__": {}, "Integer": sp.Integer, "Float": sp.Float,
-                   "Rational": sp.Rational, "Symbol": sp.Symbol}
     try:
-        expr = _sympy_parse_expr(code, local_dict=local, global_dict=global_dict,
-                                 transformations=standard_transformations + (convert_xor, rationalize))
+        expr = _Builder(local, callables).build(tree.body)
     except ClaimError:
         raise
+    except RecursionError:
+        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
     except Exception as exc:
         raise ClaimError(f"{_where(where)}cannot build the formula {text!r}: {type(exc).__name__}: {exc}") from None
     if isinstance(expr, tuple):
@@ -442,6 +557,8 @@ def _is_decimal(text):
 def _numeric(expr, text, where):
     if expr.free_symbols:
         raise ClaimError(f"{_where(where)}expected a number, got {text!r}")
+    if expr.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or expr.is_real is False:
+        raise ClaimError(f"{_where(where)}expected a finite real number, got {text!r}")
     return expr
 
 

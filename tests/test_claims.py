@@ -12,19 +12,22 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.claims import check as C
+from linecontact_sym.claims import references as REF
+from linecontact_sym.claims import spec as SPEC
+from linecontact_sym.claims.results import FAILS, HOLDS, HOLDS_IF, UNDECIDED
 from linecontact_sym.core.errors import ClaimError
 
 BUDGET = 5.0
 
 
 def check(d, **kw):
-    claim = C.claim_from_dict({"label": "test", **d}, "test.toml")
+    claim = SPEC.claim_from_dict({"label": "test", **d}, "test.toml")
     return C.check_claim(claim, budget=BUDGET, **kw)
 
 
 # ------------------------------------------------------------------ loading
 def test_shipped_paper_covers_every_numbered_result():
-    paper = C.load_paper("popov2017")
+    paper = SPEC.load_paper("popov2017")
     labels = [c.label for c in paper.claims]
     wanted = ["Eq. (1)", "Eq. (3)", "Eq. (9)", "Eq. (10)", "Eq. (12)", "Eq. (13)", "Eq. (14)", "Eq. (16)",
               "Eq. (17)", "Table 1", "Eq. (19)", "Eq. (20)", "Eq. (23)", "Eq. (26)", "Eq. (29)", "Eq. (31)",
@@ -40,9 +43,9 @@ def test_shipped_paper_covers_every_numbered_result():
 
 
 def test_resolve_paper_by_name_and_path(tmp_path):
-    assert C.resolve_paper("popov2017").name == "popov2017.toml"
+    assert SPEC.resolve_paper("popov2017").name == "popov2017.toml"
     with pytest.raises(ClaimError, match="shipped"):
-        C.resolve_paper("nosuchpaper")
+        SPEC.resolve_paper("nosuchpaper")
 
 
 def _write(tmp_path, body):
@@ -69,30 +72,30 @@ def _write(tmp_path, body):
 ])
 def test_malformed_files_get_clear_errors(tmp_path, body, words):
     with pytest.raises(ClaimError) as info:
-        C.load_paper(_write(tmp_path, body))
+        SPEC.load_paper(_write(tmp_path, body))
     for w in words:
         assert w in str(info.value)
 
 
 def test_user_symbols_and_cli_claims():
-    claim = C.claim_from_cli("force", "pi*E_star*k*a**2/2", "k*x**2", symbols=["k"])
+    claim = SPEC.claim_from_cli("force", "pi*E_star*k*a**2/2", "k*x**2", symbols=["k"])
     r = C.check_claim(claim, budget=BUDGET)
-    assert r.status == C.HOLDS, r.verdict
+    assert r.status == HOLDS, r.verdict
     with pytest.raises(ClaimError, match="command line"):
-        C.claim_from_cli("force", "import os", "x**2")
+        SPEC.claim_from_cli("force", "import os", "x**2")
 
 
 # ------------------------------------------------------------------ verdicts
 def test_hertz_force_holds_symbolically():
     r = check({"quantity": "force", "profile": "x**2/(2*R)", "formula": "pi*E_star*a**2/(4*R)",
                "forms": ["E_star*a**2/(2*R)*Integral(1/sqrt(a**2 - t**2), (t, 0, a))"]})
-    assert r.status == C.HOLDS and r.digits >= 30
+    assert r.status == HOLDS and r.digits >= 30
     assert all(f.symbolic.startswith("identical") for f in r.targets[0].forms)
 
 
 def test_wrong_formula_gives_counterexample_with_both_values():
     r = check({"quantity": "force", "profile": "x*tan(theta)", "formula": "pi*E_star*a*tan(theta)/2"})
-    assert r.status == C.FAILS
+    assert r.status == FAILS
     assert "printed" in r.verdict and "derived" in r.verdict and "theta = " in r.verdict
     cex = r.targets[0].forms[0].counterexample
     printed, derived = cex.comparisons[0].printed, cex.comparisons[0].target
@@ -103,7 +106,7 @@ def test_wrong_formula_gives_counterexample_with_both_values():
 def test_pressure_claim_with_flamant_check():
     r = check({"quantity": "pressure", "profile": "x**2/(2*R)", "formula": "E_star/(2*R)*sqrt(a**2 - x**2)",
                "points": 2})
-    assert r.status == C.HOLDS
+    assert r.status == HOLDS
     whats = {c.what for f in r.targets[0].forms for p in f.points for c in p.comparisons}
     assert any(w.startswith("Flamant") for w in whats)
 
@@ -111,7 +114,7 @@ def test_pressure_claim_with_flamant_check():
 def test_removable_point_is_reported_as_condition():
     r = check({"quantity": "Z_n", "profile": "c*x**n", "formula": "(n - 1)*sqrt(pi)*gamma(n/2 - 1/2)/(2*gamma(n/2))",
                "ranges": {"n": [0.3, 6.0]}, "special": {"n": ["1"]}, "points": 3})
-    assert r.status == C.HOLDS_IF
+    assert r.status == HOLDS_IF
     assert "n != 1" in r.verdict
     assert "removable" in r.targets[0].forms[0].note
 
@@ -121,7 +124,7 @@ def test_parameter_range_found_by_bisection():
     r = check({"quantity": "force", "profile": "c*x**n",
                "formula": "E_star*a**2*c*(n - 1)*Integral(t**(n - 2)/sqrt(a**2 - t**2), (t, 0, a))",
                "ranges": {"n": [0.3, 4.0]}, "points": 3}, symbolic=False)
-    assert r.status == C.HOLDS_IF
+    assert r.status == HOLDS_IF
     assert r.targets[0].condition.startswith("n > 1")
     assert "diverges" in r.targets[0].forms[0].note
 
@@ -130,11 +133,11 @@ def test_printed_eq10_holds_only_where_slope_at_origin_vanishes():
     r = check({"quantity": "force", "profiles": ["x**2/(2*R)", "x*tan(theta)", "R - sqrt(R**2 - x**2)"],
                "formula": "E_star*a**2*Integral(Derivative(f(t)/t, t)/sqrt(a**2 - t**2), (t, 0, a))",
                "ranges": {"a": [0.2, 0.9], "R": [1.0, 2.0]}, "points": 2}, symbolic=False)
-    assert r.status == C.HOLDS_IF
+    assert r.status == HOLDS_IF
     assert "only where f'(0+) = 0" in r.verdict
     assert "derived - printed = E*·a·f'(0+)" in r.verdict
     wedge = [t for t in r.targets if "tan" in t.profile_text][0]
-    assert wedge.status == C.FAILS
+    assert wedge.status == FAILS
     cex = wedge.forms[0].counterexample
     assert cex.comparisons[0].printed == 0          # the printed (10) gives 0 for the wedge
 
@@ -143,7 +146,7 @@ def test_assumption_restricts_the_points():
     r = check({"quantity": "force", "profile": "Piecewise((0, x < b), ((x**2 - b**2)/(2*R), True))",
                "formula": "E_star*a**2/(2*R)*(pi/2 - asin(b/a) + b/a*sqrt(1 - b**2/a**2))",
                "assumptions": ["a > b"], "ranges": {"b": [0.1, 0.5], "a": [0.2, 2.0]}, "points": 3})
-    assert r.status == C.HOLDS, r.verdict
+    assert r.status == HOLDS, r.verdict
     for f in r.targets[0].forms:
         assert all(p.values[lcs.a] > p.values[lcs.b] for p in f.points)
 
@@ -152,45 +155,63 @@ def test_elliptic_argument_convention_matters():
     good = check({"quantity": "force", "profile": "R - sqrt(R**2 - x**2)", "assumptions": ["a < R"],
                   "formula": "E_star*R*(elliptic_k(a**2/R**2) - elliptic_e(a**2/R**2))",
                   "ranges": {"a": [0.05, 0.45]}, "points": 2})
-    assert good.status == C.HOLDS
+    assert good.status == HOLDS
     bad = check({"quantity": "force", "profile": "R - sqrt(R**2 - x**2)", "assumptions": ["a < R"],
                  "formula": "E_star*R*(elliptic_k(a/R) - elliptic_e(a/R))",
                  "ranges": {"a": [0.05, 0.45]}, "points": 2})
-    assert bad.status == C.FAILS
+    assert bad.status == FAILS
 
 
 def test_flat_punch_from_first_principles():
     good = check({"quantity": "flat_punch_pressure", "formula": "P/(pi*sqrt(a**2 - x**2))", "points": 1})
-    assert good.status == C.HOLDS and good.digits >= 30
+    assert good.status == HOLDS and good.digits >= 30
     bad = check({"quantity": "flat_punch_pressure", "formula": "P/(2*pi*sqrt(a**2 - x**2))", "points": 1})
-    assert bad.status == C.FAILS and "resultant" in bad.verdict
+    assert bad.status == FAILS and "resultant" in bad.verdict
 
 
 def test_punch_adhesion_force_derived_two_ways():
     r = check({"quantity": "punch_adhesion_force", "formula": "sqrt(2*pi*a*gamma*E_star)", "points": 2})
-    assert r.status == C.HOLDS
+    assert r.status == HOLDS
     assert "stress-intensity" in r.targets[0].derived.notes[0]
 
 
 def test_table_values_identified_with_exponents():
     r = check({"quantity": "Z_n", "profile": "c*x**n", "values": ["1", "pi/2", "8/3", "315*pi/256"],
                "labels": {"315*pi/256": 10}})
-    assert r.status == C.HOLDS
+    assert r.status == HOLDS
     assert "8/3 -> n = 5" in r.verdict and "315*pi/256 -> n = 10" in r.verdict
     assert "n = 3 (Z_3 = 2)" in r.verdict
     wrong = check({"quantity": "Z_n", "profile": "c*x**n", "values": ["8/3"], "labels": {"8/3": 4}})
-    assert wrong.status == C.FAILS and "DISAGREES" in " ".join(wrong.details)
+    assert wrong.status == FAILS and "DISAGREES" in " ".join(wrong.details)
 
 
 def test_adhesive_claims_and_existence_bound():
-    r = check({"quantity": "pull_off_force", "profile": "x*tan(theta)", "formula": "pi*gamma/(2*tan(theta))",
+    r = check({"quantity": "adhesion_force", "profile": "x*tan(theta)", "formula": "pi*gamma/(2*tan(theta))",
                "points": 2})
-    assert r.status == C.HOLDS, r.verdict
-    r = check({"quantity": "pull_off_force", "profile": "c*x**n", "ranges": {"n": [0.3, 4.0]}, "points": 3,
+    assert r.status == HOLDS, r.verdict
+    r = check({"quantity": "adhesion_force", "profile": "c*x**n", "ranges": {"n": [0.3, 4.0]}, "points": 3,
                "formula": "(2*n - 1)/(2*n*n**(1/(2*n - 1)))*(2**(n - 1)*pi**n*gamma**n*E_star**(n - 1)"
                           "/(c*sqrt(pi)*gamma(n/2 + 1/2)/gamma(n/2)))**(1/(2*n - 1))"}, symbolic=False)
-    assert r.status == C.HOLDS_IF, r.verdict
+    assert r.status == HOLDS_IF, r.verdict
     assert r.targets[0].condition.startswith("n > 1/2")
+
+
+def test_pull_off_force_is_the_negative_minimum_and_adhesion_force_its_opposite():
+    """One sign convention: pull_off_force = P_min = min_a P(a) < 0 and
+    adhesion_force = P_adh = -P_min > 0; each quantity rejects the other's sign."""
+    wedge = {"profile": "x*tan(theta)", "points": 2}
+    p_min = "-pi*gamma/(2*tan(theta))"
+    r = check({**wedge, "quantity": "pull_off_force", "formula": p_min})
+    assert r.status == HOLDS, r.verdict
+    comps = r.targets[0].forms[0].points[0].comparisons
+    assert {c.what for c in comps} == {"engine pull_off_force", "min_a P(a), numeric (independent)"}
+    assert all(c.target < 0 and c.digits >= 30 for c in comps)
+    wrong = check({**wedge, "quantity": "pull_off_force", "formula": "pi*gamma/(2*tan(theta))"})
+    assert wrong.status == FAILS, wrong.verdict
+    wrong = check({**wedge, "quantity": "adhesion_force", "formula": p_min})
+    assert wrong.status == FAILS, wrong.verdict
+    cex = wrong.targets[0].forms[0].counterexample
+    assert all(c.target > 0 and c.printed < 0 for c in cex.comparisons)
 
 
 def test_undecided_when_the_engine_fails(monkeypatch):
@@ -198,42 +219,42 @@ def test_undecided_when_the_engine_fails(monkeypatch):
         raise RuntimeError("engine exploded")
     monkeypatch.setattr(C, "derive", boom)
     r = check({"quantity": "force", "profile": "x**2/(2*R)", "formula": "1"})
-    assert r.status == C.UNDECIDED and "engine exploded" in r.verdict
+    assert r.status == UNDECIDED and "engine exploded" in r.verdict
 
 
 # ------------------------------------------------------------------ numerics
 def test_quad_detects_divergence_and_integrates_singular_ends():
     t = sp.Symbol("t", positive=True)
-    with pytest.raises(C.Divergent):
-        C.quad_integral(sp.Integral(t**sp.Rational(-3, 2), (t, 0, 1)))
-    with pytest.raises(C.Divergent):
-        C.quad_integral(sp.Integral(1 / t, (t, 0, 1)))
-    v = C.quad_integral(sp.Integral(t**sp.Rational(-9, 10), (t, 0, 1)))    # = 10, needs the u**m map
+    with pytest.raises(REF.Divergent):
+        REF.quad_integral(sp.Integral(t**sp.Rational(-3, 2), (t, 0, 1)))
+    with pytest.raises(REF.Divergent):
+        REF.quad_integral(sp.Integral(1 / t, (t, 0, 1)))
+    v = REF.quad_integral(sp.Integral(t**sp.Rational(-9, 10), (t, 0, 1)))    # = 10, needs the u**m map
     with mpmath.workdps(50):
         assert abs(v - 10) < mpmath.mpf(10) ** -35
-    v = C.quad_integral(sp.Integral(1 / sp.sqrt(1 - t**2), (t, 0, 1)))
+    v = REF.quad_integral(sp.Integral(1 / sp.sqrt(1 - t**2), (t, 0, 1)))
     with mpmath.workdps(50):
         assert abs(v - mpmath.pi / 2) < mpmath.mpf(10) ** -40
 
 
 def test_num_eval_flags_undefined_values():
-    with pytest.raises(C.Undefined):
-        C.num_eval((lcs.n - 1) * sp.gamma(lcs.n / 2 - sp.S.Half), {lcs.n: sp.Integer(1)})
-    with pytest.raises(C.Undefined, match="complex"):
-        C.num_eval(sp.asin(lcs.b / lcs.a), {lcs.a: sp.Integer(1), lcs.b: sp.Integer(2)})
+    with pytest.raises(REF.Undefined):
+        REF.num_eval((lcs.n - 1) * sp.gamma(lcs.n / 2 - sp.S.Half), {lcs.n: sp.Integer(1)})
+    with pytest.raises(REF.Undefined, match="complex"):
+        REF.num_eval(sp.asin(lcs.b / lcs.a), {lcs.a: sp.Integer(1), lcs.b: sp.Integer(2)})
 
 
 def test_flamant_kernel_reproduces_the_hertz_profile():
     av, xv, E, R = sp.Rational(3, 5), sp.Rational(1, 4), sp.Integer(2), sp.Integer(1)
     with mpmath.workdps(60):
         p = lambda s: E / (2 * R) * mpmath.sqrt(mpmath.mpf(av)**2 - s**2)  # noqa: E731
-        D = C.flamant_relative_displacement(p, av, xv, E, 45)
+        D = REF.flamant_relative_displacement(p, av, xv, E, 45)
         assert abs(D - mpmath.mpf(xv)**2 / 2) < mpmath.mpf(10) ** -40
-        assert abs(C.flamant_resultant(p, av, 45) - mpmath.pi * E * mpmath.mpf(av)**2 / 4) < mpmath.mpf(10) ** -40
+        assert abs(REF.flamant_resultant(p, av, 45) - mpmath.pi * E * mpmath.mpf(av)**2 / 4) < mpmath.mpf(10) ** -40
 
 
 def test_result_serialises_to_json():
     import json
     r = check({"quantity": "force", "profile": "x*tan(theta)", "formula": "E_star*a", "points": 2})
     d = json.loads(json.dumps(r.to_dict(), default=str))
-    assert d["status"] == C.FAILS and d["targets"][0]["forms"][0]["counterexample"]
+    assert d["status"] == FAILS and d["targets"][0]["forms"][0]["counterexample"]

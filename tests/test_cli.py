@@ -52,7 +52,10 @@ def test_check_command_line_claim_holds(capsys):
 def test_check_wrong_claim_counterexample_and_strict(capsys):
     argv = ["check", "--profile", "x*tan(theta)", "--force", "pi*E_star*a*tan(theta)/2", "--budget", "5"]
     code, out, _ = run(capsys, *argv)
-    assert code == 0 and "does not hold" in out and "printed" in out and "derived" in out
+    assert code == 1 and "does not hold" in out and "printed" in out and "derived" in out
+    # the derived formula, a counterexample and the diagnosis of the failing claim
+    assert "derived:        E_star*a*tan(theta)" in out and "counterexample: at " in out
+    assert "diagnosis:      holds up to a constant factor: the formula is pi/2 times" in out
     code, _, _ = run(capsys, *argv, "--strict")
     assert code == 1
 
@@ -63,6 +66,27 @@ def test_check_json(capsys):
                        "--budget", "5")
     d = json.loads(out)
     assert code == 0 and d["claims"][0]["status"] in ("holds", "holds under a condition")
+
+
+def test_check_adhesion_force_and_pull_off_signs(capsys):
+    """--adhesion-force is P_adh > 0, --pull-off is P_min < 0 (wedge, Eq. 36)."""
+    base = ["check", "--profile", "x*tan(theta)", "--budget", "5", "--json"]
+    code, out, _ = run(capsys, *base, "--adhesion-force", "pi*gamma/(2*tan(theta))",
+                       "--pull-off=-pi*gamma/(2*tan(theta))")
+    d = json.loads(out)
+    assert code == 0
+    assert [(c["quantity"], c["status"]) for c in d["claims"]] == [("adhesion_force", "holds"),
+                                                                   ("pull_off_force", "holds")]
+    code, out, _ = run(capsys, *base, "--pull-off", "pi*gamma/(2*tan(theta))")
+    d = json.loads(out)["claims"][0]
+    assert code == 1 and d["status"] == "does not hold"
+    assert "opposite sign" in d["diagnoses"][0] and "P_min < 0" in d["diagnoses"][0]
+    # a formula starting with '-' needs neither '=' nor '--'
+    code, out, _ = run(capsys, *base, "--pull-off", "-pi*gamma/(2*tan(theta))")
+    assert code == 0 and json.loads(out)["claims"][0]["status"] == "holds"
+    with pytest.raises(SystemExit):
+        cli.main(["check", "--help"])
+    assert "P_min = min_a P(a) < 0" in " ".join(capsys.readouterr().out.split())
 
 
 def test_check_refuses_unsafe_input(capsys):
@@ -87,10 +111,13 @@ def test_check_file(tmp_path, capsys):
         formula = "E_star*a*theta"
         points = 2
     '''))
-    code, out, _ = run(capsys, "check", str(p), "--json", "--budget", "5")
+    code, out, err = run(capsys, "check", str(p), "--json", "--budget", "5")
     d = json.loads(out)
-    assert code == 0
+    assert code == 1 and d["exit_status"] == 1
     assert [c["status"] for c in d["claims"]] == ["holds", "does not hold"]
+    assert "[ 1/2] Hertz" in err and "[ 2/2] wedge, wrong" in err       # progress: one line per claim
+    code, out, err = run(capsys, "check", str(p), "--quiet", "--budget", "5")
+    assert code == 1 and err == "" and "Hertz: holds" in out
     assert d["claims"][1]["targets"][0]["forms"][0]["counterexample"]
 
 
@@ -176,6 +203,34 @@ def test_paper_job_writes_report_table_and_figures(tmp_path, capsys):
         quantity = "Z_n"
         profile = "c*x**n"
         values = ["1", "pi/2", "3*pi/4"]
+        [[figures]]
+        file = "fig4_worn_cylinder"
+        caption = "A worn cylinder against the parabola."
+        x = "a/b"
+        y = "2*R*P/(E_star*b**2)"
+        x_range = [0, 4]
+        points = 41
+        values = { b = 1, R = 1, E_star = 1 }
+        [[figures.curves]]
+        profile = "Piecewise((0, x < b), ((x**2 - b**2)/(2*R), True))"
+        [[figures.curves]]
+        profile = "x**2/(2*R)"
+        style = "--"
+        [[figures]]
+        file = "fig5_exact_cylinder"
+        caption = "The exact cylinder against Hertz, and their ratio."
+        x = "a/R"
+        y = "P/(E_star*R)"
+        x_range = [0, 0.99]
+        points = 41
+        values = { R = 1, E_star = 1 }
+        ratio = ["exact", "hertz"]
+        [[figures.curves]]
+        name = "exact"
+        profile = "R - sqrt(R**2 - x**2)"
+        [[figures.curves]]
+        name = "hertz"
+        profile = "x**2/(2*R)"
     '''))
     out_dir = tmp_path / "out"
     code, out, err = run(capsys, "paper", str(p), "--out", str(out_dir), "--budget", "10")
@@ -187,6 +242,7 @@ def test_paper_job_writes_report_table_and_figures(tmp_path, capsys):
         assert (out_dir / name).stat().st_size > 0, name
     assert r"\toprule" in (out_dir / "table1.tex").read_text()
     assert json.loads((out_dir / "results.json").read_text())["counts"]["holds"] == 2
+    assert r"\caption{The exact cylinder against Hertz, and their ratio.}" in (out_dir / "report.tex").read_text()
 
 
 def test_paper_shipped_subset_json(tmp_path, capsys):
@@ -209,3 +265,57 @@ def test_paper_unknown_label_and_internal_error(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(C, "check_paper", boom)
     code, _, err = run(capsys, "paper", "popov2017", "--out", str(tmp_path), "--no-figures")
     assert code == 3 and "internal error" in err and "kaboom" in err
+
+
+# ------------------------------------------------------------------ exit codes, hints, help
+def test_exit_codes_undecided_and_internal(capsys, monkeypatch):
+    import linecontact_sym.claims.check as C
+    from linecontact_sym.core.errors import BudgetExceeded
+    argv = ["check", "--profile", "x**2/(2*R)", "--force", "pi*E_star*a**2/(4*R)", "--json"]
+
+    def slow(*a, **k):
+        raise BudgetExceeded("the derivation took longer than 0.1 s")
+    monkeypatch.setattr(C, "derive", slow)
+    code, out, _ = run(capsys, *argv)
+    assert code == 4 and json.loads(out)["claims"][0]["status"] == "undecided"
+
+    def bug(*a, **k):
+        raise ZeroDivisionError("oops")
+    monkeypatch.setattr(C, "derive", bug)
+    code, out, _ = run(capsys, *argv)
+    assert code == 3 and "internal error" in json.loads(out)["claims"][0]["verdict"]
+
+
+def test_exit_codes_are_documented(capsys):
+    for verb in ("check", "paper"):
+        with pytest.raises(SystemExit):
+            cli.main([verb, "--help"])
+        text = " ".join(capsys.readouterr().out.split())
+        for code in ("0 every claim holds", "1 at least one claim does not hold", "2 bad input",
+                     "3 internal error", "4 no claim fails but at least one is undecided"):
+            assert code in text, (verb, code)
+
+
+def test_help_lists_the_values(capsys):
+    with pytest.raises(SystemExit):
+        cli.main(["derive", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "{text,latex,json}" in text and "mean_pressure" in text and "stiffness" in text
+    with pytest.raises(SystemExit):
+        cli.main(["check", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "adhesive_pressure" in text and "flat_punch_pressure" in text
+
+
+def test_unknown_symbol_hint_uses_command_line_syntax(capsys):
+    code, _, err = run(capsys, "derive", "k*x**2", "--quantities", "force")
+    assert code == 2 and "--symbols k" in err and "symbols = [" not in err
+
+
+def test_profile_starting_with_a_minus(capsys):
+    code, out, _ = run(capsys, "derive", "-x**2/(2*R) + x**2/R", "--quantities", "force", "--json",
+                       "--budget", "5")
+    assert code == 0 and json.loads(out)["quantities"]["force"]["expr"] == "pi*E_star*a**2/(4*R)"
+    code, out, _ = run(capsys, "derive", "--quantities", "force", "--format", "json", "--",
+                       "-x**2/(2*R) + x**2/R")
+    assert code == 0 and json.loads(out)["profile"] == "x**2/(2*R)"

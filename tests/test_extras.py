@@ -44,11 +44,12 @@ def test_certified_evaluation_without_python_flint(monkeypatch):
 
 
 def test_plotting_without_matplotlib(monkeypatch):
-    from linecontact_sym.claims import figures
+    from linecontact_sym.views import plots
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     monkeypatch.setitem(sys.modules, "matplotlib.pyplot", None)
+    monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
     with pytest.raises(MissingExtraError, match=r'pip install "linecontact_sym\[plot\]"'):
-        figures._plt()
+        plots._figure_class()
 
 
 def test_the_package_imports_without_the_extras():

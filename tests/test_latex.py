@@ -8,8 +8,25 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.claims import check as C
+from linecontact_sym.claims.results import FAILS, HOLDS, HOLDS_IF
+from linecontact_sym.claims.spec import paper_from_dict
 from linecontact_sym.views.latex import booktabs_table, check_latex, latex_escape, standalone, to_latex
 from linecontact_sym.claims.report import latex_report, markdown_report, power_law_latex, power_law_rows
+
+
+def test_readable_term_order_and_joined_roots():
+    a, x, R, E, g = lcs.a, lcs.x, lcs.R, lcs.E_star, lcs.gamma
+    assert to_latex(sp.sqrt(x**2 - a**2)) == r"\sqrt{x^{2} - a^{2}}"
+    assert to_latex(-sp.sqrt(2 * sp.pi * E * a * g) + sp.pi * E * a**2 / (4 * R)) == \
+        r"\frac{\pi E^{*} a^{2}}{4 R} - \sqrt{2 \pi E^{*} a \gamma_{12}}"
+
+
+def test_text_to_latex_turns_messages_into_latex():
+    from linecontact_sym.views.latex import text_to_latex
+    assert text_to_latex("n > 1/2 and n != 1") == r"$n > \frac{1}{2}$ and $n \neq 1$"
+    assert text_to_latex("profile x**2/(2*R), E_star") == r"profile $\frac{x^{2}}{2 R}$, $E^{*}$"
+    assert text_to_latex("1 -> n = 2 (a < b | c)") == r"1 $\to$ $n = 2$ ($a < b$ \textbar{} c)"
+    assert text_to_latex("the adhesion_force holds") == r"the adhesion\_force holds"
 
 
 def test_paper_notation():
@@ -67,7 +84,7 @@ def test_power_law_table():
 
 
 def _small_result():
-    paper = C.paper_from_dict({
+    paper = paper_from_dict({
         "key": "demo", "title": "Demo & test_paper",
         "definitions": {"Z_n": "(n - 1)*sqrt(pi)*gamma(n/2 - 1/2)/(2*gamma(n/2))"},
         "claims": [
@@ -84,11 +101,17 @@ def _small_result():
 
 def test_reports_are_well_formed():
     result = _small_result()
-    assert [r.status for r in result.results] == [C.HOLDS, C.HOLDS_IF, C.FAILS, C.HOLDS]
+    assert [r.status for r in result.results] == [HOLDS, HOLDS_IF, FAILS, HOLDS]
     tex = latex_report(result, power_law_latex(power_law_rows([1, 2], budget=5)[0]))
     assert check_latex(tex) == []
     assert r"\documentclass" in tex and r"\usepackage{booktabs}" in tex
     assert "Z_{n}" in tex                               # printed forms keep the paper's names
+    # no Python syntax: verdicts, conditions and formulas are LaTeX
+    body = tex[tex.index(r"\begin{document}"):]
+    for py in ("**", "!=", "E_star", "sqrt(", "3*pi", "x**2", "->"):
+        assert py not in body, py
+    assert r"n \neq 1" in body and "modulus~$k$" in body        # the condition, the elliptic convention
+    assert r"\caption{The claims of Demo" in body
     md = markdown_report(result)
     assert "| Eq. (13) |" in md and "does not hold" in md
     assert result._repr_markdown_().startswith("| claim |")

@@ -33,7 +33,7 @@ import mpmath
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.conversion import float_values
+from ..core.conversion import exact_number, float_values
 from ..core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
                            VerificationError)
 from ..method.derivation import Derivation, values_by_name
@@ -102,7 +102,7 @@ class AdhesiveLineContact(Contact):
         if isinstance(work_of_adhesion, str):
             raise DomainError("the work of adhesion is a string; strings are not evaluated. "
                               "Pass a SymPy expression or a number (e.g. lcs.gamma)")
-        g = sp.nsimplify(work_of_adhesion, rational=True) if isinstance(work_of_adhesion, float) \
+        g = exact_number(work_of_adhesion) if isinstance(work_of_adhesion, float) \
             else to_sympy(work_of_adhesion)
         if not isinstance(g, sp.Expr):
             raise DomainError(f"the work of adhesion must be an expression, got {g!r}")
@@ -202,7 +202,7 @@ class AdhesiveLineContact(Contact):
             raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
         for s in self.variables:
             if isinstance(vals[s], float):
-                vals[s] = sp.nsimplify(vals[s], rational=True)
+                vals[s] = exact_number(vals[s])
             if not to_sympy(vals[s]).is_number:
                 raise DomainError(f"{s.name} = {vals[s]} is not a number")
         return vals

@@ -24,9 +24,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import math
+
+import numpy as np
+import sympy as sp
+
 from ..core.errors import DomainError, LineContactError
 from ..method.derivation import Derivation
 from ..parsing import to_sympy
+from ..method.verification import holds
 
 #: every contact class, by its ``kind``
 CONTACT_KINDS: dict = {}
@@ -37,18 +43,18 @@ DOMAINS = {"any": None, "inside": "|x| <= a", "outside": "|x| >= a"}
 
 @dataclass(frozen=True)
 class Quantity:
-    """The declaration of a physical quantity of a contact class.
+    """The declaration of a physical quantity of a contact class::
 
-    symbol     how it is written (``"p(x; a)"``; LaTeX in ``latex``)
-    equation   the paper's equation (``"Eq. (12)"``), or ``""``
-    doc        what it is: definition, units, sign convention
-    arguments  the variables it depends on besides parameters (``("a", "x")``)
-    domain     ``"any"``, ``"inside"`` (|x| <= a) or ``"outside"`` (|x| >= a)
-    latex      its LaTeX symbol, for tables and reports
-    aliases    other names that mean this quantity (e.g. claims files)
-    method     True: the attribute is a method (``c.half_width(P)``) that
-               calls ``_<name>``; the registry entry and ``_derive_<name>``
-               serve the symbolic form
+        symbol     how it is written (``"p(x; a)"``; LaTeX in ``latex``)
+        equation   the paper's equation (``"Eq. (12)"``), or ``""``
+        doc        what it is: definition, units, sign convention
+        arguments  the variables it depends on besides parameters (``("a", "x")``)
+        domain     ``"any"``, ``"inside"`` (|x| <= a) or ``"outside"`` (|x| >= a)
+        latex      its LaTeX symbol, for tables and reports
+        aliases    other names that mean this quantity (e.g. claims files)
+        method     True: the attribute is a method (``c.half_width(P)``) that
+                   calls ``_<name>``; the registry entry and ``_derive_<name>``
+                   serve the symbolic form
     """
 
     symbol: str
@@ -103,20 +109,23 @@ class Contact:
     @classmethod
     def quantities(cls) -> dict:
         """name -> :class:`Quantity`, in declaration order (base classes first)."""
-        out = {}
-        for klass in reversed(cls.__mro__):
-            for name, val in vars(klass).items():
-                if isinstance(val, Quantity):
-                    out[name] = val
-        return out
+        if "_registry" not in cls.__dict__:
+            out = {}
+            for klass in reversed(cls.__mro__):
+                for name, val in vars(klass).items():
+                    if isinstance(val, Quantity):
+                        out[name] = val
+            cls._registry = out
+        return dict(cls._registry)
 
     @classmethod
     def resolve(cls, name: str) -> str:
         """The registry name of ``name`` (itself or an alias); a clear error
         listing the choices otherwise."""
-        qs = cls.quantities()
-        if name in qs:
+        cls.quantities()  # builds the class's registry once
+        if name in cls._registry:
             return name
+        qs = cls._registry
         for q in qs.values():
             if name in q.aliases:
                 return q.name
@@ -144,27 +153,56 @@ class Contact:
 
     # ----------------------------------------------------------- domain
     def check_domain(self, quantity: str, values: dict) -> dict:
-        """The one domain check of a quantity at a point (keywords by name):
-        a > 0, E_star > 0, x inside or outside the contact as the quantity's
-        domain says.  Returns the values with x replaced by |x|."""
-        q = type(self).quantities()[self.resolve(quantity)]
-        vals = dict(values)
-        for name in ("a", "E_star"):
-            if name in vals and vals[name] is not None:
-                v = to_sympy(vals[name])
-                if v.is_number and not v.is_positive:
-                    what = "the half-width" if name == "a" else "the reduced modulus E*"
-                    raise DomainError(f"{what} must be positive, got {name} = {vals[name]}")
+        """The one domain check of a quantity at a point (keywords by name),
+        used by ``evaluate``, ``evaluate_at``, the CLI: every name is one the
+        quantity takes; every value a finite real number (NumPy arrays:
+        elementwise); symbols declared positive (a, E_star, R, n, c, theta, ...)
+        get positive values (the work of adhesion may be 0); x inside or
+        outside the contact as the quantity's domain says; and, where the
+        result holds under conditions (e.g. a < R), they hold.  Raises
+        :class:`~linecontact_sym.core.errors.DomainError` naming the problem;
+        returns the values with x replaced by |x|."""
+        name = self.resolve(quantity)
+        q = type(self)._registry[name]
+        known, conds, cond_fn = self._domain_data(name)
+        unknown = sorted(set(values) - set(known))
+        if unknown and not q.method:
+            raise DomainError(f"{name} takes no value named {', '.join(map(repr, unknown))}; "
+                              f"it takes {', '.join(sorted(known)) or 'none'}")
+        vals = {k: _checked_value(k, v, known.get(k)) for k, v in values.items()}
         if "x" in vals and "a" in vals and q.domain != "any":
-            xv, av = abs(to_sympy(vals["x"])), to_sympy(vals["a"])
-            if q.domain == "inside" and xv > av:
-                raise DomainError(f"x = {vals['x']} lies outside the contact |x| <= a = {vals['a']}; "
-                                  f"the {q.name} is defined inside (use the gap outside)")
-            if q.domain == "outside" and xv < av:
-                raise DomainError(f"x = {vals['x']} lies inside the contact |x| < a = {vals['a']}; "
-                                  f"the {q.name} is defined outside (zero inside)")
+            xv, av = _abs(vals["x"]), vals["a"]
+            if q.domain == "inside" and np.any(xv > av):
+                raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
+                                  f"the {name} is defined inside (use the gap outside)")
+            if q.domain == "outside" and np.any(xv < av):
+                raise DomainError(f"x = {values['x']} lies inside the contact |x| < a = {values['a']}; "
+                                  f"the {name} is defined outside (zero inside)")
             vals["x"] = xv
+        if conds and set(known) <= set(vals):
+            try:
+                r = cond_fn(*[_as_float_array(vals[k]) for k in known])
+                ok = bool(r) if isinstance(r, (bool, np.bool_)) else bool(np.all(r))
+            except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
+                ok = holds(conds, {known[k]: v for k, v in vals.items()}) if not any(
+                    isinstance(v, np.ndarray) for v in vals.values()) else True
+            if not ok:
+                raise DomainError(f"{name} holds only where {', '.join(map(str, conds))}; "
+                                  f"that fails at {values}")
         return vals
+
+    def _domain_data(self, name):
+        """(name -> Symbol of the values the quantity takes, its conditions, a
+        NumPy function of those values deciding the conditions), cached."""
+        cache = self._caches()
+        key = ("_domain", name)
+        if key not in cache:
+            d = self.derivation(name)
+            known = {s.name: s for s in d.variables_all}
+            conds = tuple(c for c in d.conditions if c not in (sp.true,))
+            fn = sp.lambdify(list(known.values()), sp.And(*conds), "numpy") if conds else None
+            cache[key] = (known, conds, fn)
+        return cache[key]
 
     # ----------------------------------------------------------- numbers
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
@@ -186,6 +224,15 @@ class Contact:
         from ..numeric.evaluate import evaluate
         return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
 
+    def plot(self, what: str = "force", **kw):
+        """A matplotlib figure of the contact in the literature's normalised
+        axes: ``"pressure"`` (p/p0 against x/a at ``loads=[...]``),
+        ``"force"``, ``"adhesive"`` (JKR branches, pull-off, jump-in),
+        ``"gap"``; ``values={"R": 1}``, ``path=`` to save.  See
+        :mod:`linecontact_sym.views.contact_plots` (needs the ``[plot]`` extra)."""
+        from ..views.contact_plots import plot_contact
+        return plot_contact(self, what, **kw)
+
     def latex(self, quantity: str) -> str:
         """LaTeX of a quantity's expression (the package's one printer)."""
         from ..core.printing import to_latex
@@ -196,6 +243,61 @@ class Contact:
         quantities."""
         names = quantities or [n for n, q in type(self).quantities().items() if not q.method]
         return "\n".join(self.derivation(q).summary() for q in names)
+
+
+def _abs(v):
+    return np.abs(v) if isinstance(v, np.ndarray) else abs(v)
+
+
+#: symbols declared positive whose values may be <= 0 (x: the profile is
+#: mirrored, f(-x) = f(x)) or 0 (gamma = 0: the non-adhesive limit)
+_ANY_SIGN, _MAY_BE_ZERO = {"x"}, {"gamma"}
+
+
+def _positive_required(name, sym):
+    return sym is not None and sym.is_positive and name not in _ANY_SIGN
+
+
+def _as_float_array(v):
+    return v if isinstance(v, (float, np.ndarray)) else float(v)
+
+
+def _checked_value(name, v, sym):
+    """A value given by a user: a finite real number (exact where given
+    exactly) or a NumPy array of them; positive where the symbol is."""
+    if type(v) in (float, int):  # the common, fast case
+        if not math.isfinite(v):
+            raise DomainError(f"{name} = {v!r}: expected a finite real number")
+        if _positive_required(name, sym) and not v > 0 and not (name in _MAY_BE_ZERO and v == 0):
+            what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
+            raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
+        return v
+    if isinstance(v, (list, tuple, np.ndarray)):
+        arr = np.asarray(v)
+        if arr.dtype.kind not in "iuf":
+            raise DomainError(f"{name} = {v!r}: expected real numbers")
+        arr = arr.astype(float)
+        if not np.all(np.isfinite(arr)):
+            raise DomainError(f"{name} = {v!r}: values must be finite")
+        if _positive_required(name, sym) and np.any(arr <= 0) and not (name in _MAY_BE_ZERO and np.all(arr >= 0)):
+            raise DomainError(f"{name} must be positive, got {v!r}")
+        return arr
+    if v is None or isinstance(v, bool):
+        raise DomainError(f"{name} = {v!r} is not a number")
+    try:
+        val = to_sympy(v, where=name)
+    except LineContactError as exc:
+        raise DomainError(f"{name} = {v!r} is not a number ({exc})") from None
+    if not val.is_number or val.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or val.is_real is False:
+        raise DomainError(f"{name} = {v!r}: expected a finite real number")
+    if not val.is_real:
+        if val.is_real is None and abs(sp.im(sp.N(val, 30))) > 0:
+            raise DomainError(f"{name} = {v!r}: expected a finite real number")
+    if _positive_required(name, sym) and not val.is_positive:
+        if not (name in _MAY_BE_ZERO and val.is_zero):
+            what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
+            raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
+    return val
 
 
 def contact_kind(kind: str):

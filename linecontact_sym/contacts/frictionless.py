@@ -280,6 +280,13 @@ class LineContact(Contact):
         from .adhesive import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
 
+    def tangential(self, friction=S.mu):
+        """The partial-slip tangential form of this contact under Coulomb
+        friction mu at constant normal load (Cattaneo-Mindlin-Ciavarella-Jaeger),
+        see :mod:`linecontact_sym.contacts.tangential`."""
+        from .tangential import TangentialLineContact
+        return TangentialLineContact(self, friction)
+
     def stresses(self, tangential=None, **kw):
         """The subsurface stress field under this contact (plane strain), with
         an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses`."""

@@ -3,5 +3,5 @@
 ``symbols`` (the standard symbols, one place), ``errors`` (the package's
 exceptions), ``conversion`` (number <-> SymPy <-> mpmath), ``budget``
 (wall-clock limits for symbolic work), ``printing`` (the one LaTeX
-printer).  Nothing here imports anything else of the package.
+printer), ``quadrature`` (the one tanh-sinh toolkit for difficult endpoints).  Nothing here imports anything else of the package.
 """

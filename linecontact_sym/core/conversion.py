@@ -36,6 +36,31 @@ def to_basic(value) -> sp.Basic:
         raise LineContactError(f"cannot use {value!r} ({type(value).__name__}) as a SymPy value") from None
 
 
+def exact_number(v) -> sp.Basic:
+    """A value as an exact SymPy object: a float becomes the Rational of its
+    shortest decimal representation (0.1 -> 1/10, as people mean it), other
+    values go through :func:`to_basic` (strings are refused).
+
+    >>> exact_number(0.1), exact_number(3)
+    (1/10, 3)
+    """
+    if isinstance(v, float):
+        if v != v or v in (float("inf"), float("-inf")):
+            raise DomainError(f"expected a finite number, got {v}")
+        return sp.Rational(repr(v))
+    return to_basic(v)
+
+
+def nsimplify_basic(e, **kw) -> sp.Basic:
+    """``sympy.nsimplify`` for a value that is already a SymPy object or a
+    float (never a string: ``nsimplify`` would evaluate text as code)."""
+    if isinstance(e, float):
+        e = sp.Float(e)
+    if not isinstance(e, sp.Basic):
+        raise LineContactError(f"nsimplify_basic needs a SymPy object or a float, got {type(e).__name__}")
+    return sp.nsimplify(e, **kw)
+
+
 def rational(v, digits: int = 6) -> sp.Rational:
     """A float rounded to ``digits`` decimals as an exact Rational (sample
     points are exact so that every method sees the same number).
@@ -107,4 +132,4 @@ def float_values(vals: dict, digits: int) -> dict:
     return out
 
 
-__all__ = ["to_basic", "rational", "to_mpf", "real_mpf", "float_values"]
+__all__ = ["to_basic", "exact_number", "nsimplify_basic", "rational", "to_mpf", "real_mpf", "float_values"]

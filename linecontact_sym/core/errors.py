@@ -39,6 +39,11 @@ class NoEquilibriumError(DomainError):
     """No equilibrium half-width at the requested load (below the pull-off force)."""
 
 
+class GrossSlidingError(DomainError):
+    """The tangential force exceeds the Coulomb limit mu*P: the contact slides
+    as a whole, there is no partial-slip state."""
+
+
 class NumericValuesRequired(DomainError):
     """The quantity has no closed form; a number needs values of every parameter."""
 

@@ -25,7 +25,18 @@ Conventions (Popov 2017):
 * ``zeta``   -- the complex coordinate x + i z of the complex potentials
   (no assumptions: complex).
 * ``nu``     -- Poisson's ratio (plane strain: sigma_y = nu (sigma_x + sigma_z)).
-* ``mu``     -- coefficient of friction (sliding: q = mu p).
+
+Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential`:
+
+* ``mu``  -- Coulomb friction coefficient (one coefficient, static = kinetic).
+* ``Q``   -- tangential force per unit length, signed (real): its sign is the
+  direction of the load; |Q| < mu*P for partial slip.
+* ``c_s`` -- half-width of the central *stick* zone |x| < c_s (the literature's
+  ``c``, Johnson 1985 ch. 7, Hills & Nowell 1994; ``c`` is taken here by the
+  power-law coefficient and ``b`` by the flat half-width).  In a load
+  reversal it is the stick half-width at the turning point.
+* ``c_r`` -- half-width of the stick zone of a *reversal* (Mindlin-Deresiewicz
+  unloading or reloading), c_s <= c_r <= a.
 """
 from __future__ import annotations
 
@@ -47,6 +58,9 @@ z = sp.Symbol("z", positive=True)
 zeta = sp.Symbol("zeta")
 nu = sp.Symbol("nu", positive=True)
 mu = sp.Symbol("mu", positive=True)
+Q = sp.Symbol("Q", real=True)
+c_s = sp.Symbol("c_s", positive=True)
+c_r = sp.Symbol("c_r", positive=True)
 
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
@@ -56,10 +70,12 @@ LATEX_NAMES = {
     E_star: r"E^{*}",
     gamma: r"\gamma_{12}",
     theta: r"\theta",
+    c_s: r"c_{\mathrm{s}}",
+    c_r: r"c_{\mathrm{r}}",
     zeta: r"\zeta",
     nu: r"\nu",
     mu: r"\mu",
 }
 
-__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "z", "zeta", "nu", "mu",
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "zeta", "nu",
            "RESERVED", "LATEX_NAMES"]

@@ -18,7 +18,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.budget import run_with_budget
-from ..core.conversion import float_values, real_mpf
+from ..core.conversion import exact_number, float_values, real_mpf
 from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError
 from ..parsing import to_sympy
 from .rules import RULES, NotApplicable, Problem, Step
@@ -126,7 +126,7 @@ def values_by_name(symbols, values):
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = sp.nsimplify(v, rational=True) if isinstance(v, float) else to_sympy(v)
+        out[sym] = exact_number(v) if isinstance(v, float) else to_sympy(v)
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")

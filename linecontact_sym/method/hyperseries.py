@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from ..core.conversion import to_basic
 from ..core.errors import DivergentIntegralError
 
 
@@ -150,7 +151,7 @@ def decompose(g: sp.Expr, x: sp.Symbol) -> list[SeriesTerm]:
             if base_exp[0] != x:
                 raise NotDecomposable(f"{term}: prefactor {pre} is not a power of x")
             mu += base_exp[1]
-        out.append(SeriesTerm(coef * pc, mu, tuple(map(sp.S, up)), tuple(map(sp.S, lo)), sp.S(w), sp.S(q)))
+        out.append(SeriesTerm(coef * pc, mu, tuple(map(to_basic, up)), tuple(map(to_basic, lo)), to_basic(w), to_basic(q)))
     return out
 
 
@@ -167,7 +168,7 @@ def beta_kernel_sum(term: SeriesTerm, rho, sigma, a, conditions: list):
     ``conditions``; raises :class:`DivergentIntegralError` where the integral
     diverges for every parameter value.
     """
-    sigma = sp.S(sigma)
+    sigma = to_basic(sigma)
     if (sigma + 1).is_positive is False:
         raise DivergentIntegralError(f"kernel exponent sigma = {sigma} <= -1")
     alpha = (term.mu + rho + 1) / 2

@@ -32,6 +32,12 @@ class Piece:
         return sp.diff(self.expr, S.x)
 
 
+#: the largest exponent magnitude accepted in a profile (x**n with n up to 1000
+#: is still a power law people study; x**(10**10) is not, and would not end)
+MAX_EXPONENT = 10**4
+MAX_DERIVATIVE_ORDER = 20
+
+
 def _default_range(sym: sp.Symbol) -> tuple[float, float]:
     return (0.5, 2.5)
 
@@ -48,11 +54,29 @@ def _sanitize(expr, params):
     if not isinstance(expr, sp.Basic):
         raise ProfileError(
             f"the profile must be a SymPy expression in x, got {type(expr).__name__}: {expr!r}")
-    if isinstance(expr, sp.logic.boolalg.Boolean):
+    if isinstance(expr, sp.logic.boolalg.Boolean) and not isinstance(expr, sp.Expr):
         raise ProfileError(f"the profile must be an expression, got the relation {expr}")
+    if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+        raise ProfileError(f"the profile {expr} is undefined (a division by zero or an infinite value: "
+                           f"a parameter set to 0?)")
+    if expr.has(sp.Integral):
+        raise ProfileError(f"the profile {expr} holds an unevaluated Integral; give f(x) itself")
+    for pw in expr.atoms(sp.Pow):
+        e = pw.exp
+        if e.is_number and e.is_real and abs(e) > MAX_EXPONENT:
+            raise ProfileError(f"the profile {expr} has the power {pw} with exponent beyond {MAX_EXPONENT} in "
+                               f"magnitude; no physical profile needs it (and evaluating it would not end)")
+    for der in expr.atoms(sp.Derivative):
+        order = sum(int(n) if n.is_Integer else MAX_DERIVATIVE_ORDER + 1 for _, n in der.variable_count)
+        if order > MAX_DERIVATIVE_ORDER:
+            raise ProfileError(f"the profile holds a derivative of order {order} > {MAX_DERIVATIVE_ORDER}")
+    if expr.has(sp.Derivative):
+        expr = expr.doit()
     # a user's own Symbol('x') (other assumptions) means the standard x
     subs = {s: S.x for s in expr.free_symbols if s.name == "x" and s != S.x}
     expr = expr.xreplace(subs)
+    if expr.is_real is False or (expr.is_number and expr.is_real is not True):
+        raise ProfileError(f"the profile {expr} is not real")
     return expr
 
 
@@ -91,6 +115,10 @@ class Profile:
                 raise ProfileError(
                     f"profile {self.name!r} uses the reserved symbol {s}; "
                     f"{', '.join(map(str, S.RESERVED))} are the half-width, load and modulus")
+            if s.is_positive is False or s.is_nonpositive:
+                raise ProfileError(
+                    f"profile {self.name!r}: the symbol {s} is declared non-positive; the parameters of a "
+                    f"profile are lengths, slopes, exponents: declare them positive (Symbol('{s}', positive=True))")
             if s not in declared and not s.is_positive:
                 raise UnknownSymbolError(
                     f"profile {self.name!r} holds the unknown symbol {s!r}. Declare it: "

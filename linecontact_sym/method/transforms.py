@@ -40,6 +40,7 @@ import mpmath
 import sympy as sp
 
 from ..core import symbols as S
+from ..core.quadrature import quad0
 
 # dummy integration variables: the defining Integrals print with these
 t = sp.Symbol("t", positive=True)
@@ -84,16 +85,6 @@ def profile_integral(P: sp.Expr) -> sp.Expr:
 # --------------------------------------------------------------- quadratures
 def _mpf(v):
     return mpmath.mpf(sp.N(v, mpmath.mp.dps + 10)) if not isinstance(v, mpmath.mpf) else v
-
-
-def quad0(f, pts):
-    """mpmath tanh-sinh quadrature over the points ``pts`` (pts[0] == 0), with
-    u**4 = t on the first interval: an algebraic or logarithmic endpoint
-    singularity at 0 (power laws with n < 1, the wedge) is then integrated to
-    full precision instead of losing the tail below the smallest node."""
-    first = mpmath.quad(lambda u: 4 * u**3 * f(u**4), [0, mpmath.root(pts[1], 4)], maxdegree=10)
-    rest = mpmath.quad(f, pts[1:], maxdegree=10) if len(pts) > 2 else 0
-    return first + rest
 
 
 def force_quad(profile, values: dict, dps: int = 50):

@@ -35,6 +35,7 @@ import mpmath
 import sympy as sp
 
 from ..parsing import to_sympy
+from ..core.conversion import nsimplify_basic
 from ..core.errors import LineContactError
 from ..core.extras import require
 from .special import carlson_rd, carlson_rf, carlson_rg, gamma_ratio, hyp2f1c
@@ -78,7 +79,7 @@ def to_arb(v):
         except (TypeError, ValueError):
             return arb(v)
     if isinstance(v, sp.Basic):
-        v = sp.nsimplify(v) if v.is_Float else v
+        v = nsimplify_basic(v) if v.is_Float else v
         if v.is_Rational:
             return arb(flint.fmpq(int(v.p), int(v.q)))
         raise CertificationError(f"cannot convert {v} exactly")

@@ -8,7 +8,146 @@ that compile with a standard LaTeX installation (packages ``booktabs`` and
 """
 from __future__ import annotations
 
+import re
+
 from ..core.printing import PaperLatexPrinter, latex_escape, to_latex
+
+
+_IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
+_NUMBER = r"\d+(?:\.\d+)?(?:[eE][-+]?\d+)?"
+_IDENT_RE = re.compile(_IDENT)
+_OPS = ("**", "!=", "<=", ">=", "*", "/", "+", "-", "<", ">", "=", "^")
+_RELATIONS = {"!=": r"\neq", "<=": r"\le", ">=": r"\ge", "<": "<", ">": ">", "=": "="}
+_SPECIAL = {"E*\u00b7a\u00b7f'(0+)": "E^{*} a f'(0^{+})", "f'(0+)": "f'(0^{+})", "E*": "E^{*}"}
+
+
+def _group(text, i):
+    """End of the balanced parenthesis group starting at ``text[i] == '('`` (or -1)."""
+    depth = 0
+    for j in range(i, len(text)):
+        if text[j] == "(":
+            depth += 1
+        elif text[j] == ")":
+            depth -= 1
+            if depth == 0:
+                return j + 1
+    return -1
+
+
+def _atom(text, i):
+    """End of an operand starting at i: [-]name[(...)] | [-]number | [-](...) ; -1 if none."""
+    j = i
+    if j < len(text) and text[j] == "-":
+        j += 1
+    for sp_, tex in _SPECIAL.items():
+        if text.startswith(sp_, j):
+            return j + len(sp_)
+    m = re.compile(_NUMBER).match(text, j) or re.compile(_IDENT).match(text, j)
+    if m:
+        j = m.end()
+        if j < len(text) and text[j] == "'":
+            j += 1
+        if j < len(text) and text[j] == "(" and m.group(0)[0].isalpha():
+            k = _group(text, j)
+            if k < 0:
+                return -1
+            j = k
+        return j
+    if j < len(text) and text[j] == "(":
+        return _group(text, j)
+    return -1
+
+
+def _math_span(text, i):
+    """(end, n_operators) of the formula starting at i, or (-1, 0)."""
+    end = _atom(text, i)
+    if end < 0:
+        return -1, 0
+    nops = 1 if text[i] == "-" else 0
+    while True:
+        k = end
+        while k < len(text) and text[k] == " ":
+            k += 1
+        op = next((o for o in _OPS if text.startswith(o, k)), None)
+        if op is None:
+            return end, nops
+        k += len(op)
+        while k < len(text) and text[k] == " ":
+            k += 1
+        nxt = _atom(text, k)
+        if nxt < 0:
+            return end, nops
+        end, nops = nxt, nops + 1
+
+
+def _formula_tex(span):
+    """LaTeX of a formula typed in SymPy syntax (relations split at =, !=, <, ...)."""
+    import re
+    from ..parsing import parse_expr
+    parts = re.split(r"\s*(!=|<=|>=|<|>|=)\s*", span)
+    out = []
+    for k, part in enumerate(parts):
+        if k % 2:
+            out.append(_RELATIONS[part])
+            continue
+        if part in _SPECIAL:
+            out.append(_SPECIAL[part])
+            continue
+        if re.fullmatch(r"-?" + _NUMBER, part):      # a number stays as written (0.3141, not 3141/10000)
+            out.append(part)
+            continue
+        try:
+            expr = parse_expr(part, where="report")
+        except Exception:  # noqa: BLE001 -- short undeclared names (k, w1) are symbols; words are not
+            names = sorted(set(re.findall(_IDENT, part)))
+            try:
+                expr = parse_expr(part, symbols=[n for n in names if len(n) <= 2 or ("_" in n and len(n) <= 6)], where="report")
+            except Exception:  # noqa: BLE001 -- not a formula after all
+                return None
+        out.append(to_latex(expr))
+    return " ".join(out)
+
+
+def text_to_latex(text: str) -> str:
+    r"""A message with formulas in SymPy syntax (a verdict, a condition, a
+    note) as LaTeX text: every formula is parsed (whitelisted parser) and
+    printed by :func:`to_latex` in ``$...$``, the rest is escaped.  A formula
+    is a chain of operands joined by operators (``n != 1``,
+    ``x**2/(2*R)``, ``a = 0.25``); a lone word stays text, except names with
+    an underscore (``E_star``) and calls (``gamma(n/2)``).
+
+    >>> print(text_to_latex("holds under a condition: n != 1 and E_star*a > 0; 3*pi/4"))
+    holds under a condition: $n \neq 1$ and $E^{*} a > 0$; $\frac{3 \pi}{4}$
+    >>> print(text_to_latex("only where f'(0+) = 0 (50% of cases)"))
+    only where $f'(0^{+}) = 0$ (50\% of cases)
+    """
+    out, i, plain = [], 0, []
+    text = str(text)
+    while i < len(text):
+        start_ok = i == 0 or not (text[i - 1].isalnum() or text[i - 1] in "_.")
+        end, nops = _math_span(text, i) if start_ok else (-1, 0)
+        if end > i:
+            span = text[i:end]
+            word = span.lstrip("-")
+            is_math = nops > 0 or "_" in word or word.endswith(")") or word in _SPECIAL
+            if span.startswith("-") and nops == 1 and not ("_" in word or word.endswith(")")):
+                is_math = i == 0 or text[i - 1] in " (=,"
+            tex = _formula_tex(span) if is_math else None
+            if tex is not None:
+                out.append(latex_escape("".join(plain)))
+                plain = []
+                out.append(f"${tex}$")
+                i = end
+                continue
+            w = _IDENT_RE.match(text, i)
+            if w:                           # a word that is not a formula: skip it whole
+                plain.append(w.group(0))
+                i = w.end()
+                continue
+        plain.append(text[i])
+        i += 1
+    out.append(latex_escape("".join(plain)))
+    return "".join(out)
 
 
 def booktabs_table(header, rows, *, align: str | None = None, caption: str | None = None,
@@ -44,14 +183,58 @@ def booktabs_table(header, rows, *, align: str | None = None, caption: str | Non
     return "\n".join(parts)
 
 
-def standalone(body: str, title: str | None = None) -> str:
-    """A complete LaTeX document around ``body`` (article; booktabs, amsmath)."""
-    head = ["\\documentclass[10pt]{article}", "\\usepackage[T1]{fontenc}",
-            "\\usepackage{amsmath,amssymb}", "\\usepackage{booktabs}", "\\usepackage{longtable}",
-            "\\usepackage[margin=2cm,landscape]{geometry}", "\\usepackage{array}", "\\begin{document}"]
+#: the preamble of every document written (standard packages of any LaTeX installation)
+PREAMBLE = [r"\documentclass[10pt,a4paper]{article}",
+            r"\usepackage{amsmath,amssymb}", r"\usepackage{booktabs}", r"\usepackage{longtable}",
+            r"\usepackage{array}", r"\usepackage{graphicx}", r"\usepackage[margin=2.2cm]{geometry}",
+            # a display formula shrinks to the line width where it would not fit, never grows
+            r"\newsavebox{\fitbox}",
+            r"\newcommand{\fitmath}[1]{\sbox{\fitbox}{$\displaystyle #1$}\ifdim\wd\fitbox>\linewidth"
+            r"\resizebox{\linewidth}{!}{\usebox{\fitbox}}\else\usebox{\fitbox}\fi}",
+            r"\renewcommand{\arraystretch}{1.3}", r"\AtBeginDocument{\setlength{\LTcapwidth}{\textwidth}}"]
+
+
+def fit_math(tex: str) -> str:
+    """A formula (LaTeX, no ``$``) set in display style, shrunk to the line
+    width if it is wider (``\\fitmath`` of :data:`PREAMBLE`)."""
+    return r"\fitmath{%s}" % tex
+
+
+def standalone(body: str, title: str | None = None, landscape: bool = False) -> str:
+    """A complete LaTeX document around ``body`` (article, A4, booktabs,
+    longtable, amsmath, graphicx; :data:`PREAMBLE`)."""
+    head = list(PREAMBLE)
+    if landscape:
+        head = [h.replace("]{geometry}", ",landscape]{geometry}") for h in head]
+    head.append(r"\begin{document}")
     if title:
         head.append(f"\\section*{{{latex_escape(title)}}}")
     return "\n".join(head) + "\n" + body + "\n\\end{document}\n"
+
+
+def longtable(header, rows, *, align: str, caption: str | None = None, label: str | None = None,
+              size: str | None = None) -> str:
+    """A booktabs ``longtable`` (breaks across pages; the header repeats);
+    cells are LaTeX already; rows are separated by a little space."""
+    ncol = len(header)
+    head = " & ".join(header) + r" \\"
+    parts = []
+    if size:
+        parts.append("{\\" + size)
+    parts.append(f"\\begin{{longtable}}{{{align}}}")
+    if caption:
+        parts.append(f"\\caption{{{caption}}}" + (f"\\label{{{label}}}" if label else "") + r" \\")
+    parts += [r"\toprule", head, r"\midrule", r"\endfirsthead",
+              r"\toprule", head, r"\midrule", r"\endhead",
+              r"\bottomrule", r"\endfoot"]
+    for r in rows:
+        if len(r) != ncol:
+            raise ValueError(f"row {r!r} has {len(r)} cells, the header {ncol}")
+        parts.append(" & ".join(str(c) for c in r) + r" \\ \addlinespace[2pt]")
+    parts.append(r"\end{longtable}")
+    if size:
+        parts.append("}")
+    return "\n".join(parts)
 
 
 def check_latex(text: str) -> list[str]:
@@ -85,7 +268,7 @@ def check_latex(text: str) -> list[str]:
             problems.append(f"\\end{{{env}}} does not match")
     if stack:
         problems.append(f"unclosed environment(s): {stack}")
-    for m in re.finditer(r"\\begin\{tabular\}(.*?)\\end\{tabular\}", clean, re.S):
+    for m in re.finditer(r"\\begin\{(?:tabular|longtable)\}(.*?)\\end\{(?:tabular|longtable)\}", clean, re.S):
         body = m.group(1)
         for rule in ("\\toprule", "\\midrule", "\\bottomrule"):
             if rule not in body:
@@ -101,4 +284,5 @@ def check_latex(text: str) -> list[str]:
     return problems
 
 
-__all__ = ["to_latex", "latex_escape", "booktabs_table", "standalone", "check_latex", "PaperLatexPrinter"]
+__all__ = ["to_latex", "latex_escape", "text_to_latex", "booktabs_table", "longtable", "standalone",
+           "fit_math", "check_latex", "PaperLatexPrinter", "PREAMBLE"]

@@ -1,0 +1,368 @@
+"""What the engine derives for a claim: the :class:`Derived` record and the one
+function, :func:`derive`, that maps a claim's quantity to it.
+
+This is the only module of the claims layer that uses the contact API
+(``LineContact``, ``derivation``, ``adhesive``, ``profile_from_force``); the
+rest of the layer sees :class:`Derived` records.  Quantities without an
+engine route (the flat punch, the pulled punch) are built here from the
+first-principles references of :mod:`.references`.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Callable
+
+import mpmath
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.budget import run_with_budget
+from ..core.conversion import to_basic, to_mpf
+from ..core.errors import ClaimError, DomainError, LineContactError
+from .references import (DPS, Comparison, DerivedUndefined, Undefined, flamant_relative_displacement,
+                         flamant_resultant, griffith_punch_force, num_eval, numeric_minimum)
+from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
+
+
+@dataclass
+class Derived:
+    """What the checker compares a printed formula with, for one profile."""
+
+    expr: sp.Expr | None
+    method: str
+    conditions: tuple = ()
+    closed_form: bool = True
+    notes: tuple = ()
+    seconds: float = 0.0
+    verified_digits: float | None = None
+    evaluator: Callable | None = None    # (vals, dps) -> mpf
+    comparer: Callable | None = None     # (vals, printed_expr, dps) -> [Comparison]
+    physics: Callable | None = None      # (vals, printed_expr, dps) -> [Comparison]
+    profile: sp.Expr | None = None
+    slope: sp.Expr | None = None         # f'(0+)
+    variables: frozenset = frozenset()   # symbols the evaluation needs besides those of expr
+
+    def value(self, vals, dps=DPS):
+        """The derived value at the point ``vals`` (raises DerivedUndefined
+        outside the derivation's conditions)."""
+        with mpmath.workdps(dps + 10):   # arithmetic on the values must not round to 15 digits
+            return self._value(vals, dps)
+
+    def _value(self, vals, dps):
+        for c in self.conditions:
+            try:
+                ok = c.xreplace(vals)
+                ok = bool(ok) if ok in (sp.true, sp.false) else bool(sp.simplify(ok))
+            except TypeError:
+                ok = False
+            if not ok:
+                raise DerivedUndefined(f"outside the derived result's conditions ({c})")
+        if self.evaluator is not None:
+            return self.evaluator(vals, dps)
+        return num_eval(self.expr, vals, dps, what="the derived quantity", exc=DerivedUndefined)
+
+    def compare(self, vals, printed_expr, dps=DPS, physics=False):
+        """[Comparison] of the printed expression with the derived quantity at
+        ``vals`` (and, with ``physics``, the first-principles checks)."""
+        with mpmath.workdps(dps + 10):   # arithmetic on the values must not round to 15 digits
+            return self._compare(vals, printed_expr, dps, physics)
+
+    def _compare(self, vals, printed_expr, dps, physics):
+        if self.comparer is not None:
+            comps = self.comparer(vals, printed_expr, dps)
+        else:
+            target = self.value(vals, dps)
+            printed = num_eval(printed_expr, vals, dps)
+            comps = [Comparison("value", printed, target)]
+        if physics and self.physics is not None and not printed_expr.has(sp.Integral):
+            comps += self.physics(vals, printed_expr, dps)
+        return comps
+
+
+class Context:
+    """Caches engine objects across the claims (and figures) of one run."""
+
+    def __init__(self, budget):
+        self.budget = budget
+        self.contacts = {}
+        self.adhesives = {}
+        self.kinds = {}   # (id(contact), kind) -> the contact of that kind
+
+    def contact(self, profile, ranges: Callable):
+        """The contact of ``profile``, its parameters verified over
+        ``ranges(symbol)`` (e.g. :meth:`Claim.range_of`)."""
+        from ..contacts.frictionless import LineContact
+        params = {}
+        for sym in sorted(profile.free_symbols - {S.x}, key=lambda z: z.name):
+            params[sym] = ranges(sym)
+        key = (profile, tuple(sorted((k.name, v) for k, v in params.items())))
+        if key not in self.contacts:
+            self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget)
+        return self.contacts[key]
+
+    def adhesive(self, profile, ranges: Callable):
+        """The JKR-adhesive form of :meth:`contact` (work of adhesion gamma)."""
+        c = self.contact(profile, ranges)
+        if id(c) not in self.adhesives:
+            self.adhesives[id(c)] = c.adhesive(S.gamma)
+        return self.adhesives[id(c)]
+
+
+def figure_contacts(profiles, file_ranges: dict, budget: float) -> list:
+    """Contacts of the profiles of a figure (parameters verified over the
+    file's sampling ranges): objects with ``to_numeric(quantity)``."""
+    ctx = Context(budget)
+    return [ctx.contact(p, lambda sym: range_of(sym.name, file_ranges)) for p in profiles]
+
+
+def power_law_force(budget: float):
+    """The engine's :class:`~linecontact_sym.method.derivation.Derivation` of
+    the force law of the power-law profile c*x**n with symbolic n (Eq. 16),
+    for the tables of Z_n."""
+    from ..contacts.catalogue import power_law
+    return power_law(budget=budget).derivation("force")
+
+
+def _from_derivation(d, profile=None, slope=None, physics=None) -> Derived:
+    rec = d.verification
+    return Derived(d.expr, d.method, tuple(d.conditions), d.closed_form, tuple(d.notes), d.seconds,
+                   rec.min_digits if rec is not None else None,
+                   evaluator=(None if d.closed_form else (lambda vals, dps, d=d: _ref_eval(d, vals, dps))),
+                   physics=physics, profile=profile, slope=slope)
+
+
+def _ref_eval(d, vals, dps):
+    try:
+        return d.reference(vals, dps)
+    except (DomainError, ValueError, ZeroDivisionError) as exc:
+        raise DerivedUndefined(f"the derived quantity cannot be evaluated here: {exc}")
+
+
+def _pressure_physics(profile, force_fn):
+    """Flamant checks of a pressure: it reproduces the profile under the contact
+    and its resultant is the load."""
+    def physics(vals, printed_expr, dps):
+        fixed = {k: v for k, v in vals.items() if k != S.x}
+        p = sp.lambdify(S.x, printed_expr.xreplace(fixed), "mpmath")
+        E, av, xv = vals[S.E_star], vals[S.a], vals[S.x]
+        with mpmath.workdps(dps + 10):
+            D = flamant_relative_displacement(p, av, xv, E, dps)
+            fx = num_eval(profile, {**vals}, dps, what="the profile", exc=DerivedUndefined)
+            res = flamant_resultant(p, av, dps)
+            Pa = force_fn(vals, dps)
+        return [Comparison("Flamant: u_z(0) - u_z(x) = f(x) under the contact", D, fx),
+                Comparison("Flamant: resultant = P(a)", res, Pa)]
+    return physics
+
+
+def _where(claim):
+    return f"{claim.source}: claim {claim.label!r}"
+
+
+def derive(claim: Claim, profile, ctx: Context) -> Derived:
+    """The derived counterpart of ``claim.quantity`` for one profile."""
+    q = claim.quantity
+    if q in ("force", "pressure", "gap", "Z_n", "profile_at_a", "half_width"):
+        c = ctx.contact(profile, claim.range_of)
+        slope = c.profile.slope_at_origin
+        if q == "profile_at_a":
+            return Derived(profile.xreplace({S.x: S.a}), "the profile itself, f(a)", profile=profile,
+                           slope=slope)
+        if q == "Z_n":
+            d = c.derivation("force")
+            if not d.closed_form:
+                raise ClaimError(f"{_where(claim)}: the engine found no closed force law")
+            Z = sp.simplify(sp.gammasimp(d.expr / (S.E_star * S.c * S.a**S.n)))
+            if Z.free_symbols - {S.n}:
+                raise ClaimError(f"{_where(claim)}: Z_n needs a power-law profile c*x**n; "
+                                 f"P/(E* c a^n) = {Z} depends on {sorted(map(str, Z.free_symbols))}")
+            return Derived(Z, f"P(a)/(E* c a^n) of the engine's force law ({d.method})", d.conditions,
+                           True, tuple(d.notes), d.seconds,
+                           d.verification.min_digits if d.verification else None, profile=profile, slope=slope)
+        if q == "half_width":
+            return _from_derivation(c.half_width(S.P), profile, slope)
+        d = c.derivation(q)
+        physics = None
+        if q == "pressure":
+            fd = c.derivation("force")
+            physics = _pressure_physics(profile, lambda vals, dps: _from_derivation(fd).value(vals, dps))
+        return _from_derivation(d, profile, slope, physics)
+    if q in ("adhesive_force", "adhesive_pressure", "pull_off_force", "adhesion_force", "pull_off_half_width"):
+        return _derive_adhesive(claim, profile, ctx)
+    if q == "inverse_profile":
+        from ..contacts.inverse import profile_from_force
+        t0 = time.perf_counter()
+        d = profile_from_force(claim.force_law, budget=ctx.budget)
+        out = _from_derivation(d)
+        out.seconds = time.perf_counter() - t0
+        return out
+    if q == "flat_punch_pressure":
+        return _flat_punch_pressure()
+    if q == "flat_punch_displacement":
+        return _flat_punch_displacement()
+    if q == "punch_adhesion_force":
+        return _punch_adhesion_force(ctx)
+    return _derive_registered(claim, profile, ctx)
+
+
+def _derive_registered(claim, profile, ctx) -> Derived:
+    """Any quantity of any contact kind, by its registry name ('tangential.slip'):
+    the kind is built on the frictionless contact of the profile."""
+    from ..contacts.base import contact_kind, qualified_quantities
+    entry = qualified_quantities().get(claim.quantity)
+    if entry is None:
+        raise ClaimError(f"{_where(claim)}: quantity {claim.quantity!r} is not implemented")
+    kind, name, quantity = entry
+    t0 = time.perf_counter()
+    c = ctx.contact(profile, claim.range_of)
+    contact = ctx.kinds.get((id(c), kind))
+    if contact is None:
+        contact = ctx.kinds[(id(c), kind)] = contact_kind(kind).from_frictionless(c)
+    if quantity.method:   # a(P), c_s(Q): the symbolic form is the method's default
+        d = getattr(contact, name)()
+        d = d[0] if isinstance(d, tuple) else d
+    else:
+        d = contact.derivation(name)
+    out = _from_derivation(d, profile, c.profile.slope_at_origin)
+    out.seconds = time.perf_counter() - t0
+    return out
+
+
+def placeholder_laws(claim: Claim, profile, ctx: Context):
+    """(P_0, p_0): the engine's closed-form force law and pressure of
+    ``profile`` where the claim's forms use the placeholders force(.) and p0
+    (None where unused or not closed)."""
+    dforce = dpress = None
+    if not claim.general:
+        return dforce, dpress
+    c = ctx.contact(profile, claim.range_of)
+    if any(f.expr.has(PLACEHOLDER_FORCE) for f in claim.forms):
+        fd = c.derivation("force")
+        dforce = fd.expr if fd.closed_form else None
+    if any(f.expr.has(PLACEHOLDER_P0) for f in claim.forms):
+        pd = c.derivation("pressure")
+        dpress = pd.expr if pd.closed_form else None
+    return dforce, dpress
+
+
+# ---------------------------------------------------------------- adhesion
+def _adhesion_item(ad, name):
+    if hasattr(ad, "derivation"):
+        try:
+            return ad.derivation(name)
+        except (KeyError, ValueError, AttributeError, TypeError):
+            pass
+    return getattr(ad, name)
+
+
+def _as_derived(obj, method) -> Derived:
+    from ..method.derivation import Derivation
+    if isinstance(obj, Derivation):
+        return _from_derivation(obj)
+    return Derived(to_basic(obj), method)
+
+
+def _derive_adhesive(claim, profile, ctx) -> Derived:
+    t0 = time.perf_counter()
+    q = claim.quantity
+    ad = ctx.adhesive(profile, claim.range_of)
+    slope = ctx.contact(profile, claim.range_of).profile.slope_at_origin
+    force = _as_derived(_adhesion_item(ad, "force"), "adhesive force law (engine, Eq. 33)")
+    if q == "adhesive_force":
+        out = force
+    elif q == "adhesive_pressure":
+        out = _as_derived(_adhesion_item(ad, "pressure"), "adhesive pressure (engine, Eq. 29)")
+        out.physics = _pressure_physics(profile, force.value)
+    elif q == "pull_off_half_width":
+        out = _as_derived(_adhesion_item(ad, "pull_off_half_width"), "half-width at pull-off (engine)")
+    else:
+        return _derive_pull_off(q, ad, force, profile, slope, t0)
+    out.profile, out.slope = profile, slope
+    out.seconds = time.perf_counter() - t0
+    return out
+
+
+def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
+    """P_min < 0 (``pull_off_force``) or P_adh = -P_min > 0 (``adhesion_force``):
+    the engine's closed form, and an independent numeric minimum of the
+    engine's force law P(a) over a."""
+    sign = 1 if q == "pull_off_force" else -1      # the claimed value is sign * min_a P(a)
+    engine = _as_derived(_adhesion_item(ad, q), f"{q} (engine)")
+    Pexpr = force.expr
+    dPexpr = sp.diff(Pexpr, S.a)
+
+    def minimum(vals, dps):
+        fixed = {k: v for k, v in vals.items() if k != S.a}
+        Pf = sp.lambdify(S.a, Pexpr.xreplace(fixed), "mpmath")
+        dPf = sp.lambdify(S.a, dPexpr.xreplace(fixed), "mpmath")
+        m = numeric_minimum(Pf, dPf, 1, dps)
+        if m is None:
+            raise DerivedUndefined("P(a) of Eq. (33) has no minimum over a > 0: no pull-off force exists")
+        return sign * m[1]
+
+    what = "min_a P(a)" if sign == 1 else "-min_a P(a)"
+
+    def comparer(vals, printed_expr, dps):
+        printed = num_eval(printed_expr, vals, dps)
+        comps = [Comparison(f"{what}, numeric (independent)", printed, minimum(vals, dps))]
+        try:
+            ev = engine.value(vals, dps)
+        except (Undefined, LineContactError) as exc:
+            raise DerivedUndefined(f"the engine's {q} is undefined here: {exc}")
+        comps.insert(0, Comparison(f"engine {q}", printed, ev))
+        return comps
+
+    note = (f"{q} = {'P_min = min_a P(a) < 0' if sign == 1 else 'P_adh = -min_a P(a) > 0'}; the minimum of "
+            f"the engine's Eq. (33) over a is also located numerically")
+    return Derived(engine.expr, engine.method + "; independent: numeric minimum of Eq. (33)", engine.conditions,
+                   engine.closed_form, tuple(engine.notes) + (note,), time.perf_counter() - t0,
+                   engine.verified_digits, evaluator=minimum, comparer=comparer, profile=profile, slope=slope,
+                   variables=frozenset(Pexpr.free_symbols - {S.a}))
+
+
+# ---------------------------------------------------------------- first principles
+def _flat_punch_pressure() -> Derived:
+    """Eq. (1) is checked, not compared: the printed pressure must carry the load
+    (resultant P) and leave the surface flat under the punch (Flamant)."""
+    def comparer(vals, printed_expr, dps):
+        fixed = {k: v for k, v in vals.items() if k != S.x}
+        p = sp.lambdify(S.x, printed_expr.xreplace(fixed), "mpmath")
+        av, xv, E, Pv = (vals[s] for s in (S.a, S.x, S.E_star, S.P))
+        with mpmath.workdps(dps + 10):
+            res = flamant_resultant(p, av, dps)
+            Pv, E = to_mpf(Pv), to_mpf(E)
+            D = flamant_relative_displacement(p, av, xv, E, dps)
+            scale = 2 * Pv / (mpmath.pi * E)
+        return [Comparison("resultant int p dx = P", res, Pv),
+                Comparison("flat base: u_z(0) - u_z(x) = 0 under the punch (Flamant)", D, mpmath.mpf(0), scale)]
+    return Derived(None, "first principles: resultant and Flamant displacement of the printed pressure",
+                   comparer=comparer)
+
+
+def _flat_punch_displacement() -> Derived:
+    """d - u_z(x) outside the punch from the Flamant kernel applied to the
+    flat-punch pressure P/(pi sqrt(a^2 - x^2)) (whose correctness is claim Eq. (1))."""
+    def evaluator(vals, dps):
+        av, xv, E, Pv = (vals[s] for s in (S.a, S.x, S.E_star, S.P))
+
+        def p(sv):
+            A = to_mpf(av)
+            return to_mpf(Pv) / (mpmath.pi * mpmath.sqrt(A**2 - sv**2))
+        return flamant_relative_displacement(p, av, xv, E, dps)
+    return Derived(None, "Flamant kernel applied to the flat-punch pressure P/(pi sqrt(a^2 - x^2))",
+                   closed_form=False, evaluator=evaluator)
+
+
+def _punch_adhesion_force(ctx) -> Derived:
+    t0 = time.perf_counter()
+    sol1, sol2, G, K = run_with_budget(griffith_punch_force, seconds=max(ctx.budget, 30))
+    if len(sol1) != 1 or len(sol2) != 1 or sp.simplify(sol1[0] - sol2[0]) != 0:
+        raise ClaimError(f"Griffith derivation of Eq. (31) inconclusive: {sol1} vs {sol2}")
+    note = (f"energy route: G = Phat^2/(2 pi a E*) from the compliance of Eq. (3); stress-intensity route: "
+            f"K_I = {K}, G = K_I^2/(2E*); both give Phat = {sol1[0]}")
+    return Derived(sol1[0], "energy-release rate of the pulled flat punch (Griffith), two routes",
+                   notes=(note,), seconds=time.perf_counter() - t0)
+
+
+__all__ = ["Derived", "Context", "derive", "placeholder_laws", "figure_contacts", "power_law_force"]

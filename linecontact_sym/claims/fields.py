@@ -1,0 +1,94 @@
+"""Validation of the fields of a claims file: each value has the type the
+format says (a single string is not a list of names, ``true`` is not a
+number), and the file itself is a bounded UTF-8 text file."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import sympy as sp
+
+from ..core.conversion import exact_number
+from ..core.errors import ClaimError
+from ..parsing import parse_expr
+
+def _w(source, label=None, fld=None):
+    out = str(source)
+    if label:
+        out += f": claim {label!r}"
+    if fld:
+        out += f": {fld}"
+    return out
+
+
+def _parse_range(val, where):
+    if not (isinstance(val, (list, tuple)) and len(val) == 2):
+        raise ClaimError(f"{where}: a range is [low, high], got {val!r}")
+    lo, hi = (float(_num(v, where)) for v in val)
+    if not lo < hi:
+        raise ClaimError(f"{where}: empty range [{lo}, {hi}]")
+    return (lo, hi)
+
+
+def _num(v, where):
+    if isinstance(v, bool):
+        raise ClaimError(f"{where}: expected a number, got {v!r}")
+    if isinstance(v, (int, float)):
+        return exact_number(v) if isinstance(v, float) else sp.Integer(v)
+    e = parse_expr(str(v), where=where)
+    if e.free_symbols:
+        raise ClaimError(f"{where}: expected a number, got {v!r}")
+    return e
+
+
+def _text(v, where, required=False):
+    if v is None and not required:
+        return ""
+    if not isinstance(v, str) or (required and not v.strip()):
+        raise ClaimError(f"{where}: expected a text")
+    return v
+
+
+#: the largest claims file read (bytes): a claims file is a page of text
+MAX_FILE_BYTES = 1_000_000
+
+
+def read_text_file(path: Path) -> str:
+    """The text of a claims file: a regular UTF-8 file of at most
+    :data:`MAX_FILE_BYTES` bytes (never a device, a FIFO or a directory)."""
+    if not path.is_file():
+        raise ClaimError(f"{path}: not a regular file (a claims file is a TOML text file)")
+    try:
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_FILE_BYTES + 1)
+    except OSError as exc:
+        raise ClaimError(f"{path}: cannot be read: {exc.strerror or exc}") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise ClaimError(f"{path}: larger than {MAX_FILE_BYTES} bytes; a claims file is a page of text")
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ClaimError(f"{path}: not UTF-8 text (byte {exc.start}): is it a claims file?") from None
+
+
+def _typed(table, key, types, where, default=None):
+    """``table[key]`` checked to be of ``types`` (a bool is never an int)."""
+    v = table.get(key, default)
+    if v is default and key not in table:
+        return v
+    ok = isinstance(v, types) and not (isinstance(v, bool) and bool not in (types if isinstance(types, tuple)
+                                                                               else (types,)))
+    if not ok:
+        names = " or ".join(t.__name__ for t in (types if isinstance(types, tuple) else (types,)))
+        names = names.replace("str", "a string").replace("list", "a list").replace("dict", "a table")
+        raise ClaimError(f"{where}: {key} must be {names}, got {type(v).__name__} {v!r}")
+    return v
+
+
+def _names(table, key, where):
+    """A list of symbol names (a single string is refused: it is not a list)."""
+    v = _typed(table, key, list, where, [])
+    if not all(isinstance(n, str) for n in v):
+        raise ClaimError(f"{where}: {key} must be a list of names, got {v!r}")
+    return v
+
+

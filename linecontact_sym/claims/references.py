@@ -1,0 +1,271 @@
+"""Independent numerical references of the checker.
+
+Nothing here uses the engine's routes (no transform, rule or contact): the
+printed formulas are evaluated as they stand, their integrals by tanh-sinh
+quadrature with a divergence test (:func:`quad_integral`); pressures are
+checked against the elasticity of the half-plane itself (the Flamant kernel:
+:func:`flamant_relative_displacement`, :func:`flamant_resultant`); the
+critical force of a pulled punch is derived by two physical routes
+(:func:`griffith_punch_force`); the pull-off load by a plain minimum search
+(:func:`numeric_minimum`).  :class:`Comparison` measures agreeing digits.
+
+The generic quadrature helpers come from :mod:`linecontact_sym.core.quadrature`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mpmath
+import sympy as sp
+
+from ..core.conversion import to_basic, to_mpf
+from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
+
+#: working precision of the comparisons (digits)
+DPS = 45
+
+
+class Undefined(Exception):
+    """The quantity or the printed formula has no (real, finite) value here."""
+
+
+class Divergent(Undefined):
+    """An integral in the printed formula diverges here."""
+
+
+class DerivedUndefined(Undefined):
+    """The derived quantity does not exist here (outside its conditions, no
+    pull-off, ...)."""
+
+
+def finite_real(v, what, dps, exc=Undefined):
+    """mpf of a SymPy number, or raise ``exc`` (an :class:`Undefined`) naming
+    ``what`` when it is not finite or not real to ``dps - 8`` digits."""
+    if v.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise exc(f"{what} is undefined here ({v})")
+    try:
+        re, im = v.as_real_imag()
+        re, im = sp.N(re, dps), sp.N(im, dps)
+    except Exception as err:  # noqa: BLE001
+        raise exc(f"{what} cannot be evaluated here: {err}")
+    if not (re.is_number and im.is_number) or not re.is_finite:
+        raise exc(f"{what} cannot be evaluated here: {v}")
+    if im != 0 and abs(im) > max(abs(re), sp.Float(1e-300)) * sp.Float(10) ** (-(dps - 8)):
+        raise exc(f"{what} is complex here ({sp.N(v, 8)})")
+    return mpmath.mpf(str(re))
+
+
+def quad_integral(I: sp.Integral, dps: int = DPS):
+    """Numeric value of a one-dimensional definite Integral with numeric limits.
+
+    Tanh-sinh at :func:`~linecontact_sym.core.quadrature.quad_dps` working
+    digits, split at the switching points of ``Piecewise`` conditions, with a
+    divergence test at both endpoints: a local power <= -1 raises
+    :class:`Divergent`; a strong integrable singularity is smoothed by a
+    substitution first.  Raises :class:`Undefined` for free symbols or a
+    complex integrand.
+
+    >>> t = sp.Symbol("t", positive=True)
+    >>> v = quad_integral(sp.Integral(1 / sp.sqrt(1 - t**2), (t, 0, 1)))
+    >>> with mpmath.workdps(50):
+    ...     print(abs(v - mpmath.pi / 2) < mpmath.mpf(10) ** -40)
+    True
+    """
+    if len(I.limits) != 1 or len(I.limits[0]) != 3:
+        raise Undefined(f"only one-dimensional definite integrals are evaluated: {I}")
+    var, lo, hi = I.limits[0]
+    f = I.function
+    if f.free_symbols - {var}:
+        raise Undefined(f"the integrand has free symbols {sorted(map(str, f.free_symbols - {var}))}")
+    with mpmath.workdps(quad_dps(dps)):
+        lo_v, hi_v = to_mpf(lo), to_mpf(hi)
+        if lo_v == hi_v:
+            return mpmath.mpf(0)
+        sign = 1
+        if hi_v < lo_v:
+            lo_v, hi_v, sign = hi_v, lo_v, -1
+        g = EndpointGuard(sp.lambdify(var, f, "mpmath"), lo_v, hi_v)
+        span = hi_v - lo_v
+        alphas = []
+        for e, d in ((lo_v, 1), (hi_v, -1)):
+            alpha = endpoint_exponent(g, e, d, span)
+            if alpha is not None and alpha <= -1 + 1e-3:
+                raise Divergent(f"the integral {I} diverges at {var} = {sp.N(e, 6)} "
+                                f"(integrand ~ |{var} - {sp.N(e, 6)}|^{alpha:.3g})")
+            alphas.append(alpha)
+        pts = [lo_v] + relational_breakpoints(f, var, lo_v, hi_v) + [hi_v]
+        try:
+            v = quad_segments(g, pts, alphas)
+        except (ZeroDivisionError, ValueError) as exc:
+            raise Undefined(f"the integral {I} cannot be evaluated: {exc}")
+        if g.complex_at is not None:
+            raise Undefined(f"the integrand of {I} is complex at {var} = {mpmath.nstr(g.complex_at, 8)}")
+        return sign * v
+
+
+def num_eval(expr: sp.Expr, vals: dict, dps: int = DPS, what: str = "the printed formula", exc=Undefined):
+    """mpf value of an expression at a point; integrals by :func:`quad_integral`,
+    derivatives symbolically.  Raises ``exc`` (an :class:`Undefined`) where
+    the value is not real and finite.  See :func:`_numeric_values` for how
+    the values are substituted.
+
+    >>> import linecontact_sym as lcs
+    >>> print(mpmath.nstr(num_eval(lcs.a**2 / 2, {lcs.a: sp.Integer(3)}), 10))
+    4.5
+    """
+    e = expr.xreplace(_numeric_values(expr, vals, dps))
+    if e.has(sp.Derivative):
+        e = e.replace(lambda z: isinstance(z, sp.Derivative), lambda z: z.doit())
+    if e.has(sp.Integral):
+        e = e.replace(lambda z: isinstance(z, sp.Integral),
+                      lambda z: sp.Float(quad_integral(z, dps), dps + 10))
+    with mpmath.workdps(dps + 10):
+        return finite_real(sp.N(e, dps + 10), what, dps, exc)
+
+
+def _numeric_values(expr, vals, dps):
+    """Values to substitute: exact rationals, except for symbols that appear
+    in exponents (a**n), which become Floats of 2*dps + 30 digits -- SymPy
+    would factor large integers for an exact rational power.  Bases stay
+    exact so that cancellations such as R - sqrt(R**2 - t**2) at t -> 0 are
+    resolved by the working precision."""
+    in_exponent = set()
+    for pw in expr.atoms(sp.Pow):
+        in_exponent |= pw.exp.free_symbols
+    out = {}
+    for k, v in vals.items():
+        v = to_basic(v)
+        if k in in_exponent and v.is_Rational and (v.q > 12 or abs(v.p) > 10**4):
+            v = sp.Float(v, quad_dps(dps) + 20)
+        out[k] = v
+    return out
+
+
+def flamant_relative_displacement(p, a, xv, E, dps=DPS):
+    """u_z(0) - u_z(x) of the half-plane under the even pressure p(s) on |s| < a
+    (Flamant/Boussinesq kernel; reference-free)::
+
+        u_z(0) - u_z(x) = (2/(pi E*)) int_0^a p(s) ln|x^2/s^2 - 1| ds
+
+    For a rigid indenter in contact on |x| < a this equals the profile f(x);
+    outside it is d - u_z(x), the quantity of Eq. (3).  Evaluated with
+    s = a sin(phi) (removes the inverse-square-root edge singularity of
+    flat-punch-like pressures), split at the logarithmic point s = x.
+    ``p`` is an mpmath callable; a, x, E* exact numbers or mpf.
+
+    The flat punch P/(pi sqrt(a^2 - s^2)) leaves the surface flat under it:
+
+    >>> p = lambda s: 1 / (mpmath.pi * mpmath.sqrt(1 - s**2))
+    >>> with mpmath.workdps(30):
+    ...     print(abs(flamant_relative_displacement(p, 1, sp.Rational(1, 2), 1, 20)) < 1e-25)
+    True
+    """
+    with mpmath.workdps(quad_dps(dps)):
+        a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
+        pr = EndpointGuard(p, mpmath.mpf(0), a)
+
+        def h(ph):
+            sv = a * mpmath.sin(ph)
+            return pr(sv) * mpmath.log(abs(xv**2 / sv**2 - 1)) * a * mpmath.cos(ph)
+        pts = [mpmath.mpf(0), mpmath.asin(xv / a), mpmath.pi / 2] if xv < a else [mpmath.mpf(0), mpmath.pi / 2]
+        val = mpmath.quad(h, pts, maxdegree=10)
+        return +(2 * val / (mpmath.pi * E))
+
+
+def flamant_resultant(p, a, dps=DPS):
+    """The resultant int_{-a}^{a} p(s) ds of an even pressure (s = a sin(phi)).
+
+    >>> with mpmath.workdps(30):
+    ...     print(mpmath.nstr(flamant_resultant(lambda s: 1 / (mpmath.pi * mpmath.sqrt(4 - s**2)), 2, 20), 15))
+    1.0
+    """
+    with mpmath.workdps(quad_dps(dps)):
+        a = to_mpf(a)
+        pr = EndpointGuard(p, mpmath.mpf(0), a)
+        return +(2 * mpmath.quad(lambda ph: pr(a * mpmath.sin(ph)) * a * mpmath.cos(ph),
+                                 [0, mpmath.pi / 2], maxdegree=10))
+
+
+# TODO(registry): use contacts.force_law (the integrator replaces this third copy of a 1-D minimum finder)
+def numeric_minimum(P, dP, scale, dps=DPS):
+    """(a*, P(a*)) of the smallest local minimum of P(a) for a > 0, located
+    from the sign change of dP/da (- to +) on a logarithmic grid; None when
+    P has no minimum (the pull-off does not exist)."""
+    with mpmath.workdps(dps + 10):
+        # quarter decades from 1e-300 to 1e300: near an existence bound (n -> 1/2
+        # for a power law) the minimum moves out to astronomically small or large a
+        grid = [mpmath.mpf(scale) * mpmath.mpf(10) ** (k / mpmath.mpf(4)) for k in range(-1200, 1201)]
+        prev = None
+        for av in grid:
+            try:
+                d = dP(av)
+            except (ZeroDivisionError, ValueError):
+                prev = None
+                continue
+            if isinstance(d, mpmath.mpc):
+                prev = None
+                continue
+            if prev is not None and prev[1] < 0 <= d:
+                root = mpmath.findroot(dP, (prev[0], av), solver="anderson")
+                return root, P(root)
+            prev = (av, d)
+    return None
+
+
+def griffith_punch_force():
+    """The critical force Phat of a flat punch of half-width a pulled off the
+    half-plane (Eq. 31), derived symbolically by two physical routes:
+
+    1. energy: the compliance C(a) = (2/(pi E*)) arccosh(L/a) from Eq. (3) at
+       a far point L; the energy-release rate per edge at fixed load
+       G = Phat^2/2 (-dC/da)/2 = gamma;
+    2. stress intensity of the pulled punch: K_I = lim sqrt(2 pi (a - xi))
+       p(xi) with p = Phat/(pi sqrt(a^2 - xi^2)); G = K_I^2/(2 E*) = gamma.
+
+    Returns (solutions of route 1, solutions of route 2, G, K_I).
+    """
+    from ..core import symbols as S
+    Ph, L, xx = sp.symbols("Phat L xi", positive=True)
+    a, E, g = S.a, S.E_star, S.gamma
+    C = 2 / (sp.pi * E) * sp.acosh(L / a)
+    dCda = sp.limit(sp.diff(C, a), L, sp.oo)
+    G_energy = sp.simplify(Ph**2 / 2 * (-dCda) / 2)          # per contact edge
+    sol1 = sp.solve(sp.Eq(G_energy, g), Ph)
+    p = Ph / (sp.pi * sp.sqrt(a**2 - xx**2))
+    K = sp.limit(sp.sqrt(2 * sp.pi * (a - xx)) * p, xx, a, "-")
+    sol2 = sp.solve(sp.Eq(K**2 / (2 * E), g), Ph)
+    return sol1, sol2, G_energy, K
+
+
+@dataclass
+class Comparison:
+    """A printed value against a target: ``digits`` is the number of agreeing
+    significant digits, -log10(|printed - target|/scale), in [0, DPS]; the
+    scale is |target| unless given (|printed| when the target is 0).
+
+    >>> round(Comparison("x", mpmath.mpf("1.001"), mpmath.mpf(1)).digits, 6)
+    3.0
+    """
+
+    what: str
+    printed: object          # mpf
+    target: object           # mpf
+    scale: object = None     # mpf; default |target|
+
+    @property
+    def digits(self) -> float:
+        with mpmath.workdps(2 * DPS):     # never at mpmath's default 15 digits
+            err = abs(self.printed - self.target)
+            scale = self.scale if self.scale is not None else abs(self.target)
+            if err == 0:
+                return float(DPS)
+            if scale == 0:
+                scale = abs(self.printed)
+                if scale == 0:
+                    return float(DPS)
+            return max(0.0, min(float(DPS), float(-mpmath.log10(err / scale))))
+
+
+__all__ = ["DPS", "Undefined", "Divergent", "DerivedUndefined", "finite_real", "quad_integral", "num_eval",
+           "flamant_relative_displacement", "flamant_resultant", "numeric_minimum", "griffith_punch_force",
+           "Comparison"]

@@ -1,0 +1,66 @@
+"""Working precision that is safe in threads.
+
+mpmath keeps its working precision in one global context, ``mpmath.mp``;
+``mpmath.workdps`` sets it and restores it on exit.  Two threads that do so
+at once interleave: one restores the other's precision, and a 50-digit
+computation comes back with 20 digits (or ``mp.dps`` is left changed).
+
+Every precision change of the package goes through :func:`workdps` /
+:func:`workprec` here: they hold one re-entrant lock for as long as the
+precision is changed, so high-precision computations of different threads
+run one after the other (Python's GIL lets only one run at a time anyway),
+and each sees exactly the precision it asked for.  The global precision is
+never changed outside such a block, and is the same afterwards.  The lock is
+re-created in a forked child (the time budget forks), where its owner thread
+does not exist.
+
+>>> import mpmath
+>>> before = mpmath.mp.dps
+>>> with workdps(40):
+...     mpmath.mp.dps
+40
+>>> mpmath.mp.dps == before
+True
+"""
+from __future__ import annotations
+
+import os
+import threading
+from contextlib import contextmanager
+
+import mpmath
+
+_LOCK = threading.RLock()
+
+
+def _reinit_after_fork():
+    global _LOCK
+    _LOCK = threading.RLock()
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_reinit_after_fork)
+
+
+@contextmanager
+def workdps(dps: int):
+    """``mpmath.workdps(dps)`` under the package's precision lock."""
+    with _LOCK, mpmath.workdps(dps):
+        yield
+
+
+@contextmanager
+def workprec(prec: int):
+    """``mpmath.workprec(prec)`` (bits) under the package's precision lock."""
+    with _LOCK, mpmath.workprec(prec):
+        yield
+
+
+@contextmanager
+def extradps(n: int):
+    """``mpmath.extradps(n)`` under the package's precision lock."""
+    with _LOCK, mpmath.extradps(n):
+        yield
+
+
+__all__ = ["workdps", "workprec", "extradps"]

@@ -1,0 +1,230 @@
+"""What people look at, for one contact, in the normalised axes of the
+literature (``contact.plot(what, ...)`` calls :func:`plot_contact`):
+
+``"pressure"``  p(x)/p0 against x/a at several loads P, with
+                p0 = 2P/(pi a) the Hertzian maximum pressure of the same load
+                and half-width (the Hertz line contact is the unit
+                half-circle; a flat punch is singular at the edges x = -a, a);
+``"force"``     the force law P/(E* L) against a/L, L the length scale of
+                the profile (R, else b, else 1; ``scale=`` chooses);
+``"adhesive"``  the JKR force law P/P_adh against a/a_po (a_po the pull-off
+                half-width): the stable branch (dP/da > 0, load control)
+                solid, the unstable one dashed, the pull-off (1, -1) and the
+                jump-in at P = 0 marked;
+``"gap"``       g(x)/f(a) against x/a outside the contact at several loads
+                (f(a): the profile's height at the edge).
+
+The contact is used by duck typing (``to_numeric``, ``half_width``,
+``profile``, and for adhesion ``pull_off_at``); no contact class is
+imported.  The ``*_data`` functions return NumPy arrays (no matplotlib);
+the plots need the ``[plot]`` extra and return a matplotlib ``Figure``
+(written to ``path`` when given).  Parameter values come as ``values``
+(by name); E* defaults to 1, it scales out of every normalised axis.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+from ..core.errors import DomainError
+from ..core.extras import require
+
+#: what :func:`plot_contact` draws
+PLOTS = ("pressure", "force", "adhesive", "gap")
+_STYLES = ("-", "--", "-.", ":")
+
+
+def _values(contact, values) -> dict:
+    vals = {"E_star": 1.0}
+    vals.update({str(getattr(k, "name", k)): float(v) for k, v in (values or {}).items()})
+    prof = getattr(contact, "contact", contact).profile      # an adhesive contact wraps a frictionless one
+    missing = sorted(s.name for s in prof.expr.free_symbols if s.name != "x" and s.name not in vals)
+    if getattr(contact, "kind", "") == "adhesive":
+        missing += sorted(s.name for s in getattr(contact.gamma, "free_symbols", ()) if s.name not in vals)
+    if missing:
+        raise DomainError(f"plotting needs numbers for the parameters {missing}: pass values={{...}}, "
+                          f"e.g. values={{{', '.join(repr(m) + ': 1' for m in missing)}}}")
+    return vals
+
+
+def _call(fn, **kw):
+    names = getattr(fn, "arguments", None)
+    if names is not None:
+        kw = {k: v for k, v in kw.items() if k in names}
+    return np.asarray(fn(**kw), dtype=float)
+
+
+def _half_width(contact, load, vals) -> float:
+    out = contact.half_width(load, **vals)
+    return float(out[0] if isinstance(out, tuple) else out)
+
+
+def pressure_data(contact, loads, values=None, points: int = 201):
+    """``(X, [Y per load], [a per load])``: X = x/a in [-1, 1], Y = p/p0 with
+    p0 = 2P/(pi a).
+
+    >>> import linecontact_sym as lcs
+    >>> X, (Y,), (a,) = pressure_data(lcs.parabola(), [0.5], {"R": 1}, points=5)
+    >>> bool(np.allclose(Y, np.sqrt(1 - X**2)))        # Hertz: the unit half-circle
+    True
+    """
+    vals = _values(contact, values)
+    X = np.linspace(-1.0, 1.0, int(points))
+    fn = contact.to_numeric("pressure")
+    Ys, As = [], []
+    for P in loads:
+        a = _half_width(contact, P, vals)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            p = _call(fn, **vals, a=a, x=np.abs(X) * a)
+        Y = p / (2 * float(P) / (np.pi * a))
+        Y[~np.isfinite(Y)] = np.nan
+        Ys.append(Y)
+        As.append(a)
+    return X, Ys, As
+
+
+def _scale(contact, vals, scale):
+    if scale is not None:
+        return (str(scale), float(vals[str(scale)])) if isinstance(scale, str) else ("L", float(scale))
+    for name in ("R", "b"):
+        if name in vals:
+            return name, vals[name]
+    return "1", 1.0
+
+
+def force_data(contact, values=None, a_max=None, points: int = 401, scale=None):
+    """``(X, Y, L)``: X = a/L in (0, a_max/L], Y = P/(E* L); L is the name
+    of the length scale ('R', 'b', or '1').  Default a_max: L for R (0.99 L
+    where the force law holds only for a < R), 4 L for b, else 1."""
+    vals = _values(contact, values)
+    name, L = _scale(contact, vals, scale)
+    if a_max is None:
+        conds = getattr(contact.derivation("force"), "conditions", ())
+        bounded = any(name in {s.name for s in getattr(c, "free_symbols", ())} for c in conds)
+        a_max = 0.99 * L if bounded else (4 * L if name == "b" else L)
+    a_max = float(a_max)
+    A = np.linspace(a_max / points, a_max, int(points))
+    P = _call(contact.to_numeric("force"), **vals, a=A)
+    return A / L, P / (vals["E_star"] * L), name
+
+
+def adhesive_data(contact, values=None, points: int = 601, a_max: float = 4.0):
+    """Normalised JKR force law: ``dict(X=a/a_po, Y=P/P_adh, stable=bool mask,
+    pull_off=(1, -1), jump_in=(a_in/a_po, 0), a_po, P_adh)``."""
+    vals = _values(contact, values)
+    po = contact.pull_off_at(**vals)
+    a_po, P_adh = float(po.half_width), float(-po.force)
+    a_in = _half_width(contact, 0, vals)
+    X = np.linspace(a_max / points, a_max, int(points))
+    P = _call(contact.to_numeric("force"), **vals, a=X * a_po)
+    Y = P / P_adh
+    stable = np.gradient(Y, X) > 0
+    return {"X": X, "Y": Y, "stable": stable, "pull_off": (1.0, -1.0), "jump_in": (a_in / a_po, 0.0),
+            "a_po": a_po, "P_adh": P_adh}
+
+
+def gap_data(contact, loads, values=None, x_max: float = 3.0, points: int = 201):
+    """``(X, [Y per load], [a per load])``: X = x/a in [1, x_max], Y = g/f(a)."""
+    vals = _values(contact, values)
+    X = np.linspace(1.0, float(x_max), int(points))
+    fn = contact.to_numeric("gap")
+    prof = getattr(contact, "contact", contact).profile.expr
+    f_at = sp.lambdify([s for s in sorted(prof.free_symbols, key=lambda s: s.name)], prof,
+                                        "numpy")
+    names = [s.name for s in sorted(prof.free_symbols, key=lambda s: s.name)]
+    Ys, As = [], []
+    for P in loads:
+        a = _half_width(contact, P, vals)
+        fa = float(f_at(*[a if n == "x" else vals[n] for n in names]))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            g = _call(fn, **vals, a=a, x=X * a)
+        Ys.append(g / fa)
+        As.append(a)
+    return X, Ys, As
+
+
+# ------------------------------------------------------------------ drawing
+def _figure(size=(5.2, 3.8)):
+    Figure = require("plot", "matplotlib.figure").Figure
+    fig = Figure(figsize=size)
+    return fig, fig.subplots()
+
+
+def _finish(fig, ax, path, title=""):
+    if title:
+        ax.set_title(title, fontsize=10)
+    ax.grid(alpha=0.3)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8)
+    if path is not None:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(path, dpi=150, bbox_inches="tight")
+    return fig
+
+
+def _name(contact):
+    prof = getattr(contact, "contact", contact).profile
+    return getattr(prof, "name", None) or ""
+
+
+def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=None, title=None,
+                 points=None, **kw):
+    """Draw ``what`` (one of :data:`PLOTS`) for ``contact``; see the module
+    docstring for the normalisations.  ``loads``: the loads P (pressure and
+    gap); ``values``: parameter values by name; ``path``: write the figure
+    there (PNG, PDF, ... by its suffix).  Returns the matplotlib Figure."""
+    if what not in PLOTS:
+        raise DomainError(f"unknown plot {what!r}; choose one of {', '.join(PLOTS)}")
+    if what in ("pressure", "gap") and not loads:
+        raise DomainError(f"the {what} plot needs loads, e.g. loads=[0.1, 0.5, 1.0]")
+    name = _name(contact)
+    if what == "pressure":
+        X, Ys, As = pressure_data(contact, loads, values, points or 201)
+        fig, ax = _figure()
+        for i, (P, Y, a) in enumerate(zip(loads, Ys, As)):   # styles differ: self-similar laws coincide
+            ax.plot(X, Y, _STYLES[i % 4], lw=1.5, label=f"$P = {float(P):g}$ ($a = {a:.3g}$)")
+        ax.set_xlabel("$x/a$")
+        ax.set_ylabel(r"$p(x)/p_0$,  $p_0 = 2P/(\pi a)$")
+        ax.set_xlim(-1, 1)
+        ax.set_ylim(bottom=0)
+        default = f"Contact pressure{' of the ' + name if name else ''}"
+    elif what == "force":
+        X, Y, L = force_data(contact, values, points=points or 401, **kw)
+        fig, ax = _figure()
+        ax.plot(X, Y, lw=1.5, label=name or None)
+        sub = "" if L == "1" else L
+        ax.set_xlabel(f"$a/{sub}$" if sub else "$a$")
+        ax.set_ylabel(f"$P/(E^* {sub})$" if sub else "$P/E^*$")
+        ax.set_xlim(0, X[-1])
+        ax.set_ylim(bottom=0)
+        default = f"Force law{' of the ' + name if name else ''}"
+    elif what == "adhesive":
+        d = adhesive_data(contact, values, points or 601, **kw)
+        fig, ax = _figure()
+        X, Y, st = d["X"], d["Y"], d["stable"]
+        ax.plot(np.where(st, X, np.nan), np.where(st, Y, np.nan), "-", color="C0", lw=1.6, label="stable branch")
+        ax.plot(np.where(~st, X, np.nan), np.where(~st, Y, np.nan), "--", color="C0", lw=1.2,
+                label="unstable branch")
+        ax.plot(*d["pull_off"], "o", color="C3", label="pull-off $(a_{po}, P_{min})$")
+        ax.plot(*d["jump_in"], "s", color="C2", label="jump-in ($P = 0$)")
+        ax.axhline(0, color="0.5", lw=0.8)
+        ax.set_xlabel(r"$a/a_{\mathrm{po}}$")
+        ax.set_ylabel(r"$P/P_{\mathrm{adh}}$")
+        ax.set_xlim(0, X[-1])
+        default = f"JKR force law{' of the ' + name if name else ''}"
+    else:
+        X, Ys, As = gap_data(contact, loads, values, points=points or 201, **kw)
+        fig, ax = _figure()
+        for i, (P, Y, a) in enumerate(zip(loads, Ys, As)):
+            ax.plot(X, Y, _STYLES[i % 4], lw=1.5, label=f"$P = {float(P):g}$ ($a = {a:.3g}$)")
+        ax.set_xlabel("$x/a$")
+        ax.set_ylabel("$g(x)/f(a)$")
+        ax.set_xlim(1, X[-1])
+        ax.set_ylim(bottom=0)
+        default = f"Gap outside the contact{' of the ' + name if name else ''}"
+    return _finish(fig, ax, path, default if title is None else title)
+
+
+__all__ = ["PLOTS", "plot_contact", "pressure_data", "force_data", "adhesive_data", "gap_data"]
