@@ -12,7 +12,7 @@ from .method.verification import VerificationRecord
 from .contacts.frictionless import LineContact
 from .contacts.inverse import profile_from_force
 from .contacts.adhesive import AdhesiveLineContact
-from .contacts.stresses import StressField
+from .contacts.stresses import SlidingStressField, StressField
 from .contacts.base import Contact, Quantity
 from .core.errors import NoPullOffError, NoEquilibriumError, GrossSlidingError
 from .contacts.tangential import TangentialLineContact
@@ -29,6 +29,6 @@ __all__ = [
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
     "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "Contact", "Quantity", "catalogue",
-    "TangentialLineContact", "GrossSlidingError", "StressField",
+    "TangentialLineContact", "GrossSlidingError", "StressField", "SlidingStressField",
     "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "init_printing", "parse_expr",
 ]

@@ -16,7 +16,7 @@ from linecontact_sym.contacts.base import CONTACT_KINDS, qualified_quantities
 from linecontact_sym.contacts.stress_field import (CauchyPotential, ClosedPotential, FieldEvaluator,
                                                    PunchPotential)
 from linecontact_sym.contacts.stress_reference import flamant_stresses, punch_potentials
-from linecontact_sym.contacts.stresses import StressField
+from linecontact_sym.contacts.stresses import SlidingStressField, StressField
 
 PHI = (1 + math.sqrt(5)) / 2
 #: Hertz with p0 = a = 1: E* = 2, R = 1
@@ -142,10 +142,14 @@ def test_registry_and_construction(sliding):
     assert CONTACT_KINDS["stress"] is StressField
     names = qualified_quantities()
     for q in ("stress.sigma_x", "stress.max_shear", "stress.max_shear_depth", "stress.max_von_mises",
-              "stress.critical_friction", "stress.critical_friction_von_mises"):
+              "sliding_stress.sigma_x", "sliding_stress.critical_friction",
+              "sliding_stress.critical_friction_von_mises"):
         assert q in names
+    assert "stress.critical_friction" not in names and CONTACT_KINDS["sliding_stress"] is SlidingStressField
     sf = StressField.from_frictionless(lcs.parabola(verify=False))
-    assert sf.tangential == "sliding" and S.mu in sf.variables
+    assert sf.tangential is None and S.mu not in sf.variables
+    sl = SlidingStressField.from_frictionless(lcs.parabola(verify=False))
+    assert sl.tangential == "sliding" and S.mu in sl.variables and isinstance(sliding, SlidingStressField)
     with pytest.raises(DomainError):
         StressField(lcs.parabola(verify=False), "partial_slip")
     with pytest.raises(DomainError):

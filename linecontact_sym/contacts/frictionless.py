@@ -290,7 +290,9 @@ class LineContact(Contact):
     def stresses(self, tangential=None, **kw):
         """The subsurface stress field under this contact (plane strain), with
         an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses`."""
-        from .stresses import StressField
+        from .stresses import SlidingStressField, StressField
+        if tangential == "sliding":
+            return SlidingStressField(self, **kw)
         return StressField(self, tangential, **kw)
 
     def check_admissible(self, dps: int = 20, **values):

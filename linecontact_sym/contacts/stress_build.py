@@ -226,7 +226,8 @@ def _offset_density(D, b, side):
 
 def build_field(sf, vals) -> F.FieldEvaluator:
     normal = _potential(sf, vals, vals[S.a])
-    nu = float(sf.nu.xreplace(vals))
+    nuv = sf.nu.xreplace(vals)
+    nu = float(nuv) if nuv.is_number else float("nan")  # not given: sigma_y, von Mises, Tresca are NaN
     mu = float(sf.mu.xreplace(vals)) if sf.tangential in ("sliding", "partial_slip") else 0.0
     tangential = None
     if sf.tangential == "partial_slip":

@@ -84,11 +84,6 @@ class StressField(Contact):
     max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}")
     max_tresca = _mx("max sigma_T", "largest Tresca stress", r"\sigma_{\mathrm{T},\max}")
     max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}")
-    critical_friction = Quantity("mu_c", "", "sliding: the friction coefficient above which the largest "
-                                 "principal shear lies on the surface", arguments=(), latex=r"\mu_c")
-    critical_friction_von_mises = Quantity("mu_c,vM", "", "sliding: the friction coefficient above which the "
-                                           "largest von Mises stress lies on the surface", arguments=(),
-                                           latex=r"\mu_{c,\mathrm{vM}}")
 
     def __init__(self, contact, tangential=None, mu=S.mu, nu=S.nu, stick=None, breaks=(), verify=True,
                  points: int = 4):
@@ -107,8 +102,9 @@ class StressField(Contact):
 
     @classmethod
     def from_frictionless(cls, contact):
-        """The sliding contact (q = mu p) with symbolic mu and nu; mu = 0 is frictionless."""
-        return cls(contact, "sliding")
+        """The frictionless field with symbolic nu (the sliding one is the kind
+        'sliding_stress', :class:`SlidingStressField`)."""
+        return cls(contact)
 
     def __repr__(self):
         return f"StressField({self.contact.profile.expr}, tangential={self.tangential!r})"
@@ -217,8 +213,8 @@ class StressField(Contact):
     def _values(self, values, need=("a",)):
         """Numeric values by symbol; Poisson's ratio, when symbolic and not
         given, is NaN (sigma_y, von Mises and Tresca are then NaN)."""
-        syms = tuple(S.__dict__[n] for n in need) + self.variables + self.nu_symbols
-        values = {**{q.name: float("nan") for q in self.nu_symbols}, **values}
+        syms = tuple(S.__dict__[n] for n in need) + self.variables + \
+            tuple(q for q in self.nu_symbols if q.name in values)
         try:
             vals = values_by_name(syms, {k: v for k, v in values.items() if k not in ("x", "z")})
         except DomainError as exc:
@@ -333,6 +329,38 @@ class StressField(Contact):
 
     def _derive_max_tresca_depth(self):
         return self._derive_max("max_tresca_depth")
+
+
+
+class SlidingStressField(StressField):
+    """The field under a contact sliding with friction mu (q = mu p on the
+    body in +x), with the friction coefficients at which the maxima move to
+    the surface.  ``lcs.parabola().stresses("sliding")`` builds it.
+
+    >>> import linecontact_sym as lcs
+    >>> sf = lcs.parabola(verify=False).stresses("sliding", verify=False)
+    >>> sf.maximum("von_mises", a=1, E_star=2, R=1, mu=0.3, nu=0.3).on_surface
+    True
+    """
+
+    kind = "sliding_stress"
+
+    critical_friction = Quantity("mu_c", "", "the friction coefficient above which the largest principal "
+                                 "shear lies on the surface", arguments=(), latex=r"\mu_c")
+    critical_friction_von_mises = Quantity("mu_c,vM", "", "the friction coefficient above which the largest "
+                                           "von Mises stress lies on the surface", arguments=(),
+                                           latex=r"\mu_{c,\mathrm{vM}}")
+
+    def __init__(self, contact, mu=S.mu, nu=S.nu, **kw):
+        super().__init__(contact, "sliding", mu, nu, **kw)
+
+    @classmethod
+    def from_frictionless(cls, contact):
+        """The sliding contact with symbolic mu and nu (mu = 0: frictionless)."""
+        return cls(contact)
+
+    def __repr__(self):
+        return f"SlidingStressField({self.contact.profile.expr}, mu={self.mu})"
 
     def _derive_critical_friction(self):
         return _derive_critical(self, "critical_friction", "principal_shear")
