@@ -279,7 +279,7 @@ def test_singular_tractions_give_unbounded_maxima():
 def test_principal_shear_reaches_the_surface_at_mu_one_over_sqrt7(sliding):
     """At mu = 1/sqrt(7) the interior maximum of tau_1 is mu p0, the surface value, at
     (3 sqrt(7)/8, 1/8) a: the value and a vanishing gradient there (float64 field)."""
-    fe = sliding.field(mu=1 / math.sqrt(7), **HERTZ)
+    fe = sliding.field(mu=1 / np.sqrt(7), **HERTZ)           # a NumPy scalar is accepted
     x0, z0, h = 3 * math.sqrt(7) / 8, 1 / 8, 1e-5
 
     def f(x, z):

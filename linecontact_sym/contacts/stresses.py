@@ -215,8 +215,11 @@ class StressField(Contact):
         given, is NaN (sigma_y, von Mises and Tresca are then NaN)."""
         syms = tuple(S.__dict__[n] for n in need) + self.variables + \
             tuple(q for q in self.nu_symbols if q.name in values)
+        # NumPy scalars as Python floats (core.conversion.exact_number parses repr(), which is
+        # 'np.float64(...)' under NumPy 2)
+        given = {k: (float(v) if isinstance(v, np.floating) else v) for k, v in values.items() if k not in ("x", "z")}
         try:
-            vals = values_by_name(syms, {k: v for k, v in values.items() if k not in ("x", "z")})
+            vals = values_by_name(syms, given)
         except DomainError as exc:
             raise DomainError(f"{exc} (the stress field of {self.contact.profile.expr})") from None
         if vals[S.a] <= 0:
