@@ -3,7 +3,7 @@ problems by Popov's (2017) superposition of flat punches, derived with SymPy,
 verified with mpmath and exported as fast numeric functions."""
 from __future__ import annotations
 
-from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta, mu, Q, c_s, c_r
+from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta, mu, Q, c_s, c_r, z, nu
 from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
                      DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError)
 from .method.profile import Profile
@@ -12,6 +12,7 @@ from .method.verification import VerificationRecord
 from .contacts.frictionless import LineContact
 from .contacts.inverse import profile_from_force
 from .contacts.adhesive import AdhesiveLineContact
+from .contacts.stresses import SlidingStressField, StressField
 from .contacts.base import Contact, Quantity
 from .core.errors import NoPullOffError, NoEquilibriumError, GrossSlidingError
 from .contacts.tangential import TangentialLineContact
@@ -23,11 +24,11 @@ from .parsing import parse_expr
 __version__ = "0.1.0"
 
 __all__ = [
-    "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r",
+    "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "nu",
     "LineContactError", "ProfileError", "UnknownSymbolError", "InadmissibleProfileError",
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
     "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "Contact", "Quantity", "catalogue",
-    "TangentialLineContact", "GrossSlidingError",
+    "TangentialLineContact", "GrossSlidingError", "StressField", "SlidingStressField",
     "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "init_printing", "parse_expr",
 ]

@@ -322,6 +322,14 @@ class LineContact(Contact):
         from .tangential import TangentialLineContact
         return TangentialLineContact(self, friction)
 
+    def stresses(self, tangential=None, **kw):
+        """The subsurface stress field under this contact (plane strain), with
+        an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses`."""
+        from .stresses import SlidingStressField, StressField
+        if tangential == "sliding":
+            return SlidingStressField(self, **kw)
+        return StressField(self, tangential, **kw)
+
     def check_admissible(self, dps: int = 20, **values):
         """See :func:`linecontact_sym.contacts.admissibility.check_admissible`."""
         return admissibility.check_admissible(self, dps, **values)

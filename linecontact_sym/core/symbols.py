@@ -20,6 +20,11 @@ Conventions (Popov 2017):
 * ``R``, ``b``, ``n``, ``c``, ``theta`` -- the paper's profile parameters:
   radius, flat half-width, power-law exponent, power-law coefficient c_n and
   wedge angle.
+* ``z``      -- depth below the surface (z > 0 into the body), for the
+  subsurface stresses.
+* ``zeta``   -- the complex coordinate x + i z of the complex potentials
+  (no assumptions: complex).
+* ``nu``     -- Poisson's ratio (plane strain: sigma_y = nu (sigma_x + sigma_z)).
 
 Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential`:
 
@@ -49,6 +54,9 @@ n = sp.Symbol("n", positive=True)
 c = sp.Symbol("c", positive=True)
 theta = sp.Symbol("theta", positive=True)
 
+z = sp.Symbol("z", positive=True)
+zeta = sp.Symbol("zeta")
+nu = sp.Symbol("nu", positive=True)
 mu = sp.Symbol("mu", positive=True)
 Q = sp.Symbol("Q", real=True)
 c_s = sp.Symbol("c_s", positive=True)
@@ -64,7 +72,10 @@ LATEX_NAMES = {
     theta: r"\theta",
     c_s: r"c_{\mathrm{s}}",
     c_r: r"c_{\mathrm{r}}",
+    zeta: r"\zeta",
+    nu: r"\nu",
+    mu: r"\mu",
 }
 
-__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r",
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "zeta", "nu",
            "RESERVED", "LATEX_NAMES"]

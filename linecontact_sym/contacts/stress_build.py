@@ -1,0 +1,247 @@
+"""How a :class:`~.stresses.StressField` is built: the verified closed-form
+components, the independent Flamant reference at parameter values, the
+random verification points, and the numeric field at numeric values (closed
+potentials where they are elementary, Popov's punch superposition or the
+Cauchy quadrature otherwise).  Functions of the field object ``sf``."""
+from __future__ import annotations
+
+import time
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from ..core import symbols as S
+from ..core.conversion import rational
+from ..method.derivation import Derivation, fallback_step
+from ..method.rules import Step
+from ..method.verification import verify_many
+from . import stress_field as F
+from .kolosov import density_breakpoints, symbolic_stresses, t
+from .sampling import point_sampler
+from .stress_reference import flamant_stresses, punch_potentials
+
+
+def sampler(sf):
+    """Random verification points: the contact's parameters and a, x in
+    (-1.5a, 1.5a) (both signs), z in (0.05a, 1.5a), mu, nu and the stick
+    half-width where symbolic."""
+    base = point_sampler(sf.profile, "any")
+    nparams = 1 + len(sf.contact.params)
+
+    def sample(rng):
+        vals = base(rng)
+        if vals is None:
+            return None
+        A = float(vals[S.a])
+        vals[S.x] = rational(A * rng.uniform(-1.5, 1.5))
+        vals[S.z] = rational(A * rng.uniform(0.05, 1.5))
+        for sym in sf.variables[nparams:]:
+            if sym == S.mu:
+                vals[sym] = rational(rng.uniform(0.05, 0.6))
+            elif sym == S.nu:
+                vals[sym] = rational(rng.uniform(0.1, 0.45))
+            elif sf.stick is not None and sym in sf.stick.free_symbols:
+                vals[sym] = rational(A * rng.uniform(0.2, 0.9))
+            else:
+                vals[sym] = rational(rng.uniform(0.5, 2.0))
+        return vals
+    return sample
+
+
+def _mp_pressure(contact, vals, a_value, dps):
+    """p(s) on [-a, a] as an mpmath callable (even, 0 outside), a = ``a_value``."""
+    d = contact.derivation("pressure")
+    fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x, S.z)}
+    A = mpmath.mpf(sp.N(a_value, dps + 20)) if not isinstance(a_value, mpmath.mpf) else a_value
+    if d.closed_form:
+        fn = sp.lambdify(S.x, d.expr.xreplace({**fixed, S.a: a_value}), "mpmath")
+    else:
+        def fn(sv):
+            return d.reference({**fixed, S.a: a_value, S.x: sp.Float(sv, dps + 10)}, dps)
+
+    def p(sv):
+        sv = abs(sv)
+        if sv >= A:
+            return mpmath.mpf(0)
+        v = fn(sv)
+        if isinstance(v, mpmath.mpc):  # rounding at the contact edge (sqrt of -1e-60)
+            if abs(v.imag) > mpmath.mpf(10)**(-dps) * max(abs(v.real), 1):
+                raise ValueError(f"the pressure is complex at s = {sv}")
+            v = v.real
+        return v
+    return p
+
+
+def _mp_tractions(sf, vals, dps):
+    """(p, q, breaks): the mpmath tractions at ``vals`` and the points where they are not smooth."""
+    p = _mp_pressure(sf.contact, vals, vals[S.a], dps)
+    breaks = [0.0]
+    for bp in sf.profile.breakpoints:
+        v = float(sp.N(bp.xreplace(vals)))
+        breaks += [v, -v]
+    breaks += list(sf.breaks)
+    q = None
+    if sf.tangential == "sliding":
+        m = mpmath.mpf(sp.N(sf.mu.xreplace(vals), dps + 20))
+        q = lambda sv: m * p(sv)  # noqa: E731
+    elif sf.tangential == "partial_slip":
+        m = mpmath.mpf(sp.N(sf.mu.xreplace(vals), dps + 20))
+        cv = sf.stick.xreplace(vals)
+        pc = _mp_pressure(sf.contact, vals, cv, dps)
+        q = lambda sv: m * (p(sv) - pc(sv))  # noqa: E731
+        breaks += [float(cv), -float(cv)]
+    elif isinstance(sf.tangential, sp.Expr):
+        fq = sp.lambdify(S.x, sf.tangential.xreplace({k: v for k, v in vals.items() if k != S.x}), "mpmath")
+        q = fq
+    elif sf.tangential is not None:
+        q = lambda sv: mpmath.mpf(float(sf.tangential(np.array([float(sv)]))[0]))  # noqa: E731
+    return p, q, breaks
+
+
+def flamant_reference(sf):
+    """``reference(vals, dps) -> {sigma_x, sigma_z, tau_xz}``: the Flamant
+    quadrature of the tractions (independent of the closed forms) where the
+    pressure is closed; otherwise Popov's punch superposition in mpmath
+    (:func:`.stress_reference.punch_potentials`, no nested quadrature)."""
+    if not sf.contact.derivation("pressure").closed_form and sf.tangential in (None, "sliding", "partial_slip"):
+        return _punch_reference(sf)
+
+    def reference(vals, dps):
+        with mpmath.workdps(dps + 10):
+            p, q, breaks = _mp_tractions(sf, vals, dps)
+            num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
+            sx, sz, txz = flamant_stresses(p, q, *num, breaks=breaks, dps=dps)
+        return {"sigma_x": sx, "sigma_z": sz, "tau_xz": txz}
+    return reference
+
+
+def _punch_reference(sf):
+    from .force_law import ForceLaw
+    from .kolosov import kolosov_stresses
+
+    def reference(vals, dps):
+        with mpmath.workdps(dps + 10):
+            fixed = {k: v for k, v in vals.items() if k in (S.E_star,) + tuple(sf.contact.params)}
+            law = ForceLaw.from_contact(sf.contact, fixed)
+            num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
+            G, dG = punch_potentials(law.dP, *num, breaks=law.breaks(), dps=dps)
+            H = dH = 0
+            if sf.tangential is not None:
+                m = mpmath.mpf(sp.N(sf.mu.xreplace(vals), dps + 20))
+                H, dH = m * G, m * dG
+                if sf.tangential == "partial_slip":
+                    cv = mpmath.mpf(sp.N(sf.stick.xreplace(vals), dps + 20))
+                    Gc, dGc = punch_potentials(law.dP, cv, num[1], num[2], law.breaks(), dps)
+                    H, dH = H - m * Gc, dH - m * dGc
+            sx, sz, txz = kolosov_stresses(G, dG, H, dH, num[2], mpmath.re, mpmath.im, mpmath.pi)
+        return {"sigma_x": +sx, "sigma_z": +sz, "tau_xz": +txz}
+    return reference
+
+
+def combine_reference(ref, make):
+    """The reference of a quantity made from the three components."""
+    full = getattr(ref, "full", None)
+    if full is None:
+        return ref
+
+    def reference(vals, dps):
+        c = full(vals, dps)
+        with mpmath.workdps(dps + 10):
+            sx, sz, txz = (sp.Float(c[k], dps + 10) for k in ("sigma_x", "sigma_z", "tau_xz"))
+            return mpmath.mpf(sp.N(make(sx, sz, txz).xreplace(vals), dps + 10))
+    return reference
+
+
+def derive_components(sf) -> dict:
+    t0 = time.perf_counter()
+    G = sf.derivation("cauchy_transform").expr
+    H = sf.tangential_transform()
+    exprs = dict(zip(("sigma_x", "sigma_z", "tau_xz"), symbolic_stresses(G, H)))
+    closed = sf._closed()
+    sf.contact.derivation("pressure")  # derived here, not inside the (forked) verification
+    full = flamant_reference(sf)
+    notes, recs = [], {}
+    if closed and sf.verify:
+        recs = verify_many(exprs, full, sampler(sf), (), n_points=sf.points,
+                           reference_name="mpmath quadrature of the Flamant integrals of p and q "
+                                          "(Johnson Eq. 2.23, s = x + z sinh u)")
+        bad = [k for k, r in recs.items() if not r.passed]
+        if bad:
+            closed = False
+            notes.append(f"closed form FAILED verification for {', '.join(bad)}; evaluated by quadrature")
+    G_rule = sf.derivation("cauchy_transform").rule
+    out = {}
+    for k, e in exprs.items():
+        def ref(vals, dps, k=k):
+            return full(vals, dps)[k]
+        ref.full = full
+        step = Step(f"kolosov({G_rule})", e, (), ("Kolosov-Muskhelishvili formulas from G and H",)) if closed \
+            else fallback_step("no closed form of the potentials: Flamant quadrature")
+        out[k] = Derivation(k, e, closed, step, (), recs.get(k), time.perf_counter() - t0, tuple(notes), ref,
+                            (S.a, S.x, S.z) + sf.variables)
+    return out
+
+
+_ELEMENTARY = (sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Number, sp.NumberSymbol, sp.core.numbers.ImaginaryUnit, sp.log,
+               sp.asin, sp.acos, sp.atan, sp.asinh, sp.acosh, sp.atanh, sp.exp, sp.sin, sp.cos, sp.tan)
+
+
+def _elementary(expr) -> bool:
+    return all(isinstance(e, _ELEMENTARY) for e in sp.preorder_traversal(expr))
+
+
+def _potential(sf, vals, a_value):
+    """The normal potential (G, G') at numeric values for half-width a_value."""
+    Gd = sf.derivation("cauchy_transform")
+    at = {**{k: v for k, v in vals.items() if k not in (S.x, S.z)}, S.a: a_value}
+    if Gd.closed_form and _elementary(Gd.expr):
+        G = Gd.expr.xreplace(at)
+        return F.ClosedPotential(sp.lambdify(S.zeta, G, "numpy"),
+                                 sp.lambdify(S.zeta, sp.diff(G, S.zeta), "numpy"), float(a_value))
+    from ..numeric.exports import lambdify_numpy
+    D = sf._density().xreplace({k: v for k, v in at.items() if k != S.a})
+    bps = [sp.nsimplify(b.xreplace(at)) for b in density_breakpoints(D)]
+    near = {float(b): (_offset_density(D, b, 1), _offset_density(D, b, -1)) for b in bps}
+    dens = lambdify_numpy(D.subs(S.a, t), [t])
+    return F.PunchPotential(dens, float(a_value), [float(b) for b in bps], near=near)
+
+
+def _offset_density(D, b, side):
+    """D(b + side*d) as a float64 function of the offset d > 0, the
+    arguments of its square roots put over one denominator and factored, so
+    that no t - b is formed (the density may be singular at a kink, b)."""
+    from ..numeric.exports import lambdify_numpy
+    d = sp.Dummy("d", positive=True)
+    e = D.subs(S.a, b + side * d)
+    if e.has(sp.Piecewise):
+        return None
+    e = e.replace(lambda q: q.is_Pow and q.exp.is_Rational and q.exp.q == 2,
+                  lambda q: sp.factor(sp.together(sp.expand(q.base)))**q.exp)
+    try:
+        return lambdify_numpy(e, [d])
+    except Exception:  # no float64 export of this form: the plain density is used there
+        return None
+
+
+def build_field(sf, vals) -> F.FieldEvaluator:
+    normal = _potential(sf, vals, vals[S.a])
+    nuv = sf.nu.xreplace(vals)
+    nu = float(nuv) if nuv.is_number else float("nan")  # not given: sigma_y, von Mises, Tresca are NaN
+    mu = float(sf.mu.xreplace(vals)) if sf.tangential in ("sliding", "partial_slip") else 0.0
+    tangential = None
+    if sf.tangential == "partial_slip":
+        tangential = F.Scaled(_potential(sf, vals, sf.stick.xreplace(vals)), -mu)
+    elif isinstance(sf.tangential, sp.Expr):
+        q = sf.tangential.xreplace({k: v for k, v in vals.items() if k != S.x})
+        from ..numeric.quadrature import piecewise_breakpoints
+        bps = [float(b) for b in piecewise_breakpoints(q, S.x) if b.is_number] + list(sf.breaks)
+        tangential = F.CauchyPotential(sp.lambdify(S.x, q, "numpy"), float(vals[S.a]), bps + [-b for b in bps])
+    elif sf.tangential not in (None, "sliding"):
+        tangential = F.CauchyPotential(sf.tangential, float(vals[S.a]), sf.breaks)
+    force = float(sf.contact.derivation("force").evalf(dps=15, **{k.name: v for k, v in vals.items()
+                                                                   if k in (S.a, S.E_star) + sf.contact.params}))
+    return F.FieldEvaluator(normal, tangential, nu, friction=mu, mean_pressure=force / (2 * float(vals[S.a])))
+
+
+__all__ = ["derive_components", "build_field", "flamant_reference", "sampler"]
