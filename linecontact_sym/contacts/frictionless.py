@@ -4,16 +4,15 @@ of :mod:`.base` and derived by the engine from the profile."""
 from __future__ import annotations
 
 import dataclasses
-import random
 import time
 
 import mpmath
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.budget import DEFAULT_BUDGET, run_with_budget
+from ..core.budget import DEFAULT_BUDGET
 from ..core.conversion import to_mpf
-from ..core.errors import BudgetExceeded, DomainError
+from ..core.errors import DomainError
 from ..method import transforms as T
 from ..method.derivation import Derivation, derive, fallback_step
 from ..method.profile import Profile
@@ -25,6 +24,7 @@ from . import admissibility
 from .base import Contact, Quantity
 from .equilibria import half_width_at
 from .force_law import ForceLaw
+from .inverse import derive_half_width
 from .sampling import point_sampler
 
 
@@ -266,47 +266,8 @@ class LineContact(Contact):
         return cache[key]
 
     def _derive_half_width(self, load=S.P) -> Derivation:
-        t0 = time.perf_counter()
-        fd = self.derivation("force")
-        expr, notes = None, []
-        if fd.closed_form and not fd.expr.has(sp.Piecewise):
-            try:
-                sols = run_with_budget(_solve_for_a, fd.expr, load, seconds=self.budget)
-            except BudgetExceeded:
-                sols = []
-                notes.append(f"sympy.solve found nothing within {self.budget:g} s")
-            except (NotImplementedError, ValueError, TypeError) as exc:
-                sols = []
-                notes.append(f"sympy.solve: {exc}".splitlines()[0])
-            sample = self._sampler()
-            for cand in sols:
-                rng = random.Random(7)
-                good = 0
-                for _ in range(self.points):
-                    vals = sample(rng)
-                    if vals is None:
-                        continue
-                    Pv = sp.N(fd.expr.xreplace(vals), 60)
-                    av = sp.N(cand.xreplace({**vals, load: Pv}), 60)
-                    if av.is_real and abs(av - vals[S.a]) <= abs(vals[S.a]) * sp.Float(10)**(-self.digits):
-                        good += 1
-                if good == self.points:
-                    expr = cand
-                    break
-
-        def reference(vals, dps):
-            fixed = {k: v for k, v in vals.items() if k != load}
-            law = ForceLaw.from_contact(self, fixed)
-            return half_width_at(law, vals[load], dps)
-        variables = (load,) + self.variables
-        if expr is not None:
-            step = Step("solve_force_law", expr, (), ("sympy.solve of P(a) = P, root checked by substitution "
-                                                      "at random points",))
-            return Derivation("half_width", expr, True, step, (), None, time.perf_counter() - t0,
-                              tuple(notes), reference, variables)
-        return Derivation("half_width", sp.Eq(fd.expr, load), False,
-                          fallback_step("numeric root of P(a) = P (no closed-form inverse)"), (), None,
-                          time.perf_counter() - t0, tuple(notes), reference, variables)
+        """a(P), see :func:`~.inverse.derive_half_width`."""
+        return derive_half_width(self, load)
 
     # --------------------------------------------------------------- other forms
     def adhesive(self, work_of_adhesion=S.gamma):
@@ -340,8 +301,3 @@ class LineContact(Contact):
 
     def report(self, quantities=("force", "pressure", "gap")) -> str:
         return super().report(quantities)
-
-
-def _solve_for_a(Pexpr, load):
-    sols = sp.solve(sp.Eq(Pexpr, load), S.a)
-    return [sp.simplify(s) for s in sols]

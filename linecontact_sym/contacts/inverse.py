@@ -2,18 +2,21 @@
 force law."""
 from __future__ import annotations
 
+import random
 import time
 
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.budget import DEFAULT_BUDGET
+from ..core.budget import DEFAULT_BUDGET, run_with_budget
 from ..core.conversion import rational
-from ..core.errors import ProfileError
+from ..core.errors import BudgetExceeded, ProfileError
 from ..method import transforms as T
 from ..method.derivation import Derivation, fallback_step, integrate
 from ..method.rules import Problem, Step
 from ..method.verification import verify
+from .equilibria import half_width_at
+from .force_law import ForceLaw
 
 
 def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
@@ -73,4 +76,58 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
                       reference_in_x, variables, tuple(attempts))
 
 
-__all__ = ["profile_from_force"]
+def derive_half_width(contact, load=S.P) -> Derivation:
+    """The half-width a(P) of a frictionless contact: the closed-form inverse of
+    the force law where ``sympy.solve`` finds one (under the contact's budget),
+    each candidate checked by substitution at random points (P(a(P)) = P to the
+    contact's digits), else the unevaluated P(a) = P with a numeric root as
+    reference."""
+    t0 = time.perf_counter()
+    fd = contact.derivation("force")
+    expr, notes = None, []
+    if fd.closed_form and not fd.expr.has(sp.Piecewise):
+        try:
+            sols = run_with_budget(_solve_for_a, fd.expr, load, seconds=contact.budget)
+        except BudgetExceeded:
+            sols = []
+            notes.append(f"sympy.solve found nothing within {contact.budget:g} s")
+        except (NotImplementedError, ValueError, TypeError) as exc:
+            sols = []
+            notes.append(f"sympy.solve: {exc}".splitlines()[0])
+        sample = contact._sampler()
+        for cand in sols:
+            rng = random.Random(7)
+            good = 0
+            for _ in range(contact.points):
+                vals = sample(rng)
+                if vals is None:
+                    continue
+                Pv = sp.N(fd.expr.xreplace(vals), 60)
+                av = sp.N(cand.xreplace({**vals, load: Pv}), 60)
+                if av.is_real and abs(av - vals[S.a]) <= abs(vals[S.a]) * sp.Float(10)**(-contact.digits):
+                    good += 1
+            if good == contact.points:
+                expr = cand
+                break
+
+    def reference(vals, dps):
+        fixed = {k: v for k, v in vals.items() if k != load}
+        law = ForceLaw.from_contact(contact, fixed)
+        return half_width_at(law, vals[load], dps)
+    variables = (load,) + contact.variables
+    if expr is not None:
+        step = Step("solve_force_law", expr, (), ("sympy.solve of P(a) = P, root checked by substitution "
+                                                  "at random points",))
+        return Derivation("half_width", expr, True, step, (), None, time.perf_counter() - t0,
+                          tuple(notes), reference, variables)
+    return Derivation("half_width", sp.Eq(fd.expr, load), False,
+                      fallback_step("numeric root of P(a) = P (no closed-form inverse)"), (), None,
+                      time.perf_counter() - t0, tuple(notes), reference, variables)
+
+
+def _solve_for_a(Pexpr, load):
+    sols = sp.solve(sp.Eq(Pexpr, load), S.a)
+    return [sp.simplify(s) for s in sols]
+
+
+__all__ = ["profile_from_force", "derive_half_width"]

@@ -47,7 +47,7 @@ def exact_number(v) -> sp.Basic:
     if isinstance(v, float):
         if v != v or v in (float("inf"), float("-inf")):
             raise DomainError(f"expected a finite number, got {v}")
-        return sp.Rational(repr(v))
+        return sp.Rational(repr(float(v)))  # float(): NumPy 2 scalars print as np.float64(...)
     return to_basic(v)
 
 
@@ -65,7 +65,7 @@ def point_value(v) -> sp.Basic:
     if isinstance(v, float):
         if v != v or v in (float("inf"), float("-inf")):
             raise DomainError(f"expected a finite number, got {v}")
-        return sp.Rational(v)
+        return sp.Rational(float(v))
     return to_basic(v)
 
 
