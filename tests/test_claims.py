@@ -258,3 +258,18 @@ def test_result_serialises_to_json():
     r = check({"quantity": "force", "profile": "x*tan(theta)", "formula": "E_star*a", "points": 2})
     d = json.loads(json.dumps(r.to_dict(), default=str))
     assert d["status"] == FAILS and d["targets"][0]["forms"][0]["counterexample"]
+
+
+def test_printed_figures_hold_to_their_printed_digits():
+    """rounding = "printed": 0.785 stands for [0.7845, 0.7855], which holds
+    pi/4 = 0.78540; 0.786 does not; a fixed range [v, v] pins a parameter."""
+    from linecontact_sym.claims.spec import paper_from_dict
+    base = {"quantity": "force", "profile": "x**2/(2*R)", "rounding": "printed", "points": 2,
+            "ranges": {"R": [2, 2]}}
+    paper = paper_from_dict({"claims": [dict(base, label="ok", formula="0.785*E_star*a**2/(2*R)*2"),
+                                        dict(base, label="off", formula="0.786*E_star*a**2/R")]})
+    res = {r.label: r for r in C.check_paper(paper, budget=BUDGET).results}
+    assert res["ok"].status == C.HOLDS and 2.5 < res["ok"].digits < 3.5
+    assert res["off"].status == C.FAILS
+    assert all(p.values[sp.Symbol("R", positive=True)] == 2 for t in res["ok"].targets
+               for f in t.forms for p in f.points)

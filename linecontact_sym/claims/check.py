@@ -199,6 +199,8 @@ def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, 
     for kind, vals in pts:
         phys = derived.physics is not None and nphys < physics_points
         pr = evaluate_point(derived, printed, vals, kind, dps, physics=phys)
+        if form.variants and pr.status in ("pass", "fail"):
+            pr = _judge_printed(pr, form, derived, vals, dps)
         if phys and pr.status == "pass":
             nphys += 1
         results.append(pr)
@@ -247,6 +249,29 @@ def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, 
             notes.insert(0, other_bad[0].describe())
         cex = other_bad[0]
     return FormResult(form, HOLDS_IF, " and ".join(conds), digits, results, cex, sym_note, "; ".join(notes))
+
+
+def _judge_printed(pr: PointResult, form: Form, derived: Derived, vals, dps) -> PointResult:
+    """A figure printed to a few digits (``rounding = "printed"``) holds where
+    the derived value lies in the interval its printed digits stand for (the
+    formula's decimal constants moved by half a unit in the last digit); the
+    digits reported are those the printed figure has."""
+    target = pr.comparisons[0].target
+    try:
+        ends = [num_eval(v, vals, dps) for v in form.variants]
+    except (Undefined, LineContactError, ValueError, ZeroDivisionError) as exc:
+        return PointResult(vals, pr.kind, "printed_undefined", reason=str(exc))
+    lo, hi = min(ends), max(ends)
+    inside = lo <= target <= hi
+    with mpmath.workdps(dps):
+        scale = max(abs(target), mpmath.mpf(10) ** -dps)
+        width = float(-mpmath.log10(max((hi - lo) / 2, mpmath.mpf(10) ** -dps) / scale))
+    why = (f"the derived value lies in [{mpmath.nstr(lo, 8)}, {mpmath.nstr(hi, 8)}], the interval of the printed "
+           f"digits" if inside else
+           f"the derived value {mpmath.nstr(target, 10)} lies outside [{mpmath.nstr(lo, 8)}, {mpmath.nstr(hi, 8)}], "
+           f"the interval of the printed digits")
+    return PointResult(vals, pr.kind, "pass" if inside else "fail", width if inside else pr.digits,
+                       pr.comparisons, why)
 
 
 def _in_range(text, sym, bound, value):

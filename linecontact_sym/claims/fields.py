@@ -24,7 +24,7 @@ def _parse_range(val, where):
     if not (isinstance(val, (list, tuple)) and len(val) == 2):
         raise ClaimError(f"{where}: a range is [low, high], got {val!r}")
     lo, hi = (float(_num(v, where)) for v in val)
-    if not lo < hi:
+    if not lo <= hi:   # [v, v] fixes the value v
         raise ClaimError(f"{where}: empty range [{lo}, {hi}]")
     return (lo, hi)
 

@@ -81,6 +81,7 @@ says which one the paper prints.
 """
 from __future__ import annotations
 
+import re
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -154,7 +155,7 @@ for _key, (_kind, _name, _q) in qualified_quantities().items():
 _TOP_KEYS = {"key", "title", "reference", "definitions", "ranges", "claims", "source", "symbols", "figures"}
 _CLAIM_KEYS = {"label", "title", "description", "quantity", "profile", "profiles", "profile_names", "formula", "forms",
                "assumptions", "ranges", "special", "symbols", "force_law", "values", "labels", "note",
-               "points", "reading"}
+               "points", "reading", "rounding"}
 _FIGURE_KEYS = {"file", "title", "caption", "quantity", "x", "y", "x_range", "points", "values", "xlabel", "ylabel",
                 "y_min", "y_max", "size", "marks", "ratio", "ratio_label", "curves"}
 _CURVE_KEYS = {"name", "profile", "label", "style", "width"}
@@ -184,6 +185,10 @@ class Form:
     text: str
     shown: sp.Expr
     expr: sp.Expr
+    #: with ``rounding = "printed"``: the formula with every decimal constant
+    #: moved by half a unit in its last printed digit, each way (the printed
+    #: value stands for the interval these span)
+    variants: tuple = ()
 
 
 @dataclass
@@ -339,6 +344,30 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
                  str(data.get("reference", "")), claims, defs, source, ranges, figures)
 
 
+_DECIMAL = re.compile(r"(?<![\w.])(\d+)\.(\d+)(?![\w.])")
+
+
+def printed_variants(text: str) -> list:
+    """The formula text with every decimal constant moved by half a unit in
+    its last printed digit, in every combination (0.300 -> 0.2995 and
+    0.3005): the interval a figure printed with those digits stands for.
+
+    >>> printed_variants("0.300*p0")
+    ['0.2995*p0', '0.3005*p0']
+    """
+    found = list(_DECIMAL.finditer(text))[:6]
+    out = []
+    for signs in range(2 ** len(found)):
+        pieces, last = [], 0
+        for k, m in enumerate(found):
+            frac = len(m.group(2))
+            val = sp.Rational(m.group(0)) + (1 if signs >> k & 1 else -1) * sp.Rational(1, 2 * 10**frac)
+            pieces += [text[last:m.start()], f"{float(val):.{frac + 1}f}"]
+            last = m.end()
+        out.append("".join(pieces) + text[last:])
+    return out
+
+
 def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_shown=None,
                     file_ranges=None, file_symbols=None, index=0) -> Claim:
     """Validate and parse one ``[[claims]]`` table."""
@@ -416,12 +445,18 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
         if not isinstance(forms_raw, list):
             raise ClaimError(f"{W('forms')}: expected a list of formulas")
         texts = [str(f) for f in forms_raw] + [str(cd["formula"])]
+    rounding = cd.get("rounding", "exact")
+    if rounding not in ("exact", "printed"):
+        raise ClaimError(f"{W('rounding')}: 'exact' (30 digits) or 'printed' (to the printed digits), got {rounding!r}")
+    if rounding == "printed" and not any(_DECIMAL.search(t) for t in texts):
+        raise ClaimError(f"{W('rounding')}: 'printed' needs a decimal constant such as 0.300 in the formula")
     forms = []
     for j, text in enumerate(texts):
         fld = "formula" if j == len(texts) - 1 else f"forms[{j}]"
         expr = parse(text, fld)
         shown_expr = parse_expr(text, symbols=syms, definitions=shown, placeholders=ph, where=W(fld))
-        forms.append(Form(text, shown_expr, expr))
+        variants = tuple(parse(v, fld) for v in printed_variants(text)) if rounding == "printed" else ()
+        forms.append(Form(text, shown_expr, expr, variants))
     assumptions = tuple(parse_expr(str(r), symbols=syms, where=W(f"assumptions[{j}]"), allow_relational=True)
                         for j, r in enumerate(cd.get("assumptions", [])))
     table = {}

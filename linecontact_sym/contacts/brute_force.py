@@ -87,13 +87,15 @@ def minimum_by_grid(law, dps: int) -> PullOff:
         return P0f(A) - B1 * math.sqrt(float(A))
     s = float(quad.scale)
     grid = [s * 10.0**(-8 + 16 * k / (GRID_POINTS - 1)) for k in range(GRID_POINTS)]
-    pts, last0 = [], None
+    pts, last0, cut = [], None, False
     for A in grid:
         try:
             p0 = P0f(A)
         except (Outside, ValueError, ZeroDivisionError):
+            cut = True
             break
         if not math.isfinite(p0) or (last0 is not None and p0 < last0):
+            cut = True
             break
         last0 = p0
         pts.append((A, p0 - B1 * math.sqrt(A)))
@@ -103,6 +105,9 @@ def minimum_by_grid(law, dps: int) -> PullOff:
     if pts[k][1] >= 0:
         raise NoPullOffError("P(a) is nowhere negative on the grid: no finite pull-off")
     if k == len(pts) - 1:
+        if not cut:   # still falling where the grid ends: P has no finite minimum
+            raise NoPullOffError(f"P(a) still decreases at a = {pts[k][0]:.3g} (1e8 times the length scale), "
+                                 f"where the grid ends: no finite pull-off")
         kind, A = "end", pts[k][0]
     else:
         lo, hi = pts[max(k - 1, 0)][0], pts[k + 1][0]

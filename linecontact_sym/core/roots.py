@@ -14,8 +14,9 @@ from __future__ import annotations
 import mpmath
 
 
-class Outside(Exception):
-    """The function is undefined (not real, not finite) at this argument."""
+class Outside(ValueError):
+    """The function is undefined (not real, not finite) at this argument (a
+    ValueError: callers that treat a ValueError as "undefined here" see it so)."""
 
 
 UNDEFINED = (Outside, ValueError, ZeroDivisionError)
