@@ -90,9 +90,26 @@ def quad0(f, pts):
     """mpmath tanh-sinh quadrature over the points ``pts`` (pts[0] == 0), with
     u**4 = t on the first interval: an algebraic or logarithmic endpoint
     singularity at 0 (power laws with n < 1, the wedge) is then integrated to
-    full precision instead of losing the tail below the smallest node."""
+    full precision instead of losing the tail below the smallest node.  Each
+    later interval [p, q] is integrated in u = sqrt(t - p) (t = p + u**2),
+    with the integrand at twice the working digits: beyond a kink p the
+    integrand may behave like 1/sqrt(t - p) (the slope of a force law, Eq. 12
+    and the gap), whose tail below the smallest tanh-sinh node would otherwise
+    cost half the digits, and whose terms lose half the digits to the
+    rounding of t - p.  For the same reason the breakpoints must be given to
+    about twice the working digits: a split point off the integrand's
+    singularity by d loses about sqrt(d)."""
     first = mpmath.quad(lambda u: 4 * u**3 * f(u**4), [0, mpmath.root(pts[1], 4)], maxdegree=10)
-    rest = mpmath.quad(f, pts[1:], maxdegree=10) if len(pts) > 2 else 0
+    rest = mpmath.mpf(0)
+    extra = 2 * mpmath.mp.dps
+    for p, q in zip(pts[1:-1], pts[2:]):
+        def g(u, p=p):
+            with mpmath.workdps(extra):
+                tv = p + u * u
+                # u below 10**(-extra/2): a node whose weight times any
+                # integrable 2u f is below the working precision
+                return 2 * u * f(tv) if tv != p else mpmath.mpf(0)
+        rest += mpmath.quad(g, [0, mpmath.sqrt(q - p)], maxdegree=10)
     return first + rest
 
 
@@ -120,7 +137,9 @@ def pressure_quad(dP, breaks, values: dict, dps: int = 50):
     with mpmath.workdps(dps + 10):
         A, X = _mpf(values[S.a]), abs(_mpf(values[S.x]))
         W = mpmath.sqrt(A**2 - X**2)
-        pts = [mpmath.mpf(0)] + [mpmath.sqrt(bp**2 - X**2) for bp in breaks if X < bp < A] + [W]
+        with mpmath.workdps(2 * mpmath.mp.dps):   # as exact as the breakpoints are (see quad0)
+            inner = [mpmath.sqrt(bp**2 - X**2) for bp in breaks if X < bp < A]
+        pts = [mpmath.mpf(0)] + inner + [W]
 
         def integrand(w):
             sv = mpmath.sqrt(X**2 + w**2)
