@@ -63,6 +63,25 @@ _U = sp.Dummy("u", positive=True)   # sin(phi)^2
 _W = sp.Dummy("w", positive=True)   # cos(phi)
 
 
+def _root(e, sample):
+    """sqrt(e) of a positive e, brought over one denominator and factored, each
+    factor made positive at the sample point (sqrt(a**2/x**2 - 1) ->
+    sqrt((a - x)*(a + x))/x): the small differences are then formed exactly."""
+    num, den = sp.fraction(sp.factor(sp.together(e)))
+
+    def positive(p):
+        out = []
+        for f in sp.Mul.make_args(p):
+            base, ex = f.as_base_exp()
+            if base.is_Add and _num(base, sample) < 0:
+                f = sp.Pow(sp.Add(*[-u for u in base.args]), ex)
+            elif f.is_Number:
+                f = abs(f)
+            out.append(f)
+        return sp.Mul(*out)
+    return sp.sqrt(positive(num)) / sp.sqrt(positive(den))
+
+
 def _num(e, sample) -> float:
     v = complex(sp.N(sp.sympify(e).xreplace(sample), 30))
     if abs(v.imag) > 1e-20 * max(1.0, abs(v.real)):
@@ -188,7 +207,7 @@ class _End:
         elif self.zero:
             self.S, self.C, self.phi = sp.S.Zero, sp.S.One, sp.S.Zero
         else:
-            self.S, self.C, self.phi = t_e / a, sp.sqrt(a**2 - t_e**2) / a, sp.asin(t_e / a)
+            self.S, self.C, self.phi = t_e / a, sp.sqrt(a - t_e) * sp.sqrt(a + t_e) / a, sp.asin(t_e / a)
         self.Q = sp.sqrt(1 - m * self.S**2) if m is not None else sp.S.One
         self.s2 = _num(self.S**2, sample)
 
@@ -234,11 +253,11 @@ def _pole_plain(end, n, sample):
     """int_0^phi dphi/(1 - n S^2) (Cauchy principal value across a pole)."""
     nv = _num(n, sample)
     if nv < 1:
-        r = sp.sqrt(1 - n)
+        r = _root(1 - n, sample)
         if end.top:
             return sp.pi / (2 * r)
         return sp.atan(r * end.S / end.C) / r
-    p = sp.sqrt(n - 1)
+    p = _root(n - 1, sample)
     if nv * end.s2 < 1:      # below the pole: y = p tan(phi) < 1
         return sp.atanh(p * end.S / end.C) / p if not end.zero else sp.S.Zero
     return sp.atanh(end.C / (p * end.S)) / p
@@ -271,10 +290,10 @@ def _odd_primitive(c, kind, arg, w, sample):
     if al * be > 0:
         if al < 0:
             alpha, beta, c = -alpha, -beta, -c
-        return c * sp.atan(sp.sqrt(beta / alpha) * w) / sp.sqrt(alpha * beta)
+        return c * sp.atan(_root(beta / alpha, sample) * w) / _root(alpha * beta, sample)
     if al < 0:
         alpha, beta, c = -alpha, -beta, -c
-    k = sp.sqrt(-beta / alpha)
+    k = _root(-beta / alpha, sample)
     z = k * w
     if _num(z**2, sample) < 1:
         return c * sp.atanh(z) / (alpha * k)

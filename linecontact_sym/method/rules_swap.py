@@ -138,7 +138,7 @@ class PressureSwap(Rule):
                 for pc, lo, hi in reg.pieces_below(J):
                     h = t * pc.derivative.xreplace({S.x: t}) / (t**2 - S.x**2)
                     total += _integral(h, lo, hi, sample)
-                expr = S.E_star / sp.pi * sp.sqrt(S.a**2 - S.x**2) * total
+                expr = S.E_star / sp.pi * sp.sqrt(S.a - S.x) * sp.sqrt(S.a + S.x) * total
                 cond = sp.And(reg.a_condition(J), reg.x_condition(I, I == J))
                 branches.append((expr, cond))
         kind = "elliptic integrals" if _has_elliptic(branches) else "elementary"
@@ -171,7 +171,7 @@ class GapSwap(Rule):
                     h = (fx - pc.expr.xreplace({S.x: t})) / (S.x**2 - t**2)
                     total += _integral(h, lo, hi, sample)
                 expr = -2 / (sp.pi * S.E_star) * P * sp.acosh(S.x / S.a) \
-                    + 2 / sp.pi * S.x * sp.sqrt(S.x**2 - S.a**2) * total
+                    + 2 / sp.pi * S.x * sp.sqrt(S.x - S.a) * sp.sqrt(S.x + S.a) * total
                 cond = sp.And(reg.a_condition(J), reg.x_condition(I, I == reg.n - 1))
                 branches.append((expr, cond))
         kind = "elliptic integrals" if _has_elliptic(branches) else "elementary"
