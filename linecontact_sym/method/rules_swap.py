@@ -92,7 +92,7 @@ class _Regions:
         return vals
 
     def a_condition(self, J):
-        return sp.Lt(S.a, self.edges[J + 1]) if J + 1 < self.n else sp.true
+        return sp.Le(S.a, self.edges[J + 1]) if J + 1 < self.n else sp.true
 
     def x_condition(self, I, last):
         return sp.Lt(S.x, self.edges[I + 1]) if not last else sp.true

@@ -36,8 +36,9 @@ import numpy as np
 import scipy.special as sc
 import sympy as sp
 
-from ..parsing import to_sympy
+from ..core import symbols as S
 from ..core.errors import DomainError
+from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
 from .special import MPMATH_FUNCS, NUMPY_FUNCS
@@ -95,7 +96,7 @@ def _fold_constants(expr):
 
 
 # ============================================================== lambdify
-def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None):
+def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None, patch=None):
     """A float64 function ``f(*values)`` computing ``expr`` at ``args`` = values
     (``args`` a list of symbols; NumPy arrays broadcast).
 
@@ -105,7 +106,9 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
     vectorised tanh-sinh quadratures
     (:class:`~linecontact_sym.numeric.quadrature.VectorQuad`).  Removable
     singularities at an argument = 0 (e.g. x**2*atanh(...) at x = 0) are
-    patched with the symbolic limit of ``original`` (default: ``expr``).
+    patched with the symbolic limit of ``original`` (default: ``expr``), for
+    the arguments in ``patch`` (default: all; an argument that is never 0 in
+    the quantity's domain, e.g. a or E_star, need not be tried).
     Domain: real arguments where ``expr`` is real (elsewhere NaN).
 
     K(m) - E(m) = (pi m/4)(1 + 3m/8 + ...) at m = 1e-10: the plain
@@ -135,6 +138,8 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
     f = sp.lambdify(args, _to_scipy_names(_fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):
+        if patch is not None and sym not in patch:
+            continue
         lim = _removable_limit(original, sym)
         if lim is not None:
             g = lambdify_numpy(lim, args, stable=stable, conditions=conditions)
@@ -271,6 +276,14 @@ def _conditions(derivation):
     return tuple(conds)
 
 
+def _zero_in_domain(derivation):
+    """The arguments that may be 0 in the quantity's domain (where a removable
+    singularity needs its limit): not the half-width a nor E*, and not x for
+    a gap (|x| >= a > 0).  Each limit tried costs up to seconds of SymPy."""
+    never = {S.a, S.E_star} | ({S.x} if derivation.quantity == "gap" else set())
+    return tuple(s for s in derivation.variables_all if s not in never)
+
+
 def _cached_lambdify(derivation, kind, stable):
     cache = _CACHE.of(derivation)
     key = (kind, stable)
@@ -280,7 +293,8 @@ def _cached_lambdify(derivation, kind, stable):
         if kind == "numpy":
             # the stable form's integrands are already stable; the quadratures keep them
             cache[key] = lambdify_numpy(expr, syms, stable=False, conditions=_conditions(derivation),
-                                        original=derivation.expr if derivation.closed_form else None)
+                                        original=derivation.expr if derivation.closed_form else None,
+                                        patch=_zero_in_domain(derivation))
         else:
             cache[key] = lambdify_mpmath(expr, syms, stable=False)
     return cache[key]
