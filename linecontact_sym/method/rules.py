@@ -30,6 +30,7 @@ from ..core import symbols as S
 from ..core.errors import DivergentIntegralError
 from .hyperseries import NotDecomposable, beta_kernel_sum, decompose
 from .rulebase import TRANSFORMS, NotApplicable, Problem, Rule, Step  # noqa: F401  (re-exported)
+from .rules_inverse import InverseMerged
 from .rules_swap import GapSwap, PressureSwap
 from .transforms import s, t
 
@@ -260,5 +261,5 @@ RULES = {
     "force": (ForceTermwise(), ForcePiecewise(), ForceSympy()),
     "pressure": (PressureTermwise(), PressureSwap(), PressureSympy()),
     "gap": (GapTermwise(), GapSwap(), GapSympy()),
-    "profile": (InverseTermwise(), InverseSympy()),
+    "profile": (InverseTermwise(), InverseMerged(), InverseSympy()),
 }
