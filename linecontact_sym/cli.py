@@ -298,6 +298,9 @@ def build_parser() -> argparse.ArgumentParser:
     def common(sp_, json_flag=True):
         sp_.add_argument("--budget", type=float, default=20.0, metavar="S",
                          help="seconds allowed to each symbolic derivation (default 20)")
+        sp_.add_argument("--no-cache", dest="no_cache", action="store_true",
+                         help="neither read nor write the on-disk derivation cache (default: "
+                              "$LINECONTACT_SYM_CACHE, else ~/.cache/linecontact_sym; 'off' disables it)")
         if json_flag:
             sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
 
@@ -383,6 +386,9 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
+    if getattr(args, "no_cache", False):
+        from .method import store
+        store.set_enabled(False)
     try:
         return args.func(args)
     except LineContactError as exc:

@@ -91,9 +91,9 @@ def _num(e, sample) -> float:
 
 # ------------------------------------------------------------------ radicals
 def _radicals(hS, sample):
-    """Replace every sqrt(A - B S^2)^k by A^(k/2) Q^k; returns (expr, m) with
-    m = B/A (None if there is no radical)."""
-    ms, reps = [], {}
+    """Replace every sqrt(A - B S^2)^k by A^(k/2) Q^k; returns (expr, m, radicands)
+    with m = B/A (None if there is no radical) and the (A, B) found."""
+    ms, reps, rads = [], {}, []
     for p in hS.atoms(sp.Pow):
         if not p.base.has(_S):
             continue
@@ -119,11 +119,12 @@ def _radicals(hS, sample):
         else:
             ms.append(m)
         reps[p] = A**p.exp * _Q**(2 * p.exp)
+        rads.append((A, B))
     if len(ms) > 1:
         raise NotReducible(f"more than one kind of square root ({ms})")
     if any(f.has(_S) for f in hS.atoms(sp.Function)):
         raise NotReducible("transcendental integrand")
-    return hS.xreplace(reps), (ms[0] if ms else None)
+    return hS.xreplace(reps), (ms[0] if ms else None), rads
 
 
 def _split_q(expr, m):
@@ -301,13 +302,23 @@ def _odd_primitive(c, kind, arg, w, sample):
 
 
 # ------------------------------------------------------------------ main
-def reduce_integral(h, t, a, lo, hi, sample):
+def reduce_integral(h, t, a, lo, hi, sample, conditions=None):
     """int_lo^hi h(t)/sqrt(a^2 - t^2) dt in closed form (see the module
     docstring); ``sample`` is a point (Symbol -> number) of the region in
     which the result is to hold.  Raises :class:`NotReducible` outside the
-    class of integrands handled."""
+    class of integrands handled.  A list ``conditions`` receives the
+    relations under which the result is real (each radicand A - B t^2 > 0
+    up to t = hi: a < R for the circle)."""
     hS = sp.sympify(h).xreplace({t: a * _S})
-    hS, m = _radicals(hS, sample)
+    hS, m, rads = _radicals(hS, sample)
+    if conditions is not None:
+        s_hi = sp.sympify(hi) / a
+        for A, B in rads:
+            lhs = B * s_hi**2
+            c = sp.Lt(sp.sqrt(lhs), sp.sqrt(A)) if lhs.is_positive and A.is_positive \
+                else sp.Gt(sp.factor(A - lhs), 0)
+            if c not in conditions and c is not sp.true:
+                conditions.append(c)
     A0, A1 = _split_q(hS, m)
     parts = [(A0, False)]
     if A1 != 0:

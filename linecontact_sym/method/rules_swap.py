@@ -104,12 +104,12 @@ class _Regions:
             yield pc, self.edges[j], (self.edges[j + 1] if j < J else S.a)
 
 
-def _integral(h, lo, hi, sample):
+def _integral(h, lo, hi, sample, conds):
     h = sp.cancel(sp.sympify(h))
     if h == 0:
         return sp.S.Zero
     try:
-        return reduce_integral(h, t, S.a, lo, hi, sample)
+        return reduce_integral(h, t, S.a, lo, hi, sample, conds)
     except NotReducible as exc:
         raise NotApplicable(str(exc))
 
@@ -130,19 +130,19 @@ class PressureSwap(Rule):
 
     def run(self, problem):
         reg = _Regions(problem.profile)
-        branches = []
+        branches, conds = [], [sp.Lt(S.x, S.a)]
         for J in range(reg.n):
             for I in range(J + 1):
                 sample = reg.sample(J, I, "inside")
                 total = sp.S.Zero
                 for pc, lo, hi in reg.pieces_below(J):
                     h = t * pc.derivative.xreplace({S.x: t}) / (t**2 - S.x**2)
-                    total += _integral(h, lo, hi, sample)
+                    total += _integral(h, lo, hi, sample, conds)
                 expr = S.E_star / sp.pi * sp.sqrt(S.a - S.x) * sp.sqrt(S.a + S.x) * total
                 cond = sp.And(reg.a_condition(J), reg.x_condition(I, I == J))
                 branches.append((expr, cond))
         kind = "elliptic integrals" if _has_elliptic(branches) else "elementary"
-        return Step(self.name, _piecewise(branches), (sp.Lt(S.x, S.a),),
+        return Step(self.name, _piecewise(branches), tuple(conds),
                     (f"Eq. (12) after Eq. (10*), integrations swapped, Legendre reduction per piece ({kind})",))
 
 
@@ -158,10 +158,10 @@ class GapSwap(Rule):
 
     def run(self, problem):
         reg = _Regions(problem.profile)
-        branches = []
+        branches, conds = [], [sp.Gt(S.x, S.a)]
         for J in range(reg.n):
             sample = reg.sample(J)
-            P = S.E_star * sum((_integral(t * pc.derivative.xreplace({S.x: t}), lo, hi, sample)
+            P = S.E_star * sum((_integral(t * pc.derivative.xreplace({S.x: t}), lo, hi, sample, conds)
                                 for pc, lo, hi in reg.pieces_below(J)), sp.S.Zero)
             for I in range(J, reg.n):
                 sample = reg.sample(J, I, "outside")
@@ -169,13 +169,16 @@ class GapSwap(Rule):
                 total = sp.S.Zero
                 for pc, lo, hi in reg.pieces_below(J):
                     h = (fx - pc.expr.xreplace({S.x: t})) / (S.x**2 - t**2)
-                    total += _integral(h, lo, hi, sample)
+                    total += _integral(h, lo, hi, sample, conds)
                 expr = -2 / (sp.pi * S.E_star) * P * sp.acosh(S.x / S.a) \
                     + 2 / sp.pi * S.x * sp.sqrt(S.x - S.a) * sp.sqrt(S.x + S.a) * total
                 cond = sp.And(reg.a_condition(J), reg.x_condition(I, I == reg.n - 1))
                 branches.append((expr, cond))
         kind = "elliptic integrals" if _has_elliptic(branches) else "elementary"
-        return Step(self.name, _piecewise(branches), (sp.Gt(S.x, S.a),),
+        conds += [sp.Gt(sp.factor(p.base), 0) for e, _ in branches for p in e.atoms(sp.Pow)
+                  if p.exp.is_Rational and p.exp.q == 2 and p.base.has(S.x) and not p.base.has(S.a)
+                  and sp.Gt(sp.factor(p.base), 0) not in conds]
+        return Step(self.name, _piecewise(branches), tuple(dict.fromkeys(conds)),
                     (f"Eqs. (3)/(5) by parts after Eq. (10*), integrations swapped, Legendre reduction "
                      f"per piece ({kind})",))
 
