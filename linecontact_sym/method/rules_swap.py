@@ -178,9 +178,18 @@ class GapSwap(Rule):
         conds += [sp.Gt(sp.factor(p.base), 0) for e, _ in branches for p in e.atoms(sp.Pow)
                   if p.exp.is_Rational and p.exp.q == 2 and p.base.has(S.x) and not p.base.has(S.a)
                   and sp.Gt(sp.factor(p.base), 0) not in conds]
+        if any(_undefined_at_edge(e) for e, _ in branches):
+            # Pi(a^2/x^2|m) diverges at the edge, where the gap is 0 (g(a) = 0)
+            branches.insert(0, (sp.S.Zero, sp.Eq(S.x, S.a)))
         return Step(self.name, _piecewise(branches), tuple(dict.fromkeys(conds)),
                     (f"Eqs. (3)/(5) by parts after Eq. (10*), integrations swapped, Legendre reduction "
                      f"per piece ({kind})",))
+
+
+def _undefined_at_edge(e):
+    """Is the branch 0 * infinity at x = a (a Pi(1|m))?"""
+    v = e.xreplace({S.x: S.a})
+    return v.has(sp.nan, sp.zoo) or any(sp.simplify(p.args[0] - 1) == 0 for p in v.atoms(sp.elliptic_pi))
 
 
 def _has_elliptic(branches):

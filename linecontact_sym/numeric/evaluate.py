@@ -57,10 +57,9 @@ from ..core.errors import LineContactError
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
-from .exports import (check_arguments, compile_plain_numpy, lambdify_mpmath, lambdify_mpmath_quad,
-                      lambdify_numpy, make_callable, stable_form)
+from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, lambdify_mpmath,
+                      lambdify_mpmath_quad, make_callable, stable_form)
 from .quadrature import VectorQuad
-from .stable import is_rational_in_symbols
 
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
 #: closed forms / quadratures (what tests/test_extremes.py checks on the grid)
@@ -151,38 +150,11 @@ def _float64_fn(d):
     return cache["f64"]
 
 
-def _cancellation_fns(d):
-    """For each sum in the stable form that is not a rational function of the
-    symbols (those are formed exactly or are covered by kappa): a pair of
-    float64 functions (sum of |terms|, sum).  Their ratio at a point is the
-    amplification of rounding errors by cancellation in that sum."""
-    cache = _CACHE.of(d)
-    key = "cancel"
-    if key not in cache:
-        expr = stable_form(d).expr
-        syms = d.variables_all
-        fns = []
-        for node in sp.preorder_traversal(expr):
-            if isinstance(node, sp.Integral):
-                continue
-            if node.is_Add and not is_rational_in_symbols(node) and not node.is_number \
-                    and node.free_symbols <= set(syms):
-                absum = sp.Add(*[sp.Abs(t) for t in node.args])
-                fns.append((lambdify_numpy(absum, syms, stable=False),
-                            lambdify_numpy(node, syms, stable=False)))
-        cache[key] = fns
-    return cache[key]
-
-
 def _cancellation(d, point, names):
-    worst = 1.0
-    vals = [point[n] for n in names]
+    """The largest cancellation ratio of the stable form's sums at a point
+    (:func:`~.exports.cancellation_probe`)."""
     with np.errstate(all="ignore"):
-        for fa, fs in _cancellation_fns(d):
-            A, Sm = float(np.asarray(fa(*vals))), float(np.asarray(fs(*vals)))
-            if math.isfinite(A) and math.isfinite(Sm) and Sm != 0:
-                worst = max(worst, A / abs(Sm))
-    return worst
+        return float(np.asarray(cancellation_probe(d)(*[point[n] for n in names])))
 
 
 # ----------------------------------------------------------------- model path

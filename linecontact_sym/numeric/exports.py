@@ -31,6 +31,8 @@ x**2)/a) at x = 0) are patched with the symbolic limit.
 """
 from __future__ import annotations
 
+import math
+
 import mpmath
 import numpy as np
 import scipy.special as sc
@@ -42,7 +44,7 @@ from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
 from .special import MPMATH_FUNCS, NUMPY_FUNCS
-from .stable import stabilize
+from .stable import is_rational_in_symbols, stabilize
 
 _SCIPY_FUNCS = {
     "_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1,
@@ -300,6 +302,51 @@ def _cached_lambdify(derivation, kind, stable):
     return cache[key]
 
 
+def cancellation_sums(derivation):
+    """The sums of the stable form that are not rational functions of the
+    symbols (those are formed exactly, or their error is covered by the
+    condition number), as (sum of |terms|, sum) pairs of expressions: their
+    ratio at a point is the amplification of rounding errors by cancellation."""
+    cache = _CACHE.of(derivation)
+    if "cancel_sums" not in cache:
+        expr = stable_form(derivation).expr
+        syms = set(derivation.variables_all)
+        pairs = []
+        for node in sp.preorder_traversal(expr):
+            if isinstance(node, sp.Integral):
+                continue
+            if node.is_Add and not is_rational_in_symbols(node) and not node.is_number \
+                    and node.free_symbols <= syms:
+                pairs.append((sp.Add(*[sp.Abs(t) for t in node.args]), node))
+        cache["cancel_sums"] = pairs
+    return cache["cancel_sums"]
+
+
+def cancellation_probe(derivation):
+    """A vectorised float64 function of the arguments (``variables_all``
+    order) giving the largest cancellation ratio sum(|terms|)/|sum| over
+    :func:`cancellation_sums` (1 where there is none or it is not finite)."""
+    cache = _CACHE.of(derivation)
+    if "cancel_probe" not in cache:
+        pairs = cancellation_sums(derivation)
+        syms = derivation.variables_all
+        if not pairs:
+            cache["cancel_probe"] = lambda *vals: np.ones(np.broadcast_shapes(*[np.shape(v) for v in vals]))
+        else:
+            g = lambdify_numpy(sp.Tuple(*[e for pair in pairs for e in pair]), syms, stable=False)
+
+            def probe(*vals):
+                with np.errstate(all="ignore"):
+                    out = [np.asarray(v, dtype=float) for v in g(*vals)]
+                    worst = np.ones(np.broadcast_shapes(*[o.shape for o in out] + [np.shape(v) for v in vals]))
+                    for A, Sm in zip(out[::2], out[1::2]):
+                        r = A / np.abs(Sm)
+                        worst = np.where(np.isfinite(r) & (r > worst), r, worst)
+                return worst
+            cache["cancel_probe"] = probe
+    return cache["cancel_probe"]
+
+
 #: long inputs are evaluated in chunks of this many points, so that the chain
 #: of ufuncs of an expression runs in cache (about 2x faster on 10^6 points)
 CHUNK = 32768
@@ -316,6 +363,47 @@ def _chunked(f, vals):
     for lo in range(0, n, CHUNK):
         out[lo:lo + CHUNK] = f(*[v[lo:lo + CHUNK] if v.ndim else v for v in flat])
     return out.reshape(shape)
+
+
+#: cancellation ratio above which a guarded export recomputes a point with mpmath
+GUARD_RATIO = 16.0
+
+
+def _guarded(derivation) -> bool:
+    """Closed forms with elliptic integrals of the third kind: Pi(n|m) diverges
+    as n -> 1 and such forms can cancel (the exact cylinder's gap: terms of
+    size R cancel to O(a^2/R), and near the edge to O((x - a)^(3/2)))."""
+    if not derivation.closed_form:
+        return False
+    from .special import carlson_rj
+    return stable_form(derivation).expr.has(carlson_rj)
+
+
+def _guard(f, probe, fmp):
+    """f, but points whose sums cancel by more than :data:`GUARD_RATIO`
+    (:func:`cancellation_probe`) are recomputed by mpmath with
+    20 + log10(ratio) digits."""
+    def guarded(*vals):
+        out = np.asarray(f(*vals), dtype=float)
+        ratio = np.asarray(probe(*vals), dtype=float)
+        bad = ratio > GUARD_RATIO
+        if not np.any(bad):
+            return out
+        shape = np.broadcast_shapes(out.shape, ratio.shape, *[np.shape(v) for v in vals])
+        out = np.array(np.broadcast_to(out, shape), dtype=float)
+        full = [np.broadcast_to(np.asarray(v, dtype=float), shape) for v in vals]
+        rb = np.broadcast_to(ratio, shape)
+        for idx in np.argwhere(np.broadcast_to(bad, shape)):
+            idx = tuple(idx)
+            digits = 20 + int(math.ceil(math.log10(rb[idx])))
+            with mpmath.workdps(digits):
+                try:
+                    v = fmp(*[mpmath.mpf(float(t[idx])) for t in full])
+                    out[idx] = float(v) if not isinstance(v, mpmath.mpc) else np.nan
+                except (ValueError, ZeroDivisionError, TypeError):
+                    out[idx] = np.nan
+        return out[()] if out.ndim == 0 else out
+    return guarded
 
 
 def check_arguments(names, values: dict, quantity: str):
@@ -376,6 +464,8 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
         raise ValueError(f"unknown backend {backend!r}; use 'numpy' or 'mpmath'")
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
+        if stable and _guarded(derivation):
+            f = _guard(f, cancellation_probe(derivation), _cached_lambdify(derivation, "mpmath", True))
 
         def fn(**kw):
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
