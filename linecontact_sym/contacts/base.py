@@ -24,9 +24,34 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from ..core.errors import DomainError, LineContactError
 from ..method.derivation import Derivation
 from ..parsing import to_sympy
+
+def _number(v):
+    """A value for the domain check: floats and NumPy arrays as they are (the
+    fast path of numeric evaluation), anything else through the strict
+    converter (strings are parsed, never evaluated)."""
+    if isinstance(v, (int, float)) and not isinstance(v, bool):
+        return float(v)
+    if isinstance(v, np.ndarray):
+        return v.astype(float)
+    return to_sympy(v)
+
+
+def _positive(v) -> bool:
+    if isinstance(v, float):
+        return v > 0
+    if isinstance(v, np.ndarray):
+        return bool(np.all(v > 0))
+    return not (v.is_number and not v.is_positive)
+
+
+def _any(rel) -> bool:
+    return bool(np.any(rel)) if isinstance(rel, (np.ndarray, np.bool_)) else bool(rel)
+
 
 #: every contact class, by its ``kind``
 CONTACT_KINDS: dict = {}
@@ -102,12 +127,17 @@ class Contact:
     # ----------------------------------------------------------- registry
     @classmethod
     def quantities(cls) -> dict:
-        """name -> :class:`Quantity`, in declaration order (base classes first)."""
-        out = {}
-        for klass in reversed(cls.__mro__):
-            for name, val in vars(klass).items():
-                if isinstance(val, Quantity):
-                    out[name] = val
+        """name -> :class:`Quantity`, in declaration order (base classes first).
+        Built once per class (numeric evaluation asks on every call); do not
+        modify the returned dict."""
+        out = cls.__dict__.get("_quantities")
+        if out is None:
+            out = {}
+            for klass in reversed(cls.__mro__):
+                for name, val in vars(klass).items():
+                    if isinstance(val, Quantity):
+                        out[name] = val
+            cls._quantities = out
         return out
 
     @classmethod
@@ -151,16 +181,16 @@ class Contact:
         vals = dict(values)
         for name in ("a", "E_star"):
             if name in vals and vals[name] is not None:
-                v = to_sympy(vals[name])
-                if v.is_number and not v.is_positive:
+                v = _number(vals[name])
+                if not _positive(v):
                     what = "the half-width" if name == "a" else "the reduced modulus E*"
                     raise DomainError(f"{what} must be positive, got {name} = {vals[name]}")
         if "x" in vals and "a" in vals and q.domain != "any":
-            xv, av = abs(to_sympy(vals["x"])), to_sympy(vals["a"])
-            if q.domain == "inside" and xv > av:
+            xv, av = abs(_number(vals["x"])), _number(vals["a"])
+            if q.domain == "inside" and _any(xv > av):
                 raise DomainError(f"x = {vals['x']} lies outside the contact |x| <= a = {vals['a']}; "
                                   f"the {q.name} is defined inside (use the gap outside)")
-            if q.domain == "outside" and xv < av:
+            if q.domain == "outside" and _any(xv < av):
                 raise DomainError(f"x = {vals['x']} lies inside the contact |x| < a = {vals['a']}; "
                                   f"the {q.name} is defined outside (zero inside)")
             vals["x"] = xv

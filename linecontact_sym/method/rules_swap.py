@@ -142,6 +142,7 @@ class PressureSwap(Rule):
                 cond = sp.And(reg.a_condition(J), reg.x_condition(I, I == J))
                 branches.append((expr, cond))
         kind = "elliptic integrals" if _has_elliptic(branches) else "elementary"
+        branches = _edge_limits(branches, reg) + branches
         return Step(self.name, _piecewise(branches), tuple(conds),
                     (f"Eq. (12) after Eq. (10*), integrations swapped, Legendre reduction per piece ({kind})",))
 
@@ -184,6 +185,32 @@ class GapSwap(Rule):
         return Step(self.name, _piecewise(branches), tuple(dict.fromkeys(conds)),
                     (f"Eqs. (3)/(5) by parts after Eq. (10*), integrations swapped, Legendre reduction "
                      f"per piece ({kind})",))
+
+
+def _edge_limits(branches, reg):
+    """Branches for x at an interior breakpoint e where the formula is 0/0 or
+    inf - inf but the pressure is finite (a tangent-continuous join: the log
+    singularities of the two sides cancel): the limit x -> e-.  At a kink
+    the pressure is infinite there, and the formula says so."""
+    out = []
+    k = 0
+    for J in range(reg.n):
+        for I in range(J + 1):
+            e, cond = branches[k]
+            k += 1
+            if I == J:
+                continue
+            edge = reg.edges[I + 1]
+            at = e.xreplace({S.x: edge})
+            if not at.has(sp.nan, sp.zoo):
+                continue
+            try:
+                lim = sp.limit(e, S.x, edge, "-")
+            except (NotImplementedError, ValueError, TypeError):
+                continue
+            if lim.is_finite:
+                out.append((lim, sp.And(reg.a_condition(J), sp.Eq(S.x, edge))))
+    return out
 
 
 def _undefined_at_edge(e):

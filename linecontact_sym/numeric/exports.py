@@ -43,7 +43,7 @@ from ..core.errors import DomainError
 from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
-from .special import MPMATH_FUNCS, NUMPY_FUNCS
+from .special import MPMATH_FUNCS, NUMPY_FUNCS, mp_elliptic_pi
 from .stable import is_rational_in_symbols, stabilize
 
 _SCIPY_FUNCS = {
@@ -190,6 +190,11 @@ def _removable_limit(expr, sym):
     return lim
 
 
+#: the mpmath namespace of the exports: the stable primitives, and Pi(n|m) for
+#: n > 1 by its principal value (mpmath's own integrates numerically there)
+_MP_MODULE = dict(MPMATH_FUNCS, elliptic_pi=mp_elliptic_pi)
+
+
 def lambdify_mpmath(expr, args, stable: bool = True, conditions=()):
     """An mpmath function ``f(*values)`` computing ``expr`` at ``args`` = values,
     at the caller's precision (``mpmath.workdps``; the global precision is
@@ -211,7 +216,7 @@ def lambdify_mpmath(expr, args, stable: bool = True, conditions=()):
     """
     if stable:
         expr = stabilize(expr, conditions).expr
-    return sp.lambdify(args, expr, modules=[dict(MPMATH_FUNCS), "mpmath"])
+    return sp.lambdify(args, expr, modules=[_MP_MODULE, "mpmath"])
 
 
 def lambdify_mpmath_quad(expr, args, stable: bool = False):
@@ -369,14 +374,20 @@ def _chunked(f, vals):
 GUARD_RATIO = 16.0
 
 
+#: rules whose closed forms are known to cancel beyond the condition number
+GUARDED_RULES = ("gap_swap",)
+
+
 def _guarded(derivation) -> bool:
-    """Closed forms with elliptic integrals of the third kind: Pi(n|m) diverges
-    as n -> 1 and such forms can cancel (the exact cylinder's gap: terms of
-    size R cancel to O(a^2/R), and near the edge to O((x - a)^(3/2)))."""
+    """Closed forms that can cancel beyond what the condition number allows:
+    those with elliptic integrals of the third kind (Pi(n|m) diverges as
+    n -> 1; the exact cylinder's gap cancels terms of size R to O(a^2/R)) and
+    the gaps of the order-swap rule (sums of O(1) terms near the edge, where
+    the gap is O((x - a)^(3/2)), and at large x)."""
     if not derivation.closed_form:
         return False
     from .special import carlson_rj
-    return stable_form(derivation).expr.has(carlson_rj)
+    return derivation.rule in GUARDED_RULES or stable_form(derivation).expr.has(carlson_rj)
 
 
 def _guard(f, probe, fmp):

@@ -51,7 +51,7 @@ import scipy.special as sc
 import sympy as sp
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "np_rf", "np_rd", "np_rg",
-           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "NUMPY_FUNCS", "MPMATH_FUNCS"]
+           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
 
 
 class _StableFunction(sp.Function):
@@ -114,7 +114,7 @@ def _mp_rj(x, y, z, p):
     return mpmath.elliprj(x, y, z, p)
 
 
-def _mp_elliptic_pi(*args):
+def mp_elliptic_pi(*args):
     """mpmath's ellippi, but for the complete integral with n > 1 > m (where
     mpmath integrates numerically, taking seconds to minutes at high
     precision) Pi(n|m) = K(m) - Pi(m/n|m) - i (pi/2) sqrt(n/((n - 1)(n - m)))
@@ -440,7 +440,6 @@ NUMPY_FUNCS = {"carlson_rf": np_rf, "carlson_rd": np_rd, "carlson_rg": np_rg, "c
                "gamma_ratio": np_gamma_ratio,
                "hyp2f1c": np_hyp2f1c}
 MPMATH_FUNCS = {"carlson_rf": _mp_rf, "carlson_rd": _mp_rd, "carlson_rg": _mp_rg, "carlson_rj": _mp_rj,
-                "elliptic_pi": _mp_elliptic_pi,
                 "gamma_ratio": _mp_gamma_ratio,
                 "hyp2f1c": _mp_hyp2f1c}
 

@@ -18,7 +18,7 @@ admissible points, 30-digit evaluation) before it is kept.
 Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCarlson`,
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
 :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinToAtan`,
-:class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`,
+:class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`HalfAngle`,
 :class:`FactorDifferences`.  The special functions they produce
 (``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``) live in
 :mod:`linecontact_sym.numeric.special`.
@@ -42,7 +42,7 @@ from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
            "GammaAbsorb", "GammaRatio", "AtanhToAsinh", "AcoshToAsinh", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "FactorDifferences", "is_rational_in_symbols"]
+           "Hyp2f1Complement", "Conjugate", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
 
 
 class Hyp2f1Connection(StableRule):
@@ -287,6 +287,30 @@ class Conjugate(StableRule):
         return expr.replace(want, do)
 
 
+class HalfAngle(StableRule):
+    """c cosh(u) - c = 2 c sinh(u/2)^2 and c - c cos(u) = 2 c sin(u/2)^2 (any
+    pair of terms of a sum): exact where the difference cancels (u -> 0,
+    e.g. the profile R (cosh(x/R) - 1) at x << R)."""
+
+    name = "half-angle"
+    heads = (sp.cosh, sp.cos)
+
+    def apply(self, expr):
+        def do(e):
+            terms = list(e.args)
+            for i, t_ in enumerate(terms):
+                c, f = t_.as_independent(sp.cosh, sp.cos, as_Add=False)
+                if not isinstance(f, (sp.cosh, sp.cos)):
+                    continue
+                for j, other in enumerate(terms):
+                    if j != i and sp.simplify(other + c) == 0:
+                        u = f.args[0]
+                        half = 2 * c * (sp.sinh(u / 2)**2 if isinstance(f, sp.cosh) else -sp.sin(u / 2)**2)
+                        return sp.Add(half, *[t2 for k, t2 in enumerate(terms) if k not in (i, j)])
+            return e
+        return expr.replace(lambda e: e.is_Add and e.has(sp.cosh, sp.cos), do)
+
+
 class FactorDifferences(StableRule):
     """A rational sum that factors is replaced by its factored form
     (a**2 - x**2 = (a - x)(a + x), 1 - x**2/a**2 = (a - x)(a + x)/a**2 ...):
@@ -312,7 +336,7 @@ class FactorDifferences(StableRule):
 
 #: the rules in the order :func:`stabilize` applies them
 RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AtanhToAsinh(),
-         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), FactorDifferences())
+         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), HalfAngle(), FactorDifferences())
 
 
 # ====================================================================== driver
