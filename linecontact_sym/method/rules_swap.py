@@ -202,13 +202,13 @@ def _edge_limits(branches, reg):
                 continue
             edge = reg.edges[I + 1]
             at = e.xreplace({S.x: edge})
-            if not at.has(sp.nan, sp.zoo):
+            if not at.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
                 continue
             try:
                 lim = sp.limit(e, S.x, edge, "-")
             except (NotImplementedError, ValueError, TypeError):
                 continue
-            if lim.is_finite:
+            if not lim.has(sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Limit):
                 out.append((lim, sp.And(reg.a_condition(J), sp.Eq(S.x, edge))))
     return out
 

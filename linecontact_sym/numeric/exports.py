@@ -345,8 +345,8 @@ def cancellation_probe(derivation):
                     out = [np.asarray(v, dtype=float) for v in g(*vals)]
                     worst = np.ones(np.broadcast_shapes(*[o.shape for o in out] + [np.shape(v) for v in vals]))
                     for A, Sm in zip(out[::2], out[1::2]):
-                        r = A / np.abs(Sm)
-                        worst = np.where(np.isfinite(r) & (r > worst), r, worst)
+                        r = A / np.abs(Sm)          # inf: the sum cancelled to 0 exactly
+                        worst = np.where(~np.isnan(r) & (r > worst), r, worst)
                 return worst
             cache["cancel_probe"] = probe
     return cache["cancel_probe"]
@@ -406,15 +406,29 @@ def _guard(f, probe, fmp):
         rb = np.broadcast_to(ratio, shape)
         for idx in np.argwhere(np.broadcast_to(bad, shape)):
             idx = tuple(idx)
-            digits = 20 + int(math.ceil(math.log10(rb[idx])))
-            with mpmath.workdps(digits):
-                try:
-                    v = fmp(*[mpmath.mpf(float(t[idx])) for t in full])
-                    out[idx] = float(v) if not isinstance(v, mpmath.mpc) else np.nan
-                except (ValueError, ZeroDivisionError, TypeError):
-                    out[idx] = np.nan
+            out[idx] = _mp_confirmed(fmp, [float(t[idx]) for t in full], rb[idx])
         return out[()] if out.ndim == 0 else out
     return guarded
+
+
+def _mp_confirmed(fmp, args, ratio):
+    """fmp at ``args`` to float64 accuracy: 20 + log10(ratio) digits (40 where
+    the sum cancelled to 0), raised until two precisions 20 digits apart agree."""
+    digits = 40 if not math.isfinite(ratio) else 20 + int(math.ceil(math.log10(ratio)))
+    prev = None
+    for _ in range(6):
+        with mpmath.workdps(digits):
+            try:
+                v = fmp(*[mpmath.mpf(t) for t in args])
+            except (ValueError, ZeroDivisionError, TypeError):
+                return np.nan
+            if isinstance(v, mpmath.mpc):
+                return np.nan
+        if prev is not None and abs(v - prev) <= 1e-17 * abs(v):
+            return float(v)
+        prev = v
+        digits += 20
+    return float(prev)
 
 
 def check_arguments(names, values: dict, quantity: str):

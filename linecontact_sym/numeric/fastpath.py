@@ -122,8 +122,8 @@ class ScalarKit:
         worst = 1.0
         for A, Sm in zip(out[::2], out[1::2]):
             A, Sm = float(A), float(Sm)
-            if Sm != 0 and math.isfinite(A) and math.isfinite(Sm):
-                worst = max(worst, A / abs(Sm))
+            if math.isfinite(A) and math.isfinite(Sm) and A > 0:
+                worst = max(worst, A / abs(Sm) if Sm != 0 else math.inf)   # inf: cancelled to 0
         return worst
 
 
