@@ -209,7 +209,7 @@ def _edge_limits(branches, reg):
             except (NotImplementedError, ValueError, TypeError):
                 continue
             if not lim.has(sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Limit):
-                out.append((lim, sp.And(reg.a_condition(J), sp.Eq(S.x, edge))))
+                out.append((lim, sp.And(sp.Gt(S.a, reg.edges[J]), reg.a_condition(J), sp.Eq(S.x, edge))))
     return out
 
 

@@ -375,15 +375,16 @@ GUARD_RATIO = 16.0
 
 
 #: rules whose closed forms are known to cancel beyond the condition number
-GUARDED_RULES = ("gap_swap",)
+GUARDED_RULES = ("gap_swap", "pressure_swap")
 
 
 def _guarded(derivation) -> bool:
     """Closed forms that can cancel beyond what the condition number allows:
     those with elliptic integrals of the third kind (Pi(n|m) diverges as
     n -> 1; the exact cylinder's gap cancels terms of size R to O(a^2/R)) and
-    the gaps of the order-swap rule (sums of O(1) terms near the edge, where
-    the gap is O((x - a)^(3/2)), and at large x)."""
+    the results of the order-swap rules (gaps: sums of O(1) terms near the
+    edge, where the gap is O((x - a)^(3/2)), and at large x; pressures: the
+    limit at a tangent-continuous join)."""
     if not derivation.closed_form:
         return False
     from .special import carlson_rj

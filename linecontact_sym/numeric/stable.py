@@ -18,7 +18,7 @@ admissible points, 30-digit evaluation) before it is kept.
 Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCarlson`,
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
 :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinToAtan`,
-:class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`HalfAngle`,
+:class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
 :class:`FactorDifferences`.  The special functions they produce
 (``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``) live in
 :mod:`linecontact_sym.numeric.special`.
@@ -42,7 +42,7 @@ from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
            "GammaAbsorb", "GammaRatio", "AtanhToAsinh", "AcoshToAsinh", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
+           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
 
 
 class Hyp2f1Connection(StableRule):
@@ -287,6 +287,24 @@ class Conjugate(StableRule):
         return expr.replace(want, do)
 
 
+class LogOfPower(StableRule):
+    """log(u**p * v**q ...) = p log(u) + ... when the powers combine:
+    log(b**(2b)/a**(2b)) = 2 b log(b/a) for positive b/a: the power is 1 + tiny
+    for small exponents, and its logarithm would keep only the digits of the
+    tiny part that survived the rounding of 1 + tiny."""
+
+    name = "log-of-power"
+    heads = (sp.log,)
+
+    def apply(self, expr):
+        def do(e):
+            arg = sp.powsimp(e.args[0], force=True)
+            if arg.is_Pow and not arg.exp.is_Integer and arg.base.is_positive:
+                return arg.exp * sp.log(arg.base)
+            return e
+        return expr.replace(lambda e: isinstance(e, sp.log) and e.args[0].has(sp.Pow), do)
+
+
 class HalfAngle(StableRule):
     """c cosh(u) - c = 2 c sinh(u/2)^2 and c - c cos(u) = 2 c sin(u/2)^2 (any
     pair of terms of a sum): exact where the difference cancels (u -> 0,
@@ -336,7 +354,7 @@ class FactorDifferences(StableRule):
 
 #: the rules in the order :func:`stabilize` applies them
 RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AtanhToAsinh(),
-         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), HalfAngle(), FactorDifferences())
+         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(), HalfAngle(), FactorDifferences())
 
 
 # ====================================================================== driver
