@@ -350,6 +350,9 @@ def build_parser() -> argparse.ArgumentParser:
         sp_.add_argument("--budget", type=float, default=20.0, metavar="S",
                          help="seconds allowed to each symbolic derivation (default 20)")
         sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
+        sp_.add_argument("--no-cache", dest="no_cache", action="store_true",
+                         help="neither read nor write the on-disk derivation cache (default: "
+                              "$LINECONTACT_SYM_CACHE, else ~/.cache/linecontact_sym; 'off' disables it)")
         if quiet:
             sp_.add_argument("--quiet", action="store_true",
                              help="no progress on stderr (a bar on a terminal, one line per item otherwise)")
@@ -486,6 +489,9 @@ def main(argv=None) -> int:
     parser = build_parser()
     argv = list(sys.argv[1:] if argv is None else argv)
     args = parser.parse_args(protect_formulas(argv, _option_strings(parser)))
+    if getattr(args, "no_cache", False):
+        from .method import store
+        store.set_enabled(False)
     try:
         return args.func(args)
     except LineContactError as exc:

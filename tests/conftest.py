@@ -27,3 +27,20 @@ def paper_contacts():
         "worn": lcs.worn_cylinder(budget=3),
         "cylinder": lcs.exact_cylinder(budget=3),
     }
+
+
+# The derivation cache (linecontact_sym.method.store) of a test session lives in
+# a temporary directory of its own: tests never read or write the user's cache,
+# and every session starts from an empty one.
+def _session_cache():
+    import atexit
+    import os
+    import shutil
+    import tempfile
+    path = tempfile.mkdtemp(prefix="linecontact_sym-test-cache-")
+    os.environ["LINECONTACT_SYM_CACHE"] = path
+    atexit.register(shutil.rmtree, path, ignore_errors=True)
+    return path
+
+
+TEST_CACHE = _session_cache()

@@ -23,8 +23,8 @@ import sympy as sp
 from linecontact_sym.numeric import stable as ST
 from linecontact_sym.numeric.exports import lambdify_numpy
 from linecontact_sym.numeric.special import (MPMATH_FUNCS, NUMPY_FUNCS, carlson_rd, carlson_rf, carlson_rg,
-                                             gamma_ratio, hyp2f1c, np_gamma_ratio, np_hyp2f1c, np_rd, np_rf,
-                                             np_rg)
+                                             carlson_rj, gamma_ratio, hyp2f1c, mp_elliptic_pi, np_gamma_ratio,
+                                             np_hyp2f1c, np_rd, np_rf, np_rg, np_rj)
 
 a, x, R, n, c = sp.symbols("a x R n c", positive=True)
 half = sp.S.Half
@@ -85,8 +85,9 @@ def check_rule(rule, expr, point, ranges, lost, kept, ref_point=None):
 # ----------------------------------------------------------------- the rule set
 def test_rules_are_named_documented_and_ordered():
     names = [r.name for r in ST.RULES]
-    assert names == ["elliptic->carlson", "hyp2f1-connection", "gamma-absorb", "gamma-ratio", "atanh->asinh",
-                     "acosh->asinh", "asin->atan", "acos->atan", "hyp2f1-complement", "conjugate", "factor"]
+    assert names == ["elliptic-pi/incomplete->carlson", "elliptic->carlson", "hyp2f1-connection", "gamma-absorb",
+                     "gamma-ratio", "atanh->asinh", "acosh->asinh", "asin->atan", "acos->atan", "hyp2f1-complement",
+                     "conjugate", "log-of-power", "half-angle", "factor"]
     for r in ST.RULES:
         assert isinstance(r, ST.StableRule)
         assert type(r).__doc__ and "=" in type(r).__doc__, f"{r.name}: the docstring states no identity"
@@ -234,6 +235,54 @@ def test_conjugate():
     assert rule.apply(other) == other
 
 
+def test_elliptic_pi_to_carlson():
+    """Pi(n|m) = R_F(0, 1 - m, 1) + (n/3) R_J(0, 1 - m, 1, 1 - n) (no SciPy
+    ellippi: the plain translation has nothing to call); the incomplete
+    integrals with s = sin(phi) = x/a: F, E, Pi against mpmath at 50 digits."""
+    rule = ST.EllipticPiToCarlson()
+    expr = sp.elliptic_pi(x**2 / R**2, a**2 / R**2)
+    new = rule.apply(expr)
+    assert new == carlson_rf(0, (R - a) * (R + a) / R**2, 1) \
+        + x**2 * carlson_rj(0, (R - a) * (R + a) / R**2, 1, (R - x) * (R + x) / R**2) / (3 * R**2)
+    assert_same_function(expr, new, {x: (0.1, 0.4), a: (0.5, 0.9), R: (1.0, 1.5)})
+    # near m = 1 (a = R (1 - 1e-12)): float64 of the Carlson form to a few eps
+    pt = {x: 0.5, a: 1 - 1e-12, R: 1.0}
+    assert rel_error(float64(new, pt), reference(expr, pt)) < 8 * EPS
+    for inc in (sp.elliptic_f(sp.asin(x / a), R**2 / a**2 / 4), sp.elliptic_e(sp.asin(x / a), R**2 / a**2 / 4),
+                sp.elliptic_pi(x**2 / a**2 / 2, sp.asin(x / a), R**2 / a**2 / 4)):
+        new = rule.apply(inc)
+        assert not new.has(sp.elliptic_f, sp.elliptic_e, sp.elliptic_pi)
+        assert_same_function(inc, new, {x: (0.1, 0.9), a: (1.0, 1.0), R: (0.5, 1.5)})
+        pt = {x: 1 - 1e-12, a: 1.0, R: 1.0}            # phi -> pi/2: cos(phi)^2 formed exactly
+        assert rel_error(float64(new, pt), reference(inc, pt)) < 8 * EPS
+    assert rule.apply(sp.elliptic_k(a)) == sp.elliptic_k(a)
+
+
+def test_log_of_power():
+    """log(b**(2b)/a**(2b)) = 2 b log(b/a): at b = 1e-12 a the power is
+    1 - 5.5e-11 and its logarithm keeps 5 digits; the rewritten form all."""
+    rule = ST.LogOfPower()
+    bb = sp.Symbol("b", positive=True)
+    expr = sp.log(bb**(2 * bb) / a**(2 * bb))
+    new = check_rule(rule, expr, {bb: 1e-12, a: 1.0}, {bb: (0.1, 0.9), a: (1.0, 2.0)}, lost=1e-8, kept=4 * EPS)
+    assert sp.simplify(new - 2 * bb * sp.log(bb / a)) == 0
+    other = sp.log(a + bb)
+    assert rule.apply(other) == other
+
+
+def test_half_angle():
+    """R (cosh(x/R) - 1) = 2 R sinh(x/(2R))^2: every digit at x = 1e-9 R (the
+    plain form has none)."""
+    rule = ST.HalfAngle()
+    expr = R * (sp.cosh(x / R) - 1)
+    new = check_rule(rule, sp.expand(expr), {R: 1.0, x: 1e-9}, {R: (1.0, 2.0), x: (0.1, 0.9)}, lost=1e-3,
+                     kept=4 * EPS)
+    assert new == 2 * R * sp.sinh(x / (2 * R))**2
+    assert rule.apply(1 - sp.cos(x)) == 2 * sp.sin(x / 2)**2
+    other = sp.cosh(x) + 1                   # nothing cancels
+    assert rule.apply(other) == other
+
+
 def test_factor_differences():
     """sqrt(a^2 - x^2) = sqrt(a - x) sqrt(a + x): at x = a(1 - 1e-12), a = 7.5,
     the rounded squares leave 4 digits."""
@@ -284,6 +333,32 @@ def test_carlson_against_mpmath(args):
             assert abs(mpmath.mpf(ev) - ref[key]) <= mpmath.mpf(10) ** -38 * abs(ref[key]), (key, args)
 
 
+@pytest.mark.parametrize("args", [(0.0, 1e-12, 1.0, 0.5), (0.0, 0.3, 1.0, 1e-10), (0.5, 1.2, 2.0, 3.0),
+                                  (0.0, 1 - 1e-10, 1.0, 1.0)])
+def test_carlson_rj_against_mpmath(args):
+    with mpmath.workdps(50):
+        ref = mpmath.elliprj(*args)
+        got = float(np_rj(*[np.float64(t) for t in args]))
+        assert abs(got - ref) <= 4 * EPS * abs(ref), (args, got, ref)
+        assert abs(MPMATH_FUNCS["carlson_rj"](*[mpmath.mpf(t) for t in args]) - ref) <= mpmath.mpf(10) ** -45 * ref
+        ev = sp.N(carlson_rj(*[sp.Rational(t) for t in args]), 40)
+        assert abs(mpmath.mpf(ev) - ref) <= mpmath.mpf(10) ** -38 * abs(ref)
+
+
+def test_mp_elliptic_pi_beyond_one_is_fast_and_equal():
+    """Pi(n|m) for n > 1 by its principal value and mpmath's imaginary part
+    (mpmath's ellippi integrates numerically there: seconds at 30 digits)."""
+    import time
+    with mpmath.workdps(30):
+        n_, m_ = mpmath.mpf("2.5"), mpmath.mpf("0.3")
+        t0 = time.perf_counter()
+        got = mp_elliptic_pi(n_, m_)
+        assert time.perf_counter() - t0 < 0.5
+        with mpmath.workdps(20):
+            ref = mpmath.ellippi(2.5, 0.3)
+        assert abs(got - ref) < 1e-14 * abs(ref)
+
+
 def test_carlson_complete_case_is_vectorised():
     y = np.array([1e-12, 1e-6, 0.1, 0.5, 0.9, 1 - 1e-9, 1.0])
     got = np_rd(np.zeros_like(y), y, np.ones_like(y))
@@ -328,5 +403,5 @@ def test_hyp2f1c_near_one(abc, zc):
 
 
 def test_numpy_and_mpmath_tables_cover_every_primitive():
-    assert set(NUMPY_FUNCS) == set(MPMATH_FUNCS) == {"carlson_rf", "carlson_rd", "carlson_rg", "gamma_ratio",
-                                                      "hyp2f1c"}
+    assert set(NUMPY_FUNCS) == set(MPMATH_FUNCS) == {"carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj",
+                                                      "gamma_ratio", "hyp2f1c"}

@@ -108,7 +108,9 @@ class Contact:
     # ----------------------------------------------------------- registry
     @classmethod
     def quantities(cls) -> dict:
-        """name -> :class:`Quantity`, in declaration order (base classes first)."""
+        """name -> :class:`Quantity`, in declaration order (base classes first).
+        Built once per class (numeric evaluation asks on every call); do not
+        modify the returned dict."""
         if "_registry" not in cls.__dict__:
             out = {}
             for klass in reversed(cls.__mro__):
@@ -116,7 +118,7 @@ class Contact:
                     if isinstance(val, Quantity):
                         out[name] = val
             cls._registry = out
-        return dict(cls._registry)
+        return cls._registry
 
     @classmethod
     def resolve(cls, name: str) -> str:

@@ -174,8 +174,9 @@ class LineContact(Contact):
         fd = self.derivation("force")
 
         def reference(vals, dps):
-            with mpmath.workdps(dps + 10):
+            with mpmath.workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
                 dP, breaks = self._dP(vals)
+            with mpmath.workdps(dps + 10):
                 return T.pressure_quad(dP, breaks, vals, dps)
         fallback = T.pressure_integral(fd.expr)
         if not fd.closed_form:
@@ -189,8 +190,9 @@ class LineContact(Contact):
         fd = self.derivation("force")
 
         def reference(vals, dps):
-            with mpmath.workdps(dps + 10):
+            with mpmath.workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
                 dP, breaks = self._dP(vals)
+            with mpmath.workdps(dps + 10):
                 f = self.profile.mp_callable({k: v for k, v in vals.items() if k not in (S.a, S.x)})
                 return T.gap_quad(f, dP, breaks, vals, dps)
         fallback = T.gap_integral(self.profile.expr, fd.expr)

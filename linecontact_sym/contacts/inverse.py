@@ -12,9 +12,8 @@ from ..core.budget import DEFAULT_BUDGET, run_with_budget
 from ..core.conversion import rational
 from ..core.errors import BudgetExceeded, ProfileError
 from ..method import transforms as T
-from ..method.derivation import Derivation, fallback_step, integrate
+from ..method.derivation import Derivation, derive, fallback_step
 from ..method.rules import Problem, Step
-from ..method.verification import verify
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 
@@ -57,23 +56,17 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
 
     def reference_in_x(vals, dps):
         return reference({**vals, S.a: vals[S.x]}, dps)
-    step, attempts = integrate(Problem("profile", force_law=force_law), budget)
-    rec, notes = None, []
-    if step is not None:
-        rec = verify(step.expr, reference, sampler, step.conditions, n_points=verify_points,
-                     reference_name="mpmath quadrature of Eq. (9)")
-        if not rec.passed:
-            notes.append(f"closed form FAILED verification ({rec.min_digits:.1f} digits)")
-            step = None
+    d = derive("profile", Problem("profile", force_law=force_law), reference=reference, sampler=sampler,
+               fallback=T.profile_integral(force_law), budget=budget, points=verify_points,
+               variables=(S.a, S.E_star) + psyms, t0=t0)
     variables = (S.x, S.E_star) + psyms
-    if step is None:
-        notes += [f"{r}: {why}" for r, why in attempts]
-        return Derivation("profile", T.profile_integral(force_law).subs(S.a, S.x), False, fallback_step(), (),
-                          rec, time.perf_counter() - t0, tuple(notes), reference_in_x, variables, tuple(attempts))
+    if not d.closed_form:
+        return Derivation("profile", d.expr.subs(S.a, S.x), False, d.step, (), d.verification, d.seconds,
+                          d.notes, reference_in_x, variables, d.attempts, d.cached)
     sub = {S.a: S.x}  # the profile is reported in x
-    step = Step(step.rule, step.expr.xreplace(sub), tuple(c.xreplace(sub) for c in step.conditions), step.notes)
-    return Derivation("profile", step.expr, True, step, step.conditions, rec, time.perf_counter() - t0, (),
-                      reference_in_x, variables, tuple(attempts))
+    step = Step(d.step.rule, d.expr.xreplace(sub), tuple(c.xreplace(sub) for c in d.conditions), d.step.notes)
+    return Derivation("profile", step.expr, True, step, step.conditions, d.verification, d.seconds, d.notes,
+                      reference_in_x, variables, d.attempts, d.cached)
 
 
 def derive_half_width(contact, load=S.P) -> Derivation:

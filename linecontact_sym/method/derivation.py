@@ -21,8 +21,9 @@ from ..core.budget import run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
 from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError
 from ..parsing import to_sympy
+from . import store
 from .rules import RULES, NotApplicable, Problem, Step
-from .verification import VerificationRecord, verify
+from .verification import REQUIRED_DIGITS, VerificationRecord, verify
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -48,6 +49,9 @@ class Derivation:
                         high-precision evaluation of the defining integral
     variables : tuple   the symbols a number needs (besides those of ``expr``)
     attempts : tuple    (rule, why it gave no result) for the rules tried before
+    cached : str        '' (derived now), 'memory' (derived before in this
+                        process) or 'disk' (the on-disk cache, :mod:`.store`);
+                        ``seconds`` is then the time of the original derivation
     """
 
     quantity: str
@@ -61,6 +65,7 @@ class Derivation:
     reference: Callable | None = field(default=None, repr=False)
     variables: tuple = ()
     attempts: tuple = ()
+    cached: str = ""
 
     @property
     def rule(self) -> str:
@@ -226,8 +231,51 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     closed form against ``reference`` at ``points`` points drawn by
     ``sampler`` (fewer than the required digits anywhere: the closed form is
     discarded and the note says so), else the ``fallback`` (the unevaluated
-    defining integral, evaluated by ``reference``)."""
+    defining integral, evaluated by ``reference``).
+
+    Remembered (:mod:`.store`): the same problem (profile with its parameter
+    ranges, force law, quantity, verification settings) is answered from the
+    in-process memory or the on-disk cache, with this call's ``reference``;
+    a result without closed form is derived again only under a larger
+    budget than the one it ran out of."""
     t0 = time.perf_counter() if t0 is None else t0
+    key = store.make_key("derive", quantity, problem.transform, *_problem_parts(problem), fallback, check,
+                         points, REQUIRED_DIGITS, tuple(notes), tuple(variables))
+    rec = store.get(key)
+    if rec is not None and _usable(rec, budget):
+        return Derivation(quantity, rec["expr"], rec["closed_form"], rec["step"], rec["conditions"],
+                          rec["verification"], rec["seconds"], rec["notes"], reference, tuple(variables),
+                          rec["attempts"], rec["source"])
+    d = _derive(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables, t0)
+    store.put(key, {"expr": d.expr, "closed_form": d.closed_form, "step": d.step, "conditions": d.conditions,
+                    "verification": d.verification, "seconds": d.seconds, "notes": d.notes,
+                    "attempts": d.attempts, "budget": budget})
+    return d
+
+
+def _problem_parts(problem):
+    prof = problem.profile
+    if prof is None:
+        return (None, None, problem.force_law)
+    return (prof.expr, dict(prof.ranges), problem.force_law)
+
+
+def _budget_limited(attempts) -> bool:
+    return any("no result within" in why or "budget used up" in why or "did not finish" in why
+               for _, why in attempts)
+
+
+def _usable(rec, budget) -> bool:
+    """A stored result answers a call unless it gave up for lack of time and
+    this call allows more."""
+    if rec["closed_form"]:
+        return True
+    timed_out = _budget_limited(rec["attempts"]) or (
+        rec["verification"] is not None and not rec["verification"].points)
+    return not (timed_out and budget > rec["budget"])
+
+
+def _derive(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables, t0):
     step, attempts = integrate(problem, budget)
     rec = None
     extra = []

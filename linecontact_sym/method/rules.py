@@ -19,73 +19,20 @@ A :class:`Problem` names the transform (Popov 2017, notation of
 ``gap``       g(x; a) = f(x) - (2/(pi E*)) int_0^a acosh(x/s) P'(s) ds   (Eqs. 3/5)
 ``profile``   f(a) = (2a/(pi E*)) int_0^a P(s) / (s sqrt(a^2 - s^2)) ds   (Eq. 9)
 
-Adding a strategy is one class here plus its unit test, and one entry in
-:data:`RULES`.
+Adding a strategy is one class (here or in a module beside this one, e.g.
+:mod:`.rules_swap`) plus its unit test, and one entry in :data:`RULES`.
 """
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import sympy as sp
 
 from ..core import symbols as S
 from ..core.errors import DivergentIntegralError
 from .hyperseries import NotDecomposable, beta_kernel_sum, decompose
+from .rulebase import TRANSFORMS, NotApplicable, Problem, Rule, Step  # noqa: F401  (re-exported)
+from .rules_inverse import InverseMerged
+from .rules_swap import GapSwap, PressureSwap
 from .transforms import s, t
-
-TRANSFORMS = ("force", "pressure", "gap", "profile")
-
-
-class NotApplicable(Exception):
-    """The rule does not apply to this problem (the dispatcher tries the next one)."""
-
-
-@dataclass(frozen=True)
-class Problem:
-    """One transform to carry out: ``transform`` is one of :data:`TRANSFORMS`;
-    ``profile`` the :class:`~linecontact_sym.method.profile.Profile` (force,
-    pressure: its breakpoints, gap: f(x)); ``force_law`` P(a) for the
-    pressure, the gap and the inverse map (Eq. 9)."""
-
-    transform: str
-    profile: object = None
-    force_law: sp.Expr | None = None
-
-    def __post_init__(self):
-        if self.transform not in TRANSFORMS:
-            raise ValueError(f"unknown transform {self.transform!r}; one of {TRANSFORMS}")
-
-
-@dataclass(frozen=True)
-class Step:
-    """The record of a successful rule: the closed form ``expr``, the
-    relations under which it holds, remarks, and the rule's name."""
-
-    rule: str
-    expr: sp.Expr
-    conditions: tuple = ()
-    notes: tuple = ()
-
-    def describe(self) -> str:
-        """'rule: note; note' (for people; programs read the fields)."""
-        return self.rule + (": " + "; ".join(self.notes) if self.notes else "")
-
-
-class Rule:
-    """Base of the integration rules (see the module docstring)."""
-
-    name = "rule"
-    transform = ""
-
-    def applies(self, problem: Problem) -> str | None:
-        """``None`` if the rule may apply, else the reason it does not (cheap)."""
-        return None
-
-    def run(self, problem: Problem) -> Step:  # pragma: no cover - abstract
-        raise NotImplementedError
-
-    def __repr__(self):
-        return f"<rule {self.name}>"
 
 
 # ------------------------------------------------------------------ helpers
@@ -312,7 +259,7 @@ class InverseSympy(Rule):
 #: the rules of each transform, in the order they are tried
 RULES = {
     "force": (ForceTermwise(), ForcePiecewise(), ForceSympy()),
-    "pressure": (PressureTermwise(), PressureSympy()),
-    "gap": (GapTermwise(), GapSympy()),
-    "profile": (InverseTermwise(), InverseSympy()),
+    "pressure": (PressureTermwise(), PressureSwap(), PressureSympy()),
+    "gap": (GapTermwise(), GapSwap(), GapSympy()),
+    "profile": (InverseTermwise(), InverseMerged(), InverseSympy()),
 }

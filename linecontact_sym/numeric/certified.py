@@ -12,12 +12,12 @@ in ball arithmetic cancellation cannot produce a wrong result, only a wide
 ball, so the stable form just reaches the target at a lower precision.
 
 Supported: + - * /, powers, sqrt, exp, log, trigonometric, hyperbolic and
-their inverses, gamma / loggamma, elliptic_k / elliptic_e, 2F1 (``hyper``),
-Bessel J, I, K, Y (real argument),
+their inverses, gamma / loggamma, elliptic_k / elliptic_e / elliptic_pi (complete and
+incomplete, elliptic_f), 2F1 (``hyper``), Bessel J, I, K, Y (real argument),
 Piecewise (conditions decided on balls; where a ball straddles a
 breakpoint the union of the branches is returned, which encloses the value
 of a continuous piecewise function), and the stable primitives carlson_rf,
-carlson_rd, carlson_rg, gamma_ratio, hyp2f1c.  Unevaluated integrals are not
+carlson_rd, carlson_rg, carlson_rj, gamma_ratio, hyp2f1c.  Unevaluated integrals are not
 supported (no certified quadrature here): :class:`CertificationError`.
 
 The global precision of python-flint is never changed (``ctx.workprec``).
@@ -39,7 +39,7 @@ from ..parsing import to_sympy
 from ..core.conversion import nsimplify_basic
 from ..core.errors import LineContactError
 from ..core.extras import require
-from .special import carlson_rd, carlson_rf, carlson_rg, gamma_ratio, hyp2f1c
+from .special import carlson_rd, carlson_rf, carlson_rg, carlson_rj, gamma_ratio, hyp2f1c
 
 
 def _flint():
@@ -213,10 +213,17 @@ def compile_arb(expr, args):
                 zz = (1 - zc) if z > 0.5 else z     # both are rigorous balls
                 return zz.hypgeom_2f1(fa(v), fb_(v), fc(v))
             return h2
-        if isinstance(e, (carlson_rf, carlson_rd, carlson_rg)):
+        if isinstance(e, (carlson_rf, carlson_rd, carlson_rg, carlson_rj)):
             fx = [build(t) for t in e.args]
             meth = {carlson_rf: acb.elliptic_rf, carlson_rd: acb.elliptic_rd,
-                    carlson_rg: acb.elliptic_rg}[type(e)]
+                    carlson_rg: acb.elliptic_rg, carlson_rj: acb.elliptic_rj}[type(e)]
+            return lambda v: _real(meth(*[acb(f(v)) for f in fx]))
+        if isinstance(e, (sp.elliptic_f, sp.elliptic_pi)) or (isinstance(e, sp.elliptic_e) and len(e.args) == 2):
+            fx = [build(t) for t in e.args]
+            if isinstance(e, sp.elliptic_pi) and len(e.args) == 2:
+                return lambda v: _real(acb.elliptic_pi(acb(fx[0](v)), acb(fx[1](v))))
+            meth = {sp.elliptic_f: acb.elliptic_f, sp.elliptic_e: acb.elliptic_e_inc,
+                    sp.elliptic_pi: acb.elliptic_pi_inc}[type(e)]
             return lambda v: _real(meth(*[acb(f(v)) for f in fx]))
         if isinstance(e, (sp.besselj, sp.besseli, sp.besselk, sp.bessely)):
             fo, fz = build(e.args[0]), build(e.args[1])

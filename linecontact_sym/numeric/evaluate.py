@@ -57,10 +57,10 @@ from ..core.errors import LineContactError
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
-from .exports import (check_arguments, compile_plain_numpy, lambdify_mpmath, lambdify_mpmath_quad,
-                      lambdify_numpy, make_callable, stable_form)
+from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, lambdify_mpmath,
+                      lambdify_mpmath_quad, make_callable, stable_form)
+from .fastpath import scalar_kit, vector_float64
 from .quadrature import VectorQuad
-from .stable import is_rational_in_symbols
 
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
 #: closed forms / quadratures (what tests/test_extremes.py checks on the grid)
@@ -137,13 +137,6 @@ def _as_mpf(v):
     return mpmath.mpf(sp.N(v, mpmath.mp.dps + 5))
 
 
-def _is_expensive(derivation):
-    e = derivation.expr
-    return (not derivation.closed_form or e.has(sp.Integral) or e.has(sp.elliptic_k)
-            or e.has(sp.elliptic_e) or e.has(sp.hyper)
-            or any(g.args[0].free_symbols for g in e.atoms(sp.gamma)))
-
-
 def _float64_fn(d):
     cache = _CACHE.of(d)
     if "f64" not in cache:
@@ -151,38 +144,11 @@ def _float64_fn(d):
     return cache["f64"]
 
 
-def _cancellation_fns(d):
-    """For each sum in the stable form that is not a rational function of the
-    symbols (those are formed exactly or are covered by kappa): a pair of
-    float64 functions (sum of |terms|, sum).  Their ratio at a point is the
-    amplification of rounding errors by cancellation in that sum."""
-    cache = _CACHE.of(d)
-    key = "cancel"
-    if key not in cache:
-        expr = stable_form(d).expr
-        syms = d.variables_all
-        fns = []
-        for node in sp.preorder_traversal(expr):
-            if isinstance(node, sp.Integral):
-                continue
-            if node.is_Add and not is_rational_in_symbols(node) and not node.is_number \
-                    and node.free_symbols <= set(syms):
-                absum = sp.Add(*[sp.Abs(t) for t in node.args])
-                fns.append((lambdify_numpy(absum, syms, stable=False),
-                            lambdify_numpy(node, syms, stable=False)))
-        cache[key] = fns
-    return cache[key]
-
-
 def _cancellation(d, point, names):
-    worst = 1.0
-    vals = [point[n] for n in names]
+    """The largest cancellation ratio of the stable form's sums at a point
+    (:func:`~.exports.cancellation_probe`)."""
     with np.errstate(all="ignore"):
-        for fa, fs in _cancellation_fns(d):
-            A, Sm = float(np.asarray(fa(*vals))), float(np.asarray(fs(*vals)))
-            if math.isfinite(A) and math.isfinite(Sm) and Sm != 0:
-                worst = max(worst, A / abs(Sm))
-    return worst
+        return float(np.asarray(cancellation_probe(d)(*[point[n] for n in names])))
 
 
 # ----------------------------------------------------------------- model path
@@ -228,11 +194,15 @@ class SeriesModel:
         self.names = [s.name for s in self.args]
         self.terms = [S.E_star * cb * S.a ** (k + 1) for k, cb in coeffs]
         self._mp = sp.lambdify(self.args, self.terms, "mpmath")
+        self._math = None
+        self._names: dict = {}
         self.profile_terms = [sp.integrate(sp.Poly(ser, S.x).coeff_monomial(S.x**k) * S.x**k, (S.x, 0, S.x))
                               for k, _ in coeffs]
 
     def model_name(self, N):
-        return str(sp.Add(*self.profile_terms[:N]))
+        if N not in self._names:
+            self._names[N] = str(sp.Add(*self.profile_terms[:N]))
+        return self._names[N]
 
     def expr(self, N):
         return sp.Add(*self.terms[:N])
@@ -241,11 +211,24 @@ class SeriesModel:
         with mpmath.workdps(dps):
             return [+t for t in self._mp(*[_as_mpf(values[n]) for n in self.names])]
 
-    def choose(self, values, rtol):
+    def term_floats(self, values):
+        """The terms in float64 (a few eps each), or None where one under- or
+        overflows (then :meth:`term_values` in mpmath)."""
+        if self._math is None:
+            self._math = sp.lambdify(self.args, self.terms, "math")
+        try:
+            t = [float(v) for v in self._math(*[_as_float(values[n]) for n in self.names])]
+        except (ValueError, OverflowError, ZeroDivisionError):
+            return None
+        return t if all(v != 0 and math.isfinite(v) for v in t) else None
+
+    def choose(self, values, rtol, t=None):
         """(N, value estimate, tail bound) for the smallest N whose tail bound is
-        <= rtol/2 * |partial sum|, or None."""
-        t = self.term_values(values)
-        if any(mpmath.sign(v) != mpmath.sign(t[0]) for v in t if v != 0):
+        <= rtol/2 * |partial sum|, or None; ``t``: the terms if already known
+        (floats or mpf)."""
+        t = self.term_values(values) if t is None else t
+        sign0 = (t[0] > 0) - (t[0] < 0)
+        if any((v > 0) - (v < 0) != sign0 for v in t if v != 0):
             return None
         mags = [abs(v) for v in t]
         if any(m == 0 for m in mags):
@@ -254,13 +237,13 @@ class SeriesModel:
         r = [mags[j + 1] / mags[j] for j in range(len(mags) - 1)]
         jl = len(r) - 1
         r_inf = r[jl] + (r[jl] - r[jl - 1]) * jl
-        partial = mpmath.mpf(0)
+        partial = 0
         for N in range(1, len(t) - 2):
             partial += t[N - 1]
             tail_r = r[N:]
-            if any(tail_r[i + 1] < tail_r[i] * (1 - mpmath.mpf(10) ** -12) for i in range(len(tail_r) - 1)):
+            if any(tail_r[i + 1] < tail_r[i] * (1 - 1e-12) for i in range(len(tail_r) - 1)):
                 continue
-            rb = max(r_inf, r[-1]) * (1 + mpmath.mpf("1e-3"))
+            rb = max(r_inf, r[-1]) * (1 + 1e-3)
             if rb >= 1:
                 return None
             bound = mags[N] / (1 - rb)
@@ -309,8 +292,15 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     """
     t0 = time.perf_counter()
     d = contact.derivation(quantity)
-    names = [s.name for s in d.variables_all]
+    kit = scalar_kit(d)
+    names = kit.names
     check_arguments(names, values, quantity)
+    arrays = {k: np.asarray(v, dtype=float) for k, v in values.items()
+              if isinstance(v, (np.ndarray, list, tuple))}
+    if arrays:
+        if certified:
+            raise LineContactError("certified evaluation takes scalars; loop over the points")
+        values = {**values, **arrays}
     values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
 
     if certified:
@@ -319,10 +309,11 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         rtol = 10.0 ** -dps if dps is not None else 1e-12
     if not rtol > 0:
         raise ValueError("rtol must be positive")
+    if arrays:
+        return _evaluate_array(contact, d, quantity, names, values, rtol, model, t0)
 
-    expensive = _is_expensive(d)
     # 1. the cheapest model that meets rtol
-    if model and quantity == "force" and (expensive or rtol < 1e-15):
+    if model and quantity == "force" and (kit.expensive or rtol < 1e-15):
         m = _model(contact)
         # the model is the series of the profile's Eq. (10); a force law with
         # other arguments (e.g. an adhesive one, with gamma) is not that series
@@ -332,23 +323,33 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
                 return res
     # 2. float64
     notes = []
+    kappa = 1.0
     if rtol >= 4 * EPS:
-        f64 = _float64_fn(d)
-        point = {k: _as_float(v) for k, v in values.items()}
-        with np.errstate(all="ignore"):
-            v = float(np.asarray(f64(**point)))
+        vals = [_as_float(values[n]) for n in names]
+        point = dict(zip(names, vals))
         near = _switch_near_end(d, point) if not d.closed_form else None
         if near is not None:
             notes.append(near)
             v = math.nan
+        else:
+            v = kit.value(vals) if kit.f is not None else None
+            if v is not None:                               # the scalar path (fastpath)
+                if math.isfinite(v):
+                    kappa = kit.kappa(vals, v, step=_safe_step(d, point))
+                    cancel = kit.cancellation(vals)
+            else:                                           # the NumPy export
+                f64 = _float64_fn(d)
+                with np.errstate(all="ignore"):
+                    v = float(np.asarray(f64(**point)))
+                if math.isfinite(v):
+                    kappa = condition_number_float(f64, point, h=_safe_step(d, point), f0=v)
+                    cancel = _cancellation(d, point, names)
         if math.isfinite(v):
-            kappa = condition_number_float(f64, point, h=_safe_step(d, point), f0=v)
-            cancel = _cancellation(d, point, names)
             factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
             est = factor * EPS * max(1.0, kappa, cancel) * abs(v)
             qerr = 0.0
             if not d.closed_form:
-                qerr = _quad_error(d, point)
+                qerr = _quad_error(d, dict(zip(names, vals)))
                 est += qerr
             if est <= rtol * abs(v) or (v == 0 and est == 0):
                 note = (f"stable float64 export; estimate {factor:g} eps max(1, kappa, cancellation) "
@@ -363,20 +364,48 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
                 notes.append(f"float64 gave {v}")
             kappa = 1.0
     else:
-        kappa = 1.0
         notes.append("rtol below float64 resolution")
     # 3. mpmath, precision from rtol and kappa, confirmed at +10 digits
     return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
 
 
+def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0):
+    """evaluate() at arrays of arguments: the vectorised float64 export with
+    the same error estimate per point; the points where it does not meet
+    ``rtol`` are evaluated one by one (model, mpmath)."""
+    arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
+    v, kappa, cancel = vector_float64(d, names, arrays)
+    factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
+    with np.errstate(all="ignore"):
+        est = factor * EPS * np.maximum(np.maximum(1.0, kappa), cancel) * np.abs(v)
+        if not d.closed_form:
+            est = est + _quad_error(d, dict(zip(names, arrays)))
+        ok = np.isfinite(v) & ((est <= rtol * np.abs(v)) | ((v == 0) & (est == 0))) if rtol >= 4 * EPS \
+            else np.zeros(v.shape, dtype=bool)
+    values_out = np.array(v, dtype=object if not np.all(ok) else float)
+    errors = np.array(est, dtype=object if not np.all(ok) else float)
+    paths = np.full(v.shape, "float64", dtype=object)
+    for idx in zip(*np.nonzero(~ok)) if v.ndim else ([()] if not ok else []):
+        point = {n: float(a[idx]) for n, a in zip(names, arrays)}
+        r = evaluate(contact, quantity, rtol=rtol, model=model, **point)
+        values_out[idx], errors[idx], paths[idx] = r.value, r.error, r.path
+    kinds = sorted(set(paths.ravel().tolist()))
+    note = (f"{int(np.sum(ok))} of {ok.size} points by the vectorised float64 export (estimate "
+            f"{factor:g} eps max(1, kappa, cancellation) |value| per point), the rest one by one")
+    return Evaluation(quantity, values_out, kinds[0] if len(kinds) == 1 else " + ".join(kinds), errors, rtol,
+                      note=note, seconds=time.perf_counter() - t0,
+                      details={"paths": paths, "kappa": kappa, "cancellation": cancel})
+
+
 def _try_model(m, quantity, values, rtol, t0):
-    choice = m.choose(values, max(rtol - 8 * EPS, rtol / 2) if rtol >= 1e-14 else rtol)
+    floats = m.term_floats(values) if rtol >= 1e-14 else None
+    choice = m.choose(values, max(rtol - 8 * EPS, rtol / 2) if rtol >= 1e-14 else rtol, floats)
     if choice is None:
         return None
     N, partial, bound, rb = choice
     if rtol >= 1e-14:
         # the N-term model in float64
-        tv = [float(t) for t in m.term_values(values, dps=17)[:N]]
+        tv = floats[:N] if floats is not None else [float(t) for t in m.term_values(values, dps=17)[:N]]
         val = math.fsum(tv)
         err = float(bound) + 4 * N * EPS * abs(val)
     else:

@@ -31,17 +31,20 @@ x**2)/a) at x = 0) are patched with the symbolic limit.
 """
 from __future__ import annotations
 
+import math
+
 import mpmath
 import numpy as np
 import scipy.special as sc
 import sympy as sp
 
-from ..parsing import to_sympy
+from ..core import symbols as S
 from ..core.errors import DomainError
+from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
-from .special import MPMATH_FUNCS, NUMPY_FUNCS
-from .stable import stabilize
+from .special import MPMATH_FUNCS, NUMPY_FUNCS, mp_elliptic_pi
+from .stable import is_rational_in_symbols, stabilize
 
 _SCIPY_FUNCS = {
     "_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1,
@@ -95,7 +98,7 @@ def _fold_constants(expr):
 
 
 # ============================================================== lambdify
-def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None):
+def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None, patch=None):
     """A float64 function ``f(*values)`` computing ``expr`` at ``args`` = values
     (``args`` a list of symbols; NumPy arrays broadcast).
 
@@ -105,7 +108,9 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
     vectorised tanh-sinh quadratures
     (:class:`~linecontact_sym.numeric.quadrature.VectorQuad`).  Removable
     singularities at an argument = 0 (e.g. x**2*atanh(...) at x = 0) are
-    patched with the symbolic limit of ``original`` (default: ``expr``).
+    patched with the symbolic limit of ``original`` (default: ``expr``), for
+    the arguments in ``patch`` (default: all; an argument that is never 0 in
+    the quantity's domain, e.g. a or E_star, need not be tried).
     Domain: real arguments where ``expr`` is real (elsewhere NaN).
 
     K(m) - E(m) = (pi m/4)(1 + 3m/8 + ...) at m = 1e-10: the plain
@@ -135,6 +140,8 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
     f = sp.lambdify(args, _to_scipy_names(_fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):
+        if patch is not None and sym not in patch:
+            continue
         lim = _removable_limit(original, sym)
         if lim is not None:
             g = lambdify_numpy(lim, args, stable=stable, conditions=conditions)
@@ -183,6 +190,11 @@ def _removable_limit(expr, sym):
     return lim
 
 
+#: the mpmath namespace of the exports: the stable primitives, and Pi(n|m) for
+#: n > 1 by its principal value (mpmath's own integrates numerically there)
+_MP_MODULE = dict(MPMATH_FUNCS, elliptic_pi=mp_elliptic_pi)
+
+
 def lambdify_mpmath(expr, args, stable: bool = True, conditions=()):
     """An mpmath function ``f(*values)`` computing ``expr`` at ``args`` = values,
     at the caller's precision (``mpmath.workdps``; the global precision is
@@ -204,7 +216,7 @@ def lambdify_mpmath(expr, args, stable: bool = True, conditions=()):
     """
     if stable:
         expr = stabilize(expr, conditions).expr
-    return sp.lambdify(args, expr, modules=[dict(MPMATH_FUNCS), "mpmath"])
+    return sp.lambdify(args, expr, modules=[_MP_MODULE, "mpmath"])
 
 
 def lambdify_mpmath_quad(expr, args, stable: bool = False):
@@ -271,6 +283,14 @@ def _conditions(derivation):
     return tuple(conds)
 
 
+def _zero_in_domain(derivation):
+    """The arguments that may be 0 in the quantity's domain (where a removable
+    singularity needs its limit): not the half-width a nor E*, and not x for
+    a gap (|x| >= a > 0).  Each limit tried costs up to seconds of SymPy."""
+    never = {S.a, S.E_star} | ({S.x} if derivation.quantity == "gap" else set())
+    return tuple(s for s in derivation.variables_all if s not in never)
+
+
 def _cached_lambdify(derivation, kind, stable):
     cache = _CACHE.of(derivation)
     key = (kind, stable)
@@ -280,10 +300,56 @@ def _cached_lambdify(derivation, kind, stable):
         if kind == "numpy":
             # the stable form's integrands are already stable; the quadratures keep them
             cache[key] = lambdify_numpy(expr, syms, stable=False, conditions=_conditions(derivation),
-                                        original=derivation.expr if derivation.closed_form else None)
+                                        original=derivation.expr if derivation.closed_form else None,
+                                        patch=_zero_in_domain(derivation))
         else:
             cache[key] = lambdify_mpmath(expr, syms, stable=False)
     return cache[key]
+
+
+def cancellation_sums(derivation):
+    """The sums of the stable form that are not rational functions of the
+    symbols (those are formed exactly, or their error is covered by the
+    condition number), as (sum of |terms|, sum) pairs of expressions: their
+    ratio at a point is the amplification of rounding errors by cancellation."""
+    cache = _CACHE.of(derivation)
+    if "cancel_sums" not in cache:
+        expr = stable_form(derivation).expr
+        syms = set(derivation.variables_all)
+        pairs = []
+        for node in sp.preorder_traversal(expr):
+            if isinstance(node, sp.Integral):
+                continue
+            if node.is_Add and not is_rational_in_symbols(node) and not node.is_number \
+                    and node.free_symbols <= syms:
+                pairs.append((sp.Add(*[sp.Abs(t) for t in node.args]), node))
+        cache["cancel_sums"] = pairs
+    return cache["cancel_sums"]
+
+
+def cancellation_probe(derivation):
+    """A vectorised float64 function of the arguments (``variables_all``
+    order) giving the largest cancellation ratio sum(|terms|)/|sum| over
+    :func:`cancellation_sums` (1 where there is none or it is not finite)."""
+    cache = _CACHE.of(derivation)
+    if "cancel_probe" not in cache:
+        pairs = cancellation_sums(derivation)
+        syms = derivation.variables_all
+        if not pairs:
+            cache["cancel_probe"] = lambda *vals: np.ones(np.broadcast_shapes(*[np.shape(v) for v in vals]))
+        else:
+            g = lambdify_numpy(sp.Tuple(*[e for pair in pairs for e in pair]), syms, stable=False)
+
+            def probe(*vals):
+                with np.errstate(all="ignore"):
+                    out = [np.asarray(v, dtype=float) for v in g(*vals)]
+                    worst = np.ones(np.broadcast_shapes(*[o.shape for o in out] + [np.shape(v) for v in vals]))
+                    for A, Sm in zip(out[::2], out[1::2]):
+                        r = A / np.abs(Sm)          # inf: the sum cancelled to 0 exactly
+                        worst = np.where(~np.isnan(r) & (r > worst), r, worst)
+                return worst
+            cache["cancel_probe"] = probe
+    return cache["cancel_probe"]
 
 
 #: long inputs are evaluated in chunks of this many points, so that the chain
@@ -302,6 +368,68 @@ def _chunked(f, vals):
     for lo in range(0, n, CHUNK):
         out[lo:lo + CHUNK] = f(*[v[lo:lo + CHUNK] if v.ndim else v for v in flat])
     return out.reshape(shape)
+
+
+#: cancellation ratio above which a guarded export recomputes a point with mpmath
+GUARD_RATIO = 16.0
+
+
+#: rules whose closed forms are known to cancel beyond the condition number
+GUARDED_RULES = ("gap_swap", "pressure_swap")
+
+
+def _guarded(derivation) -> bool:
+    """Closed forms that can cancel beyond what the condition number allows:
+    those with elliptic integrals of the third kind (Pi(n|m) diverges as
+    n -> 1; the exact cylinder's gap cancels terms of size R to O(a^2/R)) and
+    the results of the order-swap rules (gaps: sums of O(1) terms near the
+    edge, where the gap is O((x - a)^(3/2)), and at large x; pressures: the
+    limit at a tangent-continuous join)."""
+    if not derivation.closed_form:
+        return False
+    from .special import carlson_rj
+    return derivation.rule in GUARDED_RULES or stable_form(derivation).expr.has(carlson_rj)
+
+
+def _guard(f, probe, fmp):
+    """f, but points whose sums cancel by more than :data:`GUARD_RATIO`
+    (:func:`cancellation_probe`) are recomputed by mpmath with
+    20 + log10(ratio) digits."""
+    def guarded(*vals):
+        out = np.asarray(f(*vals), dtype=float)
+        ratio = np.asarray(probe(*vals), dtype=float)
+        bad = ratio > GUARD_RATIO
+        if not np.any(bad):
+            return out
+        shape = np.broadcast_shapes(out.shape, ratio.shape, *[np.shape(v) for v in vals])
+        out = np.array(np.broadcast_to(out, shape), dtype=float)
+        full = [np.broadcast_to(np.asarray(v, dtype=float), shape) for v in vals]
+        rb = np.broadcast_to(ratio, shape)
+        for idx in np.argwhere(np.broadcast_to(bad, shape)):
+            idx = tuple(idx)
+            out[idx] = _mp_confirmed(fmp, [float(t[idx]) for t in full], rb[idx])
+        return out[()] if out.ndim == 0 else out
+    return guarded
+
+
+def _mp_confirmed(fmp, args, ratio):
+    """fmp at ``args`` to float64 accuracy: 20 + log10(ratio) digits (40 where
+    the sum cancelled to 0), raised until two precisions 20 digits apart agree."""
+    digits = 40 if not math.isfinite(ratio) else 20 + int(math.ceil(math.log10(ratio)))
+    prev = None
+    for _ in range(6):
+        with mpmath.workdps(digits):
+            try:
+                v = fmp(*[mpmath.mpf(t) for t in args])
+            except (ValueError, ZeroDivisionError, TypeError):
+                return np.nan
+            if isinstance(v, mpmath.mpc):
+                return np.nan
+        if prev is not None and abs(v - prev) <= 1e-17 * abs(v):
+            return float(v)
+        prev = v
+        digits += 20
+    return float(prev)
 
 
 def check_arguments(names, values: dict, quantity: str):
@@ -362,6 +490,8 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
         raise ValueError(f"unknown backend {backend!r}; use 'numpy' or 'mpmath'")
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
+        if stable and _guarded(derivation):
+            f = _guard(f, cancellation_probe(derivation), _cached_lambdify(derivation, "mpmath", True))
 
         def fn(**kw):
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

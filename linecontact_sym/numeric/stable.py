@@ -15,12 +15,12 @@ a cheap test (does the pattern's head occur at all?) and ``apply(expr)``
 rewrites.  Every application is re-checked numerically (20 digits at random
 admissible points, 30-digit evaluation) before it is kept.
 
-Rules, in the order applied: :class:`EllipticToCarlson`,
+Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCarlson`,
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
 :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinToAtan`,
-:class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`,
+:class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
 :class:`FactorDifferences`.  The special functions they produce
-(``carlson_rf/rd/rg``, ``gamma_ratio``, ``hyp2f1c``) live in
+(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``) live in
 :mod:`linecontact_sym.numeric.special`.
 
 The result is a :class:`StableForm`: the rewritten expression and the list of
@@ -34,184 +34,15 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from .accuracy import expressions_agree
-from .special import carlson_rd, carlson_rf, carlson_rg, gamma_ratio, hyp2f1c
+from .special import gamma_ratio, hyp2f1c
+from .stable_base import (StableRule, _complement, _expand_around, _fix_signs, _has_sqrt, _is_2f1,  # noqa: F401
+                          _n_terms, _nonneg, _stable_sqrt, is_rational_in_symbols)
+from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 
-__all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "Hyp2f1Connection",
+__all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
+           "Hyp2f1Connection",
            "GammaAbsorb", "GammaRatio", "AtanhToAsinh", "AcoshToAsinh", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "FactorDifferences", "is_rational_in_symbols"]
-
-
-# ====================================================================== helpers
-def is_rational_in_symbols(e) -> bool:
-    """True if ``e`` is a rational function of its (at least one) free symbols,
-    with no function application in it (such sums are formed exactly by
-    :class:`FactorDifferences`, or their error is covered by the condition number)."""
-    return bool(e.free_symbols) and not e.has(sp.Function) and e.is_rational_function(*e.free_symbols)
-
-
-def _fix_signs(e):
-    """-(x - a)*(x + a) -> (a - x)*(a + x): absorb a leading -1 into the linear
-    factor that has a negative term (so differences read 'large - small')."""
-    num, den = sp.fraction(e)
-    if num.is_Mul and num.args[0] == -1:
-        rest = list(num.args[1:])
-        adds = [i for i, f in enumerate(rest) if f.is_Add]
-        if adds:
-            neg = [i for i in adds if any(t.could_extract_minus_sign() for t in rest[i].args)]
-            i = (neg or adds)[0]
-            rest[i] = sp.Add(*[-t for t in rest[i].args])
-            num = sp.Mul(*rest)
-    return num / den
-
-
-def _complement(z):
-    """1 - z simplified symbolically and factored (1 - a**2/R**2 ->
-    (R - a)*(R + a)/R**2): small where z is close to 1, and formed exactly."""
-    return _fix_signs(sp.factor(sp.cancel(1 - z)))
-
-
-def _stable_sqrt(c):
-    """sqrt(c) with the sum c cancelled and factored, or None if c is not a
-    rational function of the symbols (nor a number)."""
-    c = sp.cancel(sp.expand(c))
-    if not is_rational_in_symbols(c) and not c.is_number:
-        return None
-    return sp.sqrt(_fix_signs(sp.factor(c)))
-
-
-def _n_terms(e):
-    return sum(len(n.args) for n in sp.preorder_traversal(e) if n.is_Add)
-
-
-def _expand_around(expr, keys):
-    """expand_mul only the sums on the paths to ``keys``: every other sum,
-    function application and fractional power is masked first, so factored
-    forms elsewhere ((a - x)*(a + x), sqrt(a - x) ...) are kept."""
-    masks = {}
-
-    def mask(e):
-        if e.has(*keys):
-            if e.args and not e.is_Atom:
-                e = e.func(*[mask(t) for t in e.args])
-            return e
-        if e.is_Atom or e.is_Number:
-            return e
-        if e.is_Add or isinstance(e, (sp.Function, sp.Piecewise)) or (e.is_Pow and not e.exp.is_Integer):
-            d = sp.Dummy("m")
-            masks[d] = e
-            return d
-        return e.func(*[mask(t) for t in e.args])
-    return sp.expand_mul(mask(expr)).xreplace(masks)
-
-
-def _nonneg(e):
-    """Positive, or a square root (times positive factors): >= 0 wherever real."""
-    if e.is_positive:
-        return True
-    if e.is_Pow and e.exp == sp.S.Half:
-        return True
-    return bool(e.is_Mul and all(_nonneg(f) for f in e.args))
-
-
-def _has_sqrt(e):
-    return any(p.is_Pow and p.exp == sp.S.Half for p in sp.preorder_traversal(e))
-
-
-def _is_2f1(e):
-    return isinstance(e, sp.hyper) and len(e.ap) == 2 and len(e.bq) == 1 and bool(e.argument.free_symbols)
-
-
-# ====================================================================== rules
-class StableRule:
-    """A stable rewrite: an identity, applied wherever its pattern occurs.
-
-    ``name`` names the rule in a :class:`StableForm`'s record; ``heads`` are
-    SymPy classes one of which must occur for the rule to have anything to do
-    (the cheap test :meth:`applies`; empty: always tried); :meth:`apply`
-    returns the rewritten expression (an equal one where nothing matched).
-    """
-
-    name: str = ""
-    heads: tuple = ()
-
-    def applies(self, expr) -> bool:
-        """Cheap test: may the pattern occur in ``expr``?"""
-        return not self.heads or expr.has(*self.heads)
-
-    def apply(self, expr):
-        raise NotImplementedError
-
-    def __call__(self, expr):
-        return self.apply(expr)
-
-    def __repr__(self):
-        return f"{type(self).__name__}()"
-
-
-class EllipticToCarlson(StableRule):
-    """K(m) = R_F(0, m', 1), E(m) = 2 R_G(0, m', 1) = R_F(0, m', 1) - (m/3) R_D(0, m', 1),
-    m' = 1 - m simplified symbolically (1 - a**2/R**2 -> (R - a)(R + a)/R**2).
-
-    In each sum the coefficients alpha of K(m) and beta of E(m) are collected:
-    alpha + beta = 0 gives alpha (m/3) R_D(0, m', 1) (K - E without
-    cancellation as m -> 0, log divergence kept at m -> 1), beta = 0 gives
-    alpha R_F, alpha = 0 gives 2 beta R_G (no cancellation as m -> 1),
-    otherwise (alpha + beta) R_F - beta (m/3) R_D.
-    """
-
-    name = "elliptic->carlson"
-    heads = (sp.elliptic_k, sp.elliptic_e)
-
-    def apply(self, expr):
-        ells = [e for e in expr.atoms(sp.elliptic_k, sp.elliptic_e) if len(e.args) == 1]
-        if not ells:
-            return expr
-        args = sorted({e.args[0] for e in ells}, key=sp.default_sort_key)
-        subs, info = {}, {}
-        for i, m in enumerate(args):
-            Kd, Ed = sp.Dummy(f"K{i}"), sp.Dummy(f"E{i}")
-            subs[sp.elliptic_k(m)] = Kd
-            subs[sp.elliptic_e(m)] = Ed
-            info[(Kd, Ed)] = (m, _complement(m))
-        marks = [d for pair in info for d in pair]
-
-        def simp(cf):
-            return sp.factor(sp.cancel(cf)) if cf != 0 else sp.S.Zero
-
-        def combine(e):
-            parts = sp.collect(sp.expand(e), marks, evaluate=False)
-            out = parts.pop(sp.S.One, sp.S.Zero)
-            for (Kd, Ed), (m, mc) in info.items():
-                al = simp(parts.pop(Kd, sp.S.Zero))
-                be = simp(parts.pop(Ed, sp.S.Zero))
-                if al == 0 and be == 0:
-                    continue
-                rf, rd, rg = carlson_rf(0, mc, 1), carlson_rd(0, mc, 1), carlson_rg(0, mc, 1)
-                s_ = simp(al + be)
-                if s_ == 0:
-                    out += al * m / 3 * rd
-                elif be == 0:
-                    out += al * rf
-                elif al == 0:
-                    out += 2 * be * rg
-                else:
-                    out += s_ * rf - be * m / 3 * rd
-            for k, cf in parts.items():   # anything else (should not occur)
-                out += cf * k
-            return out
-
-        def walk(e):  # top-down: combine at the outermost sum holding K or E
-            if not e.has(*marks) or e.is_Atom:
-                return e
-            if e.is_Add:
-                return combine(e)
-            return e.func(*[walk(t) for t in e.args])
-        e3 = walk(expr.xreplace(subs))
-        if e3.has(*marks):
-            e3 = combine(e3)
-        return e3.xreplace(
-            {Kd: carlson_rf(0, mc, 1) for (Kd, Ed), (m, mc) in info.items()}).xreplace(
-            {Ed: 2 * carlson_rg(0, mc, 1) for (Kd, Ed), (m, mc) in info.items()})
+           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
 
 
 class Hyp2f1Connection(StableRule):
@@ -456,6 +287,48 @@ class Conjugate(StableRule):
         return expr.replace(want, do)
 
 
+class LogOfPower(StableRule):
+    """log(u**p * v**q ...) = p log(u) + ... when the powers combine:
+    log(b**(2b)/a**(2b)) = 2 b log(b/a) for positive b/a: the power is 1 + tiny
+    for small exponents, and its logarithm would keep only the digits of the
+    tiny part that survived the rounding of 1 + tiny."""
+
+    name = "log-of-power"
+    heads = (sp.log,)
+
+    def apply(self, expr):
+        def do(e):
+            arg = sp.powsimp(e.args[0], force=True)
+            if arg.is_Pow and not arg.exp.is_Integer and arg.base.is_positive:
+                return arg.exp * sp.log(arg.base)
+            return e
+        return expr.replace(lambda e: isinstance(e, sp.log) and e.args[0].has(sp.Pow), do)
+
+
+class HalfAngle(StableRule):
+    """c cosh(u) - c = 2 c sinh(u/2)^2 and c - c cos(u) = 2 c sin(u/2)^2 (any
+    pair of terms of a sum): exact where the difference cancels (u -> 0,
+    e.g. the profile R (cosh(x/R) - 1) at x << R)."""
+
+    name = "half-angle"
+    heads = (sp.cosh, sp.cos)
+
+    def apply(self, expr):
+        def do(e):
+            terms = list(e.args)
+            for i, t_ in enumerate(terms):
+                c, f = t_.as_independent(sp.cosh, sp.cos, as_Add=False)
+                if not isinstance(f, (sp.cosh, sp.cos)):
+                    continue
+                for j, other in enumerate(terms):
+                    if j != i and sp.simplify(other + c) == 0:
+                        u = f.args[0]
+                        half = 2 * c * (sp.sinh(u / 2)**2 if isinstance(f, sp.cosh) else -sp.sin(u / 2)**2)
+                        return sp.Add(half, *[t2 for k, t2 in enumerate(terms) if k not in (i, j)])
+            return e
+        return expr.replace(lambda e: e.is_Add and e.has(sp.cosh, sp.cos), do)
+
+
 class FactorDifferences(StableRule):
     """A rational sum that factors is replaced by its factored form
     (a**2 - x**2 = (a - x)(a + x), 1 - x**2/a**2 = (a - x)(a + x)/a**2 ...):
@@ -480,8 +353,8 @@ class FactorDifferences(StableRule):
 
 
 #: the rules in the order :func:`stabilize` applies them
-RULES = (EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AtanhToAsinh(),
-         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), FactorDifferences())
+RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AtanhToAsinh(),
+         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(), HalfAngle(), FactorDifferences())
 
 
 # ====================================================================== driver
