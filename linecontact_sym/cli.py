@@ -37,6 +37,8 @@ import traceback
 from pathlib import Path
 
 
+from .core.budget import DEFAULT_BUDGET, checked_budget
+from .core.precision import MAX_DPS
 from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK
 from .core import symbols as S
 from .core.errors import LineContactError
@@ -53,14 +55,24 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _dps(text):
-    """--dps: an integer number of significant digits, 1 to 1000."""
+    """--dps: an integer number of significant digits, 1 to MAX_DPS (1000)."""
     try:
         v = int(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected an integer number of digits, got {text!r}") from None
-    if not 1 <= v <= 1000:
-        raise argparse.ArgumentTypeError(f"digits must be 1 to 1000, got {v}")
+    if not 1 <= v <= MAX_DPS:
+        raise argparse.ArgumentTypeError(f"digits must be 1 to {MAX_DPS}, got {v}")
     return v
+
+
+def _budget(text):
+    """--budget: seconds > 0, or 'inf' / 'none' for no limit."""
+    if text.strip().lower() in ("none", "inf", "infinity"):
+        return None
+    try:
+        return checked_budget(float(text))
+    except (ValueError, LineContactError) as exc:
+        raise argparse.ArgumentTypeError(f"expected seconds > 0 or 'inf', got {text!r}") from exc
 
 
 def _emit_json(obj):
@@ -347,8 +359,9 @@ def build_parser() -> argparse.ArgumentParser:
     sub.required = True
 
     def common(sp_, quiet=False):
-        sp_.add_argument("--budget", type=float, default=20.0, metavar="S",
-                         help="seconds allowed to each symbolic derivation (default 20)")
+        sp_.add_argument("--budget", type=_budget, default=DEFAULT_BUDGET, metavar="S",
+                         help=f"wall-clock seconds allowed to each symbolic derivation, rules, tidying and "
+                              f"verification together (default {DEFAULT_BUDGET:g}; 'inf' for no limit)")
         sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
         sp_.add_argument("--no-cache", dest="no_cache", action="store_true",
                          help="neither read nor write the on-disk derivation cache (default: "

@@ -24,8 +24,8 @@ def paper_contacts():
         "parabola": lcs.parabola(),
         "power": lcs.power_law(),
         "wedge": lcs.wedge(),
-        "worn": lcs.worn_cylinder(budget=3),
-        "cylinder": lcs.exact_cylinder(budget=3),
+        "worn": lcs.worn_cylinder(),
+        "cylinder": lcs.exact_cylinder(),
     }
 
 

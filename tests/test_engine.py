@@ -132,8 +132,8 @@ def test_round_trip_symbolic_power_law():
 
 def test_round_trip_cylinder_numeric():
     """No closed form for Eq. (9) of K - E here: the fallback must still give f."""
-    cont = lcs.exact_cylinder(budget=3)
-    back = lcs.profile_from_force(cont.force, budget=2, verify_points=3)
+    cont = lcs.exact_cylinder()
+    back = lcs.profile_from_force(cont.force, verify_points=3)
     v = back.evalf(dps=25, x=sp.Rational(1, 2), R=1, E_star=1)
     with mp.workdps(30):
         assert abs(v - (1 - mp.sqrt(mp.mpf(3) / 4))) < mp.mpf(10)**-20
@@ -145,7 +145,7 @@ def test_half_width_closed_and_numeric():
     h = cont.half_width(P)
     assert h.closed_form
     assert sp.simplify(h.expr - 2 * sp.sqrt(P * R / (sp.pi * E_star))) == 0
-    cyl = lcs.exact_cylinder(budget=3)
+    cyl = lcs.exact_cylinder()
     av = cyl.half_width(sp.Rational(1, 10), R=1, E_star=1)
     with mp.workdps(30):
         assert abs((mp.ellipk(av**2) - mp.ellipe(av**2)) - mp.mpf(1) / 10) < mp.mpf(10)**-25
@@ -156,7 +156,7 @@ def test_half_width_closed_and_numeric():
 # ----------------------------------------------------------------- numbers
 def test_numeric_export_numpy_and_mpmath():
     import numpy as np
-    cont = lcs.exact_cylinder(budget=3)
+    cont = lcs.exact_cylinder()
     fnp = cont.to_numeric("force", R=1.0, E_star=1.0)
     fmp = cont.to_numeric("force", backend="mpmath", dps=30, R=1, E_star=1)
     av = np.array([0.1, 0.5, 0.9])

@@ -21,8 +21,8 @@ _c: dict = {}
 def law(name):
     if name not in _c:
         _c[name] = {"parabola": lcs.parabola, "power": lcs.power_law,
-                    "exact": lambda: lcs.exact_cylinder(budget=2),
-                    "worn": lambda: lcs.worn_cylinder(budget=2)}[name]()
+                    "exact": lambda: lcs.exact_cylinder(),
+                    "worn": lambda: lcs.worn_cylinder()}[name]()
     return _c[name]
 
 

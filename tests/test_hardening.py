@@ -86,7 +86,7 @@ def test_long_flat_sums_are_not_nesting():
 # ---------------------------------------------------------------- physical domains
 @pytest.fixture(scope="module")
 def contacts():
-    return {"parabola": lcs.parabola(), "power": lcs.power_law(), "cylinder": lcs.exact_cylinder(budget=3)}
+    return {"parabola": lcs.parabola(), "power": lcs.power_law(), "cylinder": lcs.exact_cylinder()}
 
 
 @pytest.mark.parametrize("which,quantity,values,match", [

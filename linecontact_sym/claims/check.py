@@ -25,7 +25,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 
 from ..core import symbols as S
-from ..core.budget import run_with_budget
+from ..core.budget import checked_budget, run_with_budget
 from ..core.conversion import nsimplify_basic, to_mpf
 from ..core.errors import BudgetExceeded, ClaimError, LineContactError
 from ..parsing import t as T_VAR
@@ -36,6 +36,7 @@ from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult
                       TargetResult, fmt_mp, verdict_line)
 from .sampling import holds_at, sample_points
 from .spec import X_RANGES, Claim, Form, Paper, load_paper, substitute_placeholders
+from ..core.precision import workdps
 
 #: the digits a claim must reproduce
 REQUIRED_DIGITS = 30
@@ -100,9 +101,14 @@ def _symbolic(printed, derived: Derived, vals, budget) -> str:
     try:
         return run_with_budget(work, printed, dex, seconds=budget)
     except BudgetExceeded:
-        return f"not decided within {budget:g} s"
+        return f"not decided within {budget:g} s"  # (budget None never times out)
     except Exception as exc:  # noqa: BLE001
         return f"not decided ({type(exc).__name__})"
+
+
+def _capped(budget, cap):
+    """The smaller of a budget (None: no limit) and ``cap`` seconds."""
+    return cap if budget is None else min(budget, cap)
 
 
 def _status_ok_loose(pr: PointResult) -> bool:
@@ -207,7 +213,7 @@ def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, 
     sym_note = ""
     if symbolic and derived.expr is not None and not printed.has(AppliedUndef):
         sym_note = _symbolic(printed, derived, pts[0][1] if pts else None,
-                             min(budget, 4.0) if printed.has(sp.Integral) else budget)
+                             _capped(budget, 4.0) if printed.has(sp.Integral) else budget)
     ok = [p for p in results if p.ok]
     bad = [p for p in results if not p.ok]
     digits = min((p.digits for p in ok if p.status == "pass"), default=0.0)
@@ -263,7 +269,7 @@ def _judge_printed(pr: PointResult, form: Form, derived: Derived, vals, dps) -> 
         return PointResult(vals, pr.kind, "printed_undefined", reason=str(exc))
     lo, hi = min(ends), max(ends)
     inside = lo <= target <= hi
-    with mpmath.workdps(dps):
+    with workdps(dps):
         scale = max(abs(target), mpmath.mpf(10) ** -dps)
         width = float(-mpmath.log10(max((hi - lo) / 2, mpmath.mpf(10) ** -dps) / scale))
     why = (f"the derived value lies in [{mpmath.nstr(lo, 8)}, {mpmath.nstr(hi, 8)}], the interval of the printed "
@@ -289,7 +295,7 @@ def _limit_note(derived, printed, vals, sym, dps):
         return "the derived quantity is undefined there too"
     eps = sp.Rational(1, 10**20)
     out = []
-    with mpmath.workdps(dps + 30):
+    with workdps(dps + 30):
         for side in (1, -1):
             v2 = dict(vals)
             v2[sym] = vals[sym] + side * eps
@@ -308,6 +314,7 @@ def _limit_note(derived, printed, vals, sym, dps):
 def check_claim(claim: Claim, ctx: Context | None = None, *, budget: float = 20.0, dps: int = DPS,
                 symbolic: bool = True) -> ClaimResult:
     """Derive, compare and judge one claim."""
+    budget = checked_budget(budget)
     ctx = ctx or Context(budget)
     t0 = time.perf_counter()
     if claim.values:
@@ -332,7 +339,7 @@ def check_claim(claim: Claim, ctx: Context | None = None, *, budget: float = 20.
         try:
             for form in claim.forms:
                 printed = substitute_placeholders(form.expr, prof, dforce, dpress)
-                frs.append(check_form(claim, form, derived, printed, dps=dps, budget=min(budget, 10.0),
+                frs.append(check_form(claim, form, derived, printed, dps=dps, budget=_capped(budget, 10.0),
                                       symbolic=symbolic, force_law=lambda: _force_law(claim, prof, ctx, printed)))
         except ClaimError as exc:
             targets.append(TargetResult(ptxt, derived, frs, UNDECIDED, error=str(exc)))
@@ -432,7 +439,7 @@ def _misses_boundary_term(targets) -> bool:
                     term = num_eval(S.E_star * S.a * d.slope, p.values, DPS)
                 except Undefined:
                     return False
-                with mpmath.workdps(DPS + 10):
+                with workdps(DPS + 10):
                     if Comparison("boundary term", c.target - c.printed, term).digits < 20:
                         return False
                 seen = True
@@ -468,7 +475,7 @@ def _slope_hypothesis(targets) -> bool:
 # ---------------------------------------------------------------- Table 1
 def _exact_mpf(v):
     """An exact number as an mpf with 20 guard digits over DPS."""
-    with mpmath.workdps(DPS + 20):
+    with workdps(DPS + 20):
         return to_mpf(v)
 
 
@@ -485,7 +492,7 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
     rows, problems, digits = [], [], []
     found = []
     for text, val in claim.values:
-        with mpmath.workdps(DPS):
+        with workdps(DPS):
             target = _exact_mpf(val)
             try:
                 nroot = mpmath.findroot(lambda nv: Zf(nv) - target, (mpmath.mpf("0.01"), mpmath.mpf(200)),
@@ -495,7 +502,7 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
                 continue
         nn = nsimplify_basic(float(nroot), rational=True, tolerance=1e-9)
         exact = sp.simplify(sp.gammasimp(Z.subs(S.n, nn) - val)) == 0 if nn.is_Rational else False
-        with mpmath.workdps(DPS):
+        with workdps(DPS):
             dg = Comparison("Z", _exact_mpf(Z.subs(S.n, nn)), target).digits
         digits.append(dg)
         found.append(nn)
@@ -536,6 +543,7 @@ def check_paper(paper, *, budget: float = 20.0, progress: Callable | None = None
     ``only`` limits the run to the given labels."""
     if not isinstance(paper, Paper):
         paper = load_paper(paper)
+    budget = checked_budget(budget)
     ctx = Context(budget)
     t0 = time.perf_counter()
     claims = [c for c in paper.claims if only is None or c.label in only]

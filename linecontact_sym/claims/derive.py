@@ -23,6 +23,7 @@ from ..core.errors import ClaimError, DomainError, LineContactError
 from .references import (DPS, Comparison, DerivedUndefined, Undefined, flamant_relative_displacement,
                          flamant_resultant, griffith_punch_force, num_eval, numeric_minimum)
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
+from ..core.precision import workdps
 
 
 @dataclass
@@ -46,7 +47,7 @@ class Derived:
     def value(self, vals, dps=DPS):
         """The derived value at the point ``vals`` (raises DerivedUndefined
         outside the derivation's conditions)."""
-        with mpmath.workdps(dps + 10):   # arithmetic on the values must not round to 15 digits
+        with workdps(dps + 10):   # arithmetic on the values must not round to 15 digits
             return self._value(vals, dps)
 
     def _value(self, vals, dps):
@@ -65,7 +66,7 @@ class Derived:
     def compare(self, vals, printed_expr, dps=DPS, physics=False):
         """[Comparison] of the printed expression with the derived quantity at
         ``vals`` (and, with ``physics``, the first-principles checks)."""
-        with mpmath.workdps(dps + 10):   # arithmetic on the values must not round to 15 digits
+        with workdps(dps + 10):   # arithmetic on the values must not round to 15 digits
             return self._compare(vals, printed_expr, dps, physics)
 
     def _compare(self, vals, printed_expr, dps, physics):
@@ -146,7 +147,7 @@ def _pressure_physics(profile, force_fn):
         fixed = {k: v for k, v in vals.items() if k != S.x}
         p = sp.lambdify(S.x, printed_expr.xreplace(fixed), "mpmath")
         E, av, xv = vals[S.E_star], vals[S.a], vals[S.x]
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             D = flamant_relative_displacement(p, av, xv, E, dps)
             fx = num_eval(profile, {**vals}, dps, what="the profile", exc=DerivedUndefined)
             res = flamant_resultant(p, av, dps)
@@ -329,7 +330,7 @@ def _flat_punch_pressure() -> Derived:
         fixed = {k: v for k, v in vals.items() if k != S.x}
         p = sp.lambdify(S.x, printed_expr.xreplace(fixed), "mpmath")
         av, xv, E, Pv = (vals[s] for s in (S.a, S.x, S.E_star, S.P))
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             res = flamant_resultant(p, av, dps)
             Pv, E = to_mpf(Pv), to_mpf(E)
             D = flamant_relative_displacement(p, av, xv, E, dps)

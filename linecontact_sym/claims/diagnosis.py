@@ -31,6 +31,7 @@ import mpmath
 import sympy as sp
 
 from ..core import symbols as S
+from ..core.precision import workdps
 
 #: at most this many sample points are used to confirm a candidate
 POINTS = 3
@@ -120,11 +121,11 @@ def _constant_ratio(points_results):
         c = pr.comparisons[0]
         if c.target == 0 or c.printed is None:
             return None
-        with mpmath.workdps(60):
+        with workdps(60):
             ratios.append(c.printed / c.target)
     if len(ratios) < 2:
         return None
-    with mpmath.workdps(60):
+    with workdps(60):
         r0 = ratios[0]
         if any(abs(r - r0) > abs(r0) * mpmath.mpf(10) ** -DIGITS for r in ratios[1:]):
             return None
@@ -140,7 +141,7 @@ def identify_constant(r):
     >>> identify_constant(mpmath.sqrt(2) * mpmath.pi) is not None
     True
     """
-    with mpmath.workdps(50):
+    with workdps(50):
         for k in (0, 1, -1, 2, -2):
             for root in (1, 2, 3):
                 base = mpmath.pi ** k * mpmath.sqrt(root)

@@ -20,6 +20,7 @@ import sympy as sp
 
 from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
+from ..core.precision import workdps
 
 #: working precision of the comparisons (digits)
 DPS = 45
@@ -67,7 +68,7 @@ def quad_integral(I: sp.Integral, dps: int = DPS):
 
     >>> t = sp.Symbol("t", positive=True)
     >>> v = quad_integral(sp.Integral(1 / sp.sqrt(1 - t**2), (t, 0, 1)))
-    >>> with mpmath.workdps(50):
+    >>> with workdps(50):
     ...     print(abs(v - mpmath.pi / 2) < mpmath.mpf(10) ** -40)
     True
     """
@@ -77,7 +78,7 @@ def quad_integral(I: sp.Integral, dps: int = DPS):
     f = I.function
     if f.free_symbols - {var}:
         raise Undefined(f"the integrand has free symbols {sorted(map(str, f.free_symbols - {var}))}")
-    with mpmath.workdps(quad_dps(dps)):
+    with workdps(quad_dps(dps)):
         lo_v, hi_v = to_mpf(lo), to_mpf(hi)
         if lo_v == hi_v:
             return mpmath.mpf(0)
@@ -119,7 +120,7 @@ def num_eval(expr: sp.Expr, vals: dict, dps: int = DPS, what: str = "the printed
     if e.has(sp.Integral):
         e = e.replace(lambda z: isinstance(z, sp.Integral),
                       lambda z: sp.Float(quad_integral(z, dps), dps + 10))
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         return finite_real(sp.N(e, dps + 10), what, dps, exc)
 
 
@@ -156,11 +157,11 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS):
     The flat punch P/(pi sqrt(a^2 - s^2)) leaves the surface flat under it:
 
     >>> p = lambda s: 1 / (mpmath.pi * mpmath.sqrt(1 - s**2))
-    >>> with mpmath.workdps(30):
+    >>> with workdps(30):
     ...     print(abs(flamant_relative_displacement(p, 1, sp.Rational(1, 2), 1, 20)) < 1e-25)
     True
     """
-    with mpmath.workdps(quad_dps(dps)):
+    with workdps(quad_dps(dps)):
         a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
         pr = EndpointGuard(p, mpmath.mpf(0), a)
 
@@ -175,11 +176,11 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS):
 def flamant_resultant(p, a, dps=DPS):
     """The resultant int_{-a}^{a} p(s) ds of an even pressure (s = a sin(phi)).
 
-    >>> with mpmath.workdps(30):
+    >>> with workdps(30):
     ...     print(mpmath.nstr(flamant_resultant(lambda s: 1 / (mpmath.pi * mpmath.sqrt(4 - s**2)), 2, 20), 15))
     1.0
     """
-    with mpmath.workdps(quad_dps(dps)):
+    with workdps(quad_dps(dps)):
         a = to_mpf(a)
         pr = EndpointGuard(p, mpmath.mpf(0), a)
         return +(2 * mpmath.quad(lambda ph: pr(a * mpmath.sin(ph)) * a * mpmath.cos(ph),
@@ -191,7 +192,7 @@ def numeric_minimum(P, dP, scale, dps=DPS):
     """(a*, P(a*)) of the smallest local minimum of P(a) for a > 0, located
     from the sign change of dP/da (- to +) on a logarithmic grid; None when
     P has no minimum (the pull-off does not exist)."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         # quarter decades from 1e-300 to 1e300: near an existence bound (n -> 1/2
         # for a power law) the minimum moves out to astronomically small or large a
         grid = [mpmath.mpf(scale) * mpmath.mpf(10) ** (k / mpmath.mpf(4)) for k in range(-1200, 1201)]
@@ -254,7 +255,7 @@ class Comparison:
 
     @property
     def digits(self) -> float:
-        with mpmath.workdps(2 * DPS):     # never at mpmath's default 15 digits
+        with workdps(2 * DPS):     # never at mpmath's default 15 digits
             err = abs(self.printed - self.target)
             scale = self.scale if self.scale is not None else abs(self.target)
             if err == 0:

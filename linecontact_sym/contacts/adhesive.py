@@ -29,7 +29,6 @@ from __future__ import annotations
 
 import time
 
-import mpmath
 import sympy as sp
 
 from ..core import symbols as S
@@ -46,6 +45,7 @@ from .equilibria import equilibria
 from .force_law import PullOff, ForceLaw
 from .jkr import GAMMA_RANGE, energy_release_rate, flat_punch_force, phat_energy, stress_intensity
 from .sampling import point_sampler
+from ..core.precision import workdps
 
 __all__ = ["AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "NumericValuesRequired",
            "PullOff", "flat_punch_force", "stress_intensity", "energy_release_rate", "GAMMA_RANGE"]
@@ -79,6 +79,7 @@ class AdhesiveLineContact(Contact):
     """
 
     kind = "adhesive"
+    _transient = ("_cache", "_laws")
 
     force = Quantity("P(a)", "Eq. (33)", "JKR load per unit length P0(a) - Phat (negative = tensile)",
                      aliases=("adhesive_force",), latex=r"P_{\mathrm{JKR}}(a)")
@@ -246,7 +247,7 @@ class AdhesiveLineContact(Contact):
 
         def reference(vals, dps):
             from ..method import transforms as T
-            with mpmath.workdps(dps + 10):
+            with workdps(dps + 10):
                 return T.force_quad(prof, vals, dps) - phat_energy(
                     vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
         rec = None

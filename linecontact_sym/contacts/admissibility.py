@@ -21,6 +21,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.errors import DomainError, InadmissibleProfileError
 from ..parsing import to_sympy
+from ..core.precision import workdps
 
 
 def _mp_function(contact, quantity, dps):
@@ -41,7 +42,7 @@ def check_admissible(contact, dps: int = 20, **values):
     A = float(vals[S.a])
     fixed = {k: v for k, v in vals.items() if k != S.a}
     fp = prof.mp_callable(fixed, derivative=1)
-    with mpmath.workdps(dps):
+    with workdps(dps):
         for i in range(1, 50):
             xv = mpmath.mpf(A) * i / 50
             if fp(xv) < 0:

@@ -134,6 +134,28 @@ class Contact:
         raise LineContactError(f"unknown quantity {name!r} of a {cls.kind} contact; choose one of "
                                f"{', '.join(qs)}")
 
+    # ----------------------------------------------------------- pickling, copies
+    #: attributes that hold derived results and compiled functions: not
+    #: pickled (a contact pickles as its definition; its derivations come back
+    #: from the derivation store, :mod:`~linecontact_sym.method.store`, in
+    #: memory or on disk) and not shared by copies
+    _transient = ("_cache",)
+
+    def __getstate__(self):
+        return {k: v for k, v in self.__dict__.items() if k not in self._transient}
+
+    def __setstate__(self, state):
+        self.__dict__.update(state)
+        for k in self._transient:
+            self.__dict__[k] = {}
+
+    def __copy__(self):
+        """A copy with its own caches (holding what was derived so far):
+        what one derives later is not seen by the other."""
+        new = object.__new__(type(self))
+        new.__dict__.update({k: (dict(v) if k in self._transient else v) for k, v in self.__dict__.items()})
+        return new
+
     # ----------------------------------------------------------- derivations
     def _caches(self) -> dict:
         if "_cache" not in self.__dict__:

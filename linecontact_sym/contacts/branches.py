@@ -21,6 +21,7 @@ from ..method.verification import VERIFY_DPS, VerificationRecord, digits_agreein
 from .equilibria import equilibria, landscape, minimum
 from .jkr import GAMMA_RANGE, flat_punch_force, phat_energy
 from .pull_off import NumericDerivation, sample_points, single_power, solve_load, tidy_checked
+from ..core.precision import workdps
 
 _phi = sp.Symbol("phi", positive=True)
 
@@ -65,7 +66,7 @@ def derive_pressure(ad) -> Derivation:
     gexpr = ad.gamma
 
     def reference(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             A, X = to_mpf(vals[S.a]), to_mpf(vals[S.x])
             ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
             return pd.reference(vals, dps) - ph / (mpmath.pi * mpmath.sqrt(A**2 - X**2))
@@ -96,7 +97,7 @@ def equilibrium_digits(ad, pexpr) -> float:
         vals = sample(rng)
         if vals is None:
             continue
-        with mpmath.workdps(VERIFY_DPS + 10):
+        with workdps(VERIFY_DPS + 10):
             A = to_mpf(vals[S.a])
             # x = a sin(phi), sqrt(a^2 - x^2) = a cos(phi) (no cancellation at the edge)
             e = pexpr.replace(lambda z: z.is_Pow and z.base == S.a**2 - S.x**2,
@@ -106,7 +107,7 @@ def equilibrium_digits(ad, pexpr) -> float:
             pf = sp.lambdify(_phi, e, "mpmath")
             I = 2 * A * mean_quad(pf)
             ref = real_mpf(sp.N(fexpr.xreplace(vals), VERIFY_DPS + 10))
-            with mpmath.workdps(VERIFY_DPS):
+            with workdps(VERIFY_DPS):
                 worst = min(worst, digits_agreeing(I, ref))
         done += 1
     return worst
@@ -172,7 +173,7 @@ def derive_jump_in(ad) -> Derivation:
 def why_no_equilibrium(law, load) -> str:
     """Why P(a) = load has no root over the admissible range, in words."""
     land = landscape(law)
-    with mpmath.workdps(20):
+    with workdps(20):
         values = [e.force for e in land.extrema] + [law.P(land.lo), law.P(land.hi)]
         if to_mpf(load) <= min(values):
             return "below the pull-off force (the minimum of P(a)): the surfaces separate"
@@ -221,7 +222,7 @@ def derive_half_widths(ad, load):
             digs = []
             for v, av in samples:
                 try:
-                    with mpmath.workdps(VERIFY_DPS):
+                    with workdps(VERIFY_DPS):
                         digs.append(digits_agreeing(real_mpf(sp.N(cand.xreplace(v), VERIFY_DPS + 10)), to_mpf(av)))
                 except (TypeError, ValueError, DomainError):
                     digs.append(0.0)
@@ -265,7 +266,7 @@ def branch_samples(ad, load, stable):
         except (NoPullOffError, DomainError):
             continue
         u = rng.uniform(1.2, 3.0) if stable else rng.uniform(0.1, 0.9)
-        with mpmath.workdps(VERIFY_DPS + 10):
+        with workdps(VERIFY_DPS + 10):
             av = rational(float(po.half_width) * u)
             if (ad._law(v, "closed").dP(to_mpf(av)) > 0) != stable:
                 continue

@@ -13,6 +13,7 @@ import mpmath
 from ..core.errors import NoPullOffError, VerificationError
 from ..core.roots import Outside, golden_minimum
 from .force_law import GUARD, PullOff
+from ..core.precision import workdps
 
 #: points of the brute-force grid of method B
 GRID_POINTS = 241
@@ -115,7 +116,7 @@ def minimum_by_grid(law, dps: int) -> PullOff:
         kind = "stationary"
     # the polish runs at 3/2 of the digits: from function values alone the
     # location comes to 2/3 of the working digits (see _parabolic_polish)
-    with mpmath.workdps(3 * dps // 2 + GUARD):
+    with workdps(3 * dps // 2 + GUARD):
         A = mpmath.mpf(A)
         if kind != "end":
             near = [b for b in quad.breaks() if abs(b - A) <= A * mpmath.mpf("1e-6")]

@@ -60,6 +60,7 @@ from ..core.extras import require
 from ..core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
 from ..core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
+from ..core.precision import workdps
 
 #: relative width below which an interval is not split
 MIN_WIDTH = mpmath.mpf("1e-10")
@@ -180,7 +181,7 @@ def reliable(fn):
     def g(A):
         v, k = None, 20
         while k <= 640:
-            with mpmath.workdps(k):
+            with workdps(k):
                 w = fn(A)
             if v is not None and abs(w - v) <= abs(w) * mpmath.mpf(10)**-10:
                 return +w
@@ -266,7 +267,7 @@ def real_range(law):
     """(lo, hi, end): where the law is real, on a factor-4 grid from
     SPAN[0] to SPAN[1] times its scale, the end bisected ('domain') or the
     grid's end ('search')."""
-    with mpmath.workdps(20):
+    with workdps(20):
         grid = [law.scale * mpmath.mpf(4)**j for j in range(-20, 41)]
         first = good = None
         for A in grid:
@@ -309,7 +310,7 @@ def admissible_range(law):
         return cache
     base = law.base
     lo, hi, end = real_range(base)
-    with mpmath.workdps(20):
+    with workdps(20):
         balls = _Balls(base)
         notes = []
         first_neg = None
@@ -344,7 +345,7 @@ def landscape(law) -> Landscape:
         return law._landscape
     lo, hi, end, note = admissible_range(law)
     notes = [note] if note else []
-    with mpmath.workdps(20):
+    with workdps(20):
         balls = _Balls(law)
         method = "ball" if balls.f is not None else "adaptive"
         if balls.f is None and law.expr is not None:
@@ -399,7 +400,7 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
             f"P(a) is still decreasing at a = {mpmath.nstr(land.hi, 6)} (the end of the search range): P(a) "
             f"has no finite minimum, no finite pull-off (the profile grows no faster than sqrt(x) there, "
             f"so the adhesive term sqrt(2 pi a gamma E*) dominates)")
-    with mpmath.workdps(dps + GUARD):
+    with workdps(dps + GUARD):
         mins = [_refine(law, e, dps) for e in land.minima]
         neg = [e for e in mins if e.force < 0]
         if not neg:
@@ -428,7 +429,7 @@ def equilibria_at(law, load, dps: int, scan_law=None):
     docstring): :class:`Equilibrium` s, stable first, then by decreasing a."""
     sl = scan_law or law
     land = landscape(sl)
-    with mpmath.workdps(20):
+    with workdps(20):
         L20 = to_mpf(load)
         nodes = [land.lo] + [e.half_width for e in sorted(land.extrema, key=lambda e: e.half_width)
                              if e.kind != "end"] + [land.hi]
@@ -453,7 +454,7 @@ def equilibria_at(law, load, dps: int, scan_law=None):
                 k += 1
         brackets = [(n0, n1, v1 > v0) for (n0, v0), (n1, v1) in zip(zip(nodes, vals), zip(nodes[1:], vals[1:]))
                     if (v0 - L20) * (v1 - L20) < 0]
-    with mpmath.workdps(dps + GUARD):
+    with workdps(dps + GUARD):
         L = to_mpf(load)
         out = [Equilibrium(+root_in_log(lambda A: law.P(A) - L, to_mpf(n0), to_mpf(n1)), st)
                for n0, n1, st in brackets]
@@ -474,7 +475,7 @@ def half_width_at(law, load, dps: int = 30):
     roots = [a for a, st in equilibria(law, load, dps) if st]
     if not roots:
         lo, hi, end, note = admissible_range(law)
-        with mpmath.workdps(20):
+        with workdps(20):
             top = law.P(hi)
         raise DomainError(f"no half-width found for load {load}: the largest load of the admissible range "
                           f"is P({mpmath.nstr(hi, 8)}) = {mpmath.nstr(top, 8)}"

@@ -35,6 +35,7 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.errors import DomainError
 from ..core.roots import UNDEFINED, Outside, real_value
 from ..method.transforms import NumericProfile, inside
+from ..core.precision import workdps
 
 #: extra working digits of the numeric searches
 GUARD = 15
@@ -163,7 +164,7 @@ class ForceLaw:
                 except UNDEFINED:
                     raise Outside
             return g
-        with mpmath.workdps(80):
+        with workdps(80):
             found = npf.kinks(0, mpmath.mpf(10)**6)
         law = cls(guard(P), guard(dP), tuple(sp.Float(k, 80) for k in found), "quad")
         law.numeric_profile, law.E = npf, E

@@ -10,7 +10,7 @@ import mpmath
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.budget import DEFAULT_BUDGET
+from ..core.budget import DEFAULT_BUDGET, checked_budget
 from ..core.conversion import to_mpf
 from ..core.errors import DomainError
 from ..method import transforms as T
@@ -26,6 +26,7 @@ from .equilibria import half_width_at
 from .force_law import ForceLaw
 from .inverse import derive_half_width
 from .sampling import point_sampler
+from ..core.precision import workdps
 
 
 class LineContact(Contact):
@@ -75,7 +76,7 @@ class LineContact(Contact):
                  budget: float = DEFAULT_BUDGET, verify: bool = True,
                  points: int = 5, digits: int = REQUIRED_DIGITS):
         self.profile = profile if isinstance(profile, Profile) else Profile(profile, params, name)
-        self.budget = budget
+        self.budget = checked_budget(budget)
         self.verify = verify
         self.points = points
         self.digits = digits
@@ -174,9 +175,9 @@ class LineContact(Contact):
         fd = self.derivation("force")
 
         def reference(vals, dps):
-            with mpmath.workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
+            with workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
                 dP, breaks = self._dP(vals)
-            with mpmath.workdps(dps + 10):
+            with workdps(dps + 10):
                 return T.pressure_quad(dP, breaks, vals, dps)
         fallback = T.pressure_integral(fd.expr)
         if not fd.closed_form:
@@ -190,9 +191,9 @@ class LineContact(Contact):
         fd = self.derivation("force")
 
         def reference(vals, dps):
-            with mpmath.workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
+            with workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
                 dP, breaks = self._dP(vals)
-            with mpmath.workdps(dps + 10):
+            with workdps(dps + 10):
                 f = self.profile.mp_callable({k: v for k, v in vals.items() if k not in (S.a, S.x)})
                 return T.gap_quad(f, dP, breaks, vals, dps)
         fallback = T.gap_integral(self.profile.expr, fd.expr)
@@ -226,7 +227,7 @@ class LineContact(Contact):
         prof = self.profile
 
         def reference(vals, dps):
-            with mpmath.workdps(dps + 10):
+            with workdps(dps + 10):
                 return T.force_quad(prof, vals, dps) / (2 * to_mpf(vals[S.a]))
         return self._derive_from_force("mean_pressure", lambda P: P / (2 * S.a), reference,
                                        "P(a)/(2a) against the quadrature of Eq. (10*) over 2a", t0)
@@ -238,7 +239,7 @@ class LineContact(Contact):
         prof = self.profile
 
         def reference(vals, dps):
-            with mpmath.workdps(dps + 20):
+            with workdps(dps + 20):
                 fixed = {k: v for k, v in vals.items() if k != S.a}
                 A = to_mpf(vals[S.a])
                 # the quadrature runs above diff's own (raised) working precision

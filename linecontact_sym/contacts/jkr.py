@@ -20,6 +20,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.conversion import to_mpf
+from ..core.precision import workdps
 
 #: range of the work of adhesion at the random verification points
 GAMMA_RANGE = (0.005, 0.5)
@@ -52,7 +53,7 @@ def compliance_quad(A, E, dps, L):
     between the punch and a distant point L, by quadrature of the
     half-plane's log kernel over the punch pressure 1/(pi sqrt(a^2 - s^2)):
     C = (2/(pi E*)) (1/pi) int_{-pi/2}^{pi/2} ln(|L - a sin phi| / |a sin phi|) dphi."""
-    with mpmath.workdps(max(mpmath.mp.dps, dps + 10)):  # never below a caller's (mpmath.diff) precision
+    with workdps(max(mpmath.mp.dps, dps + 10)):  # never below a caller's (mpmath.diff) precision
         f = lambda ph: mpmath.log(abs(L - A * mpmath.sin(ph))) - mpmath.log(abs(A * mpmath.sin(ph)))  # noqa: E731
         I = mpmath.quad(f, [-mpmath.pi / 2, 0, mpmath.pi / 2]) / mpmath.pi
         return 2 * I / (mpmath.pi * E)
@@ -62,7 +63,7 @@ def phat_energy(A, gamma, E, dps, quadrature=True):
     """Phat from the energy balance G = gamma, G = (P^2/2) |dC/d(2a)| with C
     the punch compliance (Eq. 3, by quadrature or, with ``quadrature=False``,
     in its closed arccosh form): numerical differentiation + root finding."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         A, g, E = to_mpf(A), to_mpf(gamma), to_mpf(E)
         if g == 0:
             return mpmath.mpf(0)

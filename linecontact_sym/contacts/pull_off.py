@@ -38,6 +38,7 @@ from ..method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord
 from .brute_force import minimum_by_grid
 from .equilibria import landscape, minimum
 from .force_law import PullOff
+from ..core.precision import workdps
 
 
 def single_power(P0):
@@ -326,7 +327,7 @@ def checked(ad, vals, dps) -> PullOff:
         law = ad._law(vals, "closed")
         po = minimum(law, dps)
         po_b = reference(ad, vals, dps)
-        with mpmath.workdps(dps):
+        with workdps(dps):
             d = min(digits_agreeing(po.force, po_b.force),
                     digits_agreeing(po.half_width, po_b.half_width) if po.kind == "stationary" else float(dps))
             if po.kind != po_b.kind:
@@ -348,7 +349,7 @@ def at_values(ad, vals, dps) -> PullOff:
             raise NoPullOffError(f"{ad.profile.name!r}: the pull-off conditions "
                                  f"{fd.conditions} fail at {vals}: no finite pull-off")
         fv = float_values(vals, 80)
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             Pm = real_mpf(sp.N(fd.expr.xreplace(fv), dps + 10))
             A = real_mpf(sp.N(ad.derivation("pull_off_half_width").expr.xreplace(fv), dps + 10))
             adh = -Pm
@@ -356,7 +357,7 @@ def at_values(ad, vals, dps) -> PullOff:
             return PullOff(Pm, adh, A, "stationary", None, (), "closed form (single power term)")
         # the closed form is one stationary point: is it the global minimum here?
         land = landscape(ad._law(vals, "closed"))
-        with mpmath.workdps(20):
+        with workdps(20):
             best = min(land.minima, key=lambda e: e.force, default=None)
             if best is not None and best.kind == "stationary" and digits_agreeing(best.half_width, A, 20) >= 8:
                 return PullOff(Pm, adh, A, "stationary", None, land.minima, land.describe())

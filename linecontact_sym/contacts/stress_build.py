@@ -20,6 +20,7 @@ from . import stress_field as F
 from .kolosov import density_breakpoints, symbolic_stresses, t
 from .sampling import point_sampler
 from .stress_reference import flamant_stresses, punch_potentials
+from ..core.precision import workdps
 
 
 def sampler(sf):
@@ -108,7 +109,7 @@ def flamant_reference(sf):
         return _punch_reference(sf)
 
     def reference(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             p, q, breaks = _mp_tractions(sf, vals, dps)
             num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
             sx, sz, txz = flamant_stresses(p, q, *num, breaks=breaks, dps=dps)
@@ -121,7 +122,7 @@ def _punch_reference(sf):
     from .kolosov import kolosov_stresses
 
     def reference(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             fixed = {k: v for k, v in vals.items() if k in (S.E_star,) + tuple(sf.contact.params)}
             law = ForceLaw.from_contact(sf.contact, fixed)
             num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
@@ -147,7 +148,7 @@ def combine_reference(ref, make):
 
     def reference(vals, dps):
         c = full(vals, dps)
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             sx, sz, txz = (sp.Float(c[k], dps + 10) for k in ("sigma_x", "sigma_z", "tau_xz"))
             return mpmath.mpf(sp.N(make(sx, sz, txz).xreplace(vals), dps + 10))
     return reference

@@ -22,6 +22,7 @@ s = 0 for power laws, s = +-b for the worn cylinder), by tanh-sinh.
 from __future__ import annotations
 
 import mpmath
+from ..core.precision import workdps
 
 
 def _pieces(x, z, a, breaks):
@@ -46,7 +47,7 @@ def flamant_stresses(p, q, a, x, z, breaks=(), dps: int = 30):
     >>> [mpmath.nstr(v, 12) for v in flamant_stresses(hertz, None, 1, 0, 1)]
     ['-0.12132034356', '-0.707106781187', '0.0']
     """
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         a, x, z = mpmath.mpf(a), mpmath.mpf(x), mpmath.mpf(z)
         us = _pieces(x, z, a, [mpmath.mpf(b) for b in breaks])
 
@@ -79,7 +80,7 @@ def flamant_stresses(p, q, a, x, z, breaks=(), dps: int = 30):
 def cauchy_quad(p, a, x, z, breaks=(), dps: int = 30):
     """G(zeta) = int_{-a}^{a} p(s)/(zeta - s) ds at zeta = x + i z (z > 0),
     by tanh-sinh after s = x + z sinh(u): p(s) z cosh(u)/(z (i - sinh u)) du."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         a, x, z = mpmath.mpf(a), mpmath.mpf(x), mpmath.mpf(z)
         us = _pieces(x, z, a, [mpmath.mpf(b) for b in breaks])
         j = mpmath.mpc(0, 1)
@@ -99,7 +100,7 @@ def punch_potentials(dP, a, x, z, breaks=(), dps: int = 30):
     The high-precision evaluation of the field where the pressure has no
     closed form (Popov's superposition, the formula of the float64 field
     at any precision); not independent of it."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         a, x, z = mpmath.mpf(a), mpmath.mpf(x), mpmath.mpf(z)
         X = abs(x)
         c = min(X, a)

@@ -34,6 +34,7 @@ from . import stress_extrema as X
 from . import stress_field as F
 from .base import Contact, Quantity
 from .kolosov import cauchy_transform, punch_integral, t
+from ..core.precision import workdps
 
 #: the integration variable of a traction given as an expression (real: s < 0 too)
 s_real = sp.Symbol("s", real=True)
@@ -417,7 +418,7 @@ def _maximum_mp(sf, criterion, vals, dps):
     if f is None or (criterion == "tresca"):
         return out
     A = float(vals[S.a])
-    with mpmath.workdps(dps + 15):
+    with workdps(dps + 15):
         try:
             if abs(m.x) < 1e-6 * A and (sf.tangential is None or float(sf.mu.xreplace(vals)) == 0):
                 zr = mpmath.findroot(lambda zv: mpmath.diff(lambda u: f(0, u), zv), mpmath.mpf(m.z))
@@ -502,7 +503,7 @@ def _check_maximum(sf, expr, reference, variables):
         if vals is None:
             continue
         vals = {k: v for k, v in vals.items() if k in variables}
-        with mpmath.workdps(30):
+        with workdps(30):
             val = mpmath.mpf(sp.N(expr.xreplace(vals), 40))
             digits.append(digits_agreeing(val, reference(vals, 30), 30))
         pts.append(vals)

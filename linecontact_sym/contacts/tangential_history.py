@@ -21,6 +21,7 @@ from ..parsing import to_sympy
 from . import tangential_reference as ref
 from .equilibria import half_width_at
 from .tangential_states import _law, _mu
+from ..core.precision import workdps
 
 #: |Q| within this relative distance of mu P is the onset of gross sliding (float64 inputs)
 ONSET_RTOL = mpmath.mpf("1e-14")
@@ -194,7 +195,7 @@ def _numbers(t, values):
         raise DomainError(f"values needed for {', '.join(missing)}")
     if ("a" in values) == ("P" in values):
         raise DomainError("give either the half-width a or the normal load P")
-    with mpmath.workdps(30):
+    with workdps(30):
         law = _law(t, vals)
         if "a" in values:
             A = to_mpf(to_sympy_number(values["a"]))
@@ -218,7 +219,7 @@ def _stick(t, law, load, vals, A):
     c0 = to_mpf(sp.N(t.c0.xreplace(vals), mpmath.mp.dps + 5))
     if load <= 0:
         return c0
-    with mpmath.workdps(mpmath.mp.dps + 10):
+    with workdps(mpmath.mp.dps + 10):
         A = to_mpf(A)
         hi, lo = A, A / 2
         floor = c0 if c0 > 0 else A * mpmath.mpf(10)**-30
@@ -235,7 +236,7 @@ def _stick(t, law, load, vals, A):
 
 def stick_half_width_at(t, Qv, values) -> TangentialState:
     """The monotonic-loading state at the tangential force Q (numbers)."""
-    with mpmath.workdps(30):
+    with workdps(30):
         vals, law, A = _numbers(t, values)
         Pa, mu = law.P(A), _mu(t, vals)
         Qm = to_mpf(sp.N(Qv, 40))
@@ -253,7 +254,7 @@ def reversal(t, Q_max, Q, values, branch) -> TangentialState:
     """Mindlin-Deresiewicz: the state at Q on the unloading branch from +Q_max
     or the reloading branch from -Q_max."""
     top = stick_half_width_at(t, abs(to_sympy_number(Q_max)), values)
-    with mpmath.workdps(30):
+    with workdps(30):
         Qm = to_mpf(sp.N(to_sympy_number(Q), 40))
         Qx = top.Q
         if not -Qx <= Qm <= Qx:
@@ -302,7 +303,7 @@ def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
     top = stick_half_width_at(t, to_sympy_number(Q_amplitude), values)
     vals, law, A = _numbers(t, values)
     fixed = {s.name: float(v) for s, v in vals.items()}
-    with mpmath.workdps(30):
+    with workdps(30):
         QA = abs(top.Q)
         Qs = [QA - 2 * QA * k / (points - 1) for k in range(points)]
         crs = [_stick(t, law, top.P - (QA - q) / (2 * top.mu), vals, A) for q in Qs]
@@ -329,7 +330,7 @@ def bem(t, n, values):
     vals, law, A = _numbers(t, values)
     fixed = {s.name: float(v) for s, v in vals.items() if s in set(t.contact.variables)}
     brs = [float(b) for b in law.breaks()]
-    with mpmath.workdps(30):
+    with workdps(30):
         mu = float(_mu(t, vals))
     return ref.CoulombBEM(float(A), fixed["E_star"], mu, _float_fn(t.contact, "stiffness", fixed), n, brs)
 

@@ -22,6 +22,7 @@ from . import tangential_reference as ref
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 from .sampling import point_sampler
+from ..core.precision import workdps
 
 #: the conditions of validity, attached to every tangential derivation
 CONDITIONS = ("valid for: plane strain; elastically similar bodies or Dundurs' beta neglected; Coulomb friction "
@@ -129,7 +130,7 @@ def references(t, what, terms):
         return q, A, [c for _, c, _ in parts]
 
     def check(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             A, mu = num(vals, S.a), _mu(t, vals)
             brs = _breaks(t, vals)
             if what == "traction":
@@ -147,7 +148,7 @@ def references(t, what, terms):
             return ref.displacement_flamant(q, A, E, cs + brs)
 
     def value(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             A, mu = num(vals, S.a), _mu(t, vals)
             if what == "traction":
                 q, _, _ = q_superposed(vals)
@@ -237,13 +238,13 @@ def energy_references(t):
         return [to_mpf(sp.N(vals[k], mpmath.mp.dps + 5)) for k in (S.a, S.c_s, S.E_star)]
 
     def check(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             A, C, _ = nums(vals)
             pa, gc = normal_fn(t, "pressure", vals, A), normal_fn(t, "gap", vals, C)
             return ref.friction_work(pa, gc, A, C, _mu(t, vals), _breaks(t, vals))
 
     def value(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             A, C, E = nums(vals)
             law, mu = _law(t, vals), _mu(t, vals)
             brs = law.breaks()
@@ -267,7 +268,7 @@ def derive_stick_half_width(t, Qv) -> Derivation:
     prof = t.profile
 
     def check(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             fixed = float_values(_fixed(t, vals), dps + 20)
             law = ForceLaw.from_profile(prof, fixed)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
@@ -275,7 +276,7 @@ def derive_stick_half_width(t, Qv) -> Derivation:
             return half_width_at(law, L, dps)
 
     def value(vals, dps):
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             law = _law(t, vals)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
             return half_width_at(law, law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / _mu(t, vals), dps)

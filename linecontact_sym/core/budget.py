@@ -1,5 +1,10 @@
 """Run symbolic work under a wall-clock budget.
 
+A budget is a number of seconds of wall-clock time, > 0; ``None`` or
+``math.inf`` means no limit (:func:`checked_budget`).  The budget of a
+derivation covers all of it: the rules, the tidying of the result and its
+verification (:mod:`linecontact_sym.method.derivation` keeps one deadline).
+
 SymPy computations cannot be interrupted from another thread, so a step that
 may run long is executed in a forked child process that is killed when its
 budget runs out.  Results come back pickled (SymPy objects pickle, Dummy
@@ -8,17 +13,54 @@ in-process and the budget is not enforced (documented limitation).
 """
 from __future__ import annotations
 
+import math
 import multiprocessing as _mp
+import numbers
 import os
 import pickle
+import time
 import traceback
 
-from .errors import BudgetExceeded
+from .errors import BudgetError, BudgetExceeded
 
 #: Default time budget, in seconds, for the derivation of one quantity.
 DEFAULT_BUDGET = 20.0
 
 _HAS_FORK = "fork" in _mp.get_all_start_methods()
+
+
+def checked_budget(seconds):
+    """A budget as given by a user: ``None`` or ``math.inf`` (no limit, returned
+    as None) or a real number of seconds > 0 (returned as float).  Anything
+    else (NaN, 0, negative, a string, a bool) raises :class:`BudgetError`.
+
+    >>> checked_budget(5), checked_budget(None), checked_budget(float("inf"))
+    (5.0, None, None)
+    """
+    if seconds is None:
+        return None
+    if isinstance(seconds, bool) or not isinstance(seconds, numbers.Real):
+        raise BudgetError(f"the budget must be a number of seconds > 0 (or None for no limit), got {seconds!r}")
+    v = float(seconds)
+    if math.isnan(v) or v <= 0:
+        raise BudgetError(f"the budget must be a number of seconds > 0 (or None for no limit), got {seconds!r}")
+    return None if math.isinf(v) else v
+
+
+class Deadline:
+    """One wall-clock deadline shared by the steps of a derivation:
+    ``left()`` is the time that remains (None: no limit; never negative)."""
+
+    def __init__(self, budget, start=None):
+        self.budget = checked_budget(budget)
+        start = time.monotonic() if start is None else start
+        self.at = None if self.budget is None else start + self.budget
+
+    def left(self):
+        return None if self.at is None else max(self.at - time.monotonic(), 0.0)
+
+    def expired(self, margin: float = 0.0) -> bool:
+        return self.at is not None and self.left() <= margin
 
 
 def _child(conn, fn, args, kwargs):
@@ -41,7 +83,7 @@ def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
 
     Exceptions raised by ``fn`` are re-raised in the caller.
     """
-    if seconds is None or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK"):
+    if seconds is None or math.isinf(seconds) or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK"):
         return fn(*args, **kwargs)
     ctx = _mp.get_context("fork")
     recv, send = ctx.Pipe(duplex=False)
@@ -49,7 +91,7 @@ def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
     proc.start()
     send.close()
     try:
-        if not recv.poll(max(float(seconds), 0.0)):
+        if not recv.poll(max(float(seconds), 0.0) if seconds == seconds else 0.0):
             raise BudgetExceeded(f"{getattr(fn, '__name__', fn)} exceeded its budget of {seconds:g} s")
         try:
             payload = pickle.loads(recv.recv_bytes())

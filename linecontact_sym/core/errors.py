@@ -56,6 +56,10 @@ class BudgetExceeded(LineContactError, TimeoutError):
     """A symbolic step did not finish within its time budget."""
 
 
+class BudgetError(LineContactError, ValueError):
+    """A time budget that is not a number of seconds > 0 (None: no limit)."""
+
+
 class ClaimError(LineContactError, ValueError):
     """A claim (file or command line) is malformed or unsafe."""
 

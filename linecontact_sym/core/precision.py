@@ -30,6 +30,9 @@ from contextlib import contextmanager
 
 import mpmath
 
+#: the most significant digits a user may ask for (``evaluate(dps=...)``, ``--dps``)
+MAX_DPS = 1000
+
 _LOCK = threading.RLock()
 
 
@@ -63,4 +66,4 @@ def extradps(n: int):
         yield
 
 
-__all__ = ["workdps", "workprec", "extradps"]
+__all__ = ["workdps", "workprec", "extradps", "MAX_DPS"]

@@ -32,6 +32,7 @@ import mpmath
 import sympy as sp
 
 from .conversion import to_mpf
+from .precision import extradps
 
 #: tanh-sinh degree used throughout (mpmath's default is 6)
 MAXDEGREE = 10
@@ -185,7 +186,7 @@ class EndpointGuard:
         if dist < self.span * mpmath.mpf(10) ** -5:
             extra = self.cap if dist == 0 else min(self.cap, int(-mpmath.log10(dist / self.span)))
         if extra:
-            with mpmath.extradps(extra):
+            with extradps(extra):
                 return self.g(tv)
         return self.g(tv)
 

@@ -13,17 +13,17 @@ import time
 from dataclasses import dataclass, field
 from typing import Callable
 
-import mpmath
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.budget import run_with_budget
+from ..core.budget import Deadline, checked_budget, run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
-from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError
+from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError, LineContactError
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, verify
+from ..core.precision import workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -77,15 +77,30 @@ class Derivation:
         """How ``expr`` was obtained, for people: 'rule: notes'."""
         return self.step.describe()
 
+    def __getstate__(self):
+        """Pickled without ``reference`` (a closure over the contact that made
+        it): an unpickled Derivation keeps its expression, rule, conditions
+        and verification; a numeric evaluation that needs the reference asks
+        the contact for the derivation again."""
+        state = dict(self.__dict__)
+        state["reference"] = None
+        return state
+
+    def __setstate__(self, state):
+        self.__dict__.update(state)
+
     def evalf(self, dps: int = 30, **values):
         """Evaluate at a point (keyword arguments by symbol name) with ``dps``
         digits: the closed form where there is one, else the reference
         (high-precision quadrature of the defining integral)."""
         vals = values_by_name(self.variables_all, values)
         if self.closed_form:
-            with mpmath.workdps(dps):
+            with workdps(dps):
                 v = sp.N(self.expr.xreplace(float_values(vals, dps + 20)), dps + 5)
                 return real_mpf(v)
+        if self.reference is None:
+            raise LineContactError(f"this {self.quantity} derivation has no reference quadrature (it was "
+                                   f"unpickled, or made without one): evaluate it through its contact")
         return self.reference(vals, dps)
 
     @property
@@ -185,47 +200,50 @@ def tidy_conditions(conds) -> tuple:
 
 
 # ------------------------------------------------------------------ dispatch
-def integrate(problem: Problem, budget: float, rules=None):
+def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = None):
     """Try the rules of ``problem.transform`` in order, each under what
-    remains of ``budget`` seconds; a rule whose ``applies()`` says no is
-    skipped at once.  Returns ``(step, attempts)``: the tidied
-    :class:`~.rules.Step` of the first success (or None) and the list of
-    ``(rule name, reason)`` of the rules that gave nothing.
+    remains of ``budget`` seconds (or of ``deadline``, shared with the rest
+    of a derivation); a rule whose ``applies()`` says no is skipped at once.
+    Returns ``(step, attempts)``: the tidied :class:`~.rules.Step` of the
+    first success (or None) and the list of ``(rule name, reason)`` of the
+    rules that gave nothing.  The tidying runs in the same time; when none
+    is left the result is returned as the rule gave it.
     :class:`~linecontact_sym.core.errors.DivergentIntegralError` propagates."""
     attempts = []
-    deadline = time.monotonic() + budget
+    deadline = Deadline(budget) if deadline is None else deadline
+    shown = "no limit" if deadline.budget is None else f"{deadline.budget:g} s"
     for rule in (RULES[problem.transform] if rules is None else rules):
         why = rule.applies(problem)
         if why is not None:
             attempts.append((rule.name, f"not applicable: {why}"))
             continue
-        left = deadline - time.monotonic()
-        if left <= 0.05:
+        if deadline.expired(0.05):
             attempts.append((rule.name, "budget used up"))
             break
         try:
-            step = run_with_budget(rule.run, problem, seconds=left)
+            step = run_with_budget(rule.run, problem, seconds=deadline.left())
         except NotApplicable as exc:
             attempts.append((rule.name, f"not applicable: {exc}"))
             continue
         except BudgetExceeded:
-            attempts.append((rule.name, f"no result within {budget:g} s"))
+            attempts.append((rule.name, f"no result within {shown}"))
             continue
         except DivergentIntegralError:
             raise
         except Exception as exc:  # a SymPy failure inside a rule
             attempts.append((rule.name, f"{type(exc).__name__}: {exc}"))
             continue
-        left = max(deadline - time.monotonic(), 1.0)
-        try:
-            expr = run_with_budget(tidy, step.expr, seconds=min(left, 15.0))
-        except Exception:
-            expr = sp.hyperexpand(step.expr)
+        expr = step.expr
+        if not deadline.expired(0.05):
+            try:
+                expr = run_with_budget(tidy, step.expr, seconds=deadline.left())
+            except Exception:
+                expr = step.expr
         return Step(step.rule, expr, tidy_conditions(step.conditions), step.notes), attempts
     return None, attempts
 
 
-def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.Expr, budget: float,
+def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.Expr, budget,
            check: bool = True, points: int = 5, notes=(), variables=(), t0=None) -> Derivation:
     """One transform carried out: :func:`integrate`, then verification of the
     closed form against ``reference`` at ``points`` points drawn by
@@ -237,7 +255,14 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     ranges, force law, quantity, verification settings) is answered from the
     in-process memory or the on-disk cache, with this call's ``reference``;
     a result without closed form is derived again only under a larger
-    budget than the one it ran out of."""
+    budget than the one it ran out of.
+
+    ``budget`` (seconds > 0, or None: no limit) is the wall-clock limit of
+    the whole derivation: rules, tidying and verification.  A closed form
+    whose verification did not finish in what remained is not returned as
+    verified: the unevaluated integral is, with a note."""
+    budget = checked_budget(budget)
+    deadline = Deadline(budget)
     t0 = time.perf_counter() if t0 is None else t0
     key = store.make_key("derive", quantity, problem.transform, *_problem_parts(problem), fallback, check,
                          points, REQUIRED_DIGITS, tuple(notes), tuple(variables))
@@ -246,7 +271,7 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
         return Derivation(quantity, rec["expr"], rec["closed_form"], rec["step"], rec["conditions"],
                           rec["verification"], rec["seconds"], rec["notes"], reference, tuple(variables),
                           rec["attempts"], rec["source"])
-    d = _derive(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables, t0)
+    d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0)
     store.put(key, {"expr": d.expr, "closed_form": d.closed_form, "step": d.step, "conditions": d.conditions,
                     "verification": d.verification, "seconds": d.seconds, "notes": d.notes,
                     "attempts": d.attempts, "budget": budget})
@@ -272,17 +297,26 @@ def _usable(rec, budget) -> bool:
         return True
     timed_out = _budget_limited(rec["attempts"]) or (
         rec["verification"] is not None and not rec["verification"].points)
-    return not (timed_out and budget > rec["budget"])
+    more = budget is None if rec["budget"] is not None else False
+    return not (timed_out and (more or (budget is not None and budget > rec["budget"])))
 
 
-def _derive(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables, t0):
-    step, attempts = integrate(problem, budget)
+def _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0):
+    step, attempts = integrate(problem, None, deadline=deadline)
     rec = None
     extra = []
     if step is not None and check:
+        left = deadline.left()
         rec = verify(step.expr, reference, sampler, step.conditions, n_points=points,
-                     reference_name=f"mpmath quadrature of the defining integral ({quantity})")
-        if not rec.passed:
+                     reference_name=f"mpmath quadrature of the defining integral ({quantity})",
+                     budget=max(left, 0.05) if left is not None else None)
+        if not rec.passed and not rec.points:
+            attempts.append((step.rule, f"closed form not verified: the verification did not finish in "
+                                        f"the budget's remaining time: {step.expr}"))
+            extra.append(f"closed form from {step.rule} found but not verified within the budget; "
+                         f"returned unevaluated (a larger budget verifies it): {step.expr}")
+            step = None
+        elif not rec.passed:
             attempts.append((step.rule, f"closed form FAILED verification ({rec.min_digits:.1f} digits): "
                                         f"{step.expr}"))
             extra.append(f"closed form from {step.rule} FAILED verification ({rec.min_digits:.1f} digits); "

@@ -17,6 +17,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.errors import InadmissibleProfileError, ProfileError, UnknownSymbolError
+from ..core.precision import workdps
 
 
 @dataclass(frozen=True)
@@ -200,6 +201,10 @@ class Profile:
         return True
 
     # ------------------------------------------------------------------ admissibility near x = 0
+    def __getstate__(self):
+        """Pickled without the compiled functions (built again on use)."""
+        return {k: v for k, v in self.__dict__.items() if k != "_near_fns"}
+
     def _numeric_fns(self, values):
         """(f, f') of x as mpmath callables at these parameter values (the
         profile's expression compiled once with the parameters as arguments)."""
@@ -224,7 +229,7 @@ class Profile:
         if fns is None:
             return None
         f, fp = fns
-        with mpmath.workdps(30):
+        with workdps(30):
             A = mpmath.mpf(a) if isinstance(a, (int, float)) else mpmath.mpf(sp.N(a, 30))
             for k in range(1, n + 1):
                 xv = A * k / n
@@ -248,7 +253,7 @@ class Profile:
             return None
         ff, ffp = fns
         bad = None
-        with mpmath.workdps(30):
+        with workdps(30):
             for xv in NEAR_ORIGIN:
                 try:
                     v, d = ff(mpmath.mpf(xv)), ffp(mpmath.mpf(xv))

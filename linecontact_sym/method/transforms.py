@@ -41,6 +41,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.quadrature import quad0
+from ..core.precision import workdps
 
 # dummy integration variables: the defining Integrals print with these
 t = sp.Symbol("t", positive=True)
@@ -134,7 +135,7 @@ class NumericProfile:
         are not seen (they would be a switch on and off within 1.4 % of x)."""
         hi = mpmath.mpf(hi)
         if self._switches and hi > self._searched:
-            with mpmath.workdps(80):
+            with workdps(80):
                 top = max(hi, 2 * self._searched)
                 low = self._searched
                 grid = {low + (top - low) * k / self.SAMPLES for k in range(self.SAMPLES + 1)}
@@ -201,7 +202,7 @@ def force_quad(profile, values: dict, dps: int = 50):
     E* a int_0^{pi/2} sin(phi) f'(a sin(phi)) dphi, split at the breakpoints
     that :class:`NumericProfile` finds at this point (independent of the
     engine's split of the profile into pieces)."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         A = _mpf(values[S.a])
         E = _mpf(values.get(S.E_star, 1))
         npf = NumericProfile(profile, values)
@@ -219,10 +220,10 @@ def pressure_quad(dP, breaks, values: dict, dps: int = 50):
     """Eq. (12) after s = sqrt(x^2 + w^2): (1/pi) int_0^sqrt(a^2-x^2) P'(s)/s dw.
 
     ``dP`` is an mpmath callable of s (the derivative of the force law)."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         work = mpmath.mp.dps
         A, X = _mpf(values[S.a]), abs(_mpf(values[S.x]))
-        with mpmath.workdps(2 * work + 10):
+        with workdps(2 * work + 10):
             W = mpmath.sqrt(A**2 - X**2)
             inner = [mpmath.sqrt(bp**2 - X**2) for bp in breaks if X < bp < A]
 
@@ -245,12 +246,12 @@ def offset_quad(fn, lo, hi, work):
     working precision and fn evaluated there, so that nodes within 10**-dps
     of lo still fall on the right side of the singularity (before: the
     pressure behind a kink to 20 of 30 digits)."""
-    with mpmath.workdps(2 * work + 10):
+    with workdps(2 * work + 10):
         width = hi - lo
     top = width * (1 - mpmath.mpf(10)**(-work))
 
     def g(t):   # v = t**2: a 1/sqrt(v) singularity becomes smooth
-        with mpmath.workdps(2 * work + 10):
+        with workdps(2 * work + 10):
             val = 2 * t * fn(lo + min(t * t, top))
         return +val
     return mpmath.quad(g, [0, mpmath.sqrt(width)], maxdegree=10)
@@ -258,7 +259,7 @@ def offset_quad(fn, lo, hi, work):
 
 def gap_quad(f, dP, breaks, values: dict, dps: int = 50):
     """Outside gap f(x) - (2/(pi E*)) int_0^a acosh(x/s) P'(s) ds, x > a."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         A, X = _mpf(values[S.a]), abs(_mpf(values[S.x]))
         E = _mpf(values.get(S.E_star, 1))
         work = mpmath.mp.dps
@@ -275,7 +276,7 @@ def gap_quad(f, dP, breaks, values: dict, dps: int = 50):
 
 def profile_quad(Pfn, breaks, values: dict, dps: int = 50):
     """Eq. (9) after s = a sin(phi): (2/(pi E*)) int_0^{pi/2} P(a sin phi)/sin(phi) dphi."""
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         A = _mpf(values[S.a])
         E = _mpf(values.get(S.E_star, 1))
         pts = [mpmath.mpf(0)] + [mpmath.asin(bp / A) for bp in breaks if bp < A] + [mpmath.pi / 2]
@@ -295,7 +296,7 @@ def mean_quad(p_of_phi, undefined=(ValueError, ZeroDivisionError)):
 
     def integrand(ph):
         try:
-            with mpmath.workdps(2 * mpmath.mp.dps + 10):
+            with workdps(2 * mpmath.mp.dps + 10):
                 v = p_of_phi(ph) * mpmath.cos(ph)
                 if isinstance(v, mpmath.mpc) or not mpmath.isfinite(v):
                     raise ValueError("not finite")

@@ -16,6 +16,7 @@ import sympy as sp
 from ..core.budget import run_with_budget
 from ..core.conversion import float_values, real_mpf
 from ..core.errors import BudgetExceeded, DomainError
+from ..core.precision import workdps
 
 #: digits every closed form must reproduce at every verification point
 REQUIRED_DIGITS = 30
@@ -75,7 +76,7 @@ def digits_agreeing(val, ref, dps=None) -> float:
     default the current working precision; a reference below 10**(-dps/2)
     is compared absolutely)."""
     dps = mpmath.mp.dps if dps is None else dps
-    with mpmath.workdps(dps):
+    with workdps(dps):
         err = abs(val - ref)
         if err == 0:
             return float(dps)
@@ -131,7 +132,7 @@ def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
         points.append(vals)
         fvals = float_values(vals, dps + 30)
         for k, expr in exprs.items():
-            with mpmath.workdps(dps):
+            with workdps(dps):
                 try:
                     val = real_mpf(sp.N(expr.xreplace(fvals), dps + 10))
                 except (DomainError, TypeError, ValueError):

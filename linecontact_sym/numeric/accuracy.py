@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 import sympy as sp
+from ..core.precision import workdps
 
 __all__ = ["EPS", "AccuracyRecord", "condition_number", "condition_number_float", "audit", "expressions_agree"]
 
@@ -56,7 +57,7 @@ def condition_number(fmp, point: dict, dps: int = 100):
     the mpmath function ``fmp(**point)`` at ``point`` (central differences with
     step 10^-(dps/3) relative, at ``dps`` digits; one-sided at a domain edge);
     NaN if f = 0 or is not finite."""
-    with mpmath.workdps(dps):
+    with workdps(dps):
         base = {k: mpmath.mpf(v) for k, v in point.items()}
         f0 = fmp(**base)
         if f0 == 0 or not mpmath.isfinite(f0):
@@ -133,7 +134,7 @@ def _reference(fmp, pt, dps):
     """(value, singular) of fmp at pt.  Where the formula is singular
     (removable: 0*inf, 0/0 ...) the limit approached from a point displaced by
     10^-(dps/2) in one argument (singular=True); NaN outside the real domain."""
-    with mpmath.workdps(dps):
+    with workdps(dps):
         args = {k: mpmath.mpf(x) for k, x in pt.items()}
         try:
             r0 = fmp(**args)
@@ -231,7 +232,7 @@ def _sample_point(syms, conditions, rng, tries=200):
 
 
 def _mp_value(expr, vals, dps=30):
-    with mpmath.workdps(dps):
+    with workdps(dps):
         v = sp.N(expr.xreplace(vals), dps)
         v = complex(v) if not v.is_real else v
         if isinstance(v, complex):

@@ -40,6 +40,7 @@ from ..core.conversion import nsimplify_basic
 from ..core.errors import LineContactError
 from ..core.extras import require
 from .special import carlson_rd, carlson_rf, carlson_rg, carlson_rj, gamma_ratio, hyp2f1c
+from ..core.precision import workprec
 
 
 def _flint():
@@ -284,7 +285,7 @@ class Enclosure:
                 return mpmath.mpf(0)
             man, exp = b.man_exp()
         man, exp = int(man), int(exp)
-        with mpmath.workprec(max(man.bit_length(), 53) + 10):
+        with workprec(max(man.bit_length(), 53) + 10):
             return mpmath.ldexp(mpmath.mpf(man), exp)
 
     @property

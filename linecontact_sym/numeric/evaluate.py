@@ -53,14 +53,15 @@ import sympy as sp
 
 from ..parsing import to_sympy
 from ..core import symbols as S
-from ..core.errors import LineContactError
+from ..core.errors import DomainError, LineContactError
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
 from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, lambdify_mpmath,
-                      lambdify_mpmath_quad, make_callable, stable_form)
+                      lambdify_mpmath_quad, compile_callable, stable_form)
 from .fastpath import scalar_kit, vector_float64
 from .quadrature import VectorQuad
+from ..core.precision import MAX_DPS, workdps
 
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
 #: closed forms / quadratures (what tests/test_extremes.py checks on the grid)
@@ -140,7 +141,7 @@ def _as_mpf(v):
 def _float64_fn(d):
     cache = _CACHE.of(d)
     if "f64" not in cache:
-        cache["f64"] = make_callable(d, "numpy")
+        cache["f64"] = compile_callable(d, "numpy")
     return cache["f64"]
 
 
@@ -208,7 +209,7 @@ class SeriesModel:
         return sp.Add(*self.terms[:N])
 
     def term_values(self, values, dps=20):
-        with mpmath.workdps(dps):
+        with workdps(dps):
             return [+t for t in self._mp(*[_as_mpf(values[n]) for n in self.names])]
 
     def term_floats(self, values):
@@ -291,6 +292,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     (True, '0.39269908169872415480783042291')
     """
     t0 = time.perf_counter()
+    _check_tolerance(rtol, dps)
     d = contact.derivation(quantity)
     kit = scalar_kit(d)
     names = kit.names
@@ -307,8 +309,6 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         return _certified(d, quantity, values, rtol, dps, t0)
     if rtol is None:
         rtol = 10.0 ** -dps if dps is not None else 1e-12
-    if not rtol > 0:
-        raise ValueError("rtol must be positive")
     if arrays:
         return _evaluate_array(contact, d, quantity, names, values, rtol, model, t0)
 
@@ -369,6 +369,17 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
 
 
+def _check_tolerance(rtol, dps):
+    """rtol a real number in (0, 1), dps an integer 1..MAX_DPS (or None)."""
+    if rtol is not None:
+        if isinstance(rtol, bool) or not isinstance(rtol, (int, float, np.floating, np.integer)) \
+                or not 0 < float(rtol) < 1:
+            raise DomainError(f"rtol must be a number with 0 < rtol < 1, got {rtol!r}")
+    if dps is not None:
+        if isinstance(dps, bool) or not isinstance(dps, (int, np.integer)) or not 1 <= dps <= MAX_DPS:
+            raise DomainError(f"dps must be an integer from 1 to {MAX_DPS}, got {dps!r}")
+
+
 def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0):
     """evaluate() at arrays of arguments: the vectorised float64 export with
     the same error estimate per point; the points where it does not meet
@@ -410,7 +421,7 @@ def _try_model(m, quantity, values, rtol, t0):
         err = float(bound) + 4 * N * EPS * abs(val)
     else:
         digits = int(-math.log10(rtol)) + 5
-        with mpmath.workdps(digits):
+        with workdps(digits):
             val = +mpmath.fsum(m.term_values(values, dps=digits)[:N])
         err = bound
     name = m.model_name(N)
@@ -562,16 +573,16 @@ def _mpmath_path(d, quantity, values, rtol, kappa, t0, notes):
     digits = int(math.ceil(want + 5 + math.log10(max(1.0, min(kappa, 1e300)))))
     digits = max(digits, 20)
     while True:
-        with mpmath.workdps(digits):
+        with workdps(digits):
             v1 = f(*[_as_mpf(values[n]) for n in names])
-        with mpmath.workdps(digits + 10):
+        with workdps(digits + 10):
             v2 = f(*[_as_mpf(values[n]) for n in names])
             err = abs(v2 - v1)
             ok = err <= rtol * abs(v2) / 10 or (v2 == 0 and err == 0)
         if ok:
             note = "; ".join(notes + [f"confirmed against {digits + 10} digits (difference "
                                       f"{mpmath.nstr(err, 3)})"])
-            with mpmath.workdps(digits + 10):
+            with workdps(digits + 10):
                 return Evaluation(quantity, +v2, f"mpmath@{digits}", err, rtol, note=note,
                                   seconds=time.perf_counter() - t0, details={"digits": digits})
         if digits > 5000:
@@ -590,7 +601,7 @@ def _certified(d, quantity, values, rtol, dps, t0):
         cache["arb"] = arb_callable(stable_form(d).expr, syms)
     enc = cache["arb"]([values[s.name] for s in syms], dps=dps)
     lo, hi = enc.lower, enc.upper
-    with mpmath.workdps(dps + 10):
+    with workdps(dps + 10):
         mid = enc.mid
     note = (f"python-flint Arb ball at {enc.prec} bits: a rigorous enclosure of the exact value "
             f"for the inputs as given (floats are exact binary numbers)")

@@ -39,12 +39,13 @@ import scipy.special as sc
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.errors import DomainError
+from ..core.errors import DomainError, LineContactError
 from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
 from .special import MPMATH_FUNCS, NUMPY_FUNCS, mp_elliptic_pi
 from .stable import is_rational_in_symbols, stabilize
+from ..core.precision import workdps
 
 _SCIPY_FUNCS = {
     "_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1,
@@ -57,7 +58,7 @@ def _mp_hyper_vec(*args):
     ap, bq, z = args[1:1 + p], args[1 + p:-1], args[-1]
 
     def one(*vals):
-        with mpmath.workdps(20):
+        with workdps(20):
             return float(mpmath.hyper(vals[:p], vals[p:-1], vals[-1]))
     return np.vectorize(one, otypes=[float])(*ap, *bq, z)
 
@@ -210,7 +211,7 @@ def lambdify_mpmath(expr, args, stable: bool = True, conditions=()):
     >>> import mpmath, sympy as sp
     >>> m = sp.Symbol("m", positive=True)
     >>> f = lambdify_mpmath(sp.elliptic_k(m) - sp.elliptic_e(m), [m])
-    >>> with mpmath.workdps(30):
+    >>> with workdps(30):
     ...     print(f(mpmath.mpf("1e-10")))
     7.85398163426900740744905934376e-11
     """
@@ -249,11 +250,11 @@ def lambdify_mpmath_quad(expr, args, stable: bool = False):
                 m_ = (p_ + q_) / 2
 
                 def left(t, p_=p_):
-                    with mpmath.workdps(extra):
+                    with workdps(extra):
                         return fI(p_ + t, *vals)
 
                 def right(t, q_=q_):
-                    with mpmath.workdps(extra):
+                    with workdps(extra):
                         return fI(q_ - t, *vals)
                 total += mpmath.quad(left, [0, m_ - p_]) + mpmath.quad(right, [0, q_ - m_])
             return +total
@@ -418,7 +419,7 @@ def _mp_confirmed(fmp, args, ratio):
     digits = 40 if not math.isfinite(ratio) else 20 + int(math.ceil(math.log10(ratio)))
     prev = None
     for _ in range(6):
-        with mpmath.workdps(digits):
+        with workdps(digits):
             try:
                 v = fmp(*[mpmath.mpf(t) for t in args])
             except (ValueError, ZeroDivisionError, TypeError):
@@ -476,6 +477,52 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     >>> mpmath.nstr(make_callable(d, "mpmath", dps=25, params={"R": 1, "E_star": 4})(a=1), 25)
     '3.141592653589793238462643'
     """
+    if backend not in ("numpy", "mpmath"):
+        raise LineContactError(f"unknown backend {backend!r}; use 'numpy' or 'mpmath'")
+    return NumericFunction(derivation, backend, dps, dict(params or {}), stable)
+
+
+class NumericFunction:
+    """What :func:`make_callable` returns: ``fn(**values)``, with
+    ``fn.arguments`` (the names) and a docstring naming the formula.
+
+    Pickles (for multiprocessing, disk): its state is the derivation, the
+    backend, ``dps``, the fixed ``params`` and ``stable``; the compiled
+    function is built again on the first call after unpickling.  The mpmath
+    function of a quantity without closed form evaluates the derivation's
+    reference quadrature, a closure that does not pickle: pickling it raises
+    :class:`~linecontact_sym.core.errors.LineContactError` (pickle the contact
+    and export again)."""
+
+    def __init__(self, derivation, backend, dps, params, stable):
+        self.derivation, self.backend, self.dps = derivation, backend, dps
+        self.params, self.stable = params, stable
+        self.arguments = tuple(s.name for s in derivation.variables_all)
+        self.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(self.arguments)}.\n"
+                        f"Formula: {derivation.expr}\nMethod: {derivation.method}")
+        self._fn = compile_callable(derivation, backend, dps, params, stable)
+
+    def __call__(self, **kw):
+        if self._fn is None:
+            self._fn = compile_callable(self.derivation, self.backend, self.dps, self.params, self.stable)
+        return self._fn(**kw)
+
+    def __getstate__(self):
+        if self.backend == "mpmath" and not self.derivation.closed_form:
+            raise LineContactError(f"the mpmath function of {self.derivation.quantity} (no closed form) "
+                                   f"evaluates a reference quadrature that does not pickle; pickle the "
+                                   f"contact and export again")
+        state = dict(self.__dict__)
+        state["_fn"] = None
+        return state
+
+    def __repr__(self):
+        return f"<{self.derivation.quantity} ({self.backend}) of {', '.join(self.arguments)}>"
+
+
+def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=True):
+    """The closure behind a :class:`NumericFunction` (holds no reference to
+    the derivation: the package caches it per derivation, weakly keyed)."""
     params = dict(params or {})
     syms = derivation.variables_all
     names = [s.name for s in syms]
@@ -486,8 +533,6 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
         check_arguments(names, merged, quantity)
         return [merged[n] for n in names]
 
-    if backend not in ("numpy", "mpmath"):
-        raise ValueError(f"unknown backend {backend!r}; use 'numpy' or 'mpmath'")
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
         if stable and _guarded(derivation):
@@ -501,18 +546,15 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
         f = _cached_lambdify(derivation, "mpmath", stable)
 
         def fn(**kw):
-            with mpmath.workdps(dps):
+            with workdps(dps):
                 return +f(*[mpmath.mpf(v) if not isinstance(v, mpmath.mpf) else v for v in collect(kw)])
     else:
         ref = derivation.reference
 
         def fn(**kw):
-            with mpmath.workdps(dps):
+            with workdps(dps):
                 vals = dict(zip(syms, (sp.Float(v, dps) if isinstance(v, mpmath.mpf)
                                        else sp.Float(float(v), 20) if isinstance(v, float)
                                        else to_sympy(v) for v in collect(kw))))
                 return ref(vals, dps)
-    fn.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(names)}.\n"
-                  f"Formula: {derivation.expr}\nMethod: {derivation.method}")
-    fn.arguments = tuple(names)
     return fn

@@ -32,7 +32,7 @@ import sympy as sp
 
 from .cache import IdentityCache
 from .exports import (_fold_constants, _to_scipy_names, cancellation_probe, cancellation_sums,
-                      make_callable, stable_form)
+                      compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
 __all__ = ["ScalarKit", "scalar_kit", "vector_float64", "STEP"]
@@ -142,7 +142,7 @@ def vector_float64(d, names, arrays):
     """Float64 values, condition numbers and cancellation ratios of a
     derivation at arrays of arguments (``names`` order, broadcast):
     ``(values, kappa, cancellation)``."""
-    f = make_callable(d, "numpy")
+    f = compile_callable(d, "numpy")
     point = dict(zip(names, arrays))
     with np.errstate(all="ignore"):
         v = np.asarray(f(**point), dtype=float)

@@ -49,6 +49,7 @@ import mpmath
 import numpy as np
 import scipy.special as sc
 import sympy as sp
+from ..core.precision import workdps
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "np_rf", "np_rd", "np_rg",
            "np_rj", "np_gamma_ratio", "np_hyp2f1c", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
@@ -61,7 +62,7 @@ class _StableFunction(sp.Function):
 
     def _eval_evalf(self, prec):
         dps = max(int(prec * 0.30103) + 1, 15)
-        with mpmath.workdps(dps + 10):
+        with workdps(dps + 10):
             try:
                 args = [mpmath.mpf(sp.N(a_, dps + 10)) for a_ in self.args]
             except TypeError:
@@ -135,7 +136,7 @@ def _mp_hyp2f1c(a_, b_, c_, z, zc):
     """2F1 at z, using the complement zc = 1 - z where z is close to 1."""
     if z > 0.5 and zc >= 0:
         extra = int(-mpmath.log10(zc)) + 5 if zc > 0 else 5
-        with mpmath.workdps(mpmath.mp.dps + max(extra, 5)):
+        with workdps(mpmath.mp.dps + max(extra, 5)):
             zz = 1 - zc
             return +mpmath.hyp2f1(a_, b_, c_, zz)
     return mpmath.hyp2f1(a_, b_, c_, z)
@@ -339,7 +340,7 @@ def np_hyp2f1c(a_, b_, c_, z, zc):
 def _mp_point_hyp2f1c(A, B, C, Zc):
     extra = int(-math.log10(Zc)) + 5 if Zc > 0 else 5
     try:
-        with mpmath.workdps(20 + max(extra, 5)):
+        with workdps(20 + max(extra, 5)):
             zz = 1 - mpmath.mpf(float(Zc))
             return float(mpmath.hyp2f1(float(A), float(B), float(C), zz))
     except (ZeroDivisionError, ValueError, mpmath.libmp.NoConvergence):
