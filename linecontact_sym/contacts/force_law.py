@@ -113,8 +113,14 @@ class ForceLaw:
                     if fallback is None:
                         raise Outside
                     # the closed form may hold on part of the axis only (branch
-                    # cuts): the profile's own quadrature decides the domain
-                    return getattr(fallback, name)(A)
+                    # cuts): the profile's own quadrature decides the domain.
+                    # It is asked at FALLBACK_DPS digits at most: callers that
+                    # raise the precision to confirm a cancelling closed form
+                    # (equilibria.reliable, up to 640 digits) would otherwise
+                    # pay quadratures at hundreds of digits where the profile
+                    # is singular (the exact cylinder at a = R: minutes)
+                    with workdps(min(mpmath.mp.dps, FALLBACK_DPS)):
+                        return +getattr(fallback, name)(A)
             return g
         return cls(guarded(fP, "P"), guarded(fdP, "dP"), breaks, "closed", fallback, expr=P0, conditions=conds)
 
@@ -224,6 +230,11 @@ class ForceLaw:
     def quadrature_law(self) -> "ForceLaw":
         """The same law by the quadrature route (for independent checks)."""
         return getattr(self, "quad", None) or (self if self.mode == "quad" else self.fallback)
+
+
+#: the most digits at which a closed law's quadrature fallback is evaluated
+#: (it decides the domain where the closed form's conditions fail)
+FALLBACK_DPS = 40
 
 
 def to_basic_number(v):
