@@ -198,15 +198,15 @@ def test_caches_are_kept_by_the_numeric_layer_not_in_the_objects():
     derivation alive after its contact is gone."""
     import gc
     import weakref
-    from linecontact_sym.numeric import evaluate as EV
+    from linecontact_sym.numeric import fastpath as FP
     c = lcs.parabola()
     d = c.derivation("force")
     keys_c, keys_d = set(vars(c)), set(vars(d))
     assert c.to_numeric("force")(a=0.5, R=1.0, E_star=2.0) == pytest.approx(math.pi / 8, rel=1e-15)
     r1 = evaluate(c, "force", a=0.5, R=1.0, E_star=2.0)
-    f64 = EV._CACHE.of(d)["f64"]
+    f64 = FP._CACHE.of(d)["kit"]          # the scalar float64 path's compiled form
     r2 = evaluate(c, "force", a=0.25, R=1.0, E_star=2.0)
-    assert EV._CACHE.of(d)["f64"] is f64 and r1.path == r2.path == "float64"
+    assert FP._CACHE.of(d)["kit"] is f64 and r1.path == r2.path == "float64"
     evaluate(c, "force", a=0.5, R=1.0, E_star=2.0, rtol=1e-30)
     assert set(vars(c)) == keys_c and set(vars(d)) == keys_d
     gone = weakref.ref(d)

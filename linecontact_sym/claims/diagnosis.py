@@ -136,9 +136,13 @@ def identify_constant(r):
     """A short exact form of the number ``r`` (an mpf) built from small
     rationals, pi and square roots, or None.
 
-    >>> identify_constant(mpmath.mpf(2)), identify_constant(-mpmath.pi / 2)
+    ``r`` must carry about 40 digits (the match is to 35):
+
+    >>> with mpmath.workdps(50):
+    ...     identify_constant(mpmath.mpf(2)), identify_constant(-mpmath.pi / 2)
     (2, -pi/2)
-    >>> identify_constant(mpmath.sqrt(2) * mpmath.pi) is not None
+    >>> with mpmath.workdps(50):
+    ...     identify_constant(mpmath.sqrt(2) * mpmath.pi) is not None
     True
     """
     with workdps(50):

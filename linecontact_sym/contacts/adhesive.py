@@ -79,7 +79,6 @@ class AdhesiveLineContact(Contact):
     """
 
     kind = "adhesive"
-    _transient = ("_cache", "_laws")
 
     force = Quantity("P(a)", "Eq. (33)", "JKR load per unit length P0(a) - Phat (negative = tensile)",
                      aliases=("adhesive_force",), latex=r"P_{\mathrm{JKR}}(a)")

@@ -29,8 +29,10 @@ import math
 import numpy as np
 import sympy as sp
 
+from ..core import symbols as S
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError
 from ..method.derivation import Derivation
+from ..numeric.special import NUMPY_LOGIC
 from ..parsing import to_sympy
 from ..method.verification import holds
 
@@ -139,15 +141,14 @@ class Contact:
     #: pickled (a contact pickles as its definition; its derivations come back
     #: from the derivation store, :mod:`~linecontact_sym.method.store`, in
     #: memory or on disk) and not shared by copies
-    _transient = ("_cache",)
+    _transient = ("_cache", "_laws")   # _laws: the adhesive contact's numeric force laws
 
     def __getstate__(self):
         return {k: v for k, v in self.__dict__.items() if k not in self._transient}
 
     def __setstate__(self, state):
         self.__dict__.update(state)
-        for k in self._transient:
-            self.__dict__[k] = {}
+        self.__dict__.update({k: {} for k in self._transient})
 
     def __copy__(self):
         """A copy with its own caches (holding what was derived so far):
@@ -224,8 +225,13 @@ class Contact:
         if key not in cache:
             d = self.derivation(name)
             known = {s.name: s for s in d.variables_all}
-            conds = tuple(c for c in d.conditions if c not in (sp.true,))
-            fn = sp.lambdify(list(known.values()), sp.And(*conds), "numpy") if conds else None
+            # relations between x and a alone are the quantity's domain (inside:
+            # |x| <= a, outside: |x| >= a, edges included), checked above: a
+            # closed form stated for x < a still holds at the edge as a limit
+            xa = {S.x, S.a}
+            conds = tuple(c for c in d.conditions if c not in (sp.true,)
+                          and not (q_domain_has_x(self, name) and c.free_symbols <= xa))
+            fn = sp.lambdify(list(known.values()), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
             cache[key] = (known, conds, fn)
         return cache[key]
 
@@ -312,6 +318,11 @@ class Contact:
         quantities."""
         names = quantities or [n for n, q in type(self).quantities().items() if not q.method]
         return "\n".join(self.derivation(q).summary() for q in names)
+
+
+def q_domain_has_x(contact, name) -> bool:
+    """Whether the quantity ``name`` has an x domain ('inside'/'outside')."""
+    return type(contact).quantities()[name].domain in ("inside", "outside")
 
 
 def _abs(v):

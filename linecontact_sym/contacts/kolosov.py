@@ -222,7 +222,7 @@ def symbolic_stresses(G, H=sp.S.Zero):
 
     def im(e):
         return sp.im(e, evaluate=False) if e != 0 else sp.S.Zero
-    return kolosov_stresses(G.xreplace(at), dG.xreplace(at), sp.S(H).xreplace(at), sp.S(dH).xreplace(at),
+    return kolosov_stresses(G.xreplace(at), dG.xreplace(at), sp.sympify(H, strict=True).xreplace(at), sp.sympify(dH, strict=True).xreplace(at),
                             S.z, re, im, sp.pi)
 
 

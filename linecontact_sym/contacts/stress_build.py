@@ -12,7 +12,7 @@ import numpy as np
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.conversion import rational
+from ..core.conversion import nsimplify_basic, rational
 from ..method.derivation import Derivation, fallback_step
 from ..method.rules import Step
 from ..method.verification import verify_many
@@ -202,7 +202,7 @@ def _potential(sf, vals, a_value):
                                  sp.lambdify(S.zeta, sp.diff(G, S.zeta), "numpy"), float(a_value))
     from ..numeric.exports import lambdify_numpy
     D = sf._density().xreplace({k: v for k, v in at.items() if k != S.a})
-    bps = [sp.nsimplify(b.xreplace(at)) for b in density_breakpoints(D)]
+    bps = [nsimplify_basic(b.xreplace(at)) for b in density_breakpoints(D)]
     near = {float(b): (_offset_density(D, b, 1), _offset_density(D, b, -1)) for b in bps}
     dens = lambdify_numpy(D.subs(S.a, t), [t])
     return F.PunchPotential(dens, float(a_value), [float(b) for b in bps], near=near)

@@ -9,14 +9,13 @@ from dataclasses import dataclass, field
 
 import mpmath
 import numpy as np
-import scipy.special
 import sympy as sp
 
 from ..core import symbols as S
 from ..core.conversion import exact_number, to_mpf
 from ..core.errors import DomainError, GrossSlidingError, LineContactError
 from ..core.roots import root_in_log
-from ..numeric.exports import make_callable
+from ..numeric.exports import lambdify_numpy, make_callable
 from ..parsing import to_sympy
 from . import tangential_reference as ref
 from .equilibria import half_width_at
@@ -96,8 +95,7 @@ def _float_fn(contact, name, fixed):
     d = contact.derivation(name)
     if d.closed_form:
         params = {s: sp.Float(float(fixed[s.name]), 20) for s in contact.variables if s.name in fixed}
-        special = {"elliptic_k": scipy.special.ellipk, "elliptic_e": scipy.special.ellipe}   # parameter m
-        fn = sp.lambdify(S.a, d.expr.xreplace(params), modules=[special, "scipy", "numpy"])
+        fn = lambdify_numpy(d.expr.xreplace(params), [S.a], stable=False)   # K, E, Pi as scipy.special
     else:
         exp = make_callable(d, "numpy", 15, {k: v for k, v in fixed.items() if k != "mu"}, stable=False)
         fn = lambda tv: exp(a=tv)  # noqa: E731

@@ -83,7 +83,7 @@ def _root(e, sample):
 
 
 def _num(e, sample) -> float:
-    v = complex(sp.N(sp.sympify(e).xreplace(sample), 30))
+    v = complex(sp.N(sp.sympify(e, strict=True).xreplace(sample), 30))
     if abs(v.imag) > 1e-20 * max(1.0, abs(v.real)):
         raise NotReducible(f"{e} is not real in the region")
     return v.real
@@ -309,10 +309,10 @@ def reduce_integral(h, t, a, lo, hi, sample, conditions=None):
     class of integrands handled.  A list ``conditions`` receives the
     relations under which the result is real (each radicand A - B t^2 > 0
     up to t = hi: a < R for the circle)."""
-    hS = sp.sympify(h).xreplace({t: a * _S})
+    hS = sp.sympify(h, strict=True).xreplace({t: a * _S})
     hS, m, rads = _radicals(hS, sample)
     if conditions is not None:
-        s_hi = sp.sympify(hi) / a
+        s_hi = sp.sympify(hi, strict=True) / a
         for A, B in rads:
             lhs = B * s_hi**2
             c = sp.Lt(sp.sqrt(lhs), sp.sqrt(A)) if lhs.is_positive and A.is_positive \

@@ -111,6 +111,24 @@ def _sanitize(expr, params):
     return expr
 
 
+
+def _profile_numeric_fns(self, values):
+    """(f, f') of x as mpmath callables at these parameter values (the
+    profile's expression compiled once with the parameters as arguments)."""
+    if "_near_fns" not in self.__dict__:
+        args = [S.x] + list(self.params)
+        try:
+            self._near_fns = (sp.lambdify(args, self.expr, "mpmath"),
+                              sp.lambdify(args, sp.diff(self.expr, S.x), "mpmath"))
+        except Exception:  # pragma: no cover - lambdify of exotic functions
+            self._near_fns = None
+    if self._near_fns is None:
+        return None
+    pv = [mpmath.mpf(values[p]) if isinstance(values[p], (int, float)) else mpmath.mpf(sp.N(values[p], 30))
+          for p in self.params]
+    return (lambda xv: self._near_fns[0](xv, *pv)), (lambda xv: self._near_fns[1](xv, *pv))
+
+
 class Profile:
     """A validated symmetric profile f(x), x >= 0.
 
@@ -201,25 +219,10 @@ class Profile:
         return True
 
     # ------------------------------------------------------------------ admissibility near x = 0
-    def __getstate__(self):
-        """Pickled without the compiled functions (built again on use)."""
+    def __getstate__(self):  # pickled without the compiled functions (built again on use)
         return {k: v for k, v in self.__dict__.items() if k != "_near_fns"}
 
-    def _numeric_fns(self, values):
-        """(f, f') of x as mpmath callables at these parameter values (the
-        profile's expression compiled once with the parameters as arguments)."""
-        if "_near_fns" not in self.__dict__:
-            args = [S.x] + list(self.params)
-            try:
-                self._near_fns = (sp.lambdify(args, self.expr, "mpmath"),
-                                  sp.lambdify(args, sp.diff(self.expr, S.x), "mpmath"))
-            except Exception:  # pragma: no cover - lambdify of exotic functions
-                self._near_fns = None
-        if self._near_fns is None:
-            return None
-        pv = [mpmath.mpf(values[p]) if isinstance(values[p], (int, float)) else mpmath.mpf(sp.N(values[p], 30))
-              for p in self.params]
-        return (lambda xv: self._near_fns[0](xv, *pv)), (lambda xv: self._near_fns[1](xv, *pv))
+    _numeric_fns = _profile_numeric_fns
 
     def rising_on(self, values, a, n: int = 24):
         """None if f is real and f' >= 0 at n points evenly spread over (0, a]

@@ -105,7 +105,7 @@ class _Regions:
 
 
 def _integral(h, lo, hi, sample, conds):
-    h = sp.cancel(sp.sympify(h))
+    h = sp.cancel(sp.sympify(h, strict=True))
     if h == 0:
         return sp.S.Zero
     try:

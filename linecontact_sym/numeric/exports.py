@@ -45,6 +45,9 @@ from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
 from .special import MPMATH_FUNCS, NUMPY_FUNCS, mp_elliptic_pi
 from .stable import is_rational_in_symbols, stabilize
+from .stable_elliptic import EllipticPiToCarlson
+
+_TO_CARLSON = EllipticPiToCarlson()
 from ..core.precision import workdps
 
 _SCIPY_FUNCS = {
@@ -129,6 +132,8 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
     original = expr if original is None else original
     if stable:
         expr = stabilize(expr, conditions).expr
+    elif _TO_CARLSON.applies(expr):   # SciPy has no Pi(n|m), F(phi|m), E(phi|m): Carlson forms
+        expr = _TO_CARLSON.apply(expr)
     quads = {}
     if expr.has(sp.Integral):
         def to_quad(I):
@@ -186,7 +191,7 @@ def _removable_limit(expr, sym):
         lim = run_with_budget(sp.limit, expr, sym, 0, "+", seconds=10.0)
     except Exception:
         return None
-    if lim.has(sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Limit) or sym in lim.free_symbols:
+    if lim.has(sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Limit, sp.AccumBounds) or sym in lim.free_symbols:
         return None
     return lim
 

@@ -43,6 +43,7 @@ True
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import mpmath
@@ -437,9 +438,29 @@ def np_rg(x, y, z):
     return sc.elliprg(x, y, z)
 
 
+class _BroadcastLogical:
+    """``numpy.logical_and`` / ``logical_or`` for lambdified code: SymPy
+    prints ``And(c1, c2)`` as ``logical_and.reduce((c1, c2))``, which NumPy
+    refuses when one condition is an array and another a scalar (a
+    Piecewise in x with a condition on the parameters only); this ``reduce``
+    broadcasts."""
+
+    def __init__(self, ufunc):
+        self.ufunc = ufunc
+
+    def __call__(self, *args, **kw):
+        return self.ufunc(*args, **kw)
+
+    def reduce(self, operands, axis=0, **kw):
+        return functools.reduce(self.ufunc, operands)
+
+
+#: the logical operators of every NumPy lambdify of the package
+NUMPY_LOGIC = {"logical_and": _BroadcastLogical(np.logical_and), "logical_or": _BroadcastLogical(np.logical_or)}
+
 NUMPY_FUNCS = {"carlson_rf": np_rf, "carlson_rd": np_rd, "carlson_rg": np_rg, "carlson_rj": np_rj,
                "gamma_ratio": np_gamma_ratio,
-               "hyp2f1c": np_hyp2f1c}
+               "hyp2f1c": np_hyp2f1c, **NUMPY_LOGIC}
 MPMATH_FUNCS = {"carlson_rf": _mp_rf, "carlson_rd": _mp_rd, "carlson_rg": _mp_rg, "carlson_rj": _mp_rj,
                 "gamma_ratio": _mp_gamma_ratio,
                 "hyp2f1c": _mp_hyp2f1c}
