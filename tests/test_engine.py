@@ -207,7 +207,7 @@ def test_inadmissible_profile_detected():
     """A cosine bump decreases beyond x = pi R: no compact contact there; and
     already at a = R the bump's far side comes down onto the deformed surface
     (gap < 0 at x = 5a, past the crest), a second contact."""
-    cont = lcs.LineContact(R * (1 - sp.cos(x / R)))
+    cont = lcs.LineContact(R * (1 - sp.cos(x / R)), budget=3)   # its gap has no closed form: 3 s of trying
     assert cont.check_admissible(a=sp.Rational(3, 10), R=1, E_star=1)
     with pytest.raises(lcs.InadmissibleProfileError, match="negative gap"):
         cont.check_admissible(a=1, R=1, E_star=1)
