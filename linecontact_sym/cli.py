@@ -29,6 +29,7 @@ from __future__ import annotations
 import argparse
 import itertools
 import json
+import math
 import os
 import re
 import sys
@@ -162,6 +163,8 @@ def cmd_derive(args):
     prof = prof.xreplace(values)
     c = _contact(args, prof)
     quantities = [q.strip() for q in args.quantities.split(",") if q.strip()]
+    if not quantities:
+        raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
     known = _expression_quantities("frictionless")
     for q in quantities:
         if q not in known:
@@ -224,6 +227,10 @@ def _expression_quantities(kind):
     return [n for n, q in contact_kind(kind).quantities().items() if not q.method]
 
 
+#: the most points one ``eval`` call evaluates (the product of its --at grids)
+MAX_EVAL_POINTS = 10000
+
+
 def cmd_eval(args):
     import mpmath
     from .parsing import parse_number_list
@@ -238,6 +245,10 @@ def cmd_eval(args):
             raise LineContactError(f"--at expects NAME=V1,V2,..., got {item!r}")
         name, vs = item.split("=", 1)
         grids[name.strip()] = parse_number_list(vs, where=f"--at {name.strip()}")
+    total = math.prod(len(v) for v in grids.values())
+    if total > MAX_EVAL_POINTS:
+        raise LineContactError(f"--at spans {total} points (the product of the grids); at most "
+                               f"{MAX_EVAL_POINTS} per call")
     c = _contact(args, prof)
     names = list(grids)
     fixed = {k.name: v for k, v in values.items()}

@@ -235,12 +235,18 @@ class _Validator(ast.NodeVisitor):
             self.fail(f"keyword arguments are not allowed (in the call of {name})", node)
         if name in _FACTORIAL_LIKE:
             for arg in node.args:
+                inner = [n.func.id for n in ast.walk(arg) if isinstance(n, ast.Call)
+                         and isinstance(n.func, ast.Name) and n.func.id in _FACTORIAL_LIKE]
+                if inner and _is_constant(arg):   # gamma(gamma(20)) = gamma(19!): not bounded by 20
+                    self.fail(f"{name}(...) of a constant containing {inner[0]}(...) would be "
+                              f"astronomically long in exact arithmetic; use loggamma or a float", node)
                 if _is_constant(arg) and _magnitude(arg) > MAX_EXACT_ARGUMENT:
                     self.fail(f"{name}(...) of a constant larger than {MAX_EXACT_ARGUMENT} would be "
                               f"astronomically long in exact arithmetic; use loggamma or a float", node)
         if name == "Derivative":
             for arg in node.args[1:]:
-                orders = arg.elts[1:] if isinstance(arg, ast.Tuple) else []
+                # Derivative(f, (x, n)) and Derivative(f, x, n): every order bounded
+                orders = arg.elts[1:] if isinstance(arg, ast.Tuple) else [] if isinstance(arg, ast.Name) else [arg]
                 for o in orders:
                     if not _is_constant(o) or _magnitude(o) > MAX_DERIVATIVE_ORDER:
                         self.fail(f"derivative order must be a number <= {MAX_DERIVATIVE_ORDER}", node)
@@ -537,13 +543,19 @@ def parse_number_list(text, where: str = "") -> list:
     if text.count(":") == 2 and "," not in text:
         lo, hi, k = text.split(":")
         lo, hi = parse_number(lo, where), parse_number(hi, where)
-        k = int(k)
+        try:
+            k = int(k)
+        except ValueError:
+            raise ClaimError(f"{_where(where)}number of points {k!r} is not an integer (lo:hi:count)") from None
         if k < 1 or k > 10000:
             raise ClaimError(f"{_where(where)}number of points {k} out of range 1..10000")
         if k == 1:
             return [lo]
         return [lo + (hi - lo) * sp.Rational(i, k - 1) for i in range(k)]
-    return [parse_number(p, where) for p in _split_top(text)]
+    out = [parse_number(p, where) for p in _split_top(text) if p.strip()]
+    if not out:
+        raise ClaimError(f"{_where(where)}no value given (a list such as 0.1,0.2 or lo:hi:count)")
+    return out
 
 
 def _is_decimal(text):
@@ -591,6 +603,8 @@ def to_sympy(value, where: str = "") -> sp.Basic:
     this instead of ``sympy.sympify``, which evaluates strings."""
     if isinstance(value, str):
         return parse_expr(value, where=where)
+    if isinstance(value, float) and not math.isfinite(value):
+        raise ClaimError(f"{where + ': ' if where else ''}{value} is not a finite number")
     try:
         return to_basic(value)
     except LineContactError as exc:

@@ -7,6 +7,7 @@ import time
 from pathlib import Path
 
 import pytest
+import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import ClaimError, LineContactError
@@ -203,3 +204,73 @@ def test_profiles_refused_with_a_reason(make, err, match):
 
 def test_the_profile_x_is_a_profile():
     assert lcs.LineContact(lcs.x).force == lcs.E_star * lcs.a
+
+
+# ------------------------------------------------- second adversarial run (benchmarks/adversarial.py)
+@pytest.mark.parametrize("text", ["gamma(gamma(20))", "binomial(gamma(30), 3)", "Derivative(sin(x), x, 10**9)"])
+def test_parser_bounds_nested_and_bare_orders(text):
+    from linecontact_sym.parsing import parse_expr
+    with pytest.raises(lcs.ClaimError, match="astronomically|derivative order"):
+        parse_expr(text)
+
+
+def test_parser_values_and_lists():
+    from linecontact_sym.parsing import parse_expr, parse_number_list, to_sympy
+    assert parse_expr("Derivative(sin(x), x, 2)") == sp.Derivative(sp.sin(lcs.x), (lcs.x, 2))
+    with pytest.raises(lcs.ClaimError, match="finite"):
+        to_sympy(float("nan"))
+    with pytest.raises(lcs.ClaimError, match="not an integer"):
+        parse_number_list("1:2:abc")
+    with pytest.raises(lcs.ClaimError, match="no value"):
+        parse_number_list("")
+    assert parse_number_list("0.1:0.3:3") == [sp.Rational(1, 10), sp.Rational(1, 5), sp.Rational(3, 10)]
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["eval", "x**2/(2*R)", "pressure", "--at", "a=0.1:1:10000", "x=0.1:1:10000"], "points"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=", "--set", "R=1", "E_star=1"], "no value"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1:2:abc"], "not an integer"),
+    (["derive", "x**2/(2*R)", "--quantities", ""], "names no quantity"),
+    (["check", "--profile", "x**2/(2*R)", "--force", "pi*E_star*a**2/(4*R)", "--range", "R=-1:1"], "positive"),
+])
+def test_cli_refusals_exit_2(argv, words, capsys):
+    from linecontact_sym.cli import main
+    assert main(argv) == 2
+    assert words in capsys.readouterr().err
+
+
+def test_claims_file_refusals(tmp_path):
+    from linecontact_sym.claims import load_paper
+    p = tmp_path / "neg.toml"
+    p.write_text('[[claims]]\nlabel = "x"\nquantity = "force"\nprofile = "x**2/(2*R)"\n'
+                 'formula = "pi*E_star*a**2/(4*R)"\nspecial = { R = ["-1"] }\n')
+    with pytest.raises(lcs.ClaimError, match="positive"):
+        load_paper(str(p))
+    deep = tmp_path / "deep.toml"
+    deep.write_text("a = " + "[" * 3000 + "]" * 3000 + "\n")
+    with pytest.raises(lcs.ClaimError, match="TOML"):
+        load_paper(str(deep))
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: lcs.LineContact(sp.floor(lcs.x)), "floor"),
+    (lambda: lcs.LineContact(sp.Piecewise((lcs.x**2, lcs.x > 1))), "no value"),
+    (lambda: lcs.parabola(R="1/0"), "undefined"),
+    (lambda: lcs.parabola(R=-1), "positive"),
+    (lambda: lcs.LineContact(lcs.x**2, params=5), "params"),
+])
+def test_profile_refusals(make, match):
+    with pytest.raises(lcs.LineContactError, match=match):
+        make()
+
+
+def test_singular_points_and_negative_loads_are_domain_errors():
+    w = lcs.wedge()
+    with pytest.raises(lcs.DomainError, match="not finite|singular"):
+        w.evaluate("pressure", x=0, a=1.0, theta=0.3, E_star=1.0)
+    with pytest.raises(lcs.DomainError, match="not finite|singular"):
+        w.to_numeric("pressure", backend="mpmath")(x=0, a=1.0, theta=0.3, E_star=1.0)
+    with pytest.raises(lcs.DomainError, match="P >= 0"):
+        lcs.parabola().evaluate("half_width", P=-1, R=1.0, E_star=1.0)
+    with pytest.raises(lcs.DomainError, match="keyword arguments only"):
+        lcs.parabola().to_numeric("force")(0.5, 1.0, 1.0)

@@ -203,3 +203,42 @@ def test_copy_does_not_share_later_derivations():
     assert c2._cache is not c._cache and "force" in c2._cache
     c2.derivation("pressure")
     assert "pressure" not in c._cache
+
+
+# ---------------------------------------------------------------- exports and settings (adversarial run)
+@pytest.mark.parametrize("vals", [dict(a=0.5, R=1.0, E_star=-1.0), dict(a=-0.5, R=1.0, E_star=1.0),
+                                  dict(a=float("nan"), R=1.0, E_star=1.0), dict(a=0.5, R=0.0, E_star=1.0),
+                                  dict(a=[0.5, 0.2], R=1.0, E_star=[1.0, -1.0])])
+@pytest.mark.parametrize("backend", ["numpy", "mpmath"])
+def test_exports_check_the_domain(vals, backend):
+    """The exports of to_numeric pass the contact's domain check (before: NaN,
+    negative forces, ZeroDivisionError); check=False keeps the raw export."""
+    c = lcs.parabola()
+    if backend == "mpmath" and isinstance(vals["a"], list):
+        vals = dict(vals, a=0.5, E_star=-1.0)
+    with pytest.raises(DomainError):
+        c.to_numeric("force", backend=backend)(**vals)
+    assert c.to_numeric("force", backend="numpy")(a=0.5, R=1.0, E_star=2.0) == pytest.approx(math.pi / 8, rel=1e-15)
+
+
+def test_exports_outside_the_contact_raise():
+    c = lcs.parabola()
+    with pytest.raises(DomainError, match="outside the contact"):
+        c.to_numeric("pressure")(a=1.0, x=2.0, R=1.0, E_star=1.0)
+    raw = c.to_numeric("pressure", check=False)(a=1.0, x=2.0, R=1.0, E_star=1.0)
+    assert math.isnan(raw)
+
+
+@pytest.mark.parametrize("dps", [0, -5, 1.5, True, 5000, "30", None, float("nan")])
+def test_dps_checked_everywhere(dps):
+    c = lcs.parabola()
+    with pytest.raises(DomainError, match="dps must be an integer"):
+        c.evaluate_at("force", dps=dps, a=0.5, R=1, E_star=1)
+    with pytest.raises(DomainError, match="dps must be an integer"):
+        c.to_numeric("force", backend="mpmath", dps=dps)
+
+
+@pytest.mark.parametrize("points", [0, -1, "5", True, 10**9])
+def test_points_checked(points):
+    with pytest.raises(lcs.ProfileError, match="points must be an integer"):
+        lcs.LineContact(lcs.x**2 / (2 * lcs.R), points=points)

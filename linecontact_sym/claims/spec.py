@@ -92,7 +92,7 @@ from sympy.core.function import AppliedUndef
 from ..core import symbols as S
 from ..contacts.base import qualified_quantities
 from ..core.errors import ClaimError
-from ..parsing import declare_symbols, parse_expr
+from ..parsing import SYMBOLS, declare_symbols, parse_expr
 from .fields import _names, _num, _parse_range, _text, _typed, _w, read_text_file
 from ..views.plots import VALUE_SYMBOLS
 
@@ -286,6 +286,8 @@ def load_paper(source) -> Paper:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ClaimError(f"{path}: not valid TOML: {exc}") from None
+    except RecursionError:
+        raise ClaimError(f"{path}: not a claims file: its TOML nests too deeply") from None
     return paper_from_dict(data, str(path))
 
 
@@ -366,6 +368,18 @@ def printed_variants(text: str) -> list:
             last = m.end()
         out.append("".join(pieces) + text[last:])
     return out
+
+
+def _sign_ok(name, value, syms, where):
+    """A sampling range or special value of a symbol declared positive must be
+    > 0 (the work of adhesion gamma: >= 0); x may have any sign."""
+    sym = syms.get(name) or SYMBOLS.get(name)
+    if sym is None or not sym.is_positive or name == "x":
+        return
+    v = float(value)
+    if not (v > 0 or (name == "gamma" and v == 0)):
+        raise ClaimError(f"{where}: {name} is a positive quantity; got {value} (sampling there would "
+                         f"check the claim outside its domain)")
 
 
 def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_shown=None,
@@ -467,6 +481,11 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
         if not isinstance(vals, list):
             vals = [vals]
         special[k] = [_num(v, W(f"special.{k}")) for v in vals]
+    for k, (lo, _hi) in table.items():
+        _sign_ok(k, lo, syms, W(f"ranges.{k}"))
+    for k, vals in special.items():
+        for v in vals:
+            _sign_ok(k, v, syms, W(f"special.{k}"))
     pts = cd.get("points", 6)
     if isinstance(pts, bool) or not isinstance(pts, int) or not 1 <= pts <= 50:
         raise ClaimError(f"{W('points')}: expected an integer 1..50")

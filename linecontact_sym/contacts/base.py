@@ -22,6 +22,7 @@ checker and the LaTeX/report views.  A new physical effect is a new subclass
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import math
@@ -30,6 +31,7 @@ import numpy as np
 import sympy as sp
 
 from ..core import symbols as S
+from ..core.precision import checked_dps
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError
 from ..method.derivation import Derivation
 from ..numeric.special import NUMPY_LOGIC
@@ -57,6 +59,8 @@ class Quantity:
         method     True: the attribute is a method (``c.half_width(P)``) that
                    calls ``_<name>``; the registry entry and ``_derive_<name>``
                    serve the symbolic form
+        nonnegative  argument names that must be >= 0 here though their symbol
+                   is not declared so (the load P of a frictionless contact)
     """
 
     symbol: str
@@ -67,6 +71,7 @@ class Quantity:
     latex: str = ""
     aliases: tuple = ()
     method: bool = False
+    nonnegative: tuple = ()
     name: str = field(default="", compare=False)
 
     def __set_name__(self, owner, name):
@@ -195,6 +200,9 @@ class Contact:
             raise DomainError(f"{name} takes no value named {', '.join(map(repr, unknown))}; "
                               f"it takes {', '.join(sorted(known)) or 'none'}")
         vals = {k: _checked_value(k, v, known.get(k)) for k, v in values.items()}
+        for k in q.nonnegative:
+            if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
+                raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
         self._check_admissible(vals)
         if "x" in vals and "a" in vals and q.domain != "any":
             xv, av = _abs(vals["x"]), vals["a"]
@@ -282,22 +290,35 @@ class Contact:
     # ----------------------------------------------------------- numbers
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
         """One high-precision value (``dps`` digits) with the domain checked."""
+        checked_dps(dps)
         values = self.check_domain(quantity, values)
         return self.derivation(quantity).evalf(dps=dps, **values)
 
-    def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, **params):
+    def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, check: bool = True, **params):
         """A callable of the quantity: ``fn(a=..., x=..., E_star=..., R=...)``;
         ``backend='numpy'`` (vectorised float64, stable form) or ``'mpmath'``
-        (``dps`` digits).  Keywords given here are fixed once."""
+        (``dps`` digits).  Keywords given here are fixed once.  ``check``
+        (default True): every call passes the contact's domain check
+        (:meth:`check_domain`, arrays elementwise) and raises
+        :class:`~linecontact_sym.core.errors.DomainError` outside it;
+        ``check=False``: no check (a few microseconds less per call), NaN or
+        complex values outside the domain."""
         from ..numeric.exports import make_callable
-        return make_callable(self.derivation(quantity), backend, dps, params)
+        checked_dps(dps)
+        name = self.resolve(quantity)
+        return make_callable(self.derivation(name), backend, dps, params,
+                             domain=functools.partial(self.check_domain, name) if check else None)
 
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
         """The cheapest evaluation that meets ``rtol``: float64, mpmath at a
         sufficient precision, a cheaper model with its error bound, or with
         ``certified=True`` an Arb ball; see :mod:`linecontact_sym.numeric.evaluate`."""
         from ..numeric.evaluate import evaluate
-        return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
+        try:
+            return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
+        except (ZeroDivisionError, OverflowError) as exc:
+            raise DomainError(f"{quantity} is not finite at {values}: a singular point of its formula "
+                              f"({type(exc).__name__})") from None
 
     def plot(self, what: str = "force", **kw):
         """A matplotlib figure of the contact in the literature's normalised

@@ -6,31 +6,47 @@ from __future__ import annotations
 import sympy as sp
 
 from ..core import symbols as S
+from ..core.errors import LineContactError, ProfileError
+from ..parsing import to_sympy
 from .frictionless import LineContact
+
+
+def _param(value, name):
+    """A catalogue parameter: a symbol or a number > 0 (text through the
+    whitelisted parser); anything else raises :class:`ProfileError`."""
+    try:
+        v = to_sympy(value, where=name)
+    except LineContactError as exc:
+        raise ProfileError(f"{name}: {exc}") from None
+    if v.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or (v.is_number and not v.is_positive):
+        raise ProfileError(f"{name} must be positive (a symbol or a number > 0), got {value!r}")
+    return v
 
 
 def parabola_profile(R=S.R):
     """f = x**2/(2R), Eq. (13)."""
-    return S.x**2 / (2 * R)
+    return S.x**2 / (2 * _param(R, "R"))
 
 
 def power_law_profile(c=S.c, n=S.n):
     """f = c_n |x|**n, Eq. (15)."""
-    return c * S.x**n
+    return _param(c, "c") * S.x**_param(n, "n")
 
 
 def wedge_profile(theta=S.theta):
     """f = |x| tan(theta), Eq. (18)."""
-    return S.x * sp.tan(theta)
+    return S.x * sp.tan(_param(theta, "theta"))
 
 
 def worn_cylinder_profile(R=S.R, b=S.b):
     """Cylinder with a flat of half-width b, Eq. (21)."""
+    R, b = _param(R, "R"), _param(b, "b")
     return sp.Piecewise((0, S.x < b), ((S.x**2 - b**2) / (2 * R), True))
 
 
 def exact_cylinder_profile(R=S.R):
     """f = R - sqrt(R**2 - x**2), Eq. (24)."""
+    R = _param(R, "R")
     return R - sp.sqrt(R**2 - S.x**2)
 
 

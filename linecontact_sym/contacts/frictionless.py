@@ -4,6 +4,7 @@ of :mod:`.base` and derived by the engine from the profile."""
 from __future__ import annotations
 
 import dataclasses
+import numbers
 import time
 
 import mpmath
@@ -12,7 +13,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.budget import DEFAULT_BUDGET, checked_budget
 from ..core.conversion import to_mpf
-from ..core.errors import DomainError
+from ..core.errors import DomainError, ProfileError
 from ..method import transforms as T
 from ..method.derivation import Derivation, derive, fallback_step
 from ..method.profile import Profile
@@ -70,13 +71,16 @@ class LineContact(Contact):
     stiffness = Quantity("dP/da", "", "contact stiffness: the slope of the force law, load per unit length "
                          "per unit half-width", arguments=("a",), latex=r"\frac{dP}{da}")
     half_width = Quantity("a(P)", "", "contact half-width at the load P (the inverse of the force law)",
-                          arguments=("P",), method=True, latex="a(P)")
+                          arguments=("P",), method=True, latex="a(P)", nonnegative=("P",))
 
     def __init__(self, profile, params=None, name: str | None = None,
                  budget: float = DEFAULT_BUDGET, verify: bool = True,
                  points: int = 5, digits: int = REQUIRED_DIGITS):
         self.profile = profile if isinstance(profile, Profile) else Profile(profile, params, name)
         self.budget = checked_budget(budget)
+        for what, v, hi in (("points", points, 1000), ("digits", digits, 100)):
+            if isinstance(v, bool) or not isinstance(v, numbers.Integral) or not 1 <= v <= hi:
+                raise ProfileError(f"{what} must be an integer from 1 to {hi}, got {v!r}")
         self.verify = verify
         self.points = points
         self.digits = digits

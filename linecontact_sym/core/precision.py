@@ -30,10 +30,21 @@ from contextlib import contextmanager
 
 import mpmath
 
+from .errors import DomainError
+
 #: the most significant digits a user may ask for (``evaluate(dps=...)``, ``--dps``)
 MAX_DPS = 1000
 
 _LOCK = threading.RLock()
+
+
+def checked_dps(dps) -> int:
+    """``dps`` as a user gives it: an integer from 1 to :data:`MAX_DPS`;
+    anything else raises :class:`~linecontact_sym.core.errors.DomainError`."""
+    import numbers
+    if isinstance(dps, bool) or not isinstance(dps, numbers.Integral) or not 1 <= dps <= MAX_DPS:
+        raise DomainError(f"dps must be an integer from 1 to {MAX_DPS}, got {dps!r}")
+    return int(dps)
 
 
 def _reinit_after_fork():
@@ -66,4 +77,4 @@ def extradps(n: int):
         yield
 
 
-__all__ = ["workdps", "workprec", "extradps", "MAX_DPS"]
+__all__ = ["workdps", "workprec", "extradps", "MAX_DPS", "checked_dps"]

@@ -73,8 +73,21 @@ def expose_kinks(expr):
     return sp.piecewise_fold(expr)
 
 
+def _uncovered(pw):
+    """An x in [0, 5] (other symbols 1) where no condition of ``pw`` holds, or None."""
+    ones = {s: 1 for s in pw.free_symbols if s.name != "x"}
+    conds = [c.xreplace(ones) for _, c in pw.args]
+    for k in range(51):
+        xv = sp.Rational(k, 10)
+        if not any(c.xreplace({s: xv for s in c.free_symbols}) == sp.true for c in conds):
+            return xv
+    return None
+
+
 def _sanitize(expr, params):
     """Turn user input into a SymPy expression in the standard ``x``."""
+    if params is not None and not isinstance(params, (dict, list, tuple, set, frozenset)):
+        raise ProfileError(f"params must be a list of symbols or a dict symbol -> (low, high), got {params!r}")
     if isinstance(expr, str):
         raise ProfileError(
             "the profile is a string; strings are not evaluated here. Pass a SymPy "
@@ -103,6 +116,14 @@ def _sanitize(expr, params):
             raise ProfileError(f"the profile holds a derivative of order {order} > {MAX_DERIVATIVE_ORDER}")
     if expr.has(sp.Derivative):
         expr = expr.doit()
+    jumps = [f for f in (sp.floor, sp.ceiling, sp.frac, sp.DiracDelta) if expr.has(f)]
+    if jumps:
+        raise InadmissibleProfileError(f"the profile {expr} holds {jumps[0].__name__}(...): a profile with jumps "
+                                       f"(or a delta) has no contact solution of this kind; write a continuous f(x)")
+    for pw in expr.atoms(sp.Piecewise):
+        if pw.args[-1].cond is not sp.true and _uncovered(pw) is not None:
+            raise ProfileError(f"the profile's Piecewise {pw} has no value where none of its conditions holds "
+                               f"(x = {_uncovered(pw)}, parameters 1); end it with (expr, True)")
     # a user's own Symbol('x') (other assumptions) means the standard x
     subs = {s: S.x for s in expr.free_symbols if s.name == "x" and s != S.x}
     expr = expr.xreplace(subs)

@@ -62,7 +62,7 @@ from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, 
 from .fastpath import scalar_kit, vector_float64
 from .switches import safe_step, switch_near_end
 from .quadrature import VectorQuad
-from ..core.precision import MAX_DPS, workdps
+from ..core.precision import checked_dps, workdps
 
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
 #: closed forms / quadratures (what tests/test_extremes.py checks on the grid)
@@ -377,8 +377,7 @@ def _check_tolerance(rtol, dps):
                 or not 0 < float(rtol) < 1:
             raise DomainError(f"rtol must be a number with 0 < rtol < 1, got {rtol!r}")
     if dps is not None:
-        if isinstance(dps, bool) or not isinstance(dps, (int, np.integer)) or not 1 <= dps <= MAX_DPS:
-            raise DomainError(f"dps must be an integer from 1 to {MAX_DPS}, got {dps!r}")
+        checked_dps(dps)
 
 
 def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0):

@@ -449,7 +449,7 @@ def check_arguments(names, values: dict, quantity: str):
 
 
 def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dict | None = None,
-                  stable: bool = True):
+                  stable: bool = True, domain=None):
     """A callable ``fn(**values)`` evaluating a derived quantity.
 
     ``derivation``: a :class:`~linecontact_sym.method.derivation.Derivation`
@@ -484,7 +484,7 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     """
     if backend not in ("numpy", "mpmath"):
         raise LineContactError(f"unknown backend {backend!r}; use 'numpy' or 'mpmath'")
-    return NumericFunction(derivation, backend, dps, dict(params or {}), stable)
+    return NumericFunction(derivation, backend, dps, dict(params or {}), stable, domain)
 
 
 class NumericFunction:
@@ -499,18 +499,27 @@ class NumericFunction:
     :class:`~linecontact_sym.core.errors.LineContactError` (pickle the contact
     and export again)."""
 
-    def __init__(self, derivation, backend, dps, params, stable):
+    def __init__(self, derivation, backend, dps, params, stable, domain=None):
         self.derivation, self.backend, self.dps = derivation, backend, dps
-        self.params, self.stable = params, stable
+        self.params, self.stable, self.domain = params, stable, domain
         self.arguments = tuple(s.name for s in derivation.variables_all)
         self.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(self.arguments)}.\n"
                         f"Formula: {derivation.expr}\nMethod: {derivation.method}")
         self._fn = compile_callable(derivation, backend, dps, params, stable)
 
-    def __call__(self, **kw):
+    def __call__(self, *args, **kw):
+        if args:
+            raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
+                              f"fn({', '.join(n + '=...' for n in self.arguments)})")
+        if self.domain is not None:          # the contact's domain check (raises DomainError)
+            self.domain({**self.params, **kw})
         if self._fn is None:
             self._fn = compile_callable(self.derivation, self.backend, self.dps, self.params, self.stable)
-        return self._fn(**kw)
+        try:
+            return self._fn(**kw)
+        except (ZeroDivisionError, OverflowError) as exc:   # mpmath at a singular point
+            raise DomainError(f"{self.derivation.quantity} is not finite at {kw}: a singular point of its "
+                              f"formula ({type(exc).__name__})") from None
 
     def __getstate__(self):
         if self.backend == "mpmath" and not self.derivation.closed_form:
