@@ -260,8 +260,11 @@ def test_claims_file_holds():
     registry: >= 30 digits at random admissible points."""
     from linecontact_sym.claims import check_paper, load_paper
     paper = load_paper("cattaneo_mindlin")
-    only = {c.label for c in paper.claims if "(cylinder)" in c.label}
-    assert len(only) == 6
+    cylinder = {c.label for c in paper.claims if "(cylinder)" in c.label}
+    assert len(cylinder) == 6
+    # three of them (a loading state, an unloading state, the cycle's energy): the
+    # whole file is the CLI's job (`linecontact-sym check cattaneo_mindlin`, 8 of 8 hold)
+    only = {lab for lab in cylinder if any(w in lab for w in ("stick zone", "unloading", "energy"))}
     result = check_paper(paper, budget=20, only=only)
-    assert [r.status for r in result.results] == ["holds"] * 6
+    assert [r.status for r in result.results] == ["holds"] * 3
     assert min(r.digits for r in result.results) >= 30

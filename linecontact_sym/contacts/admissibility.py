@@ -28,7 +28,7 @@ def _mp_function(contact, quantity, dps):
     cache = contact._caches()
     key = ("mpfun", quantity, dps)
     if key not in cache:
-        cache[key] = contact.to_numeric(quantity, backend="mpmath", dps=dps)
+        cache[key] = contact.to_numeric(quantity, backend="mpmath", dps=dps, check=False)
     return cache[key]
 
 

@@ -43,7 +43,7 @@ from ..core.errors import DomainError, LineContactError
 from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
-from .special import MPMATH_FUNCS, NUMPY_FUNCS, mp_elliptic_pi
+from .special import MPMATH_FUNCS, NUMPY_FUNCS, NUMPY_LOGIC, mp_elliptic_pi
 from .stable import is_rational_in_symbols, stabilize
 from .stable_elliptic import EllipticPiToCarlson
 
@@ -142,7 +142,7 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
             quads[name] = q
             return sp.Function(name)(*q.params)
         expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
-    mods = [dict(_SCIPY_FUNCS, _mphyper=_mp_hyper_vec, **NUMPY_FUNCS, **quads), "scipy", "numpy"]
+    mods = [dict(_SCIPY_FUNCS, _mphyper=_mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
     f = sp.lambdify(args, _to_scipy_names(_fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):

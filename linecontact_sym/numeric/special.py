@@ -460,7 +460,7 @@ NUMPY_LOGIC = {"logical_and": _BroadcastLogical(np.logical_and), "logical_or": _
 
 NUMPY_FUNCS = {"carlson_rf": np_rf, "carlson_rd": np_rd, "carlson_rg": np_rg, "carlson_rj": np_rj,
                "gamma_ratio": np_gamma_ratio,
-               "hyp2f1c": np_hyp2f1c, **NUMPY_LOGIC}
+               "hyp2f1c": np_hyp2f1c}
 MPMATH_FUNCS = {"carlson_rf": _mp_rf, "carlson_rd": _mp_rd, "carlson_rg": _mp_rg, "carlson_rj": _mp_rj,
                 "gamma_ratio": _mp_gamma_ratio,
                 "hyp2f1c": _mp_hyp2f1c}
