@@ -9,7 +9,7 @@ import sympy as sp
 
 from ..core.conversion import exact_number
 from ..core.errors import ClaimError
-from ..parsing import parse_expr
+from ..parsing import SYMBOLS, parse_expr
 
 def _w(source, label=None, fld=None):
     out = str(source)
@@ -27,6 +27,18 @@ def _parse_range(val, where):
     if not lo <= hi:   # [v, v] fixes the value v
         raise ClaimError(f"{where}: empty range [{lo}, {hi}]")
     return (lo, hi)
+
+
+def _sign_ok(name, value, syms, where):
+    """A sampling range or special value of a symbol declared positive must be
+    > 0 (the work of adhesion gamma: >= 0); x may have any sign."""
+    sym = syms.get(name) or SYMBOLS.get(name)
+    if sym is None or not sym.is_positive or name == "x":
+        return
+    v = float(value)
+    if not (v > 0 or (name == "gamma" and v == 0)):
+        raise ClaimError(f"{where}: {name} is a positive quantity; got {value} (sampling there would "
+                         f"check the claim outside its domain)")
 
 
 def _num(v, where):

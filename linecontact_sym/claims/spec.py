@@ -92,8 +92,8 @@ from sympy.core.function import AppliedUndef
 from ..core import symbols as S
 from ..contacts.base import qualified_quantities
 from ..core.errors import ClaimError
-from ..parsing import SYMBOLS, declare_symbols, parse_expr
-from .fields import _names, _num, _parse_range, _text, _typed, _w, read_text_file
+from ..parsing import declare_symbols, parse_expr
+from .fields import _names, _num, _parse_range, _sign_ok, _text, _typed, _w, read_text_file
 from ..views.plots import VALUE_SYMBOLS
 
 if sys.version_info >= (3, 11):
@@ -368,18 +368,6 @@ def printed_variants(text: str) -> list:
             last = m.end()
         out.append("".join(pieces) + text[last:])
     return out
-
-
-def _sign_ok(name, value, syms, where):
-    """A sampling range or special value of a symbol declared positive must be
-    > 0 (the work of adhesion gamma: >= 0); x may have any sign."""
-    sym = syms.get(name) or SYMBOLS.get(name)
-    if sym is None or not sym.is_positive or name == "x":
-        return
-    v = float(value)
-    if not (v > 0 or (name == "gamma" and v == 0)):
-        raise ClaimError(f"{where}: {name} is a positive quantity; got {value} (sampling there would "
-                         f"check the claim outside its domain)")
 
 
 def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_shown=None,
