@@ -249,10 +249,12 @@ class StressField(Contact):
             self._fields[key] = B.build_field(self, vals)
         return self._fields[key]
 
-    def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, **params):
+    def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, check: bool = True, **params):
         """``fn(a=..., x=..., z=..., E_star=..., R=..., mu=..., nu=...)``: the
         field components (arrays of x and z, scalar parameters) or the
-        maxima (scalars); ``backend='mpmath'``: one point at ``dps`` digits."""
+        maxima (scalars); ``backend='mpmath'``: one point at ``dps`` digits.
+        The values are always checked (the field is built per parameter
+        point); ``check`` is accepted for the common signature."""
         name = self.resolve(quantity)
         if backend == "mpmath":
             return lambda **kw: self.evaluate_at(name, dps=dps, **{**params, **kw})

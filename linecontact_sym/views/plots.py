@@ -17,6 +17,8 @@ optional lower panel holding the ratio of two curves, and writes PNG and PDF.
 """
 from __future__ import annotations
 
+import inspect
+
 from pathlib import Path
 
 import numpy as np
@@ -92,7 +94,9 @@ def curve_data(contacts, quantity: str = "force", *, x, y, x_range, values=None,
         y_of = sp.lambdify((value, var), y_expr.xreplace(subs), "numpy")
         curves = []
         for contact in contacts:
-            fn = contact.to_numeric(quantity, check=False)   # grids may touch a = 0
+            # a package contact's export without its per-call domain check: grids may touch a = 0
+            takes_check = "check" in inspect.signature(contact.to_numeric).parameters
+            fn = contact.to_numeric(quantity, check=False) if takes_check else contact.to_numeric(quantity)
             kw = {**fixed, var.name: sweep}
             names = getattr(fn, "arguments", None)
             if names is not None:
