@@ -242,3 +242,8 @@ def test_dps_checked_everywhere(dps):
 def test_points_checked(points):
     with pytest.raises(lcs.ProfileError, match="points must be an integer"):
         lcs.LineContact(lcs.x**2 / (2 * lcs.R), points=points)
+
+
+def test_mpmath_export_refuses_arrays():
+    with pytest.raises(DomainError, match="takes scalars"):
+        lcs.parabola().to_numeric("force", backend="mpmath")(a=[0.1, 0.5], R=1, E_star=1)

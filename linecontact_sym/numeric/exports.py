@@ -511,6 +511,9 @@ class NumericFunction:
         if args:
             raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
                               f"fn({', '.join(n + '=...' for n in self.arguments)})")
+        if self.backend == "mpmath" and any(isinstance(v, (list, tuple, np.ndarray)) for v in kw.values()):
+            raise DomainError(f"the mpmath function of {self.derivation.quantity} takes scalars; use "
+                              f"backend='numpy' for arrays (or loop over the points)")
         if self.domain is not None:          # the contact's domain check (raises DomainError)
             self.domain({**self.params, **kw})
         if self._fn is None:
