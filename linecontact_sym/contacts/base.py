@@ -261,6 +261,8 @@ class Contact:
         if checks is None:
             return
         fprime, slope, names = checks
+        if fprime is None and slope is None:      # both proved by SymPy's assumptions
+            return
         try:
             A = float(av)
             pv = [float(vals[n]) for n in names]

@@ -149,11 +149,18 @@ class LineContact(Contact):
         cache = self._caches()
         if "_adm_fns" not in cache:
             params = list(self.params)
-            fprime = lambdify_numpy(sp.diff(self.profile.expr, S.x), [S.x] + params, stable=False)
+            d1 = sp.diff(self.profile.expr, S.x)
+            xp = sp.Dummy("x", positive=True)
+            # a test that SymPy's assumptions decide for every admissible value
+            # is not sampled at every call (x**2/(2R): f' = x/R >= 0 always)
+            fprime = None if d1.xreplace({S.x: xp}).is_nonnegative else \
+                lambdify_numpy(d1, [S.x] + params, stable=False)
             fd = self.derivation("force")
             slope = None
             if fd.closed_form and not fd.expr.has(sp.Integral):
-                slope = lambdify_numpy(sp.diff(fd.expr, S.a), [S.a, S.E_star] + params, stable=False)
+                dP = sp.diff(fd.expr, S.a)
+                if not dP.is_nonnegative:
+                    slope = lambdify_numpy(dP, [S.a, S.E_star] + params, stable=False)
             cache["_adm_fns"] = (fprime, slope, [p.name for p in params])
         return cache["_adm_fns"]
 

@@ -339,9 +339,14 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
                     kappa = kit.kappa(vals, v, step=safe_step(d, point))
                     cancel = kit.cancellation(vals)
             else:                                           # the NumPy export
-                f64 = _float64_fn(d)
+                try:
+                    f64 = _float64_fn(d)
+                except Exception as exc:  # noqa: BLE001 -- a SymPy printer gap: take the mpmath path
+                    f64 = None
+                    notes.append(f"no float64 export ({type(exc).__name__}: {str(exc)[:60]})")
+                    near = "no float64 export"
                 with np.errstate(all="ignore"):
-                    v = float(np.asarray(f64(**point)))
+                    v = float(np.asarray(f64(**point))) if f64 is not None else math.nan
                 if math.isfinite(v):
                     kappa = condition_number_float(f64, point, h=safe_step(d, point), f0=v)
                     cancel = _cancellation(d, point, names)
