@@ -272,8 +272,9 @@ def test_failure_is_remembered_not_retried():
     d1 = lcs.LineContact(f, budget=1).derivation("force")
     assert not d1.closed_form
     d2 = lcs.LineContact(f, budget=1).derivation("force")
-    assert d2.cached and not d2.closed_form and d2.attempts == d1.attempts
-    if any("no result within" in why for _, why in d1.attempts):
+    assert d2.cached and not d2.closed_form and d2.attempts == d1.attempts, (d1.attempts, d2.attempts, d2.cached)
+    from linecontact_sym.method.derivation import _budget_limited
+    if _budget_limited(d1.attempts):
         # it ran out of time: a larger budget tries again
         d3 = lcs.LineContact(f, budget=2).derivation("force")
         assert d3.cached == ""

@@ -247,3 +247,15 @@ def test_points_checked(points):
 def test_mpmath_export_refuses_arrays():
     with pytest.raises(DomainError, match="takes scalars"):
         lcs.parabola().to_numeric("force", backend="mpmath")(a=[0.1, 0.5], R=1, E_star=1)
+
+
+def test_float_exponents_in_a_profile_mean_their_decimal():
+    """power_law(n=1.5) is the power law with n = 3/2 (before: a pressure
+    fallback holding zoo that neither export could print)."""
+    c = lcs.power_law(n=1.5)
+    assert c.profile.expr == lcs.c * lcs.x**sp.Rational(3, 2)
+    exact = lcs.power_law(n=sp.Rational(3, 2))
+    kw = dict(a=1.0, x=0.5, c=1.0, E_star=1.0)
+    assert c.evaluate("pressure", **kw).value == exact.evaluate("pressure", **kw).value
+    # p(0.5; 1) of c x^(3/2): (E* c n / pi) int_x^a ... checked against the quadrature of Eq. (12)
+    assert c.derivation("pressure").closed_form and c.derivation("pressure").verification.passed

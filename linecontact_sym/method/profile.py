@@ -15,6 +15,7 @@ from functools import cached_property
 import mpmath
 import sympy as sp
 
+from ..core.conversion import exact_number
 from ..core import symbols as S
 from ..core.errors import InadmissibleProfileError, ProfileError, UnknownSymbolError
 from ..core.precision import workdps
@@ -124,6 +125,11 @@ def _sanitize(expr, params):
         if pw.args[-1].cond is not sp.true and _uncovered(pw) is not None:
             raise ProfileError(f"the profile's Piecewise {pw} has no value where none of its conditions holds "
                                f"(x = {_uncovered(pw)}, parameters 1); end it with (expr, True)")
+    # floats typed into a profile (x**1.5, 0.3*x**2) mean their shortest
+    # decimal, as everywhere in the package: exact, so that the rules see 3/2
+    floats = {f: exact_number(float(f)) for f in expr.atoms(sp.Float) if f.is_finite}
+    if floats:
+        expr = expr.xreplace(floats)
     # a user's own Symbol('x') (other assumptions) means the standard x
     subs = {s: S.x for s in expr.free_symbols if s.name == "x" and s != S.x}
     expr = expr.xreplace(subs)
