@@ -32,13 +32,13 @@ import time
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.conversion import exact_number, float_values, point_value
+from ..core.conversion import float_values, point_value
 from ..core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
                            VerificationError)
 from ..method.derivation import Derivation, values_by_name
 from ..method.rules import Step
 from ..method.verification import verify
-from ..parsing import to_sympy
+from ..parsing import to_sympy, user_value
 from . import branches, pull_off
 from .base import Contact, Quantity
 from .equilibria import equilibria
@@ -102,8 +102,7 @@ class AdhesiveLineContact(Contact):
         if isinstance(work_of_adhesion, str):
             raise DomainError("the work of adhesion is a string; strings are not evaluated. "
                               "Pass a SymPy expression or a number (e.g. lcs.gamma)")
-        g = exact_number(work_of_adhesion) if isinstance(work_of_adhesion, float) \
-            else to_sympy(work_of_adhesion)
+        g = user_value(work_of_adhesion)
         if not isinstance(g, sp.Expr):
             raise DomainError(f"the work of adhesion must be an expression, got {g!r}")
         if g.has(S.x, S.a, S.P):

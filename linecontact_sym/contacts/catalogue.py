@@ -7,15 +7,16 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.errors import LineContactError, ProfileError
-from ..parsing import to_sympy
+from ..parsing import user_value
 from .frictionless import LineContact
 
 
 def _param(value, name):
     """A catalogue parameter: a symbol or a number > 0 (text through the
-    whitelisted parser); anything else raises :class:`ProfileError`."""
+    whitelisted parser, floats their shortest decimal); anything else raises
+    :class:`ProfileError`."""
     try:
-        v = to_sympy(value, where=name)
+        v = user_value(value, where=name)
     except LineContactError as exc:
         raise ProfileError(f"{name}: {exc}") from None
     if v.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or (v.is_number and not v.is_positive):

@@ -27,8 +27,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.errors import DomainError, LineContactError
-from ..core.conversion import exact_number, to_basic
-from ..parsing import to_sympy
+from ..parsing import user_value
 from ..method.derivation import Derivation, fallback_step, values_by_name
 from ..method.rules import Step
 from . import stress_build as B
@@ -52,15 +51,6 @@ def _q(symbol, doc, latex, aliases=()):
 def _mx(symbol, doc, latex, aliases=()):
     return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases)
 
-
-
-def _user_value(v):
-    """A user's value (mu, nu, the stick half-width): numbers and SymPy
-    objects as they are (floats as their shortest decimal), text through the
-    whitelisted parser (never evaluated as code)."""
-    if isinstance(v, float):
-        return exact_number(v)
-    return to_sympy(v) if isinstance(v, str) else to_basic(v)
 
 class StressField(Contact):
     """The stress field under a contact; see the module docstring.
@@ -106,8 +96,8 @@ class StressField(Contact):
         if tangential == "partial_slip" and stick is None:
             raise DomainError("partial slip needs the stick half-width: stick = c")
         self.contact, self.tangential = contact, tangential
-        self.mu, self.nu = _user_value(mu), _user_value(nu)
-        self.stick = None if stick is None else _user_value(stick)
+        self.mu, self.nu = user_value(mu), user_value(nu)
+        self.stick = None if stick is None else user_value(stick)
         self.breaks, self.verify, self.points = tuple(breaks), verify, points
         self._cache: dict = {}
         self._fields: dict = {}

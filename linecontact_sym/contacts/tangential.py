@@ -90,12 +90,11 @@ import time
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.conversion import exact_number
 from ..core.errors import DomainError
 from ..method.derivation import Derivation, fallback_step
 from ..method.rules import Step
 from ..method.verification import verify
-from ..parsing import to_sympy
+from ..parsing import to_sympy, user_value
 from . import tangential_history as history
 from . import tangential_states as states
 from .base import Contact, Quantity
@@ -174,7 +173,7 @@ class TangentialLineContact(Contact):
         if isinstance(friction, str):
             raise DomainError("the friction coefficient is a string; strings are not evaluated. "
                               "Pass a SymPy expression or a number (e.g. lcs.mu)")
-        m = exact_number(friction) if isinstance(friction, float) else to_sympy(friction)
+        m = user_value(friction)
         if not isinstance(m, sp.Expr) or m.has(S.x, S.a, S.P, S.Q, S.c_s, S.c_r):
             raise DomainError(f"the friction coefficient {m} must be an expression free of x, a, P, Q, c_s, c_r")
         if m.is_positive is not True:

@@ -42,7 +42,7 @@ import math
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.conversion import to_basic
+from ..core.conversion import exact_number, to_basic
 from ..core.errors import ClaimError, LineContactError
 
 #: integration variables (the paper's a-tilde); the same symbols as the engine's
@@ -519,3 +519,14 @@ def to_sympy(value, where: str = "") -> sp.Basic:
         return to_basic(value)
     except LineContactError as exc:
         raise ClaimError(f"{where + ': ' if where else ''}{exc}") from None
+
+
+def user_value(value, where: str = ""):
+    """A parameter value as a user gives it (mu, nu, gamma, a stick
+    half-width): a float means its shortest decimal (0.3 -> 3/10), text goes
+    through the whitelisted :func:`parse_expr`, anything else through
+    :func:`to_sympy`'s strict conversion."""
+    if isinstance(value, float):        # NaN and inf: DomainError
+        return exact_number(value)
+    return to_sympy(value, where)
+
