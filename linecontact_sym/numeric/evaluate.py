@@ -327,29 +327,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     kappa = 1.0
     if rtol >= 4 * EPS:
         vals = [_as_float(values[n]) for n in names]
-        point = dict(zip(names, vals))
-        near = switch_near_end(d, point) if not d.closed_form else None
-        if near is not None:
-            notes.append(near)
-            v = math.nan
-        else:
-            v = kit.value(vals) if kit.f is not None else None
-            if v is not None:                               # the scalar path (fastpath)
-                if math.isfinite(v):
-                    kappa = kit.kappa(vals, v, step=safe_step(d, point))
-                    cancel = kit.cancellation(vals)
-            else:                                           # the NumPy export
-                try:
-                    f64 = _float64_fn(d)
-                except Exception as exc:  # noqa: BLE001 -- a SymPy printer gap: take the mpmath path
-                    f64 = None
-                    notes.append(f"no float64 export ({type(exc).__name__}: {str(exc)[:60]})")
-                    near = "no float64 export"
-                with np.errstate(all="ignore"):
-                    v = float(np.asarray(f64(**point))) if f64 is not None else math.nan
-                if math.isfinite(v):
-                    kappa = condition_number_float(f64, point, h=safe_step(d, point), f0=v)
-                    cancel = _cancellation(d, point, names)
+        v, kappa, cancel, why_not = _float64_value(d, kit, names, vals)
         if math.isfinite(v):
             factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
             est = factor * EPS * max(1.0, kappa, cancel) * abs(v)
@@ -366,13 +344,38 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
                                   details={"kappa": kappa, "cancellation": cancel})
             notes.append(f"float64 estimate {est / abs(v) if v else est:.1e} > rtol")
         else:
-            if near is None:
-                notes.append(f"float64 gave {v}")
-            kappa = 1.0
+            notes.append(why_not or f"float64 gave {v}")
     else:
         notes.append("rtol below float64 resolution")
     # 3. mpmath, precision from rtol and kappa, confirmed at +10 digits
     return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
+
+
+def _float64_value(d, kit, names, vals):
+    """``(v, kappa, cancellation, why_not)`` at a point in float64: the
+    scalar fast path where it compiles, else the NumPy export; kappa and the
+    cancellation ratio where v is finite (else 1).  ``why_not`` says why v is
+    NaN when float64 is not to be used here (an integrand switching next to
+    an endpoint; no float64 export), else None."""
+    point = dict(zip(names, vals))
+    if not d.closed_form:
+        near = switch_near_end(d, point)
+        if near is not None:
+            return math.nan, 1.0, 1.0, near
+    v = kit.value(vals) if kit.f is not None else None
+    if v is not None:                                   # the scalar path (fastpath)
+        if not math.isfinite(v):
+            return v, 1.0, 1.0, None
+        return v, kit.kappa(vals, v, step=safe_step(d, point)), kit.cancellation(vals), None
+    try:                                                # the NumPy export
+        f64 = _float64_fn(d)
+    except Exception as exc:  # noqa: BLE001 -- a SymPy printer gap: take the mpmath path
+        return math.nan, 1.0, 1.0, f"no float64 export ({type(exc).__name__}: {str(exc)[:60]})"
+    with np.errstate(all="ignore"):
+        v = float(np.asarray(f64(**point)))
+    if not math.isfinite(v):
+        return v, 1.0, 1.0, None
+    return v, condition_number_float(f64, point, h=safe_step(d, point), f0=v), _cancellation(d, point, names), None
 
 
 def _check_tolerance(rtol, dps):
