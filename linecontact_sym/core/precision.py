@@ -24,6 +24,7 @@ True
 """
 from __future__ import annotations
 
+import numbers
 import os
 import threading
 from contextlib import contextmanager
@@ -41,7 +42,6 @@ _LOCK = threading.RLock()
 def checked_dps(dps) -> int:
     """``dps`` as a user gives it: an integer from 1 to :data:`MAX_DPS`;
     anything else raises :class:`~linecontact_sym.core.errors.DomainError`."""
-    import numbers
     if isinstance(dps, bool) or not isinstance(dps, numbers.Integral) or not 1 <= dps <= MAX_DPS:
         raise DomainError(f"dps must be an integer from 1 to {MAX_DPS}, got {dps!r}")
     return int(dps)
