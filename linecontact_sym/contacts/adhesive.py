@@ -40,7 +40,7 @@ from ..method.rules import Step
 from ..method.verification import verify
 from ..parsing import to_sympy, user_value
 from . import branches, pull_off
-from .base import Contact, Quantity
+from .base import ContactOn, Quantity
 from .equilibria import equilibria
 from .force_law import PullOff, ForceLaw
 from .jkr import GAMMA_RANGE, energy_release_rate, flat_punch_force, phat_energy, stress_intensity
@@ -55,7 +55,7 @@ _PHAT_CACHE: dict = {}
 _PULL_OFF = ("pull_off_force", "adhesion_force", "pull_off_half_width")
 
 
-class AdhesiveLineContact(Contact):
+class AdhesiveLineContact(ContactOn):
     """JKR-adhesive form of a :class:`~linecontact_sym.contacts.frictionless.LineContact`
     (Popov 2017, Eqs. 29-36); see the module docstring.
 
@@ -126,14 +126,6 @@ class AdhesiveLineContact(Contact):
 
     def __repr__(self):
         return f"AdhesiveLineContact({self.contact.profile.expr}, gamma={self.gamma})"
-
-    @property
-    def profile(self):
-        return self.contact.profile
-
-    @property
-    def params(self):
-        return self.contact.params
 
     @property
     def variables(self):

@@ -32,7 +32,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.precision import checked_dps
-from ..core.errors import DomainError, InadmissibleProfileError, LineContactError
+from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
 from ..method.derivation import Derivation
 from ..numeric.special import NUMPY_LOGIC
 from ..parsing import to_sympy
@@ -236,9 +236,9 @@ class Contact:
             # relations between x and a alone are the quantity's domain (inside:
             # |x| <= a, outside: |x| >= a, edges included), checked above: a
             # closed form stated for x < a still holds at the edge as a limit
-            xa = {S.x, S.a}
+            xa = {S.x, S.a} if DOMAINS[type(self).quantities()[name].domain] else set()
             conds = tuple(c for c in d.conditions if c not in (sp.true,)
-                          and not (q_domain_has_x(self, name) and c.free_symbols <= xa))
+                          and not (xa and c.free_symbols <= xa))
             fn = sp.lambdify(list(known.values()), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
             cache[key] = (known, conds, fn)
         return cache[key]
@@ -319,8 +319,7 @@ class Contact:
         try:
             return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
         except (ZeroDivisionError, OverflowError) as exc:
-            raise DomainError(f"{quantity} is not finite at {values}: a singular point of its formula "
-                              f"({type(exc).__name__})") from None
+            raise singular_point(quantity, values, exc) from None
 
     def plot(self, what: str = "force", **kw):
         """A matplotlib figure of the contact in the literature's normalised
@@ -341,11 +340,6 @@ class Contact:
         quantities."""
         names = quantities or [n for n, q in type(self).quantities().items() if not q.method]
         return "\n".join(self.derivation(q).summary() for q in names)
-
-
-def q_domain_has_x(contact, name) -> bool:
-    """Whether the quantity ``name`` has an x domain ('inside'/'outside')."""
-    return type(contact).quantities()[name].domain in ("inside", "outside")
 
 
 def _abs(v):
@@ -401,6 +395,19 @@ def _checked_value(name, v, sym):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
     return val
+
+
+class ContactOn(Contact):
+    """A contact built on a frictionless one, ``self.contact`` (adhesive,
+    tangential, stresses): its profile and parameters are that contact's."""
+
+    @property
+    def profile(self):
+        return self.contact.profile
+
+    @property
+    def params(self):
+        return self.contact.params
 
 
 def contact_kind(kind: str):

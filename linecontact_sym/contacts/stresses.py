@@ -33,7 +33,7 @@ from ..method.rules import Step
 from . import stress_build as B
 from . import stress_extrema as X
 from . import stress_field as F
-from .base import Contact, Quantity
+from .base import ContactOn, Quantity
 from .kolosov import cauchy_transform, punch_integral, t
 from ..core.precision import workdps
 
@@ -52,7 +52,7 @@ def _mx(symbol, doc, latex, aliases=()):
     return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases)
 
 
-class StressField(Contact):
+class StressField(ContactOn):
     """The stress field under a contact; see the module docstring.
 
     Examples
@@ -110,10 +110,6 @@ class StressField(Contact):
 
     def __repr__(self):
         return f"StressField({self.contact.profile.expr}, tangential={self.tangential!r})"
-
-    @property
-    def profile(self):
-        return self.contact.profile
 
     @property
     def variables(self):

@@ -97,7 +97,7 @@ from ..method.verification import verify
 from ..parsing import to_sympy, user_value
 from . import tangential_history as history
 from . import tangential_states as states
-from .base import Contact, Quantity
+from .base import ContactOn, Quantity
 
 #: range of the friction coefficient at the verification points
 MU_RANGE = (0.1, 1.0)
@@ -122,7 +122,7 @@ LOADING = ((1, S.c_s),)
 UNLOADING = ((1, S.c_s), (-2, S.c_r))
 
 
-class TangentialLineContact(Contact):
+class TangentialLineContact(ContactOn):
     """Partial-slip tangential line contact (Coulomb friction, constant normal
     load) built from a frictionless :class:`~.frictionless.LineContact`; see
     the module docstring for the formulas and their conditions.
@@ -194,14 +194,6 @@ class TangentialLineContact(Contact):
 
     def __repr__(self):
         return f"TangentialLineContact({self.contact.profile.expr}, mu={self.mu})"
-
-    @property
-    def profile(self):
-        return self.contact.profile
-
-    @property
-    def params(self):
-        return self.contact.params
 
     @property
     def variables(self):

@@ -56,6 +56,13 @@ class BudgetExceeded(LineContactError, TimeoutError):
     """A symbolic step did not finish within its time budget."""
 
 
+def singular_point(quantity, values, exc) -> "DomainError":
+    """The error of a quantity evaluated where its formula is singular (a
+    ZeroDivisionError or OverflowError of the arithmetic)."""
+    return DomainError(f"{quantity} is not finite at {values}: a singular point of its formula "
+                       f"({type(exc).__name__})")
+
+
 class BudgetError(LineContactError, ValueError):
     """A time budget that is not a number of seconds > 0 (None: no limit)."""
 

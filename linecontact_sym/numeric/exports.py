@@ -39,7 +39,7 @@ import scipy.special as sc
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.errors import DomainError, LineContactError
+from ..core.errors import DomainError, LineContactError, singular_point
 from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
@@ -521,8 +521,7 @@ class NumericFunction:
         try:
             return self._fn(**kw)
         except (ZeroDivisionError, OverflowError) as exc:   # mpmath at a singular point
-            raise DomainError(f"{self.derivation.quantity} is not finite at {kw}: a singular point of its "
-                              f"formula ({type(exc).__name__})") from None
+            raise singular_point(self.derivation.quantity, kw, exc) from None
 
     def __getstate__(self):
         if self.backend == "mpmath" and not self.derivation.closed_form:
