@@ -9,13 +9,13 @@ from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, In
 from .method.profile import Profile
 from .method.derivation import Derivation
 from .method.verification import VerificationRecord
-from .contacts.frictionless import LineContact
-from .contacts.inverse import profile_from_force
-from .contacts.adhesive import AdhesiveLineContact
-from .contacts.stresses import SlidingStressField, StressField
+from .contacts.normal.contact import LineContact
+from .contacts.normal.inverse import profile_from_force
+from .contacts.adhesion.contact import AdhesiveLineContact
+from .contacts.stresses.contact import SlidingStressField, StressField
 from .contacts.base import Contact, Quantity
 from .core.errors import NoPullOffError, NoEquilibriumError, GrossSlidingError
-from .contacts.tangential import TangentialLineContact
+from .contacts.tangential.contact import TangentialLineContact
 from .contacts import catalogue
 from .contacts.catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
 from .core.printing import init_printing, to_latex

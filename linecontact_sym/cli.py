@@ -103,7 +103,7 @@ def _settings(items, symbols=()):
 
 
 def _contact(args, profile):
-    from .contacts.frictionless import LineContact
+    from .contacts.normal.contact import LineContact
     return LineContact(profile, budget=args.budget)
 
 

@@ -17,8 +17,8 @@ from hypothesis import given, settings, strategies as st
 
 import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
-from linecontact_sym.contacts.equilibria import admissible_range, equilibria_at, landscape, minimum
-from linecontact_sym.contacts.force_law import ForceLaw
+from linecontact_sym.contacts.normal.equilibria import admissible_range, equilibria_at, landscape, minimum
+from linecontact_sym.contacts.normal.force_law import ForceLaw
 from linecontact_sym.method import transforms as T
 from linecontact_sym.core.errors import NumericValuesRequired
 from linecontact_sym.method.verification import VerificationRecord

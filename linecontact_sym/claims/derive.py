@@ -93,7 +93,7 @@ class Context:
     def contact(self, profile, ranges: Callable):
         """The contact of ``profile``, its parameters verified over
         ``ranges(symbol)`` (e.g. :meth:`Claim.range_of`)."""
-        from ..contacts.frictionless import LineContact
+        from ..contacts.normal.contact import LineContact
         params = {}
         for sym in sorted(profile.free_symbols - {S.x}, key=lambda z: z.name):
             params[sym] = ranges(sym)
@@ -192,7 +192,7 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
     if q in ("adhesive_force", "adhesive_pressure", "pull_off_force", "adhesion_force", "pull_off_half_width"):
         return _derive_adhesive(claim, profile, ctx)
     if q == "inverse_profile":
-        from ..contacts.inverse import profile_from_force
+        from ..contacts.normal.inverse import profile_from_force
         t0 = time.perf_counter()
         d = profile_from_force(claim.force_law, budget=ctx.budget)
         out = _from_derivation(d)

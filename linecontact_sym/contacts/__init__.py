@@ -1,8 +1,15 @@
-"""Layer 5: one object per physical system (cf. SymPy's ``Beam``): the
-frictionless line contact, its JKR-adhesive and tangential forms, the
-subsurface stress field under any of them, the catalogue of the paper's
-profiles.  Importing the package registers every
-contact kind (:data:`~.base.CONTACT_KINDS`)."""
-from . import frictionless, adhesive, tangential, stresses  # importing registers the kinds
+"""Layer 5: one object per physical system (cf. SymPy's ``Beam``), grouped by
+physical effect, one subpackage each:
 
-__all__ = ["frictionless", "adhesive", "tangential", "stresses"]
+* :mod:`.normal`     -- the frictionless, non-adhesive line contact (Popov 2017, Eqs. 9-12);
+* :mod:`.adhesion`   -- adhesion on top of it (JKR: Popov 2017, Eqs. 29-36);
+* :mod:`.tangential` -- partial slip and fretting (Cattaneo-Mindlin-Jaeger superposition);
+* :mod:`.stresses`   -- subsurface stresses (Kolosov potentials, McEwen 1949).
+
+:mod:`.base` holds the contact base class and the quantity registry shared by
+all of them, :mod:`.sampling` the verification points, :mod:`.catalogue` the
+paper's profiles as ready-made contacts.  Importing the package registers every
+contact kind (:data:`~.base.CONTACT_KINDS`)."""
+from . import normal, adhesion, tangential, stresses  # importing registers the kinds
+
+__all__ = ["normal", "adhesion", "tangential", "stresses"]

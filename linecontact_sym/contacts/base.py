@@ -103,7 +103,7 @@ class Contact:
     @classmethod
     def from_frictionless(cls, contact):
         """This kind of contact built on a frictionless
-        :class:`~.frictionless.LineContact`, with its extra parameters left
+        :class:`~.contact.LineContact`, with its extra parameters left
         symbolic (the claims checker and the CLI build contacts this way)."""
         raise NotImplementedError(f"{cls.__name__} does not say how it is built from a frictionless contact")
 

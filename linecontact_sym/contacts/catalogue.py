@@ -8,7 +8,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.errors import LineContactError, ProfileError
 from ..parsing import user_value
-from .frictionless import LineContact
+from .normal.contact import LineContact
 
 
 def _param(value, name):
@@ -57,7 +57,7 @@ def parabola(R=S.R, **kw):
     P(a) = pi E* a**2/(4R) and p(x) = E* sqrt(a**2 - x**2)/(2R).
 
     ``R``: the radius (a positive symbol or a number); keywords go to
-    :class:`~linecontact_sym.contacts.frictionless.LineContact` (``budget``,
+    :class:`~linecontact_sym.contacts.normal.contact.LineContact` (``budget``,
     ``verify``, ...).  Domain: a > 0 (any half-width).
 
     >>> import linecontact_sym as lcs
@@ -75,7 +75,7 @@ def power_law(c=S.c, n=S.n, **kw):
     points then draw n from 0.3 to 6).
 
     ``c`` (the paper's c_n) > 0, ``n`` > 0; keywords go to
-    :class:`~linecontact_sym.contacts.frictionless.LineContact`.  A finite
+    :class:`~linecontact_sym.contacts.normal.contact.LineContact`.  A finite
     adhesive pull-off exists iff n > 1/2.
 
     >>> import linecontact_sym as lcs
@@ -94,7 +94,7 @@ def wedge(theta=S.theta, **kw):
     has it) and a pressure with a logarithmic singularity at x = 0.
 
     ``theta``: the wedge angle, 0 < theta < pi/2; keywords go to
-    :class:`~linecontact_sym.contacts.frictionless.LineContact`.
+    :class:`~linecontact_sym.contacts.normal.contact.LineContact`.
 
     >>> import linecontact_sym as lcs
     >>> lcs.wedge().profile.expr
@@ -111,7 +111,7 @@ def worn_cylinder(R=S.R, b=S.b, **kw):
     engine evaluates their integrals numerically and says so).
 
     ``R`` > 0, ``b`` > 0; keywords go to
-    :class:`~linecontact_sym.contacts.frictionless.LineContact`.
+    :class:`~linecontact_sym.contacts.normal.contact.LineContact`.
 
     >>> import linecontact_sym as lcs
     >>> lcs.worn_cylinder().profile.expr
@@ -128,7 +128,7 @@ def exact_cylinder(R=S.R, **kw):
     0 < a < R.
 
     ``R`` > 0; keywords go to
-    :class:`~linecontact_sym.contacts.frictionless.LineContact`.
+    :class:`~linecontact_sym.contacts.normal.contact.LineContact`.
 
     >>> import linecontact_sym as lcs
     >>> lcs.exact_cylinder().profile.expr

@@ -26,7 +26,7 @@ Conventions (Popov 2017):
   (no assumptions: complex).
 * ``nu``     -- Poisson's ratio (plane strain: sigma_y = nu (sigma_x + sigma_z)).
 
-Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential`:
+Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential.contact`:
 
 * ``mu``  -- Coulomb friction coefficient (one coefficient, static = kinetic).
 * ``Q``   -- tangential force per unit length, signed (real): its sign is the

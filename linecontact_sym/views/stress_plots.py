@@ -3,7 +3,7 @@ normalised coordinates (x/a, z/a) with the depth downwards, and the
 stresses along the axis x = 0.
 
 The functions take the field as a callable ``field(x, z, quantity)`` (the
-:class:`~linecontact_sym.contacts.stress_field.FieldEvaluator` of
+:class:`~linecontact_sym.contacts.stresses.field.FieldEvaluator` of
 ``StressField.field(...)``, or any function of that shape) and know nothing
 of contacts.  matplotlib is the optional extra ``[plot]``, imported when a
 plot is drawn.

@@ -10,18 +10,18 @@ import time
 import mpmath
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.budget import run_with_budget
-from ..core.conversion import float_values, rational, real_mpf, to_mpf
-from ..core.errors import BudgetExceeded, DomainError, NoEquilibriumError, NoPullOffError
-from ..method.derivation import Derivation
-from ..method.transforms import mean_quad
-from ..method.rules import Step
-from ..method.verification import VERIFY_DPS, VerificationRecord, digits_agreeing, verify
-from .equilibria import equilibria, landscape, minimum
+from ...core import symbols as S
+from ...core.budget import run_with_budget
+from ...core.conversion import float_values, rational, real_mpf, to_mpf
+from ...core.errors import BudgetExceeded, DomainError, NoEquilibriumError, NoPullOffError
+from ...method.derivation import Derivation
+from ...method.transforms import mean_quad
+from ...method.rules import Step
+from ...method.verification import VERIFY_DPS, VerificationRecord, digits_agreeing, verify
+from ..normal.equilibria import equilibria, landscape, minimum
 from .jkr import GAMMA_RANGE, flat_punch_force, phat_energy
 from .pull_off import NumericDerivation, sample_points, single_power, solve_load, tidy_checked
-from ..core.precision import workdps
+from ...core.precision import workdps
 
 _phi = sp.Symbol("phi", positive=True)
 

@@ -16,9 +16,9 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
-from linecontact_sym.contacts import tangential_reference as ref
+from linecontact_sym.contacts.tangential import reference as ref
 from linecontact_sym.contacts.base import CONTACT_KINDS, qualified_quantities
-from linecontact_sym.contacts.tangential import TangentialLineContact
+from linecontact_sym.contacts.tangential.contact import TangentialLineContact
 from linecontact_sym.core import symbols as S
 from linecontact_sym.core.errors import DomainError, GrossSlidingError
 from linecontact_sym.method.verification import digits_agreeing

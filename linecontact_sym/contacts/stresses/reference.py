@@ -3,7 +3,7 @@ the Flamant integrals (Johnson 1985, Eq. 2.23) of the surface tractions
 themselves, and of the Cauchy transform of the pressure.
 
 It shares nothing with the closed forms and the numeric field of
-:mod:`.kolosov` / :mod:`.stress_field` (which integrate the punch density
+:mod:`.kolosov` / :mod:`.field` (which integrate the punch density
 P'(t) against the flat-punch potential): here the pressure p(s) and the
 traction q(s) are integrated against the real Flamant kernels.
 
@@ -22,7 +22,7 @@ s = 0 for power laws, s = +-b for the worn cylinder), by tanh-sinh.
 from __future__ import annotations
 
 import mpmath
-from ..core.precision import workdps
+from ...core.precision import workdps
 
 
 def _pieces(x, z, a, breaks):

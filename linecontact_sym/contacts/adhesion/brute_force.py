@@ -10,10 +10,10 @@ import math
 
 import mpmath
 
-from ..core.errors import NoPullOffError, VerificationError
-from ..core.roots import Outside, golden_minimum
-from .force_law import GUARD, PullOff
-from ..core.precision import workdps
+from ...core.errors import NoPullOffError, VerificationError
+from ...core.roots import Outside, golden_minimum
+from ..normal.force_law import GUARD, PullOff
+from ...core.precision import workdps
 
 #: points of the brute-force grid of method B
 GRID_POINTS = 241
@@ -26,7 +26,7 @@ def _float_P0(quad):
     function the grid of :func:`minimum_by_grid` is sampled with."""
     import numpy as np
     import sympy as sp
-    from ..core import symbols as S
+    from ...core import symbols as S
     npf = quad.base.numeric_profile
     E = float(quad.base.E)
     f1 = sp.lambdify(S.x, sp.diff(npf.expr, S.x), "numpy")

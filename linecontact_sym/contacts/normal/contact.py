@@ -10,24 +10,24 @@ import time
 import mpmath
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.budget import DEFAULT_BUDGET, checked_budget
-from ..core.conversion import to_mpf
-from ..core.errors import DomainError, ProfileError
-from ..method import transforms as T
-from ..method.derivation import Derivation, derive, fallback_step
-from ..method.profile import Profile
-from ..numeric.exports import lambdify_numpy
-from ..method.rules import Problem, Step
-from ..method.verification import REQUIRED_DIGITS, verify
-from ..parsing import to_sympy
+from ...core import symbols as S
+from ...core.budget import DEFAULT_BUDGET, checked_budget
+from ...core.conversion import to_mpf
+from ...core.errors import DomainError, ProfileError
+from ...method import transforms as T
+from ...method.derivation import Derivation, derive, fallback_step
+from ...method.profile import Profile
+from ...numeric.exports import lambdify_numpy
+from ...method.rules import Problem, Step
+from ...method.verification import REQUIRED_DIGITS, verify
+from ...parsing import to_sympy
 from . import admissibility
-from .base import Contact, Quantity
+from ..base import Contact, Quantity
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 from .inverse import derive_half_width
-from .sampling import point_sampler
-from ..core.precision import workdps
+from ..sampling import point_sampler
+from ...core.precision import workdps
 
 
 class LineContact(Contact):
@@ -94,7 +94,7 @@ class LineContact(Contact):
         return contact
 
     def _repr_latex_(self):
-        from ..core.printing import to_latex
+        from ...core.printing import to_latex
         return f"$f(x) = {to_latex(self.profile.expr)}$"
 
     @property
@@ -286,31 +286,31 @@ class LineContact(Contact):
     # --------------------------------------------------------------- other forms
     def adhesive(self, work_of_adhesion=S.gamma):
         """The JKR-adhesive form of this contact (Eqs. 29-36), see
-        :mod:`linecontact_sym.contacts.adhesive`."""
-        from .adhesive import AdhesiveLineContact
+        :mod:`linecontact_sym.contacts.adhesion.contact`."""
+        from ..adhesion.contact import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
 
     def tangential(self, friction=S.mu):
         """The partial-slip tangential form of this contact under Coulomb
         friction mu at constant normal load (Cattaneo-Mindlin-Ciavarella-Jaeger),
-        see :mod:`linecontact_sym.contacts.tangential`."""
-        from .tangential import TangentialLineContact
+        see :mod:`linecontact_sym.contacts.tangential.contact`."""
+        from ..tangential.contact import TangentialLineContact
         return TangentialLineContact(self, friction)
 
     def stresses(self, tangential=None, **kw):
         """The subsurface stress field under this contact (plane strain), with
-        an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses`."""
-        from .stresses import SlidingStressField, StressField
+        an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses.contact`."""
+        from ..stresses.contact import SlidingStressField, StressField
         if tangential == "sliding":
             return SlidingStressField(self, **kw)
         return StressField(self, tangential, **kw)
 
     def check_admissible(self, dps: int = 20, **values):
-        """See :func:`linecontact_sym.contacts.admissibility.check_admissible`."""
+        """See :func:`linecontact_sym.contacts.normal.admissibility.check_admissible`."""
         return admissibility.check_admissible(self, dps, **values)
 
     def admissible_range(self, a_max: float = 100.0, rtol: float = 1e-6, **values):
-        """See :func:`linecontact_sym.contacts.admissibility.admissible_range`."""
+        """See :func:`linecontact_sym.contacts.normal.admissibility.admissible_range`."""
         return admissibility.admissible_range(self, a_max, rtol, **values)
 
     def report(self, quantities=("force", "pressure", "gap")) -> str:

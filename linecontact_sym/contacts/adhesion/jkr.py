@@ -18,9 +18,9 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.conversion import to_mpf
-from ..core.precision import workdps
+from ...core import symbols as S
+from ...core.conversion import to_mpf
+from ...core.precision import workdps
 
 #: range of the work of adhesion at the random verification points
 GAMMA_RANGE = (0.005, 0.5)

@@ -7,13 +7,13 @@ import time
 
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.budget import DEFAULT_BUDGET, run_with_budget
-from ..core.conversion import rational
-from ..core.errors import BudgetExceeded, ProfileError
-from ..method import transforms as T
-from ..method.derivation import Derivation, derive, fallback_step
-from ..method.rules import Problem, Step
+from ...core import symbols as S
+from ...core.budget import DEFAULT_BUDGET, run_with_budget
+from ...core.conversion import rational
+from ...core.errors import BudgetExceeded, ProfileError
+from ...method import transforms as T
+from ...method.derivation import Derivation, derive, fallback_step
+from ...method.rules import Problem, Step
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 

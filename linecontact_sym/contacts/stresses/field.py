@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.errors import DomainError
+from ...core.errors import DomainError
 from .kolosov import kolosov_stresses
 
 #: two successive tanh-sinh levels agreeing to this (relative to the integral of the absolute

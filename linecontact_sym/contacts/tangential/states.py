@@ -2,27 +2,27 @@
 (:mod:`.tangential`): the verification points and the references (independent
 checks, and numeric values where there is no closed form), the energy and
 loop-displacement forms from the force law, and the stick half-width.  The
-load histories at numbers are in :mod:`.tangential_history`."""
+load histories at numbers are in :mod:`.history`."""
 from __future__ import annotations
 
 import time
 import mpmath
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.budget import run_with_budget
-from ..core.conversion import float_values, rational, to_mpf
-from ..core.errors import BudgetExceeded
-from ..method import transforms as T
-from ..method.derivation import Derivation, fallback_step
-from ..method.rules import Step
-from ..method.verification import verify
-from ..numeric.exports import make_callable
-from . import tangential_reference as ref
-from .equilibria import half_width_at
-from .force_law import ForceLaw
-from .sampling import point_sampler
-from ..core.precision import workdps
+from ...core import symbols as S
+from ...core.budget import run_with_budget
+from ...core.conversion import float_values, rational, to_mpf
+from ...core.errors import BudgetExceeded
+from ...method import transforms as T
+from ...method.derivation import Derivation, fallback_step
+from ...method.rules import Step
+from ...method.verification import verify
+from ...numeric.exports import make_callable
+from . import reference as ref
+from ..normal.equilibria import half_width_at
+from ..normal.force_law import ForceLaw
+from ..sampling import point_sampler
+from ...core.precision import workdps
 
 #: the conditions of validity, attached to every tangential derivation
 CONDITIONS = ("valid for: plane strain; elastically similar bodies or Dundurs' beta neglected; Coulomb friction "

@@ -13,10 +13,10 @@ import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
 from linecontact_sym.core.errors import DomainError
 from linecontact_sym.contacts.base import CONTACT_KINDS, qualified_quantities
-from linecontact_sym.contacts.stress_field import (CauchyPotential, ClosedPotential, FieldEvaluator,
+from linecontact_sym.contacts.stresses.field import (CauchyPotential, ClosedPotential, FieldEvaluator,
                                                    PunchPotential)
-from linecontact_sym.contacts.stress_reference import flamant_stresses, punch_potentials
-from linecontact_sym.contacts.stresses import SlidingStressField, StressField
+from linecontact_sym.contacts.stresses.reference import flamant_stresses, punch_potentials
+from linecontact_sym.contacts.stresses.contact import SlidingStressField, StressField
 
 PHI = (1 + math.sqrt(5)) / 2
 #: Hertz with p0 = a = 1: E* = 2, R = 1

@@ -16,7 +16,7 @@ a callable          q(s) vectorised float64 (numeric field only)
 The closed forms go through the Cauchy transform of the pressure, G(zeta) =
 int p(s)/(zeta - s) ds = int_0^a P'(t) (zeta^2 - t^2)^(-1/2) dt (Popov's
 flat punches, :mod:`.kolosov`), and are verified against the mpmath
-quadrature of the Flamant integrals of p and q (:mod:`.stress_reference`).
+quadrature of the Flamant integrals of p and q (:mod:`.reference`).
 """
 from __future__ import annotations
 
@@ -25,17 +25,17 @@ import time
 import numpy as np
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.errors import DomainError, LineContactError
-from ..parsing import user_value
-from ..method.derivation import Derivation, fallback_step, values_by_name
-from ..method.rules import Step
-from . import stress_build as B
-from . import stress_extrema as X
-from . import stress_field as F
-from .base import ContactOn, Quantity
+from ...core import symbols as S
+from ...core.errors import DomainError, LineContactError
+from ...parsing import user_value
+from ...method.derivation import Derivation, fallback_step, values_by_name
+from ...method.rules import Step
+from . import build as B
+from . import extrema as X
+from . import field as F
+from ..base import ContactOn, Quantity
 from .kolosov import cauchy_transform, punch_integral, t
-from ..core.precision import workdps
+from ...core.precision import workdps
 
 #: the integration variable of a traction given as an expression (real: s < 0 too)
 s_real = sp.Symbol("s", real=True)
@@ -256,7 +256,7 @@ class StressField(ContactOn):
 
     def maximum(self, criterion: str = "principal_shear", **values) -> X.StressMaximum:
         """The verified maximum of an equivalent stress ('principal_shear',
-        'von_mises', 'tresca') at numeric values: :func:`.stress_extrema.find_maximum`."""
+        'von_mises', 'tresca') at numeric values: :func:`.extrema.find_maximum`."""
         fe = self.field(**values)
         sym = self.tangential is None or (self.tangential == "sliding" and float(fe.mu) == 0)
         return X.find_maximum(lambda x, z: fe(x, z, criterion), float(values["a"]), criterion, symmetric=sym)
@@ -264,7 +264,7 @@ class StressField(ContactOn):
     def friction_limit(self, criterion: str = "principal_shear", **values):
         """Sliding: ``(mu_c, check, digits, kind)``, the friction coefficient
         above which the maximum lies on the surface
-        (:func:`.stress_extrema.critical_friction`)."""
+        (:func:`.extrema.critical_friction`)."""
         if self.tangential != "sliding":
             raise LineContactError("the critical friction is defined for a sliding contact (tangential='sliding')")
         values = {k: v for k, v in values.items() if k != "mu"}
@@ -295,7 +295,7 @@ class StressField(ContactOn):
         """Contour map of a stress over (x/a, z/a), scaled by the reference
         pressure, the verified maximum marked; parameters by name, other
         keywords to :func:`linecontact_sym.views.stress_plots.contour`."""
-        from ..views.stress_plots import contour
+        from ...views.stress_plots import contour
         values = self._plot_values(kw)
         scale, label = self.reference_pressure(**values)
         if mark_maximum and quantity in F.CRITERIA:
@@ -306,7 +306,7 @@ class StressField(ContactOn):
     def plot_axis(self, quantities=("sigma_x", "sigma_z", "principal_shear", "von_mises"), **kw):
         """The stresses along the axis x = 0 against z/a:
         :func:`linecontact_sym.views.stress_plots.axis_profile`."""
-        from ..views.stress_plots import axis_profile
+        from ...views.stress_plots import axis_profile
         values = self._plot_values(kw)
         scale, label = self.reference_pressure(**values)
         return axis_profile(self.field(**values), float(values["a"]), quantities, scale=scale, scale_label=label, **kw)
@@ -443,7 +443,7 @@ def _axis_closed_form(sf):
     if "_axis" in cache:
         return cache["_axis"]
     cache["_axis"] = None
-    from ..core.budget import run_with_budget
+    from ...core.budget import run_with_budget
     Gd = sf.derivation("cauchy_transform")
     if not Gd.closed_form or sf.tangential is not None:
         return None
@@ -493,7 +493,7 @@ def _derive_maximum(sf, name):
 def _check_maximum(sf, expr, reference, variables):
     """The axis closed form against the 2-D search at two random points."""
     import random
-    from ..method.verification import VerificationRecord, digits_agreeing
+    from ...method.verification import VerificationRecord, digits_agreeing
     import mpmath
     sample = B.sampler(sf)
     rng, pts, digits = random.Random(11), [], []

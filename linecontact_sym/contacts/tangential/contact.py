@@ -79,7 +79,7 @@ ln(|x - xi|/a): reference length a)::
 another reference length L adds (2 Q/(pi E*)) ln(L/a): it shears the fretting
 loop and leaves its area W unchanged.
 
-Independent checks: :mod:`.tangential_reference` (inversion of the stick-zone
+Independent checks: :mod:`.reference` (inversion of the stick-zone
 singular integral equation, the Flamant kernel, the friction work, and a
 direct boundary-element solution with a Coulomb active set).
 """
@@ -89,15 +89,15 @@ import time
 
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.errors import DomainError
-from ..method.derivation import Derivation, fallback_step
-from ..method.rules import Step
-from ..method.verification import verify
-from ..parsing import to_sympy, user_value
-from . import tangential_history as history
-from . import tangential_states as states
-from .base import ContactOn, Quantity
+from ...core import symbols as S
+from ...core.errors import DomainError
+from ...method.derivation import Derivation, fallback_step
+from ...method.rules import Step
+from ...method.verification import verify
+from ...parsing import to_sympy, user_value
+from . import history
+from . import states
+from ..base import ContactOn, Quantity
 
 #: range of the friction coefficient at the verification points
 MU_RANGE = (0.1, 1.0)
@@ -124,7 +124,7 @@ UNLOADING = ((1, S.c_s), (-2, S.c_r))
 
 class TangentialLineContact(ContactOn):
     """Partial-slip tangential line contact (Coulomb friction, constant normal
-    load) built from a frictionless :class:`~.frictionless.LineContact`; see
+    load) built from a frictionless :class:`~.contact.LineContact`; see
     the module docstring for the formulas and their conditions.
 
     Parameters
@@ -267,7 +267,7 @@ class TangentialLineContact(ContactOn):
             notes = (f"not verified here: the independent check integrates the {' and '.join(missing)}, which "
                      f"has no closed form for this profile (nested quadratures); the same identity is verified "
                      f"at 30 digits on profiles with a closed pressure and against the direct solution "
-                     f"(tangential_reference.CoulombBEM)",)
+                     f"(reference.CoulombBEM)",)
         elif closed and self.contact.verify:
             rec = verify(expr, check, sampler, conditions, n_points=self.contact.points, reference_name=how)
             if not rec.passed:
@@ -361,7 +361,7 @@ class TangentialLineContact(ContactOn):
     def state(self, Q, **values):
         """The partial-slip state after monotonic loading from 0 to Q (numbers:
         ``a`` or ``P``, E_star, the profile's parameters, mu if symbolic); a
-        :class:`~.tangential_history.TangentialState`.
+        :class:`~.history.TangentialState`.
 
         >>> import linecontact_sym as lcs
         >>> t = lcs.parabola(verify=False).tangential()
@@ -386,12 +386,12 @@ class TangentialLineContact(ContactOn):
     def cycle(self, Q_amplitude, points: int = 41, **values):
         """A full fretting cycle between +-Q_amplitude: the loop (Q, delta),
         the stick half-width at the extremes and the energy dissipated per
-        cycle; a :class:`~.tangential_history.FrettingCycle`."""
+        cycle; a :class:`~.history.FrettingCycle`."""
         return history.cycle(self, Q_amplitude, points, values)
 
     def bem(self, elements: int = 200, **values):
         """The independent direct solution on this contact's normal pressure
-        (:class:`~.tangential_reference.CoulombBEM`) at numbers (``a`` or
+        (:class:`~.reference.CoulombBEM`) at numbers (``a`` or
         ``P``, E_star, parameters, mu)."""
         return history.bem(self, elements, values)
 

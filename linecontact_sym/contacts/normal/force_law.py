@@ -30,12 +30,12 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.conversion import to_basic, to_mpf
-from ..core.errors import DomainError
-from ..core.roots import UNDEFINED, Outside, real_value
-from ..method.transforms import NumericProfile, inside
-from ..core.precision import workdps
+from ...core import symbols as S
+from ...core.conversion import to_basic, to_mpf
+from ...core.errors import DomainError
+from ...core.roots import UNDEFINED, Outside, real_value
+from ...method.transforms import NumericProfile, inside
+from ...core.precision import workdps
 
 #: extra working digits of the numeric searches
 GUARD = 15
@@ -178,7 +178,7 @@ class ForceLaw:
 
     @classmethod
     def from_contact(cls, contact, values: dict, mode: str = "closed"):
-        """The non-adhesive law of a :class:`~.frictionless.LineContact` at
+        """The non-adhesive law of a :class:`~.contact.LineContact` at
         ``values``: the closed form where the engine found one (``mode='closed'``,
         with the quadrature as fallback off its domain), else the quadrature."""
         quad = cls.from_profile(contact.profile, values)

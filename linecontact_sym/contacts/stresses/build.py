@@ -11,16 +11,16 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.conversion import nsimplify_basic, rational
-from ..method.derivation import Derivation, fallback_step
-from ..method.rules import Step
-from ..method.verification import verify_many
-from . import stress_field as F
+from ...core import symbols as S
+from ...core.conversion import nsimplify_basic, rational
+from ...method.derivation import Derivation, fallback_step
+from ...method.rules import Step
+from ...method.verification import verify_many
+from . import field as F
 from .kolosov import density_breakpoints, symbolic_stresses, t
-from .sampling import point_sampler
-from .stress_reference import flamant_stresses, punch_potentials
-from ..core.precision import workdps
+from ..sampling import point_sampler
+from .reference import flamant_stresses, punch_potentials
+from ...core.precision import workdps
 
 
 def sampler(sf):
@@ -104,7 +104,7 @@ def flamant_reference(sf):
     """``reference(vals, dps) -> {sigma_x, sigma_z, tau_xz}``: the Flamant
     quadrature of the tractions (independent of the closed forms) where the
     pressure is closed; otherwise Popov's punch superposition in mpmath
-    (:func:`.stress_reference.punch_potentials`, no nested quadrature)."""
+    (:func:`.reference.punch_potentials`, no nested quadrature)."""
     if not sf.contact.derivation("pressure").closed_form and sf.tangential in (None, "sliding", "partial_slip"):
         return _punch_reference(sf)
 
@@ -118,7 +118,7 @@ def flamant_reference(sf):
 
 
 def _punch_reference(sf):
-    from .force_law import ForceLaw
+    from ..normal.force_law import ForceLaw
     from .kolosov import kolosov_stresses
 
     def reference(vals, dps):
@@ -200,7 +200,7 @@ def _potential(sf, vals, a_value):
         G = Gd.expr.xreplace(at)
         return F.ClosedPotential(sp.lambdify(S.zeta, G, "numpy"),
                                  sp.lambdify(S.zeta, sp.diff(G, S.zeta), "numpy"), float(a_value))
-    from ..numeric.exports import lambdify_numpy
+    from ...numeric.exports import lambdify_numpy
     D = sf._density().xreplace({k: v for k, v in at.items() if k != S.a})
     bps = [nsimplify_basic(b.xreplace(at)) for b in density_breakpoints(D)]
     near = {float(b): (_offset_density(D, b, 1), _offset_density(D, b, -1)) for b in bps}
@@ -212,7 +212,7 @@ def _offset_density(D, b, side):
     """D(b + side*d) as a float64 function of the offset d > 0, the
     arguments of its square roots put over one denominator and factored, so
     that no t - b is formed (the density may be singular at a kink, b)."""
-    from ..numeric.exports import lambdify_numpy
+    from ...numeric.exports import lambdify_numpy
     d = sp.Dummy("d", positive=True)
     e = D.subs(S.a, b + side * d)
     if e.has(sp.Piecewise):
@@ -235,7 +235,7 @@ def build_field(sf, vals) -> F.FieldEvaluator:
         tangential = F.Scaled(_potential(sf, vals, sf.stick.xreplace(vals)), -mu)
     elif isinstance(sf.tangential, sp.Expr):
         q = sf.tangential.xreplace({k: v for k, v in vals.items() if k != S.x})
-        from ..numeric.quadrature import piecewise_breakpoints
+        from ...numeric.quadrature import piecewise_breakpoints
         bps = [float(b) for b in piecewise_breakpoints(q, S.x) if b.is_number] + list(sf.breaks)
         tangential = F.CauchyPotential(sp.lambdify(S.x, q, "numpy"), float(vals[S.a]), bps + [-b for b in bps])
     elif sf.tangential not in (None, "sliding"):

@@ -56,13 +56,13 @@ import time
 
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.budget import run_with_budget
-from ..core.errors import BudgetExceeded, DivergentIntegralError
-from ..method.derivation import tidy
-from ..method.hyperseries import NotDecomposable, beta_kernel_sum, decompose
-from ..method.rules import NotApplicable, Rule, Step
-from ..method.transforms import t  # the punch half-width, the integration variable of (*)
+from ...core import symbols as S
+from ...core.budget import run_with_budget
+from ...core.errors import BudgetExceeded, DivergentIntegralError
+from ...method.derivation import tidy
+from ...method.hyperseries import NotDecomposable, beta_kernel_sum, decompose
+from ...method.rules import NotApplicable, Rule, Step
+from ...method.transforms import t  # the punch half-width, the integration variable of (*)
 
 
 def kolosov_stresses(G, dG, H, dH, z, re, im, pi):

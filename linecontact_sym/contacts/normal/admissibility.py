@@ -18,10 +18,10 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.errors import DomainError, InadmissibleProfileError
-from ..parsing import to_sympy
-from ..core.precision import workdps
+from ...core import symbols as S
+from ...core.errors import DomainError, InadmissibleProfileError
+from ...parsing import to_sympy
+from ...core.precision import workdps
 
 
 def _mp_function(contact, quantity, dps):

@@ -55,12 +55,12 @@ from dataclasses import dataclass
 
 import mpmath
 
-from ..core.conversion import to_mpf
-from ..core.extras import require
-from ..core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
-from ..core.roots import UNDEFINED, domain_end, root_in_log
+from ...core.conversion import to_mpf
+from ...core.extras import require
+from ...core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
+from ...core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
-from ..core.precision import workdps
+from ...core.precision import workdps
 
 #: relative width below which an interval is not split
 MIN_WIDTH = mpmath.mpf("1e-10")
@@ -137,9 +137,9 @@ class _Balls:
             self.reason = "no closed form (quadrature law)"
             return
         try:
-            from ..numeric.certified import compile_arb
+            from ...numeric.certified import compile_arb
             import sympy as sp
-            from ..core import symbols as S
+            from ...core import symbols as S
             d1 = sp.diff(expr, S.a)
             self.f = compile_arb(d1, [S.a])
             self.df = compile_arb(sp.diff(d1, S.a), [S.a])
@@ -150,7 +150,7 @@ class _Balls:
         self.ok = None
         if law.conditions:
             import sympy as sp
-            from ..core import symbols as S
+            from ...core import symbols as S
             self.ok = sp.lambdify(S.a, sp.And(*law.conditions), "mpmath")
 
     def __call__(self, fn, lo, hi):
@@ -163,7 +163,7 @@ class _Balls:
                 return None
         except Exception:
             return None
-        from ..numeric.certified import to_arb
+        from ...numeric.certified import to_arb
         flint = self.flint
         try:
             with flint.ctx.workprec(BALL_PREC):

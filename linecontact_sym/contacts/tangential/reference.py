@@ -54,7 +54,7 @@ from dataclasses import dataclass, field
 import mpmath
 import numpy as np
 
-from ..core.errors import DomainError, LineContactError
+from ...core.errors import DomainError, LineContactError
 
 
 # =====================================================================  mpmath

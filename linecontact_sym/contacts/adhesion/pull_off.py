@@ -26,19 +26,19 @@ import time
 import mpmath
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.budget import run_with_budget
-from ..core.conversion import float_values, real_mpf
-from ..core.errors import BudgetExceeded, NoPullOffError, VerificationError
-from ..method.derivation import Derivation, tidy
-from ..method.hyperseries import NotDecomposable, decompose
-from ..method.rules import Step
-from ..method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
+from ...core import symbols as S
+from ...core.budget import run_with_budget
+from ...core.conversion import float_values, real_mpf
+from ...core.errors import BudgetExceeded, NoPullOffError, VerificationError
+from ...method.derivation import Derivation, tidy
+from ...method.hyperseries import NotDecomposable, decompose
+from ...method.rules import Step
+from ...method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
                                    verify_many)
 from .brute_force import minimum_by_grid
-from .equilibria import landscape, minimum
-from .force_law import PullOff
-from ..core.precision import workdps
+from ..normal.equilibria import landscape, minimum
+from ..normal.force_law import PullOff
+from ...core.precision import workdps
 
 
 def single_power(P0):

@@ -31,21 +31,22 @@ import time
 
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.conversion import float_values, point_value
-from ..core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
+from ...core import symbols as S
+from ...core.conversion import float_values, point_value
+from ...core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
                            VerificationError)
-from ..method.derivation import Derivation, values_by_name
-from ..method.rules import Step
-from ..method.verification import verify
-from ..parsing import to_sympy, user_value
-from . import branches, pull_off
-from .base import ContactOn, Quantity
-from .equilibria import equilibria
-from .force_law import PullOff, ForceLaw
+from ...method.derivation import Derivation, values_by_name
+from ...method.rules import Step
+from ...method.verification import verify
+from ...parsing import to_sympy, user_value
+from . import branches
+from . import pull_off
+from ..base import ContactOn, Quantity
+from ..normal.equilibria import equilibria
+from ..normal.force_law import PullOff, ForceLaw
 from .jkr import GAMMA_RANGE, energy_release_rate, flat_punch_force, phat_energy, stress_intensity
-from .sampling import point_sampler
-from ..core.precision import workdps
+from ..sampling import point_sampler
+from ...core.precision import workdps
 
 __all__ = ["AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "NumericValuesRequired",
            "PullOff", "flat_punch_force", "stress_intensity", "energy_release_rate", "GAMMA_RANGE"]
@@ -56,7 +57,7 @@ _PULL_OFF = ("pull_off_force", "adhesion_force", "pull_off_half_width")
 
 
 class AdhesiveLineContact(ContactOn):
-    """JKR-adhesive form of a :class:`~linecontact_sym.contacts.frictionless.LineContact`
+    """JKR-adhesive form of a :class:`~linecontact_sym.contacts.normal.contact.LineContact`
     (Popov 2017, Eqs. 29-36); see the module docstring.
 
     Parameters
@@ -236,7 +237,7 @@ class AdhesiveLineContact(ContactOn):
         prof, gexpr = self.profile, self.gamma
 
         def reference(vals, dps):
-            from ..method import transforms as T
+            from ...method import transforms as T
             with workdps(dps + 10):
                 return T.force_quad(prof, vals, dps) - phat_energy(
                     vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)

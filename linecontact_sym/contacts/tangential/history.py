@@ -11,16 +11,16 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..core import symbols as S
-from ..core.conversion import exact_number, to_mpf
-from ..core.errors import DomainError, GrossSlidingError, LineContactError
-from ..core.roots import root_in_log
-from ..numeric.exports import lambdify_numpy, make_callable
-from ..parsing import to_sympy
-from . import tangential_reference as ref
-from .equilibria import half_width_at
-from .tangential_states import _law, _mu
-from ..core.precision import workdps
+from ...core import symbols as S
+from ...core.conversion import exact_number, to_mpf
+from ...core.errors import DomainError, GrossSlidingError, LineContactError
+from ...core.roots import root_in_log
+from ...numeric.exports import lambdify_numpy, make_callable
+from ...parsing import to_sympy
+from . import reference as ref
+from ..normal.equilibria import half_width_at
+from .states import _law, _mu
+from ...core.precision import workdps
 
 #: |Q| within this relative distance of mu P is the onset of gross sliding (float64 inputs)
 ONSET_RTOL = mpmath.mpf("1e-14")
@@ -324,7 +324,7 @@ def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
 
 
 def bem(t, n, values):
-    """A :class:`~.tangential_reference.CoulombBEM` of this contact at numbers."""
+    """A :class:`~.reference.CoulombBEM` of this contact at numbers."""
     vals, law, A = _numbers(t, values)
     fixed = {s.name: float(v) for s, v in vals.items() if s in set(t.contact.variables)}
     brs = [float(b) for b in law.breaks()]

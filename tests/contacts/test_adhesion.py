@@ -13,9 +13,9 @@ from hypothesis import given, settings, strategies as st
 
 import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
-from linecontact_sym.contacts.adhesive import (AdhesiveLineContact, NoEquilibriumError, NoPullOffError,
+from linecontact_sym.contacts.adhesion.contact import (AdhesiveLineContact, NoEquilibriumError, NoPullOffError,
                                       NumericValuesRequired, flat_punch_force)
-from linecontact_sym.contacts.equilibria import minimum
+from linecontact_sym.contacts.normal.equilibria import minimum
 from linecontact_sym.method.verification import verify
 from linecontact_sym.core.errors import DomainError, LineContactError
 

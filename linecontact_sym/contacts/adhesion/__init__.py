@@ -1,0 +1,15 @@
+"""Adhesion on top of the normal contact: the JKR line contact of Popov (2017),
+Eqs. (29)-(36): a pulled flat punch (Eqs. 30-31) superposed on the non-adhesive
+solution; equilibria, stability, pull-off (Eqs. 34-36), jump-in and the
+branches of P(a).
+
+* :mod:`.contact`     -- :class:`AdhesiveLineContact` and its registry of quantities;
+* :mod:`.jkr`         -- the JKR law: the pulled flat punch, the stress-intensity and
+  energy routes;
+* :mod:`.pull_off`    -- the pull-off (symbolic attempt and numeric minimum);
+* :mod:`.branches`    -- pressure, jump-in half-width, the branches of P(a);
+* :mod:`.brute_force` -- the independent second pull-off method.
+"""
+from .contact import AdhesiveLineContact
+
+__all__ = ["AdhesiveLineContact"]
