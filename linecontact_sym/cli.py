@@ -66,6 +66,16 @@ def _dps(text):
     return v
 
 
+def _jobs(text):
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"--jobs expects a whole number >= 1, got {text!r}")
+    return n
+
+
 def _budget(text):
     """--budget: seconds > 0, or 'inf' / 'none' for no limit."""
     if text.strip().lower() in ("none", "inf", "infinity"):
@@ -135,7 +145,8 @@ def cmd_paper(args):
     if not args.quiet:
         print(f"checking {n} claims of {paper.title or paper.key}", file=sys.stderr, flush=True)
     bar = Progress(n, "checking", enabled=not args.quiet)
-    result = check_paper(paper, budget=args.budget, only=only, on_start=lambda i, n_, c: bar.start(c.label),
+    result = check_paper(paper, budget=args.budget, only=only, jobs=args.jobs,
+                         on_start=lambda i, n_, c: bar.start(c.label) if args.jobs == 1 else None,
                          progress=lambda i, n_, r: bar.done(r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
     bar.close()
     written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget)
@@ -344,7 +355,8 @@ def cmd_check(args):
                                          force_law=args.force_law))
         paper = Paper("command-line", "claims from the command line", "", claims, {}, "command line")
     bar = Progress(len(paper.claims), "checking", enabled=not args.quiet, min_total=2)
-    result = check_paper(paper, budget=args.budget, on_start=lambda i, n, c: bar.start(c.label),
+    result = check_paper(paper, budget=args.budget, jobs=args.jobs,
+                         on_start=lambda i, n, c: bar.start(c.label) if args.jobs == 1 else None,
                          progress=lambda i, n, r: bar.done(r.label, r.status, r.seconds))
     bar.close()
     if args.json:
@@ -383,6 +395,12 @@ def build_parser() -> argparse.ArgumentParser:
 
     sym_help = "extra symbol names used by the formulas (created positive)"
 
+    def jobs_arg(sp_):
+        from .core.parallel import default_jobs
+        sp_.add_argument("--jobs", "-j", type=_jobs, default=default_jobs(), metavar="N",
+                         help="check the claims in N worker processes (default: the cores, here "
+                              f"{default_jobs()}); the results are those of --jobs 1, in the same order")
+
     pp = sub.add_parser("paper", help="check every claim of a paper and write the reports",
                         description="Derive and check every claim of a paper (a shipped name such as "
                                     "popov2017, or a claims TOML file); print a report table and write a "
@@ -393,6 +411,7 @@ def build_parser() -> argparse.ArgumentParser:
     pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
     pp.add_argument("--only", nargs="+", metavar="LABEL", help="check only these claims, e.g. --only 'Eq. (10)'")
     pp.add_argument("--no-figures", action="store_true", help="do not draw the figures")
+    jobs_arg(pp)
     common(pp, quiet=True)
     pp.set_defaults(func=cmd_paper)
 
@@ -470,6 +489,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="sampling ranges, e.g. n=0.3:6")
     pc.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pc.add_argument("--strict", action="store_true", help="exit 1 unless every claim holds unconditionally")
+    jobs_arg(pc)
     common(pc, quiet=True)
     pc.set_defaults(func=cmd_check)
     return p

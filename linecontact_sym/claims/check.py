@@ -17,8 +17,8 @@ independently of the engine), and reports per claim one of
 """
 from __future__ import annotations
 
+import dataclasses
 import time
-from typing import Callable
 
 import mpmath
 import sympy as sp
@@ -37,6 +37,7 @@ from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult
 from .sampling import holds_at, sample_points
 from .spec import X_RANGES, Claim, Form, Paper, load_paper, substitute_placeholders
 from ..core.precision import workdps
+from .memo import point_key, remember, remembered, symbolic_key
 
 #: the digits a claim must reproduce
 REQUIRED_DIGITS = 30
@@ -44,7 +45,26 @@ REQUIRED_DIGITS = 30
 
 # =====================================================================  one form
 def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:
-    """Compare at one point; classify what is undefined where."""
+    """Compare at one point; classify what is undefined where.
+
+    The comparison (the printed form's value, the derived one, the
+    first-principles references) is remembered in the derivation store
+    (:mod:`linecontact_sym.method.store`: in this process, and on disk unless
+    the cache is off) under a key of everything it depends on: the derived
+    record (profile, expression, method, conditions), the printed form, the
+    point, the digits, and the source of the whole package (so a changed
+    reference never meets a value of its predecessor).  A second run reads
+    the numbers its first run computed independently; nothing is skipped."""
+    key = point_key(derived, printed_expr, vals, dps, physics)
+    pr = remembered(key, PointResult)
+    if pr is not None:
+        return dataclasses.replace(pr, values=vals, kind=kind)
+    pr = _evaluate_point(derived, printed_expr, vals, kind, dps, physics)
+    remember(key, pr)
+    return pr
+
+
+def _evaluate_point(derived, printed_expr, vals, kind, dps, physics) -> PointResult:
     try:
         comps = derived.compare(vals, printed_expr, dps, physics=physics)
     except Divergent as exc:
@@ -63,11 +83,19 @@ def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS,
     return PointResult(vals, kind, "pass" if d >= REQUIRED_DIGITS else "fail", d, comps)
 
 
-
-
 def _symbolic(printed, derived: Derived, vals, budget) -> str:
+    """SymPy's verdict on printed - derived (remembered like the comparisons)."""
     if derived.expr is None or not derived.closed_form:
         return ""
+    key = symbolic_key(printed, derived.expr, vals, budget)
+    note = remembered(key, str)
+    if note is None:
+        note = _symbolic_work(printed, derived, vals, budget)
+        remember(key, note)
+    return note
+
+
+def _symbolic_work(printed, derived: Derived, vals, budget) -> str:
     dex = derived.expr
     if isinstance(dex, sp.Piecewise) and vals is not None:
         for e, cnd in dex.args:
@@ -534,37 +562,12 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
 
 
 # =====================================================================  papers
-def check_paper(paper, *, budget: float = 20.0, progress: Callable | None = None, only=None,
-                dps: int = DPS, symbolic: bool = True, on_start: Callable | None = None) -> PaperResult:
-    """Check every claim of a paper (a :class:`Paper`, a path, or a shipped name).
-
-    ``on_start(i, n, claim)`` is called before and ``progress(i, n, result)``
-    after each claim (e.g. :class:`~linecontact_sym.core.progress.Progress`);
-    ``only`` limits the run to the given labels."""
-    if not isinstance(paper, Paper):
-        paper = load_paper(paper)
-    budget = checked_budget(budget)
-    ctx = Context(budget)
-    t0 = time.perf_counter()
-    claims = [c for c in paper.claims if only is None or c.label in only]
-    results = []
-    for i, claim in enumerate(claims):
-        if on_start is not None:
-            on_start(i, len(claims), claim)
-        try:
-            r = check_claim(claim, ctx, budget=budget, dps=dps, symbolic=symbolic)
-        except ClaimError as exc:
-            r = ClaimResult(claim, UNDECIDED, f"{UNDECIDED}: {exc}", 0.0, 0.0)
-        except Exception as exc:  # noqa: BLE001 -- report, and go on with the next claim
-            r = ClaimResult(claim, UNDECIDED, f"{UNDECIDED}: internal error {type(exc).__name__}: {exc}", 0.0, 0.0)
-        results.append(r)
-        if progress is not None:
-            progress(i, len(claims), r)
-    return PaperResult(paper, results, time.perf_counter() - t0)
-
-
 def check_file(path, **kw) -> PaperResult:
     return check_paper(load_paper(path), **kw)
 
 
-__all__ = ["REQUIRED_DIGITS", "evaluate_point", "check_form", "check_claim", "check_paper", "check_file"]
+# the paper level (serial, or on an executor) builds on the above
+from .batch import check_claim_portable, check_paper  # noqa: E402
+
+__all__ = ["REQUIRED_DIGITS", "evaluate_point", "check_form", "check_claim", "check_claim_portable", "check_paper",
+           "check_file"]
