@@ -147,6 +147,12 @@ def _bisect_boundary(derived, printed, sym, v_fail, v_pass, base_vals, dps, iter
     """Locate the boundary between failing and passing values of one parameter."""
     lo, hi = mpmath.mpf(v_fail), mpmath.mpf(v_pass)
     for _ in range(iters):
+        # the boundary is reported as _nice(b): once both ends of the bracket
+        # round to the same simple rational, every later midpoint does too
+        # (the values rounding to one rational form an interval)
+        n_lo = _nice(lo)
+        if n_lo.is_Rational and n_lo == _nice(hi):
+            break
         mid = (lo + hi) / 2
         vals = dict(base_vals)
         vals[sym] = sp.Rational(str(mpmath.nstr(mid, 20)))
@@ -347,35 +353,41 @@ def check_claim(claim: Claim, ctx: Context | None = None, *, budget: float = 20.
     t0 = time.perf_counter()
     if claim.values:
         return _check_table(claim, ctx, t0)
-    targets = []
-    profiles = claim.profiles or [(None, None)]
-    for ptxt, prof in profiles:
-        try:
-            derived = derive(claim, prof, ctx)
-        except ImportError as exc:
-            targets.append(TargetResult(ptxt, None, [], UNDECIDED, error=f"engine module missing: {exc}"))
-            continue
-        except (LineContactError, BudgetExceeded) as exc:
-            targets.append(TargetResult(ptxt, None, [], UNDECIDED, error=f"{type(exc).__name__}: {exc}"))
-            continue
-        except Exception as exc:  # noqa: BLE001 -- an engine bug must not stop the other claims
-            targets.append(TargetResult(ptxt, None, [], UNDECIDED,
-                                        error=f"internal error in the engine: {type(exc).__name__}: {exc}"))
-            continue
-        dforce, dpress = placeholder_laws(claim, prof, ctx)
-        frs = []
-        try:
-            for form in claim.forms:
-                printed = substitute_placeholders(form.expr, prof, dforce, dpress)
-                frs.append(check_form(claim, form, derived, printed, dps=dps, budget=_capped(budget, 10.0),
-                                      symbolic=symbolic, force_law=lambda: _force_law(claim, prof, ctx, printed)))
-        except ClaimError as exc:
-            targets.append(TargetResult(ptxt, derived, frs, UNDECIDED, error=str(exc)))
-            continue
-        st, cond = _combine_forms(frs)
-        targets.append(TargetResult(ptxt, derived, frs, st, cond))
+    targets = [check_target(claim, ptxt, prof, ctx, budget=budget, dps=dps, symbolic=symbolic)
+               for ptxt, prof in (claim.profiles or [(None, None)])]
+    return claim_result(claim, targets, time.perf_counter() - t0)
+
+
+def claim_result(claim: Claim, targets: list, seconds: float) -> ClaimResult:
+    """The verdict on a claim from the verdicts for each of its profiles."""
     status, verdict, digits = _combine_targets(claim, targets)
-    return ClaimResult(claim, status, verdict, digits, time.perf_counter() - t0, targets)
+    return ClaimResult(claim, status, verdict, digits, seconds, targets)
+
+
+def check_target(claim: Claim, ptxt, prof, ctx: Context, *, budget, dps: int = DPS,
+                 symbolic: bool = True) -> TargetResult:
+    """Derive and compare one claim for one of its (test) profiles: the part
+    of :func:`check_claim` that is independent of the other profiles."""
+    try:
+        derived = derive(claim, prof, ctx)
+    except ImportError as exc:
+        return TargetResult(ptxt, None, [], UNDECIDED, error=f"engine module missing: {exc}")
+    except (LineContactError, BudgetExceeded) as exc:
+        return TargetResult(ptxt, None, [], UNDECIDED, error=f"{type(exc).__name__}: {exc}")
+    except Exception as exc:  # noqa: BLE001 -- an engine bug must not stop the other claims
+        return TargetResult(ptxt, None, [], UNDECIDED,
+                            error=f"internal error in the engine: {type(exc).__name__}: {exc}")
+    dforce, dpress = placeholder_laws(claim, prof, ctx)
+    frs = []
+    try:
+        for form in claim.forms:
+            printed = substitute_placeholders(form.expr, prof, dforce, dpress)
+            frs.append(check_form(claim, form, derived, printed, dps=dps, budget=_capped(budget, 10.0),
+                                  symbolic=symbolic, force_law=lambda: _force_law(claim, prof, ctx, printed)))
+    except ClaimError as exc:
+        return TargetResult(ptxt, derived, frs, UNDECIDED, error=str(exc))
+    st, cond = _combine_forms(frs)
+    return TargetResult(ptxt, derived, frs, st, cond)
 
 
 def _force_law(claim, prof, ctx, printed):
@@ -569,5 +581,5 @@ def check_file(path, **kw) -> PaperResult:
 # the paper level (serial, or on an executor) builds on the above
 from .batch import check_claim_portable, check_paper  # noqa: E402
 
-__all__ = ["REQUIRED_DIGITS", "evaluate_point", "check_form", "check_claim", "check_claim_portable", "check_paper",
-           "check_file"]
+__all__ = ["REQUIRED_DIGITS", "evaluate_point", "check_form", "check_claim", "check_target", "claim_result",
+           "check_claim_portable", "check_paper", "check_file"]

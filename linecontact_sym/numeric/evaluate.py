@@ -304,7 +304,10 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         if certified:
             raise LineContactError("certified evaluation takes scalars; loop over the points")
         values = {**values, **arrays}
-    values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
+    if not arrays and hasattr(contact, "check_domain_scalar"):
+        values = contact.check_domain_scalar(quantity, values)   # the same check, plain Python for scalars
+    else:
+        values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
 
     if certified:
         return _certified(d, quantity, values, rtol, dps, t0)

@@ -42,6 +42,7 @@ def fresh(monkeypatch):
     monkeypatch.setattr(M, "remembered", lambda key, kind: None)
 
 
+@pytest.mark.slow
 def test_processes_give_the_serial_results_in_order(fresh):
     serial = C.check_paper(_paper(), budget=BUDGET, jobs=1)
     done = []
@@ -98,6 +99,7 @@ def test_second_run_reads_the_comparisons(monkeypatch):
     assert k1 != M.point_key(d, claim.formula.expr, {**vals, next(iter(vals)): 7}, 45, False)
 
 
+@pytest.mark.slow
 def test_dask_cluster(fresh):
     distributed = pytest.importorskip("distributed")
     serial = C.check_paper(_paper(), budget=BUDGET)
