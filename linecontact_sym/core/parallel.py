@@ -12,10 +12,11 @@ True
 """
 from __future__ import annotations
 
+import functools
 import os
 from typing import Callable, Iterable
 
-__all__ = ["default_jobs", "process_pool", "map_ordered"]
+__all__ = ["default_jobs", "process_pool", "map_ordered", "map_chunks"]
 
 
 def default_jobs() -> int:
@@ -66,3 +67,41 @@ def map_ordered(fn: Callable, items: Iterable, executor=None, *, on_done: Callab
     for fut in as_completed(futures):
         finish(futures[fut], fut.result)
     return out
+
+
+def _call_kw(fn, kw):
+    return fn(**kw)
+
+
+def map_chunks(fn: Callable, executor=None, *, chunks: int | None = None, **arrays):
+    """``fn(**arrays)`` for a vectorised ``fn`` (a float64 export, a stress
+    field's evaluator ``lambda x, z: ...``), the broadcast arrays cut into
+    ``chunks`` blocks of rows (default: one per worker of a process pool,
+    else 4), each evaluated by ``executor`` (None: in this process), the
+    blocks joined again: the same values as one call.  ``fn`` must pickle for
+    a process pool or a Dask cluster (exports, contacts and a stress
+    contact's ``to_numeric`` functions do); it travels with each block and
+    compiles again there, so few large blocks beat many small ones.
+
+    >>> import numpy as np
+    >>> map_chunks(lambda x, y: x * y, x=np.arange(6.0), y=2.0, chunks=3)
+    array([ 0.,  2.,  4.,  6.,  8., 10.])
+    """
+    import numpy as np
+    names = list(arrays)
+    shape = np.broadcast_shapes(*[np.shape(a) for a in arrays.values()])
+    if not shape or executor is None and chunks is None:
+        return fn(**arrays)
+    full = {n: np.broadcast_to(np.asarray(a), shape) for n, a in arrays.items()}
+    if chunks is None:
+        chunks = getattr(executor, "_max_workers", None) or 4
+    edges = np.linspace(0, shape[0], min(chunks, shape[0]) + 1).astype(int)
+    blocks = [{n: full[n][lo:hi] for n in names} for lo, hi in zip(edges[:-1], edges[1:]) if hi > lo]
+    if executor is None:
+        parts = [fn(**b) for b in blocks]
+    else:
+        parts = map_ordered(functools.partial(_call_kw, fn), blocks, executor)
+    if isinstance(parts[0], dict):      # an evaluator returning every component
+        return {k: np.concatenate([np.broadcast_to(p[k], np.shape(b[names[0]])) for p, b in zip(parts, blocks)])
+                for k in parts[0]}
+    return np.concatenate([np.broadcast_to(p, np.shape(b[names[0]])) for p, b in zip(parts, blocks)])

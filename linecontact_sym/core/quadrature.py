@@ -32,7 +32,7 @@ import mpmath
 import sympy as sp
 
 from .conversion import to_mpf
-from .precision import extradps
+from .precision import extradps, workprec
 
 #: tanh-sinh degree used throughout (mpmath's default is 6)
 MAXDEGREE = 10
@@ -151,7 +151,7 @@ def _decades_below(r) -> int:
     working precision's logarithm costs a fifth of a quadrature near the
     ends); recomputed at the working precision in the rare case that the
     53-bit value lies within 1e-9 of an integer, so the result is exact."""
-    with mpmath.workprec(53):
+    with workprec(53):
         v = float(-mpmath.log10(r))
     k = int(v)
     if min(v - k, k + 1 - v) < 1e-9:

@@ -506,15 +506,15 @@ class NumericFunction:
         self.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(self.arguments)}.\n"
                         f"Formula: {derivation.expr}\nMethod: {derivation.method}")
         self._fn = compile_callable(derivation, backend, dps, params, stable)
-        self._scalar = _UNSET
+        self._scalar = None   # the scalar fast path, built on the first call
 
     def __call__(self, *args, **kw):
         if not args:
             fast = self._scalar
-            if fast is _UNSET:
+            if fast is None:
                 from .fastpath import scalar_plan
-                fast = self._scalar = scalar_plan(self)
-            if fast is not None:
+                fast = self._scalar = scalar_plan(self) or False
+            if fast:
                 v = fast(kw)
                 if v is not None:
                     return v
@@ -540,14 +540,11 @@ class NumericFunction:
                                    f"contact and export again")
         state = dict(self.__dict__)
         state["_fn"] = None
-        state["_scalar"] = _UNSET
+        state["_scalar"] = None
         return state
 
     def __repr__(self):
         return f"<{self.derivation.quantity} ({self.backend}) of {', '.join(self.arguments)}>"
-
-
-_UNSET = object()   # the scalar plan not built yet
 
 
 def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=True):
