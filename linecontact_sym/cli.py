@@ -145,11 +145,24 @@ def cmd_paper(args):
     if not args.quiet:
         print(f"checking {n} claims of {paper.title or paper.key}", file=sys.stderr, flush=True)
     bar = Progress(n, "checking", enabled=not args.quiet)
-    result = check_paper(paper, budget=args.budget, only=only, jobs=args.jobs,
-                         on_start=lambda i, n_, c: bar.start(c.label) if args.jobs == 1 else None,
-                         progress=lambda i, n_, r: bar.done(r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
+    kw = dict(budget=args.budget, only=only, on_start=lambda i, n_, c: bar.start(c.label) if args.jobs == 1 else None,
+              progress=lambda i, n_, r: bar.done(r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
+    drawn = None
+    if args.jobs > 1:
+        # one pool for the claims and, beside them, the figures
+        from .claims.figures import draw_figures
+        from .core.parallel import process_pool
+        with process_pool(args.jobs) as pool:
+            figs = None
+            if not args.no_figures and paper.figures:
+                out.mkdir(parents=True, exist_ok=True)
+                figs = pool.submit(draw_figures, paper, out, budget=args.budget)
+            result = check_paper(paper, executor=pool, **kw)
+            drawn = figs.result() if figs is not None else None
+    else:
+        result = check_paper(paper, **kw)
     bar.close()
-    written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget)
+    written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget, drawn=drawn)
     if args.json:
         d = result.to_dict()
         d["written"] = {k: [str(p) for p in v] if isinstance(v, list) else str(v) for k, v in written.items()}
