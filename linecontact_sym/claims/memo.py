@@ -23,15 +23,25 @@ __all__ = ["source_version", "point_key", "symbolic_key", "remembered", "remembe
 _SOURCE: dict = {}
 
 
+#: files that present, schedule or draw results and compute none of them:
+#: editing them keeps the remembered comparisons
+_NOT_COMPUTING = ("cli.py", "__main__.py", "views/", "claims/report.py", "claims/figures.py", "claims/batch.py",
+                  "core/parallel.py", "core/progress.py")
+
+
 def source_version() -> str:
-    """A hash of the source of the whole package: the key part that retires
-    every remembered comparison when any code changes (the references, the
-    engine, the evaluators)."""
+    """A hash of the source of every module that computes (the references,
+    the engine, the evaluators, the checker; not the CLI, the reports, the
+    views or the scheduling): the key part that retires every remembered
+    comparison when any of that code changes."""
     if "hash" not in _SOURCE:
         root = Path(__file__).resolve().parent.parent
         h = hashlib.sha256()
         for path in sorted(root.rglob("*.py")):
-            h.update(str(path.relative_to(root)).encode())
+            rel = path.relative_to(root).as_posix()
+            if rel.startswith(_NOT_COMPUTING):
+                continue
+            h.update(rel.encode())
             h.update(path.read_bytes())
         _SOURCE["hash"] = h.hexdigest()[:16]
     return _SOURCE["hash"]
