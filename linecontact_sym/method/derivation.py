@@ -138,16 +138,18 @@ def fallback_step(why: str = "no closed form found") -> Step:
 
 
 def values_by_name(symbols, values):
-    """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
-    a float is its exact binary value (:func:`~linecontact_sym.core.conversion.point_value`),
-    as in every evaluation path of the package."""
+    """THE binding of values: keyword values (by symbol name or Symbol) ->
+    {Symbol: exact SymPy number}; text through the whitelisted parser, every
+    number through the one converter
+    (:func:`~linecontact_sym.core.conversion.point_value`: a float is its
+    exact binary value, as in every evaluation path of the package)."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = point_value(v) if isinstance(v, float) else to_sympy(v)
+        out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")

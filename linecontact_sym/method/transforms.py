@@ -41,6 +41,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.quadrature import quad0
+from ..core.conversion import to_mpf
 from ..core.precision import workdps
 
 # dummy integration variables: the defining Integrals print with these
@@ -84,8 +85,7 @@ def profile_integral(P: sp.Expr) -> sp.Expr:
 
 
 # --------------------------------------------------------------- quadratures
-def _mpf(v):
-    return mpmath.mpf(sp.N(v, mpmath.mp.dps + 10)) if not isinstance(v, mpmath.mpf) else v
+_mpf = to_mpf      # the one converter (core.conversion)
 
 
 class NumericProfile:

@@ -51,7 +51,6 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..parsing import to_sympy
 from ..core import symbols as S
 from ..core.conversion import to_mpf
 from ..core.errors import DomainError, LineContactError
