@@ -32,7 +32,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.conversion import point_value
-from ..core.precision import checked_dps
+from ..core.precision import checked_dps, serialized
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
 from ..method.derivation import Derivation
 from ..numeric.special import NUMPY_LOGIC
@@ -175,7 +175,9 @@ class Contact:
         name = self.resolve(quantity)
         cache = self._caches()
         if name not in cache:
-            cache[name] = getattr(self, "_derive_" + name)()
+            with serialized():   # symbolic work changes mpmath's precision (core.precision)
+                if name not in cache:
+                    cache[name] = getattr(self, "_derive_" + name)()
         return cache[name]
 
     def _value(self, name: str):

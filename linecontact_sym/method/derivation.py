@@ -23,7 +23,7 @@ from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, verify
-from ..core.precision import workdps
+from ..core.precision import serialized, workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -273,7 +273,8 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
         return Derivation(quantity, rec["expr"], rec["closed_form"], rec["step"], rec["conditions"],
                           rec["verification"], rec["seconds"], rec["notes"], reference, tuple(variables),
                           rec["attempts"], rec["source"])
-    d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0)
+    with serialized():   # SymPy's symbolic work changes mpmath's precision (core.precision)
+        d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0)
     store.put(key, {"expr": d.expr, "closed_form": d.closed_form, "step": d.step, "conditions": d.conditions,
                     "verification": d.verification, "seconds": d.seconds, "notes": d.notes,
                     "attempts": d.attempts, "budget": budget})
