@@ -18,7 +18,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.budget import Deadline, checked_budget, run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
-from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError, LineContactError
+from ..core.errors import BudgetExceeded, ClaimError, DivergentIntegralError, DomainError, LineContactError
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
@@ -149,7 +149,12 @@ def values_by_name(symbols, values):
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
+        try:
+            out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
+        except DomainError:
+            raise
+        except LineContactError as exc:     # not a number (a list, an array): the user's input
+            raise ClaimError(f"{sym.name}: {exc}") from None
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")

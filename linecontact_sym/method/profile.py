@@ -428,7 +428,8 @@ class Profile:
             e = e.subs(values)
             fns.append(sp.lambdify(S.x, e, "mpmath"))
             if p.hi != sp.oo:
-                breaks.append(to_mpf(p.hi.subs(values)))   # at the working precision
+                with workdps(max(60, mpmath.mp.dps + 10)):     # kept for any later precision
+                    breaks.append(to_mpf(p.hi.subs(values)))
         return fns, breaks
 
     def mp_callable(self, values: dict, derivative: int = 0):
