@@ -290,6 +290,12 @@ class LineContact(Contact):
         from ..adhesion.contact import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
 
+    def maugis_dugdale(self, w=S.gamma, sigma0=S.sigma_0):
+        """The Maugis-Dugdale adhesive contact (cohesive tension sigma0 over
+        a range h0 = w/sigma0), see :mod:`~linecontact_sym.contacts.adhesion.maugis`."""
+        from ..adhesion.maugis import MaugisDugdaleContact
+        return MaugisDugdaleContact(self, w, sigma0)
+
     def tangential(self, friction=S.mu):
         """The partial-slip tangential form of this contact under Coulomb
         friction mu at constant normal load (Cattaneo-Mindlin-Ciavarella-Jaeger),

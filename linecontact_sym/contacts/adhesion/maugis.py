@@ -1,0 +1,362 @@
+"""Maugis-Dugdale adhesion of line contacts of any profile: the JKR-to-rigid
+transition (Baney & Hui 1997 for the parabola; here for any profile through
+Popov's 2017 flat-punch superposition, see :mod:`.maugis_derive`).
+
+    md = contact.maugis_dugdale(w, sigma0)
+    md.conditions            # (bounded pressure, gap at c_D = h0) as SymPy equations
+    md.state(a, **values)    # c_D, P, pressure and gap profiles at a half-width
+    md.pull_off_at(**values) # load-control pull-off (global minimum or infimum P(0+))
+    md.model_choice(rtol, **values)   # JKR or MD, with the Maugis parameter
+
+The two conditions (derived per profile from the engine's force law P0(a)
+and adhesionless gap g0(x; a)):
+
+    P(a, c_D)  = P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2)                      (bounded pressure, K_I = 0)
+    h0 = w/sigma_0 = g0(c_D; a) + (4 sigma_0/(pi E*)) (sqrt(c_D^2 - a^2) acosh(c_D/a) - c_D log(c_D/a))
+
+JKR limit: sigma_0 -> oo gives c_D - a -> pi E* w/(4 sigma_0^2) and
+2 sigma_0 sqrt(c_D^2 - a^2) -> sqrt(2 pi a w E*), Popov's Eq. (31).
+
+Displacement control is not defined for line contacts: the indentation
+depth of a half-plane is not (Popov 2017, Eqs. 2-3: only differences of
+displacements are); there is no fixed-grips pull-off here.
+
+The Maugis parameter of any profile (``maugis_parameter``): Baney & Hui's
+lambda = 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3) equals, for the parabola,
+sqrt(2^(5/3) a_JKR/delta) with a_JKR the JKR pull-off half-width and
+delta = pi E* w/(4 sigma_0^2) the cohesive-zone length of the JKR limit
+(shown in the tests); the latter form defines lambda for every profile.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import mpmath
+import sympy as sp
+
+from ...core import symbols as S
+from ...core.conversion import float_values, point_value
+from ...core.errors import DomainError, NumericValuesRequired
+from ...core.precision import workdps
+from ...method.derivation import Derivation, values_by_name
+from ...method.rules import Step
+from ...method.verification import verify
+from ...parsing import to_sympy, user_value
+from ..base import ContactOn, Quantity
+from ..sampling import point_sampler
+from .maugis_derive import dugdale_parts
+from .maugis_law import MDLaw, MDPullOff, MDState
+
+#: ranges of sigma_0 and of c_D/a - 1 at the verification points
+SIGMA0_RANGE = (0.05, 3.0)
+ZONE_RANGE = (0.01, 2.0)
+#: Baney & Hui's normalisation, here (parabola of radius R)
+DISPLACEMENT_CONTROL = ("displacement control is not defined for line contacts: the indentation depth of a "
+                        "half-plane is not (Popov 2017, Eqs. 2-3, only displacement differences are); "
+                        "the pull-off here is the load-control one")
+
+
+@dataclass
+class ModelChoice:
+    """Which adhesion model a tolerance needs.
+
+    model        'JKR' (its pull-off within rtol of MD's) or 'MD'
+    maugis_parameter  lambda (Baney & Hui's for the parabola; see the module docstring)
+    jkr, md      the two pull-off forces (P_min)
+    relative_difference  |P_JKR - P_MD|/|P_MD|
+    """
+
+    model: str
+    maugis_parameter: mpmath.mpf
+    jkr: mpmath.mpf
+    md: mpmath.mpf
+    relative_difference: mpmath.mpf
+    rtol: float
+
+    def __str__(self):
+        return (f"{self.model}: lambda = {mpmath.nstr(self.maugis_parameter, 6)}, pull-off JKR "
+                f"{mpmath.nstr(self.jkr, 8)} vs MD {mpmath.nstr(self.md, 8)} (relative difference "
+                f"{mpmath.nstr(self.relative_difference, 3)}, rtol {self.rtol})")
+
+
+class MaugisDugdaleContact(ContactOn):
+    """Maugis-Dugdale adhesive form of a frictionless line contact; see the
+    module docstring.
+
+    >>> import linecontact_sym as lcs
+    >>> md = lcs.parabola().maugis_dugdale()
+    >>> md.force
+    pi*E_star*a**2/(4*R) - 2*sigma_0*sqrt(-a**2 + c_D**2)
+    """
+
+    kind = "maugis_dugdale"
+
+    force = Quantity("P(a, c_D)", "bounded pressure", "load per unit length P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2) "
+                     "(negative = tensile)", arguments=("a", "c_D"), aliases=("md_force",), latex=r"P_{\mathrm{MD}}")
+    cohesive_gap = Quantity("g(c_D; a)", "Dugdale gap", "surface separation at the end of the cohesive zone; "
+                            "equals h0 = w/sigma_0 at equilibrium", arguments=("a", "c_D"),
+                            aliases=("gap_at_c",), latex=r"g(c_{\mathrm{D}})")
+    pressure = Quantity("p(x; a, c_D)", "Eq. (12) + Dugdale", "pressure in the contact |x| < a (compressive "
+                        "positive; -sigma_0 at the edges, bounded)", arguments=("a", "c_D", "x"), domain="inside",
+                        aliases=("md_pressure",), latex=r"p_{\mathrm{MD}}(x)")
+    dugdale_force = Quantity("P_D(a, c_D)", "", "force of the Dugdale punches, -2 sigma_0 sqrt(c_D^2 - a^2)",
+                             arguments=("a", "c_D"), latex=r"P_{\mathrm{D}}")
+
+    def __init__(self, contact, w=S.gamma, sigma0=S.sigma_0, values=None):
+        self.contact = contact
+        self.w = self._parameter(w, "the work of adhesion w")
+        self.sigma0 = self._parameter(sigma0, "the cohesive stress sigma_0")
+        self._esyms = tuple(sorted((self.w.free_symbols | self.sigma0.free_symbols) - set(contact.params)
+                                   - {S.E_star}, key=lambda s: s.name))
+        self._cache: dict = {}
+        self._laws: dict = {}
+        self.values = values_by_name(self.variables, dict(values)) if values else {}
+
+    @staticmethod
+    def _parameter(v, what):
+        if isinstance(v, str):
+            raise DomainError(f"{what} is a string; strings are not evaluated. Pass a SymPy expression or a number")
+        g = user_value(v)
+        if not isinstance(g, sp.Expr):
+            raise DomainError(f"{what} must be an expression, got {g!r}")
+        if g.has(S.x, S.a, S.P, S.c_D):
+            raise DomainError(f"{what} {g} may not depend on x, a, P or c_D")
+        if g.is_positive is not True:
+            raise DomainError(f"{what} must be positive (a symbol created with positive=True or a number > 0), "
+                              f"got {g}")
+        return g
+
+    @classmethod
+    def from_frictionless(cls, contact):
+        return cls(contact)
+
+    def __repr__(self):
+        return f"MaugisDugdaleContact({self.contact.profile.expr}, w={self.w}, sigma0={self.sigma0})"
+
+    @property
+    def variables(self):
+        return (S.E_star,) + tuple(self.params) + self._esyms
+
+    @property
+    def h0(self):
+        """The range of the Dugdale law, h0 = w/sigma_0 (w = sigma_0 h0)."""
+        return self.w / self.sigma0
+
+    def at(self, **values):
+        new = MaugisDugdaleContact(self.contact, self.w, self.sigma0,
+                                   {**{k.name: v for k, v in self.values.items()}, **values})
+        new._cache, new._laws = self._cache, self._laws
+        return new
+
+    def _value(self, name):
+        e = self.derivation(name).expr
+        return e.xreplace(self.values) if self.values else e
+
+    # ------------------------------------------------------------ the derivation
+    @property
+    def dugdale(self):
+        return dugdale_parts(self.sigma0)
+
+    @property
+    def force_expr(self):
+        return self.derivation("force").expr
+
+    @property
+    def gap_c_expr(self):
+        return self.derivation("cohesive_gap").expr
+
+    @property
+    def pressure_expr(self):
+        return self.derivation("pressure").expr
+
+    @property
+    def zero_width_expr(self):
+        """The gap condition's left side as a -> 0+ (P0 -> 0, g0(c; a) -> f(c)): f(c_D) + 4 ln2 sigma_0 c_D/(pi E*)."""
+        return self.profile.expr.subs(S.x, S.c_D) + self.dugdale.zero_width
+
+    @property
+    def force_zero_width_expr(self):
+        """lim_{a->0+} P(a, c_D) = -2 sigma_0 c_D (the Dugdale force; P0(0) = 0)."""
+        return sp.limit(self.dugdale.force, S.a, 0, "+")
+
+    @property
+    def conditions(self):
+        """The two Maugis-Dugdale conditions as SymPy equations: bounded
+        pressure at x = +-a (solved for P) and the gap at c_D equal to h0."""
+        return (sp.Eq(S.P, self.force), sp.Eq(self.cohesive_gap, self.h0))
+
+    def _sampler(self, domain="any"):
+        base = point_sampler(self.profile, domain, {s: SIGMA0_RANGE for s in self._esyms})
+
+        def sample(rng):
+            v = base(rng)
+            if v is None:
+                return None
+            from ...core.conversion import rational
+            v[S.c_D] = v[S.a] * rational(1 + rng.uniform(*ZONE_RANGE))
+            return float_values(v, 80)
+        return sample
+
+    def _record(self, name, expr, closed, steps, reference, t0, conditions=()):
+        rec = None
+        if closed and self.contact.verify and reference is not None:
+            rec = verify(expr, reference, self._sampler("inside" if name == "pressure" else "any"), conditions,
+                         n_points=self.contact.points, reference_name=_REFERENCE_NAMES[name])
+            if not rec.passed:
+                from ...core.errors import VerificationError
+                raise VerificationError(f"{name} of the Maugis-Dugdale contact of {self.profile.name!r}: {rec}")
+        step = Step("maugis_dugdale", expr, tuple(conditions), tuple(steps))
+        return Derivation(name, expr, closed, step, tuple(conditions), rec, time.perf_counter() - t0,
+                          tuple(steps), reference, (S.a, S.c_D) + self.variables)
+
+    def _derive_force(self):
+        from . import maugis_check as chk
+        t0 = time.perf_counter()
+        fd = self.contact.derivation("force")
+        d = self.dugdale
+        expr = fd.expr + d.force
+        steps = (f"P0(a) of the engine ({fd.method})",) + d.steps[:1] + d.steps[-2:] + (
+            "P = P0(a) + (force of the Dugdale punches); the punch of width a carries no force (K_I = 0)",)
+        return self._record("force", expr, fd.closed_form, steps, chk.force_reference(self), t0, fd.conditions)
+
+    def _derive_dugdale_force(self):
+        t0 = time.perf_counter()
+        d = self.dugdale
+        return self._record("dugdale_force", d.force, True, d.steps[:1], None, t0)
+
+    def _derive_cohesive_gap(self):
+        from . import maugis_check as chk
+        t0 = time.perf_counter()
+        gd = self.contact.derivation("gap")
+        d = self.dugdale
+        expr = gd.expr.subs(S.x, S.c_D) + d.gap_at_c
+        conds = tuple(c.subs(S.x, S.c_D) for c in gd.conditions)
+        steps = (f"g0(c_D; a) of the engine ({gd.method})",) + d.steps[:1] + d.steps[2:3]
+        return self._record("cohesive_gap", expr, gd.closed_form, steps, chk.gap_reference(self), t0, conds)
+
+    def _derive_pressure(self):
+        from . import maugis_check as chk
+        t0 = time.perf_counter()
+        pd = self.contact.derivation("pressure")
+        d = self.dugdale
+        expr = pd.expr + d.pressure
+        steps = (f"p0(x; a) of the engine ({pd.method})",) + d.steps[:2] + d.steps[-1:]
+        return self._record("pressure", expr, pd.closed_form, steps, chk.pressure_reference(self), t0,
+                            pd.conditions)
+
+    # ------------------------------------------------------------ numbers
+    def _numeric_values(self, values):
+        vals = dict(self.values)
+        for s in self.variables:
+            if s.name in values:
+                vals[s] = to_sympy(values[s.name]) if not isinstance(values[s.name], float) \
+                    else point_value(values[s.name])
+        unknown = set(values) - {s.name for s in self.variables}
+        if unknown:
+            raise DomainError(f"unknown value(s) {sorted(unknown)}; the Maugis-Dugdale contact takes "
+                              f"{', '.join(s.name for s in self.variables)}")
+        missing = [s.name for s in self.variables if s not in vals]
+        if missing:
+            raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
+        for s in self.variables:
+            if not to_sympy(vals[s]).is_number or not to_sympy(vals[s]) > 0:
+                raise DomainError(f"{s.name} = {vals[s]} must be a positive number")
+        return vals
+
+    def law(self, **values) -> MDLaw:
+        """The numeric law (c_D(a), P(a), dP/da, states, pull-off) at values."""
+        vals = self._numeric_values(values)
+        key = tuple(sorted((k.name, str(v)) for k, v in vals.items()))
+        if key not in self._laws:
+            self._laws[key] = MDLaw(self, vals)
+        return self._laws[key]
+
+    def kinks_at(self, fixed):
+        """The profile's breakpoints (kinks of P(a)) at numeric parameters."""
+        out = []
+        for pc in self.profile.pieces:
+            if pc.lo != 0:
+                v = sp.N(pc.lo.xreplace(fixed), 40)
+                if v.is_number and v > 0:
+                    out.append(mpmath.mpf(str(v)))
+        return sorted(set(out))
+
+    def state(self, a, dps: int = 30, **values) -> MDState:
+        """The contact at the half-width a: c_D (unique root of the gap
+        condition, bracketed), P, dP/da, h0 and the pressure and gap
+        profiles (callables of x), to ``dps`` digits."""
+        law = self.law(**values)
+        with workdps(dps + 10):
+            A = mpmath.mpf(sp.N(to_sympy(a), dps + 20)) if not isinstance(a, mpmath.mpf) else a
+        if not A > 0:
+            raise DomainError(f"the half-width must be positive, got a = {a}")
+        return law.state(A, dps)
+
+    def pull_off_at(self, dps: int = 30, **values) -> MDPullOff:
+        """The load-control pull-off: the global minimum of P(a) over every
+        stationary point and kink, or, where P(a) decreases to its limit as
+        a -> 0+, the infimum P(0+) (kind 'infimum').  Displacement control
+        is not defined for line contacts (:data:`DISPLACEMENT_CONTROL`)."""
+        law = self.law(**values)
+        key = ("po", dps, id(law))
+        if key not in self._cache:
+            self._cache[key] = law.pull_off(dps)
+        return self._cache[key]
+
+    def displacement_control(self):
+        """Not defined for line contacts: raises with the reason."""
+        raise DomainError(DISPLACEMENT_CONTROL)
+
+    @property
+    def jkr(self):
+        """The JKR contact of the same work of adhesion (this package's law)."""
+        return self.contact.adhesive(self.w)
+
+    def _jkr_values(self, values):
+        vals = self._numeric_values(values)
+        keep = {s.name: v for s, v in vals.items() if s in set(self.jkr.variables)}
+        return keep
+
+    def maugis_parameter(self, dps: int = 20, **values):
+        """lambda = sqrt(2^(5/3) a_JKR/delta), delta = pi E* w/(4 sigma_0^2) (the
+        cohesive-zone length of the JKR limit), a_JKR the JKR pull-off
+        half-width; equal to Baney & Hui's 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3)
+        for the parabola."""
+        vals = float_values(self._numeric_values(values), 80)
+        po = self.jkr.pull_off_at(dps, **self._jkr_values(values))
+        with workdps(dps + 10):
+            E = mpmath.mpf(str(sp.N(vals[S.E_star], dps + 20)))
+            w = mpmath.mpf(str(sp.N(self.w.xreplace(vals), dps + 20)))
+            s0 = mpmath.mpf(str(sp.N(self.sigma0.xreplace(vals), dps + 20)))
+            delta = mpmath.pi * E * w / (4 * s0**2)
+            return +mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * po.half_width / delta)
+
+    def model_choice(self, rtol=0.05, dps: int = 15, **values) -> ModelChoice:
+        """'JKR' when the JKR pull-off is within ``rtol`` of the MD one, else
+        'MD'; with the Maugis parameter."""
+        po_md = self.pull_off_at(dps, **values)
+        po_j = self.jkr.pull_off_at(dps, **self._jkr_values(values))
+        lam = self.maugis_parameter(dps, **values)
+        with workdps(dps + 5):
+            rel = abs(po_j.force - po_md.force) / abs(po_md.force)
+        return ModelChoice("JKR" if rel <= rtol else "MD", lam, po_j.force, po_md.force, rel, rtol)
+
+    def report(self, quantities=("force", "cohesive_gap", "pressure")) -> str:
+        return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
+
+
+_REFERENCE_NAMES = {
+    "force": "Johnson's bounded-solution condition P = (E*/2) int_-a^a s phi'(s)/sqrt(a^2-s^2) ds on the effective "
+             "profile phi = f + u_D (u_D' of the Dugdale strip from the Flamant log kernel), minus 2 sigma_0 (c_D - a), "
+             "mpmath quadrature",
+    "cohesive_gap": "the engine's quadrature of the adhesionless gap plus the Flamant (log-kernel) displacement "
+                    "difference u(c_D) - u(0) of the Dugdale sub-problem, its pressure first checked to make the "
+                    "contact displacement uniform (mpmath quadrature)",
+    "pressure": "the engine's Eq. (12) quadrature of p0 plus a direct quadrature of the Dugdale punches "
+                "(1/pi) int_a^c_D g_D(t)/sqrt(t^2 - x^2) dt (t = c_D sin(phi)); the Flamant substitution check of "
+                "this pressure is part of the cohesive_gap reference",
+}
+
+
+__all__ = ["MaugisDugdaleContact", "ModelChoice", "DISPLACEMENT_CONTROL"]
