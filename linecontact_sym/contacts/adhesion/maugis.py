@@ -46,7 +46,7 @@ from ...parsing import to_sympy, user_value
 from ..base import ContactOn, Quantity
 from ..sampling import point_sampler
 from .maugis_derive import dugdale_parts
-from .maugis_law import MDLaw, MDPullOff, MDState
+from .maugis_law import MDLaw, MDPullOff, MDState, fixed_values
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
 SIGMA0_RANGE = (0.05, 3.0)
@@ -323,7 +323,7 @@ class MaugisDugdaleContact(ContactOn):
         cohesive-zone length of the JKR limit), a_JKR the JKR pull-off
         half-width; equal to Baney & Hui's 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3)
         for the parabola."""
-        vals = float_values(self._numeric_values(values), 80)
+        vals = fixed_values(self._numeric_values(values))
         po = self.jkr.pull_off_at(dps, **self._jkr_values(values))
         with workdps(dps + 10):
             E = mpmath.mpf(str(sp.N(vals[S.E_star], dps + 20)))

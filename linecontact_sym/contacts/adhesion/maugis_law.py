@@ -30,7 +30,6 @@ import mpmath
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.conversion import float_values
 from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
 
@@ -88,6 +87,11 @@ class MDPullOff:
     note: str = ""
 
 
+def fixed_values(vals, digits=80):
+    """{Symbol: Float} of numeric values given exactly or as expressions (pi**(2/3)/4 ...)."""
+    return {k: sp.Float(sp.N(sp.sympify(v), digits), digits) for k, v in vals.items()}
+
+
 def _lam(expr, args):
     return sp.lambdify(args, expr, "mpmath")
 
@@ -97,7 +101,7 @@ class MDLaw:
     lambdified for mpmath; their partial derivatives by SymPy)."""
 
     def __init__(self, md, vals: dict):
-        fixed = float_values(vals, 80)
+        fixed = fixed_values(vals)
         self.md = md
         a, c, x = S.a, S.c_D, S.x
         sig = md.sigma0.xreplace(fixed)
@@ -132,6 +136,7 @@ class MDLaw:
         self._gD_density = _lam(md.dugdale.density.xreplace(fixed), (S.a, c))  # not used in closed paths
         self._f = _lam(md.profile.expr.xreplace(fixed), (x,))
         self.kinks = md.kinks_at(fixed)
+        self._warm = None
 
     # ------------------------------------------------------------ c_D(a)
     def h0(self):
@@ -142,17 +147,23 @@ class MDLaw:
         doubling / halving, then Newton kept inside the bracket."""
         lo = hi = s0
         n = 0
-        while F(hi) <= 0:
-            hi *= 4
-            n += 1
-            if n > 2000:
-                raise DomainError("no cohesive-zone half-width found: the gap never reaches h0")
-        while F(lo) >= 0:
-            lo /= 4
-            n += 1
-            if n > 4000:
-                raise DomainError("no cohesive-zone half-width found: the gap exceeds h0 at c_D -> a")
-        s = (lo + hi) / 2 if s0 <= lo or s0 >= hi else s0
+        if F(s0) <= 0:
+            lo = s0
+            hi = s0 * 2
+            while F(hi) <= 0:
+                lo, hi = hi, hi * 4
+                n += 1
+                if n > 2000:
+                    raise DomainError("no cohesive-zone half-width found: the gap never reaches h0")
+        else:
+            hi = s0
+            lo = s0 / 2
+            while F(lo) >= 0:
+                lo, hi = lo / 4, lo
+                n += 1
+                if n > 4000:
+                    raise DomainError("no cohesive-zone half-width found: the gap exceeds h0 at c_D -> a")
+        s = s0 if lo <= s0 <= hi else (lo + hi) / 2   # a good guess stays the start
         for _ in range(200):
             f = F(s)
             if f > 0:
@@ -174,9 +185,16 @@ class MDLaw:
         """c_D at the half-width A (mpf), to dps digits."""
         with workdps(25):
             A25 = mpmath.mpf(A)
+            guess = self._s_guess(A25)
+            if self._warm is not None and self._warm[1] > A25:     # the last solution: scans move smoothly
+                guess = self._warm[1] - A25
             s_est = self._solve_s(lambda s: self._G(A25, A25 + s), lambda s: self._Gc(A25, A25 + s),
-                                  self._s_guess(A25), mpmath.mpf(10)**-12)
-            guard = 12 + max(0, int(mpmath.log10(A25 / s_est)))
+                                  guess, mpmath.mpf(10)**-12)
+            self._warm = (A25, A25 + s_est)
+            # acosh(c/a) near c = a loses log10(a/s) digits; at small a, terms of size c/a cancel in
+            # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
+            r = mpmath.log10(A25 / s_est)
+            guard = 14 + (int(r) if r > 0 else 2 * int(-r))
         with workdps(dps + guard):
             A = mpmath.mpf(A)
             s = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
@@ -263,24 +281,27 @@ class MDLaw:
             for (A0, P0_, d0, _), (A1, P1_, d1, _) in zip(vals, vals[1:]):
                 if d0 < 0 < d1 and not any(A0 < k < A1 for k in ks):
                     brackets.append((A0, A1))
-            # follow dP/da down in decades below the grid
-            A_low, d_low = vals[0][0], vals[0][2]
+            # follow dP/da down, 4 points per decade, below the grid until P(a) has reached its
+            # limit P(0+); every sign change of dP/da on the way brackets a minimum or a maximum
+            A_low = vals[0][0]
             infimum = False
             decades = 0
-            if d_low > 0:
-                prev = vals[0]
-                while decades < MAX_DECADES:
-                    A_new = prev[0] / 10
-                    P_new, d_new, _c = slope(A_new)
-                    decades += 1
-                    if d_new < 0:
-                        brackets.append((A_new, prev[0]))
-                        break
-                    if abs(P_new - P0lim) <= abs(P0lim) * mpmath.mpf(10)**-(dps + 2):
-                        infimum = True
-                        break
-                    prev = (A_new, P_new, d_new, _c)
-                notes.append(f"dP/da followed down {decades} decade(s) below a = {mpmath.nstr(A_low, 5)}")
+            prev = vals[0]
+            step = mpmath.mpf(10)**(-mpmath.mpf(1) / 4)
+            while decades < 4 * MAX_DECADES:
+                A_new = prev[0] * step
+                P_new, d_new, _c = slope(A_new)
+                decades += 1
+                if d_new < 0 < prev[2]:
+                    brackets.append((A_new, prev[0]))
+                prev = (A_new, P_new, d_new, _c)
+                # what P(a) can still change below A_new is of the order A |dP/da|
+                if A_new * abs(d_new) <= abs(P0lim) * mpmath.mpf(10)**-(dps + 6):
+                    infimum = d_new > 0      # approached from above: P(0+) is an infimum
+                    break
+            notes.append(f"dP/da followed down {decades / 4:g} decade(s) below a = {mpmath.nstr(A_low, 5)}, "
+                         f"to a = {mpmath.nstr(prev[0], 3)} where a |dP/da| < 1e-{dps + 6} |P(0+)| (a minimum below would differ "
+                         f"from P(0+) by less than that)")
         cands = []
         for A0, A1 in brackets:
             with workdps(dps + 10):
@@ -288,13 +309,15 @@ class MDLaw:
                 A = _bracketed_root(f, mpmath.mpf(A0), mpmath.mpf(A1), dps + 3)
                 P, dP, C = self.P_and_slope(A, dps)
             cands.append((A, P, C, "stationary"))
-        for k in ks:
-            with workdps(dps + 10):
-                A = mpmath.mpf(k)
-                P, dP, C = self.P_and_slope(A, dps)
-                left = self.P_and_slope(A * (1 - mpmath.mpf(10)**-(dps // 2)), 15)[1]
-            if left < 0 and dP >= 0 or left < 0 and dP < 0 and False:
-                cands.append((A, P, C, "kink"))
+        for k in ks:   # a kink is a minimum where P falls to its left and rises to its right
+            with workdps(20):
+                eps = mpmath.mpf(10)**-12
+                left = self.P_and_slope(k * (1 - eps), 15)[1]
+                right = self.P_and_slope(k * (1 + eps), 15)[1]
+            if left < 0 < right:
+                with workdps(dps + 10):
+                    P, dP, C = self.P_and_slope(mpmath.mpf(k), dps)
+                cands.append((mpmath.mpf(k), P, C, "kink"))
         note = (f"scan of dP/da at {len(grid)} half-widths from {mpmath.nstr(bottom, 5)} to {mpmath.nstr(top, 5)} "
                 f"(8 per decade), kinks {[mpmath.nstr(k, 8) for k in ks]}; " + "; ".join(notes))
         minima = tuple((A, P, kind) for A, P, C, kind in cands)
@@ -304,8 +327,8 @@ class MDLaw:
         best = min(cands, key=lambda r: r[1], default=None)
         if best is None or (infimum and P0lim < best[1]):
             if not infimum:
-                raise NoPullOffError("P(a) has no minimum in the scanned range and did not reach its "
-                                     "limit a -> 0+")
+                raise NoPullOffError("P(a) has no minimum in the scanned range and does not fall to its "
+                                     "limit as a -> 0+")
             note += ("; P(a) has no minimum below that: it decreases to its limit P(0+) = -2 sigma_0 c0 as "
                      "a -> 0+, the pull-off is this infimum (approached, not attained)")
             return MDPullOff(P0lim, -P0lim, mpmath.mpf(0), c0, "infimum", minima, note)
