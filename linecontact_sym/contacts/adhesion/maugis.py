@@ -332,6 +332,17 @@ class MaugisDugdaleContact(ContactOn):
             delta = mpmath.pi * E * w / (4 * s0**2)
             return +mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * po.half_width / delta)
 
+    def sigma0_for(self, lam, dps: int = 20, **values):
+        """The cohesive stress sigma_0 that gives the Maugis parameter ``lam``
+        at the other values (lambda is proportional to sigma_0)."""
+        vals = fixed_values(self._numeric_values({**values, **{s.name: 1 for s in self.sigma0.free_symbols
+                                                                if s.name not in values}}))
+        if not self.sigma0.is_Symbol:
+            raise DomainError("sigma0_for needs sigma_0 to be a symbol of the contact")
+        with workdps(dps + 10):
+            one = self.maugis_parameter(dps, **{**values, self.sigma0.name: 1})
+            return mpmath.mpf(str(sp.N(sp.sympify(lam), dps + 10))) / one
+
     def model_choice(self, rtol=0.05, dps: int = 15, **values) -> ModelChoice:
         """'JKR' when the JKR pull-off is within ``rtol`` of the MD one, else
         'MD'; with the Maugis parameter."""
