@@ -8,8 +8,12 @@ branches of P(a).
   energy routes;
 * :mod:`.pull_off`    -- the pull-off (symbolic attempt and numeric minimum);
 * :mod:`.branches`    -- pressure, jump-in half-width, the branches of P(a);
-* :mod:`.brute_force` -- the independent second pull-off method.
+* :mod:`.brute_force` -- the independent second pull-off method;
+* :mod:`.maugis`      -- :class:`MaugisDugdaleContact`, the Maugis-Dugdale (cohesive-zone)
+  law of any profile (:mod:`.maugis_derive` the derivation, :mod:`.maugis_law` the
+  numbers, :mod:`.maugis_check` the independent checks).
 """
 from .contact import AdhesiveLineContact
+from .maugis import MaugisDugdaleContact
 
-__all__ = ["AdhesiveLineContact"]
+__all__ = ["AdhesiveLineContact", "MaugisDugdaleContact"]

@@ -103,6 +103,15 @@ class MaugisDugdaleContact(ContactOn):
     dugdale_force = Quantity("P_D(a, c_D)", "", "force of the Dugdale punches, -2 sigma_0 sqrt(c_D^2 - a^2)",
                              arguments=("a", "c_D"), latex=r"P_{\mathrm{D}}")
 
+    pull_off_force = Quantity("P_min", "", "load-control pull-off: the global minimum of P(a) (or its infimum "
+                              "P(0+) as a -> 0+), negative (tensile); numeric", arguments=(),
+                              aliases=("md_pull_off_force",), latex=r"P_{\min}^{\mathrm{MD}}")
+    adhesion_force = Quantity("P_adh", "", "adhesion force -P_min > 0; numeric", arguments=(),
+                              aliases=("md_adhesion_force",), latex=r"P_{\mathrm{adh}}^{\mathrm{MD}}")
+    maugis_lambda = Quantity("lambda", "", "Maugis parameter sqrt(2^(5/3) a_JKR/delta), delta = pi E* w/(4 sigma_0^2) "
+                             "(Baney & Hui's 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3) for the parabola); numeric",
+                             arguments=(), aliases=("maugis_parameter",), latex=r"\lambda")
+
     def __init__(self, contact, w=S.gamma, sigma0=S.sigma_0, values=None):
         self.contact = contact
         self.w = self._parameter(w, "the work of adhesion w")
@@ -244,6 +253,27 @@ class MaugisDugdaleContact(ContactOn):
         steps = (f"p0(x; a) of the engine ({pd.method})",) + d.steps[:2] + d.steps[-1:]
         return self._record("pressure", expr, pd.closed_form, steps, chk.pressure_reference(self), t0,
                             pd.conditions)
+
+    def _numeric_derivation(self, name, fn, what):
+        """A Derivation without closed form whose evalf is ``fn(values, dps)``."""
+        from .pull_off import NumericDerivation
+        stat = sp.Eq(sp.Derivative(sp.Function("P")(S.a), S.a), 0)
+        step = Step("numeric", stat, (), (what,))
+        return NumericDerivation(name, stat, False, step, (), None, 0.0, (what, DISPLACEMENT_CONTROL),
+                                 lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps), self.variables)
+
+    def _derive_pull_off_force(self):
+        return self._numeric_derivation("pull_off_force", lambda v, d: self.pull_off_at(d, **v).force,
+                                        "numeric: global minimum of P(a) over every stationary point and kink, "
+                                        "or the infimum P(0+) (maugis_law.MDLaw.pull_off)")
+
+    def _derive_adhesion_force(self):
+        return self._numeric_derivation("adhesion_force", lambda v, d: self.pull_off_at(d, **v).adhesion_force,
+                                        "numeric: minus the load-control pull-off")
+
+    def _derive_maugis_lambda(self):
+        return self._numeric_derivation("maugis_lambda", lambda v, d: self.maugis_parameter(d, **v),
+                                        "numeric: from the JKR pull-off half-width of the profile")
 
     # ------------------------------------------------------------ numbers
     def _numeric_values(self, values):
