@@ -257,7 +257,7 @@ class MaugisDugdaleContact(ContactOn):
     def _numeric_derivation(self, name, fn, what):
         """A Derivation without closed form whose evalf is ``fn(values, dps)``."""
         from .pull_off import NumericDerivation
-        stat = sp.Eq(sp.Derivative(sp.Function("P")(S.a), S.a), 0)
+        stat = sp.Function(name)(*self.variables)     # a number of the variables, no closed form
         step = Step("numeric", stat, (), (what,))
         return NumericDerivation(name, stat, False, step, (), None, 0.0, (what, DISPLACEMENT_CONTROL),
                                  lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps), self.variables)
