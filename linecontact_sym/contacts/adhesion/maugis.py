@@ -383,6 +383,17 @@ class MaugisDugdaleContact(ContactOn):
             rel = abs(po_j.force - po_md.force) / abs(po_md.force)
         return ModelChoice("JKR" if rel <= rtol else "MD", lam, po_j.force, po_md.force, rel, rtol)
 
+    def adhesion_map(self, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), path=None, **kw):
+        """The adhesion map (needs the ``[plot]`` extra): P(a) for several
+        Maugis parameters with the JKR law, and the pull-off against lambda
+        with its JKR and rigid limits; see :mod:`~linecontact_sym.views.adhesion_map`.
+        ``values``: E_star, the work of adhesion, the profile's parameters."""
+        from ...views.adhesion_map import adhesion_map_data, plot_adhesion_map
+        from .maugis_check import rigid_limit
+        rigid = lambda s0: rigid_limit(self, 15, **values, **{self.sigma0.name: s0})  # noqa: E731
+        data = adhesion_map_data(self, values, lambdas, rigid=rigid, **kw)
+        return plot_adhesion_map(data, path, title=f"Maugis-Dugdale line contact, f(x) = {self.profile.expr}")
+
     def report(self, quantities=("force", "cohesive_gap", "pressure")) -> str:
         return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
 
