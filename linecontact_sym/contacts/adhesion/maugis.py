@@ -30,13 +30,12 @@ delta = pi E* w/(4 sigma_0^2) the cohesive-zone length of the JKR limit
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
 
 import mpmath
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.conversion import float_values, point_value
+from ...core.conversion import float_values, point_value, rational
 from ...core.errors import DomainError, NumericValuesRequired
 from ...core.precision import workdps
 from ...method.derivation import Derivation, values_by_name
@@ -45,8 +44,10 @@ from ...method.verification import verify
 from ...parsing import to_sympy, user_value
 from ..base import ContactOn, Quantity
 from ..sampling import point_sampler
+from . import maugis_choice
+from .maugis_choice import ModelChoice
 from .maugis_derive import dugdale_parts
-from .maugis_law import MDLaw, MDPullOff, MDState, fixed_values
+from .maugis_law import MDLaw, MDPullOff, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
 SIGMA0_RANGE = (0.05, 3.0)
@@ -55,29 +56,6 @@ ZONE_RANGE = (0.01, 2.0)
 DISPLACEMENT_CONTROL = ("displacement control is not defined for line contacts: the indentation depth of a "
                         "half-plane is not (Popov 2017, Eqs. 2-3, only displacement differences are); "
                         "the pull-off here is the load-control one")
-
-
-@dataclass
-class ModelChoice:
-    """Which adhesion model a tolerance needs.
-
-    model        'JKR' (its pull-off within rtol of MD's) or 'MD'
-    maugis_parameter  lambda (Baney & Hui's for the parabola; see the module docstring)
-    jkr, md      the two pull-off forces (P_min)
-    relative_difference  |P_JKR - P_MD|/|P_MD|
-    """
-
-    model: str
-    maugis_parameter: mpmath.mpf
-    jkr: mpmath.mpf
-    md: mpmath.mpf
-    relative_difference: mpmath.mpf
-    rtol: float
-
-    def __str__(self):
-        return (f"{self.model}: lambda = {mpmath.nstr(self.maugis_parameter, 6)}, pull-off JKR "
-                f"{mpmath.nstr(self.jkr, 8)} vs MD {mpmath.nstr(self.md, 8)} (relative difference "
-                f"{mpmath.nstr(self.relative_difference, 3)}, rtol {self.rtol})")
 
 
 class MaugisDugdaleContact(ContactOn):
@@ -202,7 +180,6 @@ class MaugisDugdaleContact(ContactOn):
             v = base(rng)
             if v is None:
                 return None
-            from ...core.conversion import rational
             v[S.c_D] = v[S.a] * rational(1 + rng.uniform(*ZONE_RANGE))
             return float_values(v, 80)
         return sample
@@ -349,39 +326,16 @@ class MaugisDugdaleContact(ContactOn):
         return keep
 
     def maugis_parameter(self, dps: int = 20, **values):
-        """lambda = sqrt(2^(5/3) a_JKR/delta), delta = pi E* w/(4 sigma_0^2) (the
-        cohesive-zone length of the JKR limit), a_JKR the JKR pull-off
-        half-width; equal to Baney & Hui's 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3)
-        for the parabola."""
-        vals = fixed_values(self._numeric_values(values))
-        po = self.jkr.pull_off_at(dps, **self._jkr_values(values))
-        with workdps(dps + 10):
-            E = mpmath.mpf(str(sp.N(vals[S.E_star], dps + 20)))
-            w = mpmath.mpf(str(sp.N(self.w.xreplace(vals), dps + 20)))
-            s0 = mpmath.mpf(str(sp.N(self.sigma0.xreplace(vals), dps + 20)))
-            delta = mpmath.pi * E * w / (4 * s0**2)
-            return +mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * po.half_width / delta)
+        """lambda at values, see :func:`.maugis_choice.maugis_parameter`."""
+        return maugis_choice.maugis_parameter(self, dps, **values)
 
     def sigma0_for(self, lam, dps: int = 20, **values):
-        """The cohesive stress sigma_0 that gives the Maugis parameter ``lam``
-        at the other values (lambda is proportional to sigma_0)."""
-        vals = fixed_values(self._numeric_values({**values, **{s.name: 1 for s in self.sigma0.free_symbols
-                                                                if s.name not in values}}))
-        if not self.sigma0.is_Symbol:
-            raise DomainError("sigma0_for needs sigma_0 to be a symbol of the contact")
-        with workdps(dps + 10):
-            one = self.maugis_parameter(dps, **{**values, self.sigma0.name: 1})
-            return mpmath.mpf(str(sp.N(sp.sympify(lam), dps + 10))) / one
+        """sigma_0 giving the Maugis parameter ``lam``, see :func:`.maugis_choice.sigma0_for`."""
+        return maugis_choice.sigma0_for(self, lam, dps, **values)
 
-    def model_choice(self, rtol=0.05, dps: int = 15, **values) -> ModelChoice:
-        """'JKR' when the JKR pull-off is within ``rtol`` of the MD one, else
-        'MD'; with the Maugis parameter."""
-        po_md = self.pull_off_at(dps, **values)
-        po_j = self.jkr.pull_off_at(dps, **self._jkr_values(values))
-        lam = self.maugis_parameter(dps, **values)
-        with workdps(dps + 5):
-            rel = abs(po_j.force - po_md.force) / abs(po_md.force)
-        return ModelChoice("JKR" if rel <= rtol else "MD", lam, po_j.force, po_md.force, rel, rtol)
+    def model_choice(self, rtol=0.05, dps: int = 15, **values):
+        """'JKR' or 'MD' for a tolerance, see :func:`.maugis_choice.model_choice`."""
+        return maugis_choice.model_choice(self, rtol, dps, **values)
 
     def adhesion_map(self, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), path=None, **kw):
         """The adhesion map (needs the ``[plot]`` extra): P(a) for several
@@ -411,4 +365,4 @@ _REFERENCE_NAMES = {
 }
 
 
-__all__ = ["MaugisDugdaleContact", "ModelChoice", "DISPLACEMENT_CONTROL"]
+__all__ = ["MaugisDugdaleContact", "ModelChoice", "MDState", "MDPullOff", "DISPLACEMENT_CONTROL"]

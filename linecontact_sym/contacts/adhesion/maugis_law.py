@@ -23,7 +23,6 @@ there and the infimum P(0+) is reported (kind 'infimum', half-width 0).
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import mpmath
