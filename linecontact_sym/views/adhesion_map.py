@@ -38,7 +38,7 @@ def adhesion_map_data(md, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), a_range=(0
     curves = {}
     with workdps(15):
         for lam in lambdas:
-            law = md.law(**values, **{name: s1 * mpmath.mpf(lam)})
+            law = md.numeric_law(**values, **{name: s1 * mpmath.mpf(lam)})
             curves[lam] = np.array([float(law.P_and_slope(AJ * mpmath.mpf(float(x)), 10)[0] / PJ) for x in abar])
         jkr = md.jkr.to_numeric("force", backend="mpmath", dps=15, check=False)
         jkr_curve = np.array([float(jkr(a=AJ * mpmath.mpf(float(x)), **values) / PJ) for x in abar])

@@ -84,7 +84,7 @@ def test_state_against_flamant_and_johnson(mds, sigma1, name, lam):
 def test_cohesive_zone_unique_gap_rises(mds):
     """c_D(a) is unique: the gap at c_D rises with c_D (sampled densely)."""
     md = mds["parabola"]
-    law = md.law(E_star=1, R=1, gamma=1, sigma_0=2)
+    law = md.numeric_law(E_star=1, R=1, gamma=1, sigma_0=2)
     with mpmath.workdps(20):
         for A in ("1e-6", "0.3", "3"):
             A = mpmath.mpf(A)
@@ -210,7 +210,7 @@ def test_parabola_small_lambda_sqrt(mds):
 def test_exponentially_small_minimum(mds):
     """lambda = 0.2: the minimum sits at abar ~ 1e-13, below P(0+) by ~1e-28 (found by the descent)."""
     s0 = sp.Rational(1, 5) * sp.pi**sp.Rational(2, 3) / 4
-    law = mds["parabola"].law(E_star=1, R=1, gamma=1, sigma_0=s0)
+    law = mds["parabola"].numeric_law(E_star=1, R=1, gamma=1, sigma_0=s0)
     po = mds["parabola"].pull_off_at(30, E_star=1, R=1, gamma=1, sigma_0=s0)
     assert po.kind == "stationary" and 1e-15 < po.half_width < 1e-11
     with mpmath.workdps(40):
@@ -228,7 +228,7 @@ def test_worn_cylinder_two_minima(mds):
     assert len(po.minima) == 2
     assert po.force == min(m[1] for m in po.minima)
     # independent: a dense scan of P(a) at low precision shows both local minima
-    law = md.law(**vals)
+    law = md.numeric_law(**vals)
     with mpmath.workdps(15):
         grid = [mpmath.mpf(k) / 400 for k in range(40, 600)]
         Ps = [law.P_and_slope(g, 12)[0] for g in grid]
@@ -249,3 +249,24 @@ def test_model_choice(mds, sigma1):
 def test_displacement_control_undefined(mds):
     with pytest.raises(DomainError, match="not defined for line contacts"):
         mds["parabola"].displacement_control()
+
+
+def test_law_of_the_generic_layer(mds):
+    """MD is a registered cohesive law: reachable as contact.adhesion('maugis_dugdale', w, sigma0),
+    its parameters checked, and its numeric ForceLaw gives the generic layer's minimum equal to
+    the MD pull-off (two different searches)."""
+    from linecontact_sym.contacts.adhesion import LAWS, MaugisDugdale
+    from linecontact_sym.contacts.normal.equilibria import minimum
+    from linecontact_sym.contacts.normal.force_law import ForceLaw
+    assert LAWS["maugis_dugdale"] is type(mds["parabola"])
+    with pytest.raises(DomainError):
+        MaugisDugdale(1, 0)
+    md = lcs.parabola().adhesion("maugis_dugdale", 1, sp.Rational(1, 2))
+    assert md.variables == (S.E_star, S.R)
+    po = md.pull_off_at(20, E_star=1, R=1)
+    vals = {S.E_star: sp.Integer(1), S.R: sp.Integer(1), S.gamma: sp.Integer(1), S.sigma_0: sp.Rational(1, 2)}
+    fl = mds["parabola"].law.numeric(ForceLaw.from_contact(mds["parabola"].contact, vals), vals)
+    with mpmath.workdps(20):
+        generic = minimum(fl, 15)
+        assert digits_agreeing(generic.force, po.force) >= 12
+        assert digits_agreeing(generic.half_width, po.half_width) >= 6

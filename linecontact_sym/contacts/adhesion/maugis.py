@@ -41,8 +41,9 @@ from ...core.precision import workdps
 from ...method.derivation import Derivation, values_by_name
 from ...method.rules import Step
 from ...method.verification import verify
-from ...parsing import to_sympy, user_value
+from ...parsing import to_sympy
 from ..base import ContactOn, Quantity
+from .law import CohesiveLaw, Parameter, on_base
 from ..sampling import point_sampler
 from . import maugis_choice
 from .maugis_choice import ModelChoice
@@ -56,6 +57,71 @@ ZONE_RANGE = (0.01, 2.0)
 DISPLACEMENT_CONTROL = ("displacement control is not defined for line contacts: the indentation depth of a "
                         "half-plane is not (Popov 2017, Eqs. 2-3, only displacement differences are); "
                         "the pull-off here is the load-control one")
+
+
+class MaugisDugdale(CohesiveLaw):
+    """The Maugis-Dugdale (cohesive-zone) law of a line contact: constant
+    tension sigma_0 on a < |x| < c_D while the gap is below h0 = w/sigma_0.
+    Its balance is a system in (a, c_D, P): bounded pressure at x = +-a and
+    gap(c_D) = h0 (:attr:`conditions` of the contact); P(a) needs the inner
+    solve for c_D(a) (:mod:`.maugis_law`).
+
+    >>> MaugisDugdale().balance
+    'bounded pressure at x = +-a (K_I = 0) and gap(c_D) = gamma/sigma_0'
+    """
+
+    name = "maugis_dugdale"
+    kind = "maugis_dugdale"
+    title = "Maugis-Dugdale (cohesive zone; Baney & Hui 1997 for the parabola, any profile here)"
+    label = "Maugis-Dugdale"
+    parameters = (Parameter("work_of_adhesion", S.gamma, "positive", "the work of adhesion w", (0.05, 1.0)),
+                  Parameter("sigma0", S.sigma_0, "positive", "the cohesive stress sigma_0", SIGMA0_RANGE))
+
+    @property
+    def balance(self):
+        return f"bounded pressure at x = +-a (K_I = 0) and gap(c_D) = {self['work_of_adhesion'] / self['sigma0']}"
+
+    def derive_force(self, ad) -> Derivation:
+        """P(a): the two conditions as equations (no closed P(a): c_D(a) is an inner solve)."""
+        return _numeric(ad, "force", sp.Tuple(*ad.conditions), lambda v, d: ad.state(v.pop("a"), d, **v).force,
+                        "P(a) by the inner solve of the gap condition for c_D (maugis_law)", (S.a,))
+
+    def derive_pressure(self, ad) -> Derivation:
+        return _numeric(ad, "pressure", sp.Tuple(sp.Eq(sp.Symbol("p"), ad.derivation("pressure").expr),
+                                                 ad.conditions[1]),
+                        lambda v, d: ad.state(v.pop("a"), d, **v).pressure(v.pop("x", 0)),
+                        "p(x; a) at c_D(a) from the inner solve", (S.a, S.x))
+
+    def numeric(self, base, values):
+        """P(a), dP/da at numbers on ``base``: base.P(a) - 2 sigma_0 sqrt(c_D^2 - a^2) with c_D(a) from
+        the gap condition (the quadrature twin uses the quadrature P0)."""
+        md = getattr(self, "on_contact", None)      # set by the contact that holds this law
+        if md is None:
+            raise NotImplementedError("the Maugis-Dugdale law needs its contact's closed forms: build it with "
+                                      "contact.adhesion('maugis_dugdale', ...) or contact.maugis_dugdale(...)")
+        law = md.numeric_law(**{k.name: v for k, v in values.items() if k in set(md.variables)})
+
+        def build(b):
+            def P(A):
+                if A <= 0:            # the limit a -> 0+: the Dugdale force of the zone c0
+                    return law.force_zero_width(mpmath.mp.dps)
+                C, _ = law.c_of(A, mpmath.mp.dps)
+                return b.P(A) + law._P(A, C) - law._P0(A)
+
+            def dP(A):
+                if A <= 0:
+                    return mpmath.mpf(0)
+                Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
+                return b.dP(A) + dPv - law._dP0(A)
+            return b.on_top(P, dP)
+        return on_base(base, build)
+
+
+def _numeric(ad, name, expr, fn, what, args):
+    from .pull_off import NumericDerivation
+    step = Step("numeric", expr, (), (what,))
+    return NumericDerivation(name, expr, False, step, (), None, 0.0, (what,),
+                             lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps), args + ad.variables)
 
 
 class MaugisDugdaleContact(ContactOn):
@@ -86,37 +152,33 @@ class MaugisDugdaleContact(ContactOn):
                               aliases=("md_pull_off_force",), latex=r"P_{\min}^{\mathrm{MD}}")
     adhesion_force = Quantity("P_adh", "", "adhesion force -P_min > 0; numeric", arguments=(),
                               aliases=("md_adhesion_force",), latex=r"P_{\mathrm{adh}}^{\mathrm{MD}}")
+    pull_off_half_width = Quantity("a_po", "", "half-width at pull-off (0 where the pull-off is the infimum "
+                                   "P(0+)); numeric", arguments=(), latex=r"a_{\mathrm{po}}^{\mathrm{MD}}")
     maugis_lambda = Quantity("lambda", "", "Maugis parameter sqrt(2^(5/3) a_JKR/delta), delta = pi E* w/(4 sigma_0^2) "
                              "(Baney & Hui's 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3) for the parabola); numeric",
                              arguments=(), aliases=("maugis_parameter",), latex=r"\lambda")
 
+    law_class = MaugisDugdale
+
     def __init__(self, contact, w=S.gamma, sigma0=S.sigma_0, values=None):
         self.contact = contact
-        self.w = self._parameter(w, "the work of adhesion w")
-        self.sigma0 = self._parameter(sigma0, "the cohesive stress sigma_0")
+        self.law = MaugisDugdale(w, sigma0)     # the parameters checked against their domains
+        self.law.on_contact = self
+        self.w, self.sigma0 = self.law["work_of_adhesion"], self.law["sigma0"]
         self._esyms = tuple(sorted((self.w.free_symbols | self.sigma0.free_symbols) - set(contact.params)
                                    - {S.E_star}, key=lambda s: s.name))
         self._cache: dict = {}
         self._laws: dict = {}
         self.values = values_by_name(self.variables, dict(values)) if values else {}
 
-    @staticmethod
-    def _parameter(v, what):
-        if isinstance(v, str):
-            raise DomainError(f"{what} is a string; strings are not evaluated. Pass a SymPy expression or a number")
-        g = user_value(v)
-        if not isinstance(g, sp.Expr):
-            raise DomainError(f"{what} must be an expression, got {g!r}")
-        if g.has(S.x, S.a, S.P, S.c_D):
-            raise DomainError(f"{what} {g} may not depend on x, a, P or c_D")
-        if g.is_positive is not True:
-            raise DomainError(f"{what} must be positive (a symbol created with positive=True or a number > 0), "
-                              f"got {g}")
-        return g
-
     @classmethod
     def from_frictionless(cls, contact):
         return cls(contact)
+
+    @classmethod
+    def with_law(cls, contact, law, values=None):
+        """The contact of the law object ``law`` (the generic layer's constructor)."""
+        return cls(contact, law["work_of_adhesion"], law["sigma0"], values)
 
     def __repr__(self):
         return f"MaugisDugdaleContact({self.contact.profile.expr}, w={self.w}, sigma0={self.sigma0})"
@@ -248,6 +310,10 @@ class MaugisDugdaleContact(ContactOn):
         return self._numeric_derivation("adhesion_force", lambda v, d: self.pull_off_at(d, **v).adhesion_force,
                                         "numeric: minus the load-control pull-off")
 
+    def _derive_pull_off_half_width(self):
+        return self._numeric_derivation("pull_off_half_width", lambda v, d: self.pull_off_at(d, **v).half_width,
+                                        "numeric: the half-width of the pull-off")
+
     def _derive_maugis_lambda(self):
         return self._numeric_derivation("maugis_lambda", lambda v, d: self.maugis_parameter(d, **v),
                                         "numeric: from the JKR pull-off half-width of the profile")
@@ -271,7 +337,7 @@ class MaugisDugdaleContact(ContactOn):
                 raise DomainError(f"{s.name} = {vals[s]} must be a positive number")
         return vals
 
-    def law(self, **values) -> MDLaw:
+    def numeric_law(self, **values) -> MDLaw:
         """The numeric law (c_D(a), P(a), dP/da, states, pull-off) at values."""
         vals = self._numeric_values(values)
         key = tuple(sorted((k.name, str(v)) for k, v in vals.items()))
@@ -293,7 +359,7 @@ class MaugisDugdaleContact(ContactOn):
         """The contact at the half-width a: c_D (unique root of the gap
         condition, bracketed), P, dP/da, h0 and the pressure and gap
         profiles (callables of x), to ``dps`` digits."""
-        law = self.law(**values)
+        law = self.numeric_law(**values)
         with workdps(dps + 10):
             A = mpmath.mpf(sp.N(to_sympy(a), dps + 20)) if not isinstance(a, mpmath.mpf) else a
         if not A > 0:
@@ -305,7 +371,7 @@ class MaugisDugdaleContact(ContactOn):
         stationary point and kink, or, where P(a) decreases to its limit as
         a -> 0+, the infimum P(0+) (kind 'infimum').  Displacement control
         is not defined for line contacts (:data:`DISPLACEMENT_CONTROL`)."""
-        law = self.law(**values)
+        law = self.numeric_law(**values)
         key = ("po", dps, id(law))
         if key not in self._cache:
             self._cache[key] = law.pull_off(dps)
@@ -365,4 +431,4 @@ _REFERENCE_NAMES = {
 }
 
 
-__all__ = ["MaugisDugdaleContact", "ModelChoice", "MDState", "MDPullOff", "DISPLACEMENT_CONTROL"]
+__all__ = ["MaugisDugdale", "MaugisDugdaleContact", "ModelChoice", "MDState", "MDPullOff", "DISPLACEMENT_CONTROL"]

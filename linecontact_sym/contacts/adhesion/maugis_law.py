@@ -122,6 +122,8 @@ class MDLaw:
         if not self.closed:
             raise NotImplementedError("numeric Maugis-Dugdale law without closed forms")
         self._P = _lam(P, (a, c))
+        P0 = md.contact.derivation("force").expr.xreplace(fixed)
+        self._P0, self._dP0 = _lam(P0, (a,)), _lam(sp.diff(P0, a), (a,))
         self._Pa = _lam(sp.diff(P, a), (a, c))
         self._Pc = _lam(sp.diff(P, c), (a, c))
         self._G = _lam(G, (a, c))
@@ -182,7 +184,9 @@ class MDLaw:
 
     def c_of(self, A, dps: int):
         """c_D at the half-width A (mpf), to dps digits."""
-        with workdps(25):
+        with workdps(15):   # c_D - a is at least of the order of the JKR-limit zone: digits to resolve it
+            extra = max(0, int(mpmath.log10(mpmath.mpf(A) / self._s_guess(A))))
+        with workdps(25 + extra):
             A25 = mpmath.mpf(A)
             guess = self._s_guess(A25)
             if self._warm is not None and self._warm[1] > A25:     # the last solution: scans move smoothly
