@@ -3,7 +3,7 @@
 Verbs::
 
     linecontact-sym paper popov2017 [--out DIR]        check a paper, write the reports
-    linecontact-sym derive PROFILE [--set R=1 ...] [--adhesion] [--format text|latex|json]
+    linecontact-sym derive PROFILE [--set R=1 ...] [--adhesion [--law jkr]] [--format text|latex|json]
     linecontact-sym eval PROFILE QUANTITY --at a=0.1,0.2 [x=...] --set R=1 E_star=1 [--dps 50]
     linecontact-sym table power-law --n 1,2,3,4,5,6,10 [--latex]
     linecontact-sym check FILE.toml | --profile PROFILE --force FORMULA ...
@@ -37,12 +37,12 @@ import time
 import traceback
 from pathlib import Path
 
-
 from .core.budget import DEFAULT_BUDGET, checked_budget
 from .core.precision import MAX_DPS
 from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK
 from .core import symbols as S
 from .core.errors import LineContactError
+from .core.parallel import add_jobs_argument
 from .core.progress import Progress
 
 #: kept for scripts that imported the old name (1: a claim without a verdict)
@@ -64,16 +64,6 @@ def _dps(text):
     if not 1 <= v <= MAX_DPS:
         raise argparse.ArgumentTypeError(f"digits must be 1 to {MAX_DPS}, got {v}")
     return v
-
-
-def _jobs(text):
-    try:
-        n = int(text)
-    except ValueError:
-        n = 0
-    if n < 1:
-        raise argparse.ArgumentTypeError(f"--jobs expects a whole number >= 1, got {text!r}")
-    return n
 
 
 def _budget(text):
@@ -130,7 +120,7 @@ def _derivation_dict(d, values=None):
 
 # ------------------------------------------------------------------ paper
 def cmd_paper(args):
-    from .claims.check import check_paper
+    from .claims.batch import check_and_draw          # the claims and, beside them, the figures
     from .claims.report import text_table, write_paper_outputs
     from .claims.spec import load_paper
     paper = load_paper(args.name)
@@ -145,22 +135,9 @@ def cmd_paper(args):
     if not args.quiet:
         print(f"checking {n} claims of {paper.title or paper.key}", file=sys.stderr, flush=True)
     bar = Progress(n, "checking", enabled=not args.quiet)
-    kw = dict(budget=args.budget, only=only, on_start=lambda i, n_, c: bar.start(c.label) if args.jobs == 1 else None,
-              progress=lambda i, n_, r: bar.done(r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
-    drawn = None
-    if args.jobs > 1:
-        # one pool for the claims and, beside them, the figures
-        from .claims.figures import draw_figures
-        from .core.parallel import process_pool
-        with process_pool(args.jobs) as pool:
-            figs = None
-            if not args.no_figures and paper.figures:
-                out.mkdir(parents=True, exist_ok=True)
-                figs = pool.submit(draw_figures, paper, out, budget=args.budget)
-            result = check_paper(paper, executor=pool, **kw)
-            drawn = figs.result() if figs is not None else None
-    else:
-        result = check_paper(paper, **kw)
+    result, drawn = check_and_draw(paper, args.jobs, None if args.no_figures else out, args.budget, only=only,
+                                   on_start=lambda i, n_, c: bar.start(c.label), progress=lambda i, n_, r: bar.done(
+                                       r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
     bar.close()
     written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget, drawn=drawn)
     if args.json:
@@ -197,10 +174,16 @@ def cmd_derive(args):
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
     todo = [(q, c, q) for q in quantities]
     if args.adhesion:
-        ad = c.adhesive(S.gamma)
+        from .contacts.adhesion import LAWS
+        if args.law not in LAWS:
+            raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
+        ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
         todo += [((registry[q].aliases or (q,))[0], ad, q)
                  for q in ("force", "pressure", "adhesion_force", "pull_off_half_width")]
+    if getattr(args, "maugis_dugdale", False):
+        md = c.maugis_dugdale()
+        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("force", "cohesive_gap", "pressure")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -310,6 +293,37 @@ def _eval_one(c, q, values, dps):
     return contact.evaluate_at(name, dps=dps, **values)
 
 
+# ------------------------------------------------------------------ model
+def cmd_model(args):
+    """Which adhesion model a tolerance needs: JKR or Maugis-Dugdale."""
+    import mpmath
+    prof = _profile(args.profile, args.symbols)
+    values = {k.name: v for k, v in _settings(args.set, args.symbols).items()}
+    md = _contact(args, prof).maugis_dugdale()
+    missing = [s.name for s in md.variables if s.name not in values]
+    if missing:
+        raise LineContactError(f"model needs values for {', '.join(missing)} (--set NAME=VALUE)")
+    ch = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values)
+    po = md.pull_off_at(args.dps, **values)
+    out = {"profile": str(prof), "set": {k: str(v) for k, v in values.items()}, "model": ch.model,
+           "maugis_parameter": mpmath.nstr(ch.maugis_parameter, args.dps),
+           "pull_off_jkr": mpmath.nstr(ch.jkr, args.dps), "pull_off_md": mpmath.nstr(ch.md, args.dps),
+           "relative_difference": mpmath.nstr(ch.relative_difference, 6), "rtol": args.rtol,
+           "md_pull_off_kind": po.kind, "md_pull_off_half_width": mpmath.nstr(po.half_width, args.dps),
+           "note": po.note, "displacement_control": "not defined for line contacts"}
+    if args.json:
+        _emit_json(out)
+    else:
+        print(f"profile f(x) = {prof}")
+        print(f"model: {ch.model}   (JKR suffices when its pull-off is within rtol = {args.rtol} of MD's)")
+        print(f"Maugis parameter lambda = {out['maugis_parameter']}")
+        print(f"pull-off (load control): JKR {out['pull_off_jkr']}, MD {out['pull_off_md']} "
+              f"(relative difference {out['relative_difference']}); MD minimum: {po.kind} at a = "
+              f"{out['md_pull_off_half_width']}")
+        print("displacement control: not defined for line contacts (the indentation depth of a half-plane is not)")
+    return EXIT_OK
+
+
 # ------------------------------------------------------------------ table
 def cmd_table(args):
     from .parsing import parse_number_list
@@ -368,8 +382,7 @@ def cmd_check(args):
                                          force_law=args.force_law))
         paper = Paper("command-line", "claims from the command line", "", claims, {}, "command line")
     bar = Progress(len(paper.claims), "checking", enabled=not args.quiet, min_total=2)
-    result = check_paper(paper, budget=args.budget, jobs=args.jobs,
-                         on_start=lambda i, n, c: bar.start(c.label) if args.jobs == 1 else None,
+    result = check_paper(paper, budget=args.budget, jobs=args.jobs, on_start=lambda i, n, c: bar.start(c.label),
                          progress=lambda i, n, r: bar.done(r.label, r.status, r.seconds))
     bar.close()
     if args.json:
@@ -408,12 +421,6 @@ def build_parser() -> argparse.ArgumentParser:
 
     sym_help = "extra symbol names used by the formulas (created positive)"
 
-    def jobs_arg(sp_):
-        from .core.parallel import default_jobs
-        sp_.add_argument("--jobs", "-j", type=_jobs, default=default_jobs(), metavar="N",
-                         help="check the claims in N worker processes (default: the cores, here "
-                              f"{default_jobs()}); the results are those of --jobs 1, in the same order")
-
     pp = sub.add_parser("paper", help="check every claim of a paper and write the reports",
                         description="Derive and check every claim of a paper (a shipped name such as "
                                     "popov2017, or a claims TOML file); print a report table and write a "
@@ -424,7 +431,7 @@ def build_parser() -> argparse.ArgumentParser:
     pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
     pp.add_argument("--only", nargs="+", metavar="LABEL", help="check only these claims, e.g. --only 'Eq. (10)'")
     pp.add_argument("--no-figures", action="store_true", help="do not draw the figures")
-    jobs_arg(pp)
+    add_jobs_argument(pp)
     common(pp, quiet=True)
     pp.set_defaults(func=cmd_paper)
 
@@ -439,7 +446,11 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--quantities", default="force,pressure,gap",
                     help="comma-separated, from: " + ", ".join(_expression_quantities("frictionless"))
                          + " (default force,pressure,gap)")
-    pd.add_argument("--adhesion", action="store_true", help="also the JKR-adhesive laws (Eqs. 29-36)")
+    pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36)")
+    pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
+    pd.add_argument("--maugis-dugdale", dest="maugis_dugdale", action="store_true",
+                    help="also the Maugis-Dugdale conditions: P(a, c_D), the gap at c_D (= gamma/sigma_0), "
+                         "the pressure (the same as --adhesion --law maugis_dugdale's conditions)")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")
@@ -462,6 +473,21 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
+
+    pm = sub.add_parser("model", help="which adhesion model a tolerance needs: JKR or Maugis-Dugdale",
+                        description="Given the profile, E_star, the work of adhesion gamma, the Dugdale stress "
+                                    "sigma_0 and the profile's parameters, compare the load-control pull-off of "
+                                    "the JKR and the Maugis-Dugdale laws and print the Maugis parameter, e.g. "
+                                    "linecontact-sym model 'x**2/(2*R)' --set R=1 E_star=1 gamma=1 sigma_0=0.5.",
+                        epilog="exit status: 0 done; 2 bad input; 3 internal error.")
+    pm.add_argument("profile", help="the profile f(x) in SymPy syntax")
+    pm.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE",
+                    help="values: E_star, gamma, sigma_0 and the profile's parameters")
+    pm.add_argument("--rtol", default="0.05", help="relative tolerance on the pull-off (default 0.05)")
+    pm.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
+    pm.add_argument("--dps", type=_dps, default=15, help="significant digits (default 15)")
+    common(pm)
+    pm.set_defaults(func=cmd_model)
 
     pt = sub.add_parser("table", help="tables of derived laws (power-law Z_n)",
                         description="Z_n and the force law P(a) = E* c Z_n a^n of the power-law profile c x^n "
@@ -502,7 +528,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="sampling ranges, e.g. n=0.3:6")
     pc.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pc.add_argument("--strict", action="store_true", help="exit 1 unless every claim holds unconditionally")
-    jobs_arg(pc)
+    add_jobs_argument(pc)
     common(pc, quiet=True)
     pc.set_defaults(func=cmd_check)
     return p

@@ -24,7 +24,28 @@ from .references import DPS
 from .results import UNDECIDED, ClaimResult, PaperResult, TargetResult
 from .spec import Claim, Paper, load_paper
 
-__all__ = ["check_paper", "check_claim_portable", "check_part"]
+__all__ = ["check_paper", "check_claim_portable", "check_part", "check_and_draw"]
+
+
+def check_and_draw(paper, jobs, out_dir, budget, **kw):
+    """``(check_paper(paper, ...), figure paths or None)``: with ``jobs > 1``
+    one process pool checks the claims and, beside them, draws the paper's
+    figures into ``out_dir`` (None: no figures; they are drawn with the
+    reports when ``jobs == 1``).  :func:`check_paper` is looked up in
+    :mod:`.check` at the call (the name the package exports)."""
+    from . import check as _check
+    check = _check.check_paper
+    if not jobs or jobs <= 1:
+        return check(paper, budget=budget, **kw), None
+    with process_pool(jobs) as pool:
+        figs = None
+        if out_dir is not None and paper.figures:
+            from pathlib import Path
+            from .figures import draw_figures
+            Path(out_dir).mkdir(parents=True, exist_ok=True)
+            figs = pool.submit(draw_figures, paper, out_dir, budget=budget)
+        result = check(paper, budget=budget, executor=pool, **kw)
+        return result, (figs.result() if figs is not None else None)
 
 
 def _failed(claim, exc) -> ClaimResult:

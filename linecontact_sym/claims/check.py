@@ -17,7 +17,6 @@ independently of the engine), and reports per claim one of
 """
 from __future__ import annotations
 
-import dataclasses
 import time
 
 import mpmath
@@ -29,7 +28,7 @@ from ..core.budget import checked_budget, run_with_budget
 from ..core.conversion import nsimplify_basic, to_mpf
 from ..core.errors import BudgetExceeded, ClaimError, LineContactError
 from ..parsing import t as T_VAR
-from .derive import Context, Derived, derive, placeholder_laws
+from .derive import REQUIRED_DIGITS, Context, Derived, adhesive_entry, derive, evaluate_point, placeholder_laws
 from .diagnosis import diagnose
 from .references import DPS, Comparison, DerivedUndefined, Divergent, Undefined, num_eval
 from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult, PaperResult, PointResult,
@@ -37,52 +36,10 @@ from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult
 from .sampling import holds_at, sample_points
 from .spec import X_RANGES, Claim, Form, Paper, load_paper, substitute_placeholders
 from ..core.precision import workdps
-from .memo import point_key, remember, remembered, symbolic_key
-
-#: the digits a claim must reproduce
-REQUIRED_DIGITS = 30
+from .memo import remember, remembered, symbolic_key
 
 
 # =====================================================================  one form
-def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:
-    """Compare at one point; classify what is undefined where.
-
-    The comparison (the printed form's value, the derived one, the
-    first-principles references) is remembered in the derivation store
-    (:mod:`linecontact_sym.method.store`: in this process, and on disk unless
-    the cache is off) under a key of everything it depends on: the derived
-    record (profile, expression, method, conditions), the printed form, the
-    point, the digits, and the source of the whole package (so a changed
-    reference never meets a value of its predecessor).  A second run reads
-    the numbers its first run computed independently; nothing is skipped."""
-    key = point_key(derived, printed_expr, vals, dps, physics)
-    pr = remembered(key, PointResult)
-    if pr is not None:
-        return dataclasses.replace(pr, values=vals, kind=kind)
-    pr = _evaluate_point(derived, printed_expr, vals, kind, dps, physics)
-    remember(key, pr)
-    return pr
-
-
-def _evaluate_point(derived, printed_expr, vals, kind, dps, physics) -> PointResult:
-    try:
-        comps = derived.compare(vals, printed_expr, dps, physics=physics)
-    except Divergent as exc:
-        return PointResult(vals, kind, "diverges", reason=str(exc))
-    except DerivedUndefined as exc:
-        try:
-            num_eval(printed_expr, vals, dps)
-        except Undefined:
-            return PointResult(vals, kind, "both_undefined", reason=f"both undefined: {exc}")
-        return PointResult(vals, kind, "derived_undefined", reason=str(exc))
-    except Undefined as exc:
-        return PointResult(vals, kind, "printed_undefined", reason=str(exc))
-    except (LineContactError, ZeroDivisionError, ValueError, TypeError, OverflowError) as exc:
-        return PointResult(vals, kind, "derived_undefined", reason=f"{type(exc).__name__}: {exc}")
-    d = min(c.digits for c in comps)
-    return PointResult(vals, kind, "pass" if d >= REQUIRED_DIGITS else "fail", d, comps)
-
-
 def _symbolic(printed, derived: Derived, vals, budget) -> str:
     """SymPy's verdict on printed - derived (remembered like the comparisons)."""
     if derived.expr is None or not derived.closed_form:
@@ -229,7 +186,8 @@ def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, 
     free |= set(derived.variables)
     if claim.quantity in X_RANGES:
         free |= {S.x, S.a}
-    if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement", "pressure", "adhesive_pressure"):
+    if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement", "pressure") or \
+            (adhesive_entry(claim.quantity) or ("", ""))[1] == "pressure":
         free |= {S.E_star}
     if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement"):
         free |= {S.P}
@@ -396,8 +354,9 @@ def _force_law(claim, prof, ctx, printed):
     if prof is None or S.P not in printed.free_symbols or claim.quantity in ("half_width",):
         return None
     try:
-        if claim.quantity.startswith("adhesive") or claim.quantity.startswith("pull_off"):
-            return ctx.adhesive(prof, claim.range_of).force
+        adhesive = adhesive_entry(claim.quantity)
+        if adhesive is not None:
+            return ctx.adhesive(prof, claim.range_of, adhesive[0]).force
         d = ctx.contact(prof, claim.range_of).derivation("force")
         return d.expr if d.closed_form else None
     except Exception:  # noqa: BLE001 -- only a hint

@@ -16,7 +16,7 @@ import functools
 import os
 from typing import Callable, Iterable
 
-__all__ = ["default_jobs", "process_pool", "map_ordered", "map_chunks"]
+__all__ = ["default_jobs", "jobs_count", "add_jobs_argument", "process_pool", "map_ordered", "map_chunks"]
 
 
 def default_jobs() -> int:
@@ -25,6 +25,24 @@ def default_jobs() -> int:
         return max(1, len(os.sched_getaffinity(0)))
     except (AttributeError, OSError):
         return max(1, os.cpu_count() or 1)
+
+
+def jobs_count(text) -> int:
+    """A number of worker processes as typed (``--jobs N``): a whole number >= 1."""
+    try:
+        n = int(text)
+    except (TypeError, ValueError):
+        n = 0
+    if n < 1:
+        raise ValueError(f"--jobs expects a whole number >= 1, got {text!r}")
+    return n
+
+
+def add_jobs_argument(parser) -> None:
+    """The command line's ``--jobs N`` (default: :func:`default_jobs`)."""
+    parser.add_argument("--jobs", "-j", type=jobs_count, default=default_jobs(), metavar="N",
+                        help=f"check the claims in N worker processes (default: the cores, here {default_jobs()}); "
+                             f"the results are those of --jobs 1, in the same order")
 
 
 def process_pool(jobs: int | None = None):

@@ -7,6 +7,7 @@ import pytest
 
 from linecontact_sym.claims import batch as B
 from linecontact_sym.claims import check as C
+from linecontact_sym.claims import derive as D
 from linecontact_sym.claims import memo as M
 from linecontact_sym.claims import spec as SPEC
 
@@ -75,12 +76,12 @@ def test_a_lost_worker_is_one_undecided_claim():
 
 def test_second_run_reads_the_comparisons(monkeypatch):
     calls = []
-    real = C._evaluate_point
+    real = D._evaluate_point
 
     def counting(*a, **k):
         calls.append(1)
         return real(*a, **k)
-    monkeypatch.setattr(C, "_evaluate_point", counting)
+    monkeypatch.setattr(D, "_evaluate_point", counting)
     claim = SPEC.claim_from_dict({**CLAIMS[1], "points": 2, "formula": "pi*E_star*a**2/(3*R)"}, "test.toml")
     paper = SPEC.Paper("test", "t", "", [claim], {}, "t")
     first = C.check_paper(paper, budget=BUDGET)
