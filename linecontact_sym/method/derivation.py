@@ -278,6 +278,30 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     return d
 
 
+def remembered(parts, make, budget, reference) -> Derivation:
+    """A derivation made by ``make()`` once per key (:mod:`.store`: in this
+    process and on disk), for quantities derived outside :func:`derive`
+    (the half-width, the tangential stick half-width ...).  ``parts`` name
+    the problem completely (the key adds the code version); ``budget`` is
+    the caller's (a result that ran out of time is made again under a
+    larger one); ``reference(derivation)`` rebuilds the numeric reference
+    of a stored derivation (closures are not stored)."""
+    key = store.make_key("remembered", *parts)
+    rec = store.get(key)
+    if rec is not None and "quantity" in rec and _usable(rec, budget):
+        d = Derivation(rec["quantity"], rec["expr"], rec["closed_form"], rec["step"], rec["conditions"],
+                       rec["verification"], rec["seconds"], rec["notes"], None, rec["variables"],
+                       rec["attempts"], rec["source"])
+        d.reference = reference(d)
+        return d
+    d = make()
+    store.put(key, {"quantity": d.quantity, "expr": d.expr, "closed_form": d.closed_form, "step": d.step,
+                    "conditions": d.conditions, "verification": d.verification, "seconds": d.seconds,
+                    "notes": d.notes, "variables": tuple(d.variables), "attempts": tuple(d.attempts),
+                    "budget": checked_budget(budget)})
+    return d
+
+
 def _problem_parts(problem):
     prof = problem.profile
     if prof is None:

@@ -153,14 +153,17 @@ class LineContact(Contact):
             xp = sp.Dummy("x", positive=True)
             # a test that SymPy's assumptions decide for every admissible value
             # is not sampled at every call (x**2/(2R): f' = x/R >= 0 always)
+            # removable singularities are patched where x (or a) is 0, never
+            # where a parameter is (parameters are > 0; a symbolic limit in
+            # w of 2 x exp(-x**2/w**2)/w**2 cost 10 s, the first Gaussian evaluate)
             fprime = None if d1.xreplace({S.x: xp}).is_nonnegative else \
-                lambdify_numpy(d1, [S.x] + params, stable=False)
+                lambdify_numpy(d1, [S.x] + params, stable=False, patch=(S.x,))
             fd = self.derivation("force")
             slope = None
             if fd.closed_form and not fd.expr.has(sp.Integral):
                 dP = sp.diff(fd.expr, S.a)
                 if not dP.is_nonnegative:
-                    slope = lambdify_numpy(dP, [S.a, S.E_star] + params, stable=False)
+                    slope = lambdify_numpy(dP, [S.a, S.E_star] + params, stable=False, patch=(S.a,))
             cache["_adm_fns"] = (fprime, slope, [p.name for p in params])
         return cache["_adm_fns"]
 
@@ -259,14 +262,15 @@ class LineContact(Contact):
                                        "dP/da against mpmath.diff of the quadrature of Eq. (10*)", t0)
 
     # --------------------------------------------------------------- half-width
-    def _half_width(self, load=S.P, **values):
+    def _half_width(self, load=S.P, budget=None, **values):
         """Contact half-width a at load P.
 
         With a symbolic load: the closed-form inverse of the force law where
         SymPy finds one (a :class:`Derivation`, verified: P(a(P)) = P to 30
         digits at random points), else a Derivation with ``closed_form=False``
-        whose ``evalf`` solves P(a) = load numerically.  With a numeric load and
-        numeric parameters (keywords): the number (mpmath, 30 digits).
+        whose ``evalf`` solves P(a) = load numerically; ``budget`` (seconds,
+        default the contact's) limits the symbolic inversion.  With a numeric
+        load and numeric parameters (keywords): the number (mpmath, 30 digits).
         """
         load = to_sympy(load)
         if load.is_number:
@@ -275,13 +279,13 @@ class LineContact(Contact):
             return half_width_at(self.force_law(**values), load)
         cache = self._caches()
         key = ("half_width", load)
-        if key not in cache:
-            cache[key] = self._derive_half_width(load)
+        if key not in cache or (not cache[key].closed_form and cache[key].attempts):
+            cache[key] = self._derive_half_width(load, budget)
         return cache[key]
 
-    def _derive_half_width(self, load=S.P) -> Derivation:
+    def _derive_half_width(self, load=S.P, budget=None) -> Derivation:
         """a(P), see :func:`~.inverse.derive_half_width`."""
-        return derive_half_width(self, load)
+        return derive_half_width(self, load, budget)
 
     # --------------------------------------------------------------- other forms
     def adhesive(self, work_of_adhesion=S.gamma):

@@ -315,7 +315,11 @@ def admissible_range(law):
         notes = []
         first_neg = None
         segs, kinks = _segments(base, lo, hi)
-        if (reliable(base.dP) if base.expr is not None else base.dP)(lo) < 0:
+        # a closed form cancels next to a breakpoint (the rounded punch's
+        # P0 ~ (a - b)**(3/2) from terms of size a**2): its slope is read at
+        # the precision that resolves it, as everywhere in the scan
+        dP0 = reliable(base.dP) if base.expr is not None else base.dP
+        if dP0(lo) < 0:
             raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(lo, 6)}: no admissible "
                                            f"half-width (tensile edge pressure)")
         for (l, r), b in zip(segs, kinks + [None]):
@@ -324,7 +328,7 @@ def admissible_range(law):
                 break
             if first_neg is not None:
                 break
-            if b is not None and base.dP(b * (1 + KINK_GAP)) < 0:
+            if b is not None and dP0(b * (1 + KINK_GAP)) < 0:
                 first_neg = b
                 break
         note = ""
@@ -359,7 +363,7 @@ def landscape(law) -> Landscape:
                 A = root_in_log(g, cl, cr)
                 ext.append(Extremum(A, law.P(A), "stationary", g(cl) < 0, (cl, cr)))
             if b is not None:
-                left, right = law.dP(b * (1 - KINK_GAP)), law.dP(b * (1 + KINK_GAP))
+                left, right = g(b * (1 - KINK_GAP)), g(b * (1 + KINK_GAP))
                 if (left < 0) != (right < 0):
                     ext.append(Extremum(b, law.P(b), "kink", left < 0, (b * (1 - KINK_GAP), b * (1 + KINK_GAP))))
         rising = g(hi_eval) >= 0
