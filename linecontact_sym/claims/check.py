@@ -60,7 +60,8 @@ def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS,
     except (LineContactError, ZeroDivisionError, ValueError, TypeError, OverflowError) as exc:
         return PointResult(vals, kind, "derived_undefined", reason=f"{type(exc).__name__}: {exc}")
     d = min(c.digits for c in comps)
-    return PointResult(vals, kind, "pass" if d >= REQUIRED_DIGITS else "fail", d, comps)
+    ok = all(c.digits >= c.required(REQUIRED_DIGITS) for c in comps)
+    return PointResult(vals, kind, "pass" if ok else "fail", d, comps)
 
 
 

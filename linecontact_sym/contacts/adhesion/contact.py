@@ -259,14 +259,15 @@ class AdhesiveLineContact(ContactOn):
 
     # ----------------------------------------------------------- pull-off
     def _pull_off_closed(self):
-        """The symbolic attempt alone (cached), see :func:`.pull_off.closed_attempt`."""
+        """The symbolic attempt alone (cached in memory and on disk), see
+        :func:`.pull_off.closed_attempt`."""
         if "_po_closed" not in self._cache:
-            self._cache["_po_closed"] = pull_off.closed_attempt(self)
+            self._cache["_po_closed"] = pull_off.remembered_closed_attempt(self)
         return self._cache["_po_closed"]
 
     def _derive_pull_off(self, quantity) -> Derivation:
         if "_po" not in self._cache:
-            self._cache["_po"] = dict(zip(_PULL_OFF, pull_off.derivations(self)))
+            self._cache["_po"] = dict(zip(_PULL_OFF, pull_off.remembered_derivations(self)))
         return self._cache["_po"][quantity]
 
     _derive_pull_off_force = lambda self: self._derive_pull_off("pull_off_force")  # noqa: E731

@@ -113,7 +113,8 @@ class Landscape:
     def describe(self) -> str:
         end = {"admissible": "the end of the admissible range (dP0/da turns negative there)",
                "domain": "the end of the law's real domain", "search": "the search limit"}[self.end]
-        how = {"ball": "ball arithmetic on dP/da (python-flint): no stationary point missed",
+        how = {"convex": "the convexity of P0 (dP/da increasing: one sign change at most)",
+               "ball": "ball arithmetic on dP/da (python-flint): no stationary point missed",
                "ball+adaptive": "ball arithmetic on dP/da, with the sampled bound where the balls were "
                                 "inconclusive"}.get(self.method, "adaptive subdivision of dP/da with a sampled "
                                                                  "error bound")
@@ -251,8 +252,21 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
     return sorted(out)
 
 
+def _on_flat(law, r) -> bool:
+    """Does the segment ending at ``r`` lie on the profile's flat (P0 = 0
+    there, :func:`~.force_law.flat_end`)?  dP/da has no sign change on it
+    (0, or -B1/(2 sqrt(a)) with adhesion), and the sampled bound, which
+    cannot exclude an interval where the slope is 0, need not look."""
+    flat = getattr(law.base, "flat", None)
+    return flat is not None and r <= flat * (1 + KINK_GAP / 2)   # the segment [., b(1 - KINK_GAP)]
+
+
 def _segments(law, lo, hi):
     """[lo, hi] cut at the breakpoints (KINK_GAP around each)."""
+    return _segments_raw(law, lo, hi)
+
+
+def _segments_raw(law, lo, hi):
     edges, kinks = [lo], []
     for b in law.breaks():
         if lo < b * (1 - KINK_GAP) and b * (1 + KINK_GAP) < hi:
@@ -322,8 +336,9 @@ def admissible_range(law):
         if dP0(lo) < 0:
             raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(lo, 6)}: no admissible "
                                            f"half-width (tensile edge pressure)")
-        for (l, r), b in zip(segs, kinks + [None]):
-            for cl, cr in _falling(base, l, r, balls, notes):
+        for (l, r), b in zip(segs, kinks + [None]) if not base.convex else ():
+            # (a convex P0 has dP0/da nondecreasing: >= 0 at lo, >= 0 everywhere)
+            for cl, cr in (_falling(base, l, r, balls, notes) if not _on_flat(base, r) else ()):
                 first_neg = root_in_log(base.dP, cl, cr)
                 break
             if first_neg is not None:
@@ -349,6 +364,9 @@ def landscape(law) -> Landscape:
         return law._landscape
     lo, hi, end, note = admissible_range(law)
     notes = [note] if note else []
+    if law.base.convex:
+        law._landscape = _convex_landscape(law, lo, hi, end, notes)
+        return law._landscape
     with workdps(20):
         balls = _Balls(law)
         method = "ball" if balls.f is not None else "adaptive"
@@ -359,7 +377,7 @@ def landscape(law) -> Landscape:
         ext = []
         g = reliable(law.dP) if law.expr is not None else law.dP
         for (l, r), b in zip(segs, kinks + [None]):
-            for cl, cr in crossings(g, l, r, balls, notes):
+            for cl, cr in (crossings(g, l, r, balls, notes) if not _on_flat(law, r) else ()):
                 A = root_in_log(g, cl, cr)
                 ext.append(Extremum(A, law.P(A), "stationary", g(cl) < 0, (cl, cr)))
             if b is not None:
@@ -375,6 +393,36 @@ def landscape(law) -> Landscape:
                          f"problem); the sampled bound decided there")
     law._landscape = Landscape(lo, hi_eval, end, tuple(ext), method, tuple(notes), rising)
     return law._landscape
+
+
+def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
+    """The landscape where P0 is proven convex (:func:`~.force_law.convex_profile`):
+    dP/da = dP0/da - B1/(2 sqrt(a)) is then increasing on (0, oo), so it
+    changes sign at most once, from - to + (a minimum): found by walking a
+    factor-4 grid up from lo to the first a with dP/da >= 0, then the root.
+    No subdivision of the whole range (an exponentially growing P0 such as
+    that of cosh(x) - 1 left the subdivision no interval it could exclude)."""
+    with workdps(20):
+        g = reliable(law.dP) if law.expr is not None else law.dP
+        hi_eval = hi * (1 - KINK_GAP) if end != "search" else hi
+        ext = []
+        A_prev, A = None, lo
+        while True:
+            if g(A) >= 0:
+                break
+            if A >= hi_eval:
+                A = None
+                break
+            A_prev, A = A, min(4 * A, hi_eval)
+        rising = A is not None
+        if A is not None and A_prev is not None:
+            r = root_in_log(g, A_prev, A)
+            ext.append(Extremum(r, law.P(r), "stationary", True, (A_prev, A)))
+        if not rising and end != "search":
+            ext.append(Extremum(hi_eval, law.P(hi_eval), "end", True, (hi_eval, hi_eval)))
+        how = ("P0 convex on (0, oo) (h2 = 2 f2 + t f3 >= 0 for t > 0, proven by the assumptions of SymPy): "
+               "dP/da increasing, one sign change at most, bracketed on a factor-4 grid")
+    return Landscape(lo, hi_eval, end, tuple(ext), "convex", tuple(notes) + (how,), rising)
 
 
 # ---------------------------------------------------------------- minimum (method A)
