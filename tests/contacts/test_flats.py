@@ -184,3 +184,16 @@ def test_quartic_pull_off_closed_and_remembered():
     store.clear_memory()
     again = lcs.LineContact(K * S.x**4).adhesive().derivation("pull_off_force")
     assert again.cached == "disk" and again.expr == d.expr
+
+
+def test_numeric_search_stops_at_its_budget():
+    """The circular-corner punch's numeric pull-off needs tens of seconds of
+    quadratures: with budget=1 it raises BudgetExceeded (a deadline checked
+    between evaluations), instead of running to the end."""
+    from linecontact_sym.core.errors import BudgetExceeded
+    x, R, b = S.x, S.R, S.b
+    c = lcs.LineContact(sp.Piecewise((0, x < b), (R - sp.sqrt(R**2 - (x - b)**2), True)),
+                        params={R: (2.0, 4.0), b: (0.2, 0.8)}, budget=2)
+    ad = c.adhesive()
+    with pytest.raises(BudgetExceeded, match="budget of 1 s"):
+        ad.pull_off_at(budget=1, E_star=1, R=3, b=sp.Rational(1, 2), gamma=sp.Rational(1, 100))

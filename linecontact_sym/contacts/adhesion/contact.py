@@ -32,6 +32,7 @@ import time
 import sympy as sp
 
 from ...core import symbols as S
+from ...core.budget import checked_budget
 from ...core.conversion import float_values, point_value
 from ...core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
                            VerificationError)
@@ -42,7 +43,7 @@ from ...parsing import to_sympy, user_value
 from . import branches
 from . import pull_off
 from ..base import ContactOn, Quantity
-from ..normal.equilibria import equilibria
+from ..normal.equilibria import equilibria, searching_until
 from ..normal.force_law import PullOff, ForceLaw
 from .jkr import GAMMA_RANGE, energy_release_rate, flat_punch_force, phat_energy, stress_intensity
 from ..sampling import point_sampler
@@ -280,13 +281,18 @@ class AdhesiveLineContact(ContactOn):
     def _pull_off_checked(self, vals, dps) -> PullOff:
         return pull_off.checked(self, vals, dps)
 
-    def pull_off_at(self, dps: int = 30, **values) -> PullOff:
+    def pull_off_at(self, dps: int = 30, budget=None, **values) -> PullOff:
         """The pull-off at numeric values (by name): a :class:`PullOff` with
         the force P_min < 0, P_adh = -P_min, the half-width and how the two
         independent methods agree.  Raises :class:`NoPullOffError` where no
         finite pull-off exists, :class:`VerificationError` if the methods
-        disagree below ``dps`` digits."""
-        return pull_off.at_values(self, self._numeric_values(values), dps)
+        disagree below ``dps`` digits, :class:`BudgetExceeded` when the
+        numeric search outlasts ``budget`` seconds (default the contact's;
+        the symbolic attempt has its own, the contact's)."""
+        vals = self._numeric_values(values)
+        budget = self.contact.budget if budget is None else checked_budget(budget)
+        with searching_until(budget):
+            return pull_off.at_values(self, vals, dps)
 
     def pull_off_force_at(self, dps: int = 30, **values):
         """P_min (< 0) at numeric values, verified to ``dps`` digits."""

@@ -23,7 +23,7 @@ from ...method.verification import REQUIRED_DIGITS, verify
 from ...parsing import to_sympy
 from . import admissibility
 from ..base import Contact, Quantity
-from .equilibria import half_width_at
+from .equilibria import half_width_at, searching_until
 from .force_law import ForceLaw
 from .inverse import derive_half_width
 from ..sampling import point_sampler
@@ -270,13 +270,15 @@ class LineContact(Contact):
         digits at random points), else a Derivation with ``closed_form=False``
         whose ``evalf`` solves P(a) = load numerically; ``budget`` (seconds,
         default the contact's) limits the symbolic inversion.  With a numeric
-        load and numeric parameters (keywords): the number (mpmath, 30 digits).
+        load and numeric parameters (keywords): the number (mpmath, 30 digits),
+        the numeric search under ``budget`` too (:class:`BudgetExceeded` after it).
         """
         load = to_sympy(load)
         if load.is_number:
             if load <= 0:
                 raise DomainError(f"the load must be positive for a non-adhesive contact, got {load}")
-            return half_width_at(self.force_law(**values), load)
+            with searching_until(self.budget if budget is None else checked_budget(budget)):
+                return half_width_at(self.force_law(**values), load)
         cache = self._caches()
         key = ("half_width", load)
         if key not in cache or (not cache[key].closed_form and cache[key].attempts):

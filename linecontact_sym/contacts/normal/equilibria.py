@@ -51,13 +51,16 @@ stable where P increases.
 """
 from __future__ import annotations
 
+import contextlib
+import contextvars
 from dataclasses import dataclass
 
 import mpmath
 
+from ...core.budget import Deadline
 from ...core.conversion import to_mpf
 from ...core.extras import require
-from ...core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
+from ...core.errors import BudgetExceeded, DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
 from ...core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
 from ...core.precision import workdps
@@ -77,6 +80,30 @@ BALL_GIVEUP = mpmath.mpf("1e-3")
 MAX_INTERVALS = 20000
 #: bits of the ball arithmetic
 BALL_PREC = 192
+
+
+#: the deadline of the numeric searches running in this context (None: none)
+_DEADLINE = contextvars.ContextVar("linecontact_sym_search_deadline", default=None)
+
+
+@contextlib.contextmanager
+def searching_until(budget):
+    """Run the numeric searches of this module (scans, subdivisions, roots)
+    under a wall-clock ``budget`` (seconds, None: no limit): they check it
+    between evaluations and raise :class:`BudgetExceeded` when it is spent.
+    In-process and cheap (no fork): a search is a loop of mpmath or ball
+    evaluations, each short, so the check between them is a deadline."""
+    token = _DEADLINE.set(Deadline(budget) if budget is not None else None)
+    try:
+        yield
+    finally:
+        _DEADLINE.reset(token)
+
+
+def _check_deadline(what):
+    d = _DEADLINE.get()
+    if d is not None and d.expired():
+        raise BudgetExceeded(f"{what} did not finish within its budget of {d.budget:g} s")
 
 
 @dataclass(frozen=True)
@@ -213,6 +240,7 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
     while stack:
         l, r = stack.pop()
         count += 1
+        _check_deadline("the search for stationary points of P(a)")
         if count > MAX_INTERVALS:
             raise VerificationError(f"the search for stationary points of P(a) on [{mpmath.nstr(lo, 6)}, "
                                     f"{mpmath.nstr(hi, 6)}] needed more than {MAX_INTERVALS} intervals")
@@ -285,13 +313,15 @@ def real_range(law):
         grid = [law.scale * mpmath.mpf(4)**j for j in range(-20, 41)]
         first = good = None
         for A in grid:
+            _check_deadline("the scan for the real domain of P(a)")
             try:
                 law.P(A)
                 law.dP(A)
             except UNDEFINED:
                 if good is None:
                     continue
-                return first, domain_end(lambda v: (law.P(v), law.dP(v)), good, A), "domain"
+                return first, domain_end(lambda v: (_check_deadline("the search for the end of the law's domain"),
+                                                    law.P(v), law.dP(v)), good, A), "domain"
             first = A if first is None else first
             good = A
         if good is None:
@@ -408,6 +438,7 @@ def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
         ext = []
         A_prev, A = None, lo
         while True:
+            _check_deadline("the search for the stationary point of P(a)")
             if g(A) >= 0:
                 break
             if A >= hi_eval:
@@ -535,6 +566,6 @@ def half_width_at(law, load, dps: int = 30):
     return roots[0]
 
 
-__all__ = ["Extremum", "Landscape", "Equilibrium", "crossings", "real_range", "admissible_range", "landscape",
+__all__ = ["Extremum", "Landscape", "Equilibrium", "searching_until", "crossings", "real_range", "admissible_range", "landscape",
            "minimum", "equilibria", "equilibria_at", "half_width_at",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]

@@ -174,14 +174,20 @@ def derive_components(sf) -> dict:
     G_rule = sf.derivation("cauchy_transform").rule
     out = {}
     for k, e in exprs.items():
-        def ref(vals, dps, k=k):
-            return full(vals, dps)[k]
-        ref.full = full
+        ref = component_reference(full, k)
         step = Step(f"kolosov({G_rule})", e, (), ("Kolosov-Muskhelishvili formulas from G and H",)) if closed \
             else fallback_step("no closed form of the potentials: Flamant quadrature")
         out[k] = Derivation(k, e, closed, step, (), recs.get(k), time.perf_counter() - t0, tuple(notes), ref,
                             (S.a, S.x, S.z) + sf.variables)
     return out
+
+
+def component_reference(full, k):
+    """The reference of one stress component from the shared Flamant reference."""
+    def ref(vals, dps):
+        return full(vals, dps)[k]
+    ref.full = full
+    return ref
 
 
 _ELEMENTARY = (sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Number, sp.NumberSymbol, sp.core.numbers.ImaginaryUnit, sp.log,
@@ -245,4 +251,4 @@ def build_field(sf, vals) -> F.FieldEvaluator:
     return F.FieldEvaluator(normal, tangential, nu, friction=mu, mean_pressure=force / (2 * float(vals[S.a])))
 
 
-__all__ = ["derive_components", "build_field", "flamant_reference", "sampler"]
+__all__ = ["derive_components", "component_reference", "build_field", "flamant_reference", "sampler"]
