@@ -107,7 +107,7 @@ def test_circular_corner_punch_search_ends():
     x, R, b = S.x, S.R, S.b
     c = lcs.LineContact(sp.Piecewise((0, x < b), (R - sp.sqrt(R**2 - (x - b)**2), True)),
                         params={R: (2.0, 4.0), b: (0.2, 0.8)}, budget=2)
-    a = c.half_width(sp.Rational(1, 10), E_star=1, R=3, b=sp.Rational(1, 2))
+    a = c.half_width(sp.Rational(1, 10), budget=600, E_star=1, R=3, b=sp.Rational(1, 2))
     with workdps(40):
         def P(A):   # Eq. (10*) by mpmath after t = A sin(phi), from the corner on
             def g(ph):
@@ -145,7 +145,7 @@ def test_cosh_pull_off_within_budget_against_mpmath():
     """P0 of cosh(x) - 1 is convex: one stationary point; before, the search
     subdivided up to a = 1e24 without end."""
     c = lcs.LineContact(sp.cosh(S.x) - 1, budget=10).adhesive()
-    po = c.pull_off_at(E_star=1, gamma=sp.Rational(1, 10))
+    po = c.pull_off_at(budget=600, E_star=1, gamma=sp.Rational(1, 10))
     with workdps(40):
         def P(A):   # Eq. (10*) of cosh(x) - 1 and Eq. (31), by mpmath quadrature
             P0 = mpmath.quad(lambda t: t * mpmath.sinh(t) / mpmath.sqrt(A**2 - t**2), [0, A])
@@ -197,3 +197,21 @@ def test_numeric_search_stops_at_its_budget():
     ad = c.adhesive()
     with pytest.raises(BudgetExceeded, match="budget of 1 s"):
         ad.pull_off_at(budget=1, E_star=1, R=3, b=sp.Rational(1, 2), gamma=sp.Rational(1, 100))
+
+
+def test_rounded_punch_pull_off_where_the_grid_crossed_the_flat_end(punch):
+    """R = 5.834, b = 1.305: a grid point of the independent method fell just
+    past the flat's end, where float64 rounding made P0 -1e-17 < 0 = P0 on
+    the flat: it cut its range there ('end' at a = 1.119) and the pull-off
+    failed its own verification (0 digits)."""
+    v = dict(R=sp.Rational(5834, 1000), b=sp.Rational(1305, 1000), E_star=sp.Rational(787922, 10**6),
+             gamma=sp.Rational(265831, 10**6))
+    po = punch.adhesive().pull_off_at(**v)
+    with workdps(40):
+        R, b, E, g = (mpmath.mpf(v[k].p) / v[k].q for k in ("R", "b", "E_star", "gamma"))
+
+        def P(A):
+            return ciavarella_load(A, b, R, E) - mpmath.sqrt(2 * mpmath.pi * g * E * A)
+        a_star = mpmath.findroot(lambda A: mpmath.diff(P, A), mpmath.mpf("2.5"))
+        assert po.kind == "stationary" and po.digits >= 30
+        assert abs(po.force - P(a_star)) < mpmath.mpf(10)**-25

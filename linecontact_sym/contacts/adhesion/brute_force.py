@@ -95,7 +95,11 @@ def minimum_by_grid(law, dps: int) -> PullOff:
         except (Outside, ValueError, ZeroDivisionError):
             cut = True
             break
-        if not math.isfinite(p0) or (last0 is not None and p0 < last0):
+        # falling beyond float64 rounding (relative to P0 and to the adhesive term it is
+        # weighed against): on a flat P0 = 0, and the 97-node rule over the sliver of
+        # a grid point just past the flat's end may give -1e-17 (a false cut there)
+        noise = 1e-12 * max(abs(p0), abs(last0 or 0.0), B1 * math.sqrt(A)) if math.isfinite(p0) else 0.0
+        if not math.isfinite(p0) or (last0 is not None and p0 < last0 - noise):
             cut = True
             break
         last0 = p0

@@ -43,7 +43,7 @@ from ...parsing import to_sympy, user_value
 from . import branches
 from . import pull_off
 from ..base import ContactOn, Quantity
-from ..normal.equilibria import equilibria, searching_until
+from ..normal.equilibria import SEARCH_BUDGET, equilibria, searching_until
 from ..normal.force_law import PullOff, ForceLaw
 from .jkr import GAMMA_RANGE, energy_release_rate, flat_punch_force, phat_energy, stress_intensity
 from ..sampling import point_sampler
@@ -287,10 +287,11 @@ class AdhesiveLineContact(ContactOn):
         independent methods agree.  Raises :class:`NoPullOffError` where no
         finite pull-off exists, :class:`VerificationError` if the methods
         disagree below ``dps`` digits, :class:`BudgetExceeded` when the
-        numeric search outlasts ``budget`` seconds (default the contact's;
-        the symbolic attempt has its own, the contact's)."""
+        numeric search outlasts ``budget`` seconds (default
+        :data:`~linecontact_sym.contacts.normal.equilibria.SEARCH_BUDGET`; the
+        symbolic attempt has its own, the contact's)."""
         vals = self._numeric_values(values)
-        budget = self.contact.budget if budget is None else checked_budget(budget)
+        budget = SEARCH_BUDGET if budget is None else checked_budget(budget)
         with searching_until(budget):
             return pull_off.at_values(self, vals, dps)
 

@@ -23,7 +23,7 @@ from ...method.verification import REQUIRED_DIGITS, verify
 from ...parsing import to_sympy
 from . import admissibility
 from ..base import Contact, Quantity
-from .equilibria import half_width_at, searching_until
+from .equilibria import SEARCH_BUDGET, half_width_at, searching_until
 from .force_law import ForceLaw
 from .inverse import derive_half_width
 from ..sampling import point_sampler
@@ -271,13 +271,14 @@ class LineContact(Contact):
         whose ``evalf`` solves P(a) = load numerically; ``budget`` (seconds,
         default the contact's) limits the symbolic inversion.  With a numeric
         load and numeric parameters (keywords): the number (mpmath, 30 digits),
-        the numeric search under ``budget`` too (:class:`BudgetExceeded` after it).
+        the numeric search under ``budget`` too (default
+        :data:`~.equilibria.SEARCH_BUDGET`; :class:`BudgetExceeded` after it).
         """
         load = to_sympy(load)
         if load.is_number:
             if load <= 0:
                 raise DomainError(f"the load must be positive for a non-adhesive contact, got {load}")
-            with searching_until(self.budget if budget is None else checked_budget(budget)):
+            with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
                 return half_width_at(self.force_law(**values), load)
         cache = self._caches()
         key = ("half_width", load)

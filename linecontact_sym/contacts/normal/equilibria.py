@@ -82,6 +82,11 @@ MAX_INTERVALS = 20000
 BALL_PREC = 192
 
 
+#: the default wall-clock budget (seconds) of one numeric search at numbers
+#: (a pull-off, a half-width): generous, since a search is correct however long
+#: it takes; a budget passed by the caller is the deadline
+SEARCH_BUDGET = 120.0
+
 #: the deadline of the numeric searches running in this context (None: none)
 _DEADLINE = contextvars.ContextVar("linecontact_sym_search_deadline", default=None)
 
@@ -566,6 +571,6 @@ def half_width_at(law, load, dps: int = 30):
     return roots[0]
 
 
-__all__ = ["Extremum", "Landscape", "Equilibrium", "searching_until", "crossings", "real_range", "admissible_range", "landscape",
+__all__ = ["Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings", "real_range", "admissible_range", "landscape",
            "minimum", "equilibria", "equilibria_at", "half_width_at",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]
