@@ -28,7 +28,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
 from ...parsing import user_value
-from ...method.derivation import Derivation, fallback_step, remembered, remembered_many, values_by_name
+from ...method.derivation import Derivation, fallback_step, values_by_name
 from ...method.rules import Step
 from . import build as B
 from . import extrema as X
@@ -134,20 +134,8 @@ class StressField(ContactOn):
     def _density(self):
         return sp.diff(self.contact.derivation("force").expr, S.a)
 
-    def _store_parts(self, what):
-        """What names this field's problem for the on-disk store (None: a
-        callable traction, which is code, not data: not stored)."""
-        if callable(self.tangential) and not isinstance(self.tangential, sp.Basic):
-            return None
-        c = self.contact
-        return (what, c.profile.expr, dict(c.profile.ranges), c.derivation("force").expr, self.tangential,
-                self.mu, self.nu, self.stick, tuple(self.breaks), self.verify, self.points, c.budget)
-
     def _derive_cauchy_transform(self) -> Derivation:
-        parts = self._store_parts("cauchy_transform")
-        if parts is None:
-            return self._cauchy_transform()
-        return remembered(parts, self._cauchy_transform, self.contact.budget, lambda d: None)
+        return B.remembered(self, "cauchy_transform", lambda: (self._cauchy_transform(),), lambda d: d)[0]
 
     def _cauchy_transform(self) -> Derivation:
         t0 = time.perf_counter()
@@ -182,21 +170,7 @@ class StressField(ContactOn):
     def _components(self):
         cache = self._caches()
         if "_components" not in cache:
-            parts = self._store_parts("stress_components")
-            if parts is None:
-                cache["_components"] = B.derive_components(self)
-            else:   # remembered on disk with their verification (store get/put)
-                full = []
-
-                def rebuild(d):
-                    if not full:
-                        self.contact.derivation("pressure")
-                        full.append(B.flamant_reference(self))
-                    d.reference = B.component_reference(full[0], d.quantity)
-                    return d
-                ds = remembered_many(parts, lambda: tuple(B.derive_components(self).values()), self.contact.budget,
-                                     rebuild)
-                cache["_components"] = {d.quantity: d for d in ds}
+            cache["_components"] = B.remembered_components(self)
         return cache["_components"]
 
     def _derive_sigma_x(self):
