@@ -147,8 +147,8 @@ def test_cosh_pull_off_within_budget_against_mpmath():
     c = lcs.LineContact(sp.cosh(S.x) - 1, budget=10).adhesive()
     po = c.pull_off_at(budget=600, E_star=1, gamma=sp.Rational(1, 10))
     with workdps(40):
-        def P(A):   # Eq. (10*) of cosh(x) - 1 and Eq. (31), by mpmath quadrature
-            P0 = mpmath.quad(lambda t: t * mpmath.sinh(t) / mpmath.sqrt(A**2 - t**2), [0, A])
+        def P(A):   # Eq. (10*) of cosh(x) - 1 by mpmath quadrature (t = A sin phi) and Eq. (31)
+            P0 = A * mpmath.quad(lambda ph: mpmath.sin(ph) * mpmath.sinh(A * mpmath.sin(ph)), [0, mpmath.pi / 2])
             return P0 - mpmath.sqrt(2 * mpmath.pi * mpmath.mpf("0.1") * A)
         a_star = mpmath.findroot(lambda A: mpmath.diff(P, A), mpmath.mpf("0.39"))
         assert abs(po.half_width - a_star) < mpmath.mpf(10)**-20
@@ -215,3 +215,34 @@ def test_rounded_punch_pull_off_where_the_grid_crossed_the_flat_end(punch):
         a_star = mpmath.findroot(lambda A: mpmath.diff(P, A), mpmath.mpf("2.5"))
         assert po.kind == "stationary" and po.digits >= 30
         assert abs(po.force - P(a_star)) < mpmath.mpf(10)**-25
+
+
+def test_pressure_without_closed_force_law_is_one_quadrature():
+    """x**2 exp(x)/2: no closed force law (SymPy gives up); the pressure's
+    number comes from one quadrature of the profile (0.4 s, was Eq. (12)
+    over a quadrature law: 60 s at 30 digits).  The formula is checked on
+    cosh(x) - 1 against Eq. (12) with the Bessel force law P = pi E* a I_1(a)/2
+    written here by hand."""
+    from linecontact_sym.method import transforms as T
+    c = lcs.LineContact(S.x**2 * sp.exp(S.x) / 2, budget=3)
+    d = c.derivation("pressure")
+    assert not d.closed_form and isinstance(d.expr, sp.Integral)
+    got = d.evalf(30, a=sp.Rational(1, 2), x=sp.Rational(1, 5), E_star=1)
+    ev = c.evaluate("pressure", a=0.5, x=0.2, E_star=1, rtol=1e-20)
+    with workdps(40):   # (the float 0.2 is its binary value, not 1/5)
+        assert abs(ev.value - d.evalf(30, a=0.5, x=0.2, E_star=1)) < mpmath.mpf(10)**-20
+        x, a = mpmath.mpf(1) / 5, mpmath.mpf(1) / 2
+
+        def dP(s):   # d/da of pi a I_1(a)/2
+            return mpmath.pi / 2 * (mpmath.besseli(1, s) + s * (mpmath.besseli(0, s) + mpmath.besseli(2, s)) / 2)
+        eq12 = mpmath.quad(lambda v: dP(mpmath.sqrt(x**2 + v**2)) / mpmath.sqrt(x**2 + v**2),
+                           [0, mpmath.sqrt(a**2 - x**2)]) / mpmath.pi
+        direct = T.pressure_direct_quad(mpmath.sinh, {S.a: sp.Rational(1, 2), S.x: sp.Rational(1, 5), S.E_star: 1}, 35)
+        assert abs(direct - eq12) < mpmath.mpf(10)**-30
+        # and the x**2 exp(x)/2 value against the same formula written out by hand
+        f1 = lambda t: t * mpmath.exp(t) + t**2 * mpmath.exp(t) / 2   # noqa: E731
+        ph0 = mpmath.asin(x / a)
+        g = lambda ph: (a * mpmath.sin(ph) * f1(a * mpmath.sin(ph)) - x * f1(x)) / (a**2 * mpmath.sin(ph)**2 - x**2)  # noqa: E731
+        with workdps(90):
+            by_hand = mpmath.sqrt(a**2 - x**2) / mpmath.pi * mpmath.quad(g, [0, ph0, mpmath.pi / 2])
+        assert abs(got - by_hand) < mpmath.mpf(10)**-25

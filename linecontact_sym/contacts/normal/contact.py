@@ -195,8 +195,19 @@ class LineContact(Contact):
                 return T.pressure_quad(dP, breaks, vals, dps)
         fallback = T.pressure_integral(fd.expr)
         if not fd.closed_form:
+            notes = ()
+            if not self.profile.is_piecewise:   # one quadrature instead of Eq. (12) over a quadrature law
+                prof = self.profile
+
+                def reference(vals, dps):
+                    fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x)}
+                    with workdps(dps + 10):
+                        f1 = T.NumericProfile(prof, fixed).f1
+                        return T.pressure_direct_quad(f1, vals, dps)
+                notes = ("numbers by one quadrature from the profile (the bounded inversion of the punch "
+                         "equation, transforms.pressure_direct_quad), not Eq. (12) over the quadrature force law",)
             return Derivation("pressure", fallback, False, fallback_step("force law has no closed form"), (),
-                              None, time.perf_counter() - t0, (), reference, (S.a, S.x) + self.variables)
+                              None, time.perf_counter() - t0, notes, reference, (S.a, S.x) + self.variables)
         return self._derive("pressure", Problem("pressure", self.profile, fd.expr), reference, fallback,
                             "inside", t0=t0)
 
