@@ -27,13 +27,12 @@ either, the search runs up to 4**40 times the law's length scale.
 [4**-20 s, a*] (s the length scale, :data:`SPAN`) is found by subdivision in ln a, split
 at the profile's breakpoints:
 
-* closed-form law with python-flint: dP/da (and d2P/da2) evaluated in ball
+* closed-form law (python-flint, a core dependency): dP/da (and d2P/da2) evaluated in ball
   arithmetic on each interval; an interval whose ball excludes 0 holds no
   stationary point, one with dP/da of opposite signs at its ends and a ball
   of d2P/da2 that excludes 0 holds exactly one.  This is a proof, up to the
   widths below.
-* quadrature law (or no python-flint, or a function without a ball
-  translation; the landscape's ``method`` and ``notes`` say which): an
+* quadrature law (or a function without a ball translation; the landscape's ``method`` and ``notes`` say which): an
   interval is excluded when the values of dP/da at its ends and log-midpoint
   have one sign and each is more than twice the largest change between them
   (the error bound assumes dP/da varies by at most twice its sampled change
@@ -55,11 +54,11 @@ import contextlib
 import contextvars
 from dataclasses import dataclass
 
+import flint
 import mpmath
 
 from ...core.budget import Deadline
 from ...core.conversion import to_mpf
-from ...core.extras import require
 from ...core.errors import BudgetExceeded, DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
 from ...core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
@@ -176,8 +175,8 @@ class _Balls:
             d1 = sp.diff(expr, S.a)
             self.f = compile_arb(d1, [S.a])
             self.df = compile_arb(sp.diff(d1, S.a), [S.a])
-            self.flint = require("certified", "flint")
-        except Exception as exc:  # MissingExtraError, CertificationError: the numeric method
+            self.flint = flint
+        except Exception as exc:  # CertificationError (no ball translation): the numeric method
             self.reason = f"{type(exc).__name__}: {str(exc).splitlines()[0]}"
             self.f = None
         self.ok = None
@@ -291,7 +290,9 @@ def _on_flat(law, r) -> bool:
     (0, or -B1/(2 sqrt(a)) with adhesion), and the sampled bound, which
     cannot exclude an interval where the slope is 0, need not look."""
     flat = getattr(law.base, "flat", None)
-    return flat is not None and r <= flat * (1 + KINK_GAP / 2)   # the segment [., b(1 - KINK_GAP)]
+    if flat is None or not (law is law.base or law.monotone_term):
+        return False
+    return r <= flat * (1 + KINK_GAP / 2)   # the segment [., b(1 - KINK_GAP)]
 
 
 def _segments(law, lo, hi):
@@ -399,7 +400,7 @@ def landscape(law) -> Landscape:
         return law._landscape
     lo, hi, end, note = admissible_range(law)
     notes = [note] if note else []
-    if law.base.convex:
+    if law.base.convex and (law is law.base or law.monotone_term):
         law._landscape = _convex_landscape(law, lo, hi, end, notes)
         return law._landscape
     with workdps(20):
@@ -480,14 +481,15 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
     listed; the extrema are located on ``scan_law`` (default ``law``).
     Raises :class:`NoPullOffError` where P has no finite negative minimum."""
     scan_law = scan_law or law
-    if getattr(law, "gamma", None) == 0:
-        raise NoPullOffError("no adhesion (gamma = 0): P(a) = P0(a) >= 0, no tensile pull-off")
+    if law.inactive:
+        raise NoPullOffError(f"{law.inactive if isinstance(law.inactive, str) else 'no adhesion'}: "
+                             f"P(a) = P0(a) >= 0, no tensile pull-off")
     land = landscape(scan_law)
     if not land.rising_at_end and land.end == "search":
         raise NoPullOffError(
             f"P(a) is still decreasing at a = {mpmath.nstr(land.hi, 6)} (the end of the search range): P(a) "
             f"has no finite minimum, no finite pull-off (the profile grows no faster than sqrt(x) there, "
-            f"so the adhesive term sqrt(2 pi a gamma E*) dominates)")
+            f"so the adhesive term dominates)")
     with workdps(dps + GUARD):
         mins = [_refine(law, e, dps) for e in land.minima]
         neg = [e for e in mins if e.force < 0]
@@ -499,7 +501,7 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
         note = land.describe()
         if best.kind == "end":
             note += ("; the global minimum is at the end of the admissible range: the lowest load the "
-                     "frictionless JKR solution describes, not a proven separation load")
+                     "frictionless adhesive solution describes, not a proven separation load")
         return PullOff(+best.force, -best.force, +best.half_width, best.kind, None, tuple(mins), note)
 
 
