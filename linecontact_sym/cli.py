@@ -182,7 +182,7 @@ def cmd_derive(args):
                  for q in ("force", "pressure", "adhesion_force", "pull_off_half_width")]
     if getattr(args, "maugis_dugdale", False):
         md = c.maugis_dugdale()
-        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("force", "cohesive_gap", "pressure")]
+        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("zone_force", "cohesive_gap", "pressure")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)

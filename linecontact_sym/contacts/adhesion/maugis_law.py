@@ -91,6 +91,17 @@ def fixed_values(vals, digits=80):
     return {k: sp.Float(sp.N(sp.sympify(v), digits), digits) for k, v in vals.items()}
 
 
+def profile_kinks(profile, fixed):
+    """The profile's breakpoints (kinks of P(a)) at numeric parameters, ascending."""
+    out = []
+    for pc in profile.pieces:
+        if pc.lo != 0:
+            v = sp.N(pc.lo.xreplace(fixed), 40)
+            if v.is_number and v > 0:
+                out.append(mpmath.mpf(str(v)))
+    return sorted(set(out))
+
+
 def _lam(expr, args):
     return sp.lambdify(args, expr, "mpmath")
 
@@ -136,7 +147,7 @@ class MDLaw:
         self._g0 = _lam(md.contact.derivation("gap").expr.xreplace(fixed), (x, a))
         self._gD_density = _lam(md.dugdale.density.xreplace(fixed), (S.a, c))  # not used in closed paths
         self._f = _lam(md.profile.expr.xreplace(fixed), (x,))
-        self.kinks = md.kinks_at(fixed)
+        self.kinks = profile_kinks(md.profile, fixed)
         self._warm = None
 
     # ------------------------------------------------------------ c_D(a)
