@@ -29,6 +29,7 @@ import mpmath
 import sympy as sp
 
 from ...core import symbols as S
+from ...core.conversion import float_values, number
 from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
 
@@ -87,8 +88,9 @@ class MDPullOff:
 
 
 def fixed_values(vals, digits=80):
-    """{Symbol: Float} of numeric values given exactly or as expressions (pi**(2/3)/4 ...)."""
-    return {k: sp.Float(sp.N(sp.sympify(v), digits), digits) for k, v in vals.items()}
+    """{Symbol: Float} of numeric values given exactly, as expressions (pi**(2/3)/4 ...) or as
+    Python/mpmath numbers: the package's converter, then Floats for substitution."""
+    return float_values({k: v if isinstance(v, sp.Basic) else number(v) for k, v in vals.items()}, digits)
 
 
 def profile_kinks(profile, fixed):
