@@ -187,7 +187,7 @@ def cmd_derive(args):
         todo += [((registry[q].aliases or (q,))[0], ad, q) for q in wanted]
     if getattr(args, "maugis_dugdale", False):
         md = c.maugis_dugdale()
-        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("force", "cohesive_gap", "pressure")]
+        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("zone_force", "cohesive_gap", "pressure")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
