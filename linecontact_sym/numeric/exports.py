@@ -66,7 +66,7 @@ def _mp_hyper_vec(*args):
     return np.vectorize(one, otypes=[float])(*ap, *bq, z)
 
 
-def _to_scipy_names(expr):
+def to_scipy_names(expr):
     def hyp(h):
         ap, bq, z = list(h.ap), list(h.bq), h.argument
         if len(ap) == 2 and len(bq) == 1:
@@ -86,7 +86,7 @@ def _to_scipy_names(expr):
     return expr
 
 
-def _fold_constants(expr):
+def fold_constants(expr):
     """Replace constant transcendental subexpressions (gamma(1/4), sqrt(pi) ...)
     by 20-digit Floats: the float64 export then does not recompute them."""
     def want(e):
@@ -143,7 +143,7 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
             return sp.Function(name)(*q.params)
         expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
     mods = [dict(_SCIPY_FUNCS, _mphyper=_mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
-    f = sp.lambdify(args, _to_scipy_names(_fold_constants(expr)), modules=mods, cse=True)
+    f = sp.lambdify(args, to_scipy_names(fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):
         if patch is not None and sym not in patch:

@@ -37,7 +37,7 @@ def _fixed(t, vals) -> dict:
     return {k: v for k, v in vals.items() if k in keep}
 
 
-def _mu(t, vals):
+def friction_at(t, vals):
     return to_mpf(sp.N(t.mu.xreplace(float_values(vals, mpmath.mp.dps + 10)), mpmath.mp.dps + 5))
 
 
@@ -45,10 +45,10 @@ def _breaks(t, vals):
     return [to_mpf(sp.N(bp.xreplace(vals), mpmath.mp.dps + 5)) for bp in t.profile.breakpoints]
 
 
-def _law(t, vals) -> ForceLaw:
+def force_law_at(t, vals) -> ForceLaw:
     """The numeric force law at the values (cached on the contact per values and precision)."""
     fixed = _fixed(t, vals)
-    key = ("_law", mpmath.mp.dps, tuple(sorted((k.name, str(v)) for k, v in fixed.items())))
+    key = ("force_law_at", mpmath.mp.dps, tuple(sorted((k.name, str(v)) for k, v in fixed.items())))
     if key not in t._cache:
         t._cache[key] = ForceLaw.from_contact(t.contact, float_values(fixed, mpmath.mp.dps + 20))
     return t._cache[key]
@@ -65,7 +65,7 @@ def normal_fn(t, name, vals, A):
         fn = make_callable(d, "mpmath", dps, {k.name: to_mpf(sp.N(v, dps + 5)) for k, v in fixed.items()})
         A = to_mpf(A)
         return lambda X: mpmath.re(fn(a=A, x=X))
-    law = _law(t, vals)
+    law = force_law_at(t, vals)
     brs = law.breaks()
     if name == "pressure":   # zero on and beyond the edge (rounding may put X a hair past A)
         return lambda X: T.pressure_quad(law.dP, brs, {S.a: A, S.x: X}, mpmath.mp.dps) if abs(X) < A \
@@ -122,7 +122,7 @@ def references(t, what, terms):
         A = num(vals, S.a)
         pa = normal_fn(t, "pressure", vals, A)
         parts = [(k, num(vals, C), normal_fn(t, "pressure", vals, num(vals, C))) for k, C in terms]
-        mu = _mu(t, vals)
+        mu = friction_at(t, vals)
 
         def q(xi):
             xi = abs(xi)
@@ -131,7 +131,7 @@ def references(t, what, terms):
 
     def check(vals, dps):
         with workdps(dps + 10):
-            A, mu = num(vals, S.a), _mu(t, vals)
+            A, mu = num(vals, S.a), friction_at(t, vals)
             brs = _breaks(t, vals)
             if what == "traction":
                 X = num(vals, S.x)
@@ -149,12 +149,12 @@ def references(t, what, terms):
 
     def value(vals, dps):
         with workdps(dps + 10):
-            A, mu = num(vals, S.a), _mu(t, vals)
+            A, mu = num(vals, S.a), friction_at(t, vals)
             if what == "traction":
                 q, _, _ = q_superposed(vals)
                 return +q(num(vals, S.x))
             if what == "force":
-                law = _law(t, vals)
+                law = force_law_at(t, vals)
                 return +sum(k * mu * (law.P(A) - law.P(num(vals, C))) for k, C in terms)
             if what == "slip":
                 X = num(vals, S.x)
@@ -221,7 +221,7 @@ def _I(law, lo, hi, power, brs):
 
 
 def _delta_numeric(t, vals, C):
-    law, A, mu = _law(t, vals), to_mpf(sp.N(vals[S.a], mpmath.mp.dps + 5)), _mu(t, vals)
+    law, A, mu = force_law_at(t, vals), to_mpf(sp.N(vals[S.a], mpmath.mp.dps + 5)), friction_at(t, vals)
     E = to_mpf(sp.N(vals[S.E_star], mpmath.mp.dps + 5))
     I1 = _I(law, C, A, 1, law.breaks())
     return 2 * mu / (mpmath.pi * E) * (law.P(A) * mpmath.log(2) - law.P(C) * mpmath.log(2 * A / C) + I1)
@@ -241,12 +241,12 @@ def energy_references(t):
         with workdps(dps + 10):
             A, C, _ = nums(vals)
             pa, gc = normal_fn(t, "pressure", vals, A), normal_fn(t, "gap", vals, C)
-            return ref.friction_work(pa, gc, A, C, _mu(t, vals), _breaks(t, vals))
+            return ref.friction_work(pa, gc, A, C, friction_at(t, vals), _breaks(t, vals))
 
     def value(vals, dps):
         with workdps(dps + 10):
             A, C, E = nums(vals)
-            law, mu = _law(t, vals), _mu(t, vals)
+            law, mu = force_law_at(t, vals), friction_at(t, vals)
             brs = law.breaks()
             Pa, Pc = law.P(A), law.P(C)
             W = (Pa + Pc) * _I(law, C, A, 1, brs) - _I(law, C, A, 2, brs) - Pa * Pc * mpmath.log(A / C)
@@ -272,14 +272,14 @@ def derive_stick_half_width(t, Qv) -> Derivation:
             fixed = float_values(_fixed(t, vals), dps + 20)
             law = ForceLaw.from_profile(prof, fixed)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
-            L = law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / _mu(t, vals)
+            L = law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / friction_at(t, vals)
             return half_width_at(law, L, dps)
 
     def value(vals, dps):
         with workdps(dps + 10):
-            law = _law(t, vals)
+            law = force_law_at(t, vals)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
-            return half_width_at(law, law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / _mu(t, vals), dps)
+            return half_width_at(law, law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / friction_at(t, vals), dps)
     variables = (S.a, Qv) + t.variables
     if inv.closed_form and Qv == S.Q:
         expr = _tidy_root(sp.simplify(inv.expr.xreplace({S.P: load})))
