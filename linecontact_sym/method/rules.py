@@ -53,6 +53,16 @@ def _power_terms(expr, var):
     return [(T.coef, T.mu) for T in terms]
 
 
+def _no_closed_force_law(problem):
+    """The reason a rule that integrates the force law cannot start, or None."""
+    P = problem.force_law
+    if P is None:
+        return "no force law given"
+    if P.has(sp.Integral):
+        return "the force law is an unevaluated integral (no closed form)"
+    return None
+
+
 def _has_piecewise(problem):
     return any(e is not None and e.has(sp.Piecewise)
                for e in (problem.force_law, problem.profile.expr if problem.profile is not None else None))
@@ -148,6 +158,9 @@ class PressureSympy(Rule):
     of the profile's breakpoints x_1 < x_2 < ...: a Piecewise in a and x."""
 
     name, transform = "pressure_sympy", "pressure"
+
+    def applies(self, problem):
+        return _no_closed_force_law(problem)
 
     def run(self, problem):
         bps = list(problem.profile.breakpoints) if problem.profile is not None else []
@@ -249,6 +262,9 @@ class InverseSympy(Rule):
     """Eq. (9) by ``sympy.integrate``."""
 
     name, transform = "inverse_sympy", "profile"
+
+    def applies(self, problem):
+        return _no_closed_force_law(problem)
 
     def run(self, problem):
         Ps = problem.force_law.subs(S.a, s)
