@@ -33,7 +33,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.precision import checked_dps
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
-from ..method.derivation import Derivation
+from ..method.derivation import Derivation, timing
 from ..numeric.special import NUMPY_LOGIC
 from ..parsing import to_sympy
 from ..method.verification import holds
@@ -174,7 +174,8 @@ class Contact:
         name = self.resolve(quantity)
         cache = self._caches()
         if name not in cache:
-            cache[name] = getattr(self, "_derive_" + name)()
+            with timing():
+                cache[name] = getattr(self, "_derive_" + name)()
         return cache[name]
 
     def _value(self, name: str):

@@ -472,7 +472,7 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     >>> from linecontact_sym.method.rules import Step
     >>> R = sp.Symbol("R", positive=True)
     >>> P_expr = sp.pi * E_star * a**2 / (4 * R)                                   # Eq. (13)
-    >>> d = Derivation("force", P_expr, True, Step("example", P_expr))
+    >>> d = Derivation("force", expr=P_expr, closed_form=True, step=Step("example", P_expr))
     >>> P = make_callable(d)
     >>> P.arguments
     ('E_star', 'R', 'a')

@@ -5,7 +5,6 @@ loop-displacement forms from the force law, and the stick half-width.  The
 load histories at numbers are in :mod:`.history`."""
 from __future__ import annotations
 
-import time
 import mpmath
 import sympy as sp
 
@@ -14,7 +13,7 @@ from ...core.budget import run_with_budget
 from ...core.conversion import float_values, rational, to_mpf
 from ...core.errors import BudgetExceeded
 from ...method import transforms as T
-from ...method.derivation import Derivation, fallback_step
+from ...method.derivation import Derivation, fallback_step, timed
 from ...method.rules import Step
 from ...method.verification import verify
 from ...numeric.exports import make_callable
@@ -256,11 +255,11 @@ def energy_references(t):
 
 
 # =====================================================================  stick zone
+@timed
 def derive_stick_half_width(t, Qv) -> Derivation:
     """c_s(a, Q): the force law's inverse at P(a) - |Q|/mu (closed where the
     engine inverts the force law), verified against the root of the quadrature
     force law (Eq. 10*)."""
-    t0 = time.perf_counter()
     fd = t.contact.derivation("force")
     load = fd.expr - sp.Abs(Qv) / t.mu
     inv = t.contact.half_width(S.P)
@@ -289,11 +288,11 @@ def derive_stick_half_width(t, Qv) -> Derivation:
         if rec is None or rec.passed:
             step = Step("invert_force_law", expr, conds, ("c_s = a(P(a) - |Q|/mu), the inverse of the force law",
                                                           CONDITIONS))
-            return Derivation("stick_half_width", expr, True, step, conds, rec, time.perf_counter() - t0,
-                              (CONDITIONS,), check, variables)
-    return Derivation("stick_half_width", sp.Eq(fd.expr.xreplace({S.a: S.c_s}), load), False,
-                      fallback_step("numeric root of P(c_s) = P(a) - |Q|/mu"), (), None, time.perf_counter() - t0,
-                      (CONDITIONS,), value, variables)
+            return Derivation("stick_half_width", expr=expr, closed_form=True, step=step, conditions=conds,
+                              verification=rec, notes=(CONDITIONS,), reference=check, variables=variables)
+    return Derivation("stick_half_width", expr=sp.Eq(fd.expr.xreplace({S.a: S.c_s}), load), closed_form=False,
+                      step=fallback_step("numeric root of P(c_s) = P(a) - |Q|/mu"), notes=(CONDITIONS,),
+                      reference=value, variables=variables)
 
 
 def _tidy_root(e):
