@@ -348,8 +348,19 @@ def _abs(v):
 
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
-#: mirrored, f(-x) = f(x)) or 0 (gamma = 0: the non-adhesive limit)
-_ANY_SIGN, _MAY_BE_ZERO = {"x"}, {"gamma"}
+#: mirrored, f(-x) = f(x))
+_ANY_SIGN = {"x"}
+
+
+def may_be_zero(name: str) -> bool:
+    """Is ``name`` (a symbol declared positive) allowed the value 0?  The
+    symbols of a registered cohesive law's parameters of domain
+    'nonnegative' are (JKR's gamma = 0: the non-adhesive limit)."""
+    for cls in CONTACT_KINDS.values():
+        for p in getattr(getattr(cls, "law_class", None), "parameters", ()):
+            if p.domain == "nonnegative" and p.symbol.name == name:
+                return True
+    return False
 
 
 def _positive_required(name, sym):
@@ -366,7 +377,7 @@ def _checked_value(name, v, sym):
     if type(v) in (float, int):  # the common, fast case
         if not math.isfinite(v):
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
-        if _positive_required(name, sym) and not v > 0 and not (name in _MAY_BE_ZERO and v == 0):
+        if _positive_required(name, sym) and not v > 0 and not (v == 0 and may_be_zero(name)):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
         return v
@@ -377,7 +388,7 @@ def _checked_value(name, v, sym):
         arr = arr.astype(float)
         if not np.all(np.isfinite(arr)):
             raise DomainError(f"{name} = {v!r}: values must be finite")
-        if _positive_required(name, sym) and np.any(arr <= 0) and not (name in _MAY_BE_ZERO and np.all(arr >= 0)):
+        if _positive_required(name, sym) and np.any(arr <= 0) and not (np.all(arr >= 0) and may_be_zero(name)):
             raise DomainError(f"{name} must be positive, got {v!r}")
         return arr
     if v is None or isinstance(v, bool):
@@ -392,7 +403,7 @@ def _checked_value(name, v, sym):
         if val.is_real is None and abs(sp.im(sp.N(val, 30))) > 0:
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
     if _positive_required(name, sym) and not val.is_positive:
-        if not (name in _MAY_BE_ZERO and val.is_zero):
+        if not (val.is_zero and may_be_zero(name)):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
     return val

@@ -205,7 +205,7 @@ class JKR(CohesiveLaw):
     def numeric(self, base, values):
         """P(a) = P0(a) - B1 sqrt(a), B1 = sqrt(2 pi gamma E*), on ``base``."""
         g = self.numbers(values)["work_of_adhesion"]
-        E = sp.sympify(values[S.E_star])
+        E = sp.sympify(values[S.E_star], strict=True)
         if g < 0:
             raise DomainError(f"the work of adhesion must be >= 0, got {g}")
 
