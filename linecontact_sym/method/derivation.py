@@ -21,12 +21,12 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.budget import Deadline, checked_budget, run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
-from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError, LineContactError
+from ..core.errors import BudgetExceeded, ClaimError, DivergentIntegralError, DomainError, LineContactError
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, verify
-from ..core.precision import workdps
+from ..core.precision import serialized, workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -187,16 +187,23 @@ def fallback_step(why: str = "no closed form found") -> Step:
 
 
 def values_by_name(symbols, values):
-    """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
-    a float is its exact binary value (:func:`~linecontact_sym.core.conversion.point_value`),
-    as in every evaluation path of the package."""
+    """THE binding of values: keyword values (by symbol name or Symbol) ->
+    {Symbol: exact SymPy number}; text through the whitelisted parser, every
+    number through the one converter
+    (:func:`~linecontact_sym.core.conversion.point_value`: a float is its
+    exact binary value, as in every evaluation path of the package)."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = point_value(v) if isinstance(v, float) else to_sympy(v)
+        try:
+            out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
+        except DomainError:
+            raise
+        except LineContactError as exc:     # not a number (a list, an array): the user's input
+            raise ClaimError(f"{sym.name}: {exc}") from None
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
@@ -311,11 +318,11 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     whose verification did not finish in what remained is not returned as
     verified: the unevaluated integral is, with a note."""
     with timing(new=False):
-        return _remembered(quantity, problem, reference, sampler, fallback, checked_budget(budget), check,
+        return _derive_remembered(quantity, problem, reference, sampler, fallback, checked_budget(budget), check,
                            points, notes, variables)
 
 
-def _remembered(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables):
+def _derive_remembered(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables):
     deadline = Deadline(budget)
     key = store.make_key("derive", quantity, problem.transform, *_problem_parts(problem), fallback, check,
                          points, REQUIRED_DIGITS, tuple(notes), tuple(variables))
@@ -325,11 +332,47 @@ def _remembered(quantity, problem, reference, sampler, fallback, budget, check, 
                           conditions=rec["conditions"], verification=rec["verification"], seconds=rec["seconds"],
                           notes=rec["notes"], reference=reference, variables=tuple(variables), attempts=rec["attempts"],
                           cached=rec["source"])
-    d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables)
+    with serialized():   # SymPy's symbolic work changes mpmath's precision (core.precision)
+        d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables)
     store.put(key, {"expr": d.expr, "closed_form": d.closed_form, "step": d.step, "conditions": d.conditions,
                     "verification": d.verification, "seconds": d.seconds, "notes": d.notes,
                     "attempts": d.attempts, "budget": budget})
     return d
+
+
+def remembered(parts, make, budget, reference) -> Derivation:
+    """A derivation made by ``make()`` once per key (:mod:`.store`: in this
+    process and on disk), for quantities derived outside :func:`derive`
+    (the half-width, the tangential stick half-width ...).  ``parts`` name
+    the problem completely (the key adds the code version); ``budget`` is
+    the caller's (a result that ran out of time is made again under a
+    larger one); ``reference(derivation)`` rebuilds the numeric reference
+    of a stored derivation (closures are not stored)."""
+    def rebuild(d):
+        d.reference = reference(d)
+        return d
+    return remembered_many(parts, lambda: (make(),), budget, rebuild)[0]
+
+
+def remembered_many(parts, make, budget, rebuild) -> tuple:
+    """:func:`remembered` for derivations made together (the three pull-off
+    quantities): ``make()`` returns a tuple of them; ``rebuild(d)`` returns
+    a stored one ready for use (its reference set, its class restored)."""
+    key = store.make_key("remembered", *parts)
+    rec = store.get(key)
+    if rec is not None and "derivations" in rec and all(_usable(r, budget) for r in rec["derivations"]):
+        return tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
+                                        conditions=r["conditions"], verification=r["verification"],
+                                        seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
+                                        attempts=r["attempts"], cached=rec["source"]))
+                     for r in rec["derivations"])
+    ds = tuple(make())
+    store.put(key, {"derivations": tuple(
+        {"quantity": d.quantity, "expr": d.expr, "closed_form": d.closed_form, "step": d.step,
+         "conditions": tuple(d.conditions), "verification": d.verification, "seconds": d.seconds,
+         "notes": tuple(d.notes), "variables": tuple(d.variables), "attempts": tuple(d.attempts),
+         "budget": checked_budget(budget)} for d in ds)})
+    return ds
 
 
 def _problem_parts(problem):

@@ -39,6 +39,7 @@ import scipy.special as sc
 import sympy as sp
 
 from ..core import symbols as S
+from ..core.conversion import point_value, to_mpf
 from ..core.errors import DomainError, LineContactError, singular_point
 from ..parsing import to_sympy
 from .cache import IdentityCache
@@ -56,7 +57,7 @@ _SCIPY_FUNCS = {
 }
 
 
-def _mp_hyper_vec(*args):
+def mp_hyper_vec(*args):
     p = int(args[0])
     ap, bq, z = args[1:1 + p], args[1 + p:-1], args[-1]
 
@@ -142,7 +143,7 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
             quads[name] = q
             return sp.Function(name)(*q.params)
         expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
-    mods = [dict(_SCIPY_FUNCS, _mphyper=_mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
+    mods = [dict(_SCIPY_FUNCS, _mphyper=mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
     f = sp.lambdify(args, to_scipy_names(fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):
@@ -511,6 +512,7 @@ class NumericFunction:
         if args:
             raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
                               f"fn({', '.join(n + '=...' for n in self.arguments)})")
+        kw = {k: v[()] if isinstance(v, np.ndarray) and v.ndim == 0 else v for k, v in kw.items()}
         if self.backend == "mpmath" and any(isinstance(v, (list, tuple, np.ndarray)) for v in kw.values()):
             raise DomainError(f"the mpmath function of {self.derivation.quantity} takes scalars; use "
                               f"backend='numpy' for arrays (or loop over the points)")
@@ -563,14 +565,13 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
 
         def fn(**kw):
             with workdps(dps):
-                return +f(*[mpmath.mpf(v) if not isinstance(v, mpmath.mpf) else v for v in collect(kw)])
+                return +f(*[to_mpf(to_sympy(v) if isinstance(v, str) else v) for v in collect(kw)])
     else:
         ref = derivation.reference
 
         def fn(**kw):
             with workdps(dps):
-                vals = dict(zip(syms, (sp.Float(v, dps) if isinstance(v, mpmath.mpf)
-                                       else sp.Float(float(v), 20) if isinstance(v, float)
-                                       else to_sympy(v) for v in collect(kw))))
+                vals = dict(zip(syms, (point_value(to_sympy(v) if isinstance(v, str) else v)
+                                       for v in collect(kw))))
                 return ref(vals, dps)
     return fn
