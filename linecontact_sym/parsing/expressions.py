@@ -51,7 +51,7 @@ s = sp.Symbol("s", positive=True)
 
 #: the standard symbols every formula may use
 SYMBOLS = {sym.name: sym for sym in (S.x, S.a, S.P, S.E_star, S.gamma, S.R, S.b, S.n, S.c, S.theta,
-                                     S.mu, S.Q, S.c_s, S.c_r, t, s)}
+                                     S.mu, S.Q, S.c_s, S.c_r, S.sigma_0, S.c_D, t, s)}
 
 #: constants
 CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "True": sp.true, "False": sp.false}
