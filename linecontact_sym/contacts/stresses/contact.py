@@ -136,6 +136,9 @@ class StressField(ContactOn):
         return sp.diff(self.contact.derivation("force").expr, S.a)
 
     def _derive_cauchy_transform(self) -> Derivation:
+        return B.remembered(self, "cauchy_transform", lambda: (self._cauchy_transform(),), lambda d: d)[0]
+
+    def _cauchy_transform(self) -> Derivation:
         t0 = time.perf_counter()
         D = self._density()
         step, attempts = cauchy_transform(D, self.contact.budget)
@@ -168,7 +171,7 @@ class StressField(ContactOn):
     def _components(self):
         cache = self._caches()
         if "_components" not in cache:
-            cache["_components"] = B.derive_components(self)
+            cache["_components"] = B.remembered_components(self)
         return cache["_components"]
 
     def _derive_sigma_x(self):
