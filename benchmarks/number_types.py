@@ -58,7 +58,8 @@ def numbers():
 
 def digits(got, ref):
     with mpmath.workdps(60):
-        got = mpmath.mpf(got) if not isinstance(got, mpmath.mpf) else got
+        got = mpmath.mpf(got) if not isinstance(got, (mpmath.mpf, np.ndarray)) else \
+            mpmath.mpf(float(got)) if isinstance(got, np.ndarray) else got
         if ref == 0:
             return 60 if got == 0 else float(-mpmath.log10(abs(got)))
         err = abs(got - ref) / abs(ref)
@@ -86,6 +87,7 @@ def cases():
         lambda V: p_ref(0, 1, V), 28
     yield "evaluate_at half_width P", lambda v: c.evaluate_at("half_width", dps=40, P=v, **E1), \
         lambda V: mpmath.sqrt(4 * V / pi), 28
+    yield "half_width(P) method", lambda v: c.half_width(v, **E1), lambda V: mpmath.sqrt(4 * V / pi), 28
     yield "Derivation.evalf force E*", lambda v: c.derivation("force").evalf(dps=40, a=1, R=1, E_star=v), \
         lambda V: pi * V / 4, 28
     yield "evaluate pressure x (auto)", lambda v: c.evaluate("pressure", x=v, a=1, **E1).value, \
@@ -108,6 +110,8 @@ def cases():
         P = lambda A: pi * E * A**2 / (4 * R) - mpmath.sqrt(2 * pi * g * E * A)
         A = (2 * g * R**2 / (pi * E)) ** (mpmath.mpf(1) / 3)
         return P(A)
+    yield "adhesive().at(gamma) closed pull_off_force", \
+        lambda v: sp.N(ad.at(gamma=v, **E1).pull_off_force, 45), pull_ref, 28
     yield "pull_off_at force gamma", lambda v: ad.pull_off_at(dps=30, gamma=v, **E1).force, pull_ref, 28
     yield "pull_off_at force R", lambda v: ad.pull_off_at(dps=30, gamma=1, R=v, E_star=1).force, \
         lambda V: pull_ref(1, V), 28
