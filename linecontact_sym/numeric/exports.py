@@ -385,7 +385,7 @@ GUARD_RATIO = 16.0
 GUARDED_RULES = ("gap_swap", "pressure_swap")
 
 
-def _guarded(derivation) -> bool:
+def is_guarded(derivation) -> bool:
     """Closed forms that can cancel beyond what the condition number allows:
     those with elliptic integrals of the third kind (Pi(n|m) diverges as
     n -> 1; the exact cylinder's gap cancels terms of size R to O(a^2/R)) and
@@ -507,8 +507,18 @@ class NumericFunction:
         self.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(self.arguments)}.\n"
                         f"Formula: {derivation.expr}\nMethod: {derivation.method}")
         self._fn = compile_callable(derivation, backend, dps, params, stable)
+        self._scalar = None   # the scalar fast path, built on the first call
 
     def __call__(self, *args, **kw):
+        if not args:
+            fast = self._scalar
+            if fast is None:
+                from .fastpath import scalar_plan
+                fast = self._scalar = scalar_plan(self) or False
+            if fast:
+                v = fast(kw)
+                if v is not None:
+                    return v
         if args:
             raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
                               f"fn({', '.join(n + '=...' for n in self.arguments)})")
@@ -532,6 +542,7 @@ class NumericFunction:
                                    f"contact and export again")
         state = dict(self.__dict__)
         state["_fn"] = None
+        state["_scalar"] = None
         return state
 
     def __repr__(self):
@@ -553,7 +564,7 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
 
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
-        if stable and _guarded(derivation):
+        if stable and is_guarded(derivation):
             f = _guard(f, cancellation_probe(derivation), _cached_lambdify(derivation, "mpmath", True))
 
         def fn(**kw):
