@@ -162,16 +162,14 @@ def cmd_derive(args):
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof)
-    asked = args.quantities is not None
     quantities = [q.strip() for q in (args.quantities or "force,pressure,gap").split(",") if q.strip()]
     if not quantities:
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
     known = _expression_quantities("frictionless")
     adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
-    for q in quantities:
-        if q not in known and not (args.adhesion and q in adhesive):
-            more = f", or with --adhesion {', '.join(a for a in adhesive if a not in known)}"
-            raise LineContactError(f"unknown quantity {q!r} for derive; choose from {', '.join(known)}{more}")
+    for q in (q for q in quantities if q not in known and not (args.adhesion and q in adhesive)):
+        raise LineContactError(f"unknown quantity {q!r} for derive; choose from {', '.join(known)}, or with "
+                               f"--adhesion {', '.join(a for a in adhesive if a not in known)}")
     out = {"profile": str(prof), "profile_latex": to_latex(prof),
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
     todo = [(q, c, q) for q in quantities if q in known]
@@ -181,9 +179,7 @@ def cmd_derive(args):
             raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
         ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
-        # derive only what is asked (--quantities force: the two force laws, not the pull-off too)
-        wanted = [q for q in adhesive if q in quantities] if asked else \
-            ["force", "pressure", "adhesion_force", "pull_off_half_width"]
+        wanted = [q for q in adhesive if q in quantities] if args.quantities else adhesive[:3] + adhesive[4:]  # only as asked
         todo += [((registry[q].aliases or (q,))[0], ad, q) for q in wanted]
     if getattr(args, "maugis_dugdale", False):
         md = c.maugis_dugdale()
