@@ -162,8 +162,8 @@ def cmd_derive(args):
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof)
-    quantities = [q.strip() for q in (args.quantities or "force,pressure,gap").split(",") if q.strip()]
-    if not quantities:
+    quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
+    if args.quantities is not None and not args.quantities.replace(",", "").strip():
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
     known = _expression_quantities("frictionless")
     adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
@@ -179,7 +179,7 @@ def cmd_derive(args):
             raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
         ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
-        wanted = [q for q in adhesive if q in quantities] if args.quantities else adhesive[:3] + adhesive[4:]  # only as asked
+        wanted = [q for q in adhesive if q in quantities] if args.quantities is not None else adhesive[:3] + adhesive[4:]  # only as asked
         todo += [((registry[q].aliases or (q,))[0], ad, q) for q in wanted]
     if getattr(args, "maugis_dugdale", False):
         md = c.maugis_dugdale()
