@@ -139,10 +139,10 @@ class MaugisDugdaleContact(ContactOn):
 
     force = Quantity("P(a)", "", "load per unit length at the half-width a, c_D(a) solved from the gap "
                      "condition (negative = tensile); numeric: its expression is the two conditions",
-                     latex=r"P_{\mathrm{MD}}(a)")
+                     aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a)")
     zone_force = Quantity("P(a, c_D)", "bounded pressure", "load per unit length P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2) "
                           "at the half-widths a and c_D (negative = tensile)", arguments=("a", "c_D"),
-                          aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})")
+                          aliases=("md_zone_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})")
     cohesive_gap = Quantity("g(c_D; a)", "Dugdale gap", "surface separation at the end of the cohesive zone; "
                             "equals h0 = w/sigma_0 at equilibrium", arguments=("a", "c_D"),
                             aliases=("gap_at_c",), latex=r"g(c_{\mathrm{D}})")

@@ -290,10 +290,8 @@ class LineContact(Contact):
         return AdhesiveLineContact(self, work_of_adhesion)
 
     def maugis_dugdale(self, w=S.gamma, sigma0=S.sigma_0):
-        """The Maugis-Dugdale adhesive contact (cohesive tension sigma0 over
-        a range h0 = w/sigma0), see :mod:`~linecontact_sym.contacts.adhesion.maugis`."""
-        from ..adhesion.maugis import MaugisDugdaleContact
-        return MaugisDugdaleContact(self, w, sigma0)
+        """The Maugis-Dugdale contact (tension sigma0 over h0 = w/sigma0), see :mod:`..adhesion.maugis`."""
+        return self.adhesion("maugis_dugdale", w, sigma0)
 
     def adhesion(self, law: str = "jkr", *args, **params):
         """The adhesive form of this contact under a registered cohesive law
