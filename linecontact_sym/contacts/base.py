@@ -23,6 +23,7 @@ checker and the LaTeX/report views.  A new physical effect is a new subclass
 from __future__ import annotations
 
 import functools
+import warnings
 from dataclasses import dataclass, field
 
 import math
@@ -32,7 +33,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.precision import checked_dps
-from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
+from ..core.errors import DomainError, DomainWarning, InadmissibleProfileError, LineContactError, singular_point
 from ..method.derivation import Derivation
 from ..numeric.special import NUMPY_LOGIC
 from ..parsing import to_sympy
@@ -191,7 +192,12 @@ class Contact:
         outside the contact as the quantity's domain says; and, where the
         result holds under conditions (e.g. a < R), they hold.  Raises
         :class:`~linecontact_sym.core.errors.DomainError` naming the problem;
-        returns the values with x replaced by |x|."""
+        returns the values with x replaced by |x| (a :class:`DomainValues`).
+        Arrays: the points outside the contact or where the conditions fail
+        are marked in ``outside`` (their results are NaN, a
+        :class:`~linecontact_sym.core.errors.DomainWarning` says how many);
+        the other points are evaluated.  Invalid values (not finite, a
+        positive symbol <= 0) raise for arrays too."""
         name = self.resolve(quantity)
         q = type(self)._registry[name]
         known, conds, cond_fn = self._domain_data(name)
@@ -204,26 +210,47 @@ class Contact:
             if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
         self._check_admissible(vals)
+        outside = None                       # array points outside the domain: NaN, with a warning
         if "x" in vals and "a" in vals and q.domain != "any":
             xv, av = _abs(vals["x"]), vals["a"]
-            if q.domain == "inside" and np.any(xv > av):
-                raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
-                                  f"the {name} is defined inside (use the gap outside)")
-            if q.domain == "outside" and np.any(xv < av):
-                raise DomainError(f"x = {values['x']} lies inside the contact |x| < a = {values['a']}; "
-                                  f"the {name} is defined outside (zero inside)")
+            if q.domain == "inside":
+                bad = xv > av
+                if np.any(bad) and not _is_array(bad):
+                    raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
+                                      f"the {name} is defined inside (use the gap outside)")
+            else:
+                bad = xv < av
+                if np.any(bad) and not _is_array(bad):
+                    raise DomainError(f"x = {values['x']} lies inside the contact |x| < a = {values['a']}; "
+                                      f"the {name} is defined outside (zero inside)")
+            if _is_array(bad) and np.any(bad):
+                outside = (bad, f"|x| {'>' if q.domain == 'inside' else '<'} a, the {name} is defined "
+                                f"{'inside' if q.domain == 'inside' else 'outside'} the contact")
             vals["x"] = xv
         if conds and set(known) <= set(vals):
             try:
                 r = cond_fn(*[_as_float_array(vals[k]) for k in known])
-                ok = bool(r) if isinstance(r, (bool, np.bool_)) else bool(np.all(r))
+                if _is_array(r):
+                    fails = ~np.asarray(r, dtype=bool)
+                    if np.any(fails):
+                        why = f"{', '.join(map(str, conds))} fails"
+                        outside = (fails, why) if outside is None else (outside[0] | fails, f"{outside[1]} or {why}")
+                    ok = True
+                else:
+                    ok = bool(r)
             except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
                 ok = holds(conds, {known[k]: v for k, v in vals.items()}) if not any(
                     isinstance(v, np.ndarray) for v in vals.values()) else True
             if not ok:
                 raise DomainError(f"{name} holds only where {', '.join(map(str, conds))}; "
                                   f"that fails at {values}")
-        return vals
+        out = DomainValues(vals)
+        if outside is not None:
+            mask, why = outside
+            out.outside = mask
+            warnings.warn(f"{int(np.sum(mask))} of {mask.size} points of the {name} lie outside its domain "
+                          f"({why}): their values are NaN, the others are evaluated", DomainWarning, stacklevel=3)
+        return out
 
     def _domain_data(self, name):
         """(name -> Symbol of the values the quantity takes, its conditions, a
@@ -340,6 +367,19 @@ class Contact:
         quantities."""
         names = quantities or [n for n, q in type(self).quantities().items() if not q.method]
         return "\n".join(self.derivation(q).summary() for q in names)
+
+
+class DomainValues(dict):
+    """What :meth:`Contact.check_domain` returns: the checked values (by
+    name), and ``outside``: None, or a boolean array (the broadcast shape of
+    the array arguments) marking the points outside the quantity's domain,
+    whose results are NaN (:class:`~linecontact_sym.core.errors.DomainWarning`)."""
+
+    outside = None
+
+
+def _is_array(v):
+    return isinstance(v, np.ndarray) and v.ndim > 0
 
 
 def _abs(v):

@@ -109,6 +109,34 @@ class Derivation:
             else self.expr.free_symbols | set(self.variables)
         return tuple(sorted(syms, key=lambda s: s.name))
 
+    @property
+    def status(self) -> str:
+        """One line: closed form or not, verified or not, with the numbers
+        (points, digits) -- what a reader needs before trusting ``expr``."""
+        v = self.verification
+        if not self.closed_form:
+            what = "no closed form: unevaluated integral, evaluated by quadrature"
+        elif v is None:
+            what = "closed form, not verified"
+        elif not v.points:
+            what = "closed form, NOT verified (0 points)"
+        elif not v.passed:
+            what = f"closed form, FAILED verification ({v.min_digits:.1f} digits)"
+        else:
+            what = f"closed form, verified at {len(v.points)} points (>= {v.min_digits:.0f} digits)"
+        return f"{what}; rule {self.rule}"
+
+    def _timing(self) -> str:
+        where = {"memory": ", from this session's cache", "disk": ", from the disk cache"}.get(self.cached, "")
+        return f"derived in {self.seconds:.2f} s{where}"
+
+    def __repr__(self):
+        """A few lines: the formula, its status and timing (the whole record
+        is :meth:`summary`; the fields are attributes)."""
+        cond = f"\n  holds for: {', '.join(map(str, self.conditions))}" if self.conditions else ""
+        return (f"<Derivation {self.quantity} = {self.expr}\n  {self.status}{cond}\n"
+                f"  {self._timing()}>")
+
     def summary(self) -> str:
         lines = [f"{self.quantity}: {self.expr}",
                  f"  method: {self.method}" + ("" if self.closed_form else " (no closed form)")]
@@ -116,7 +144,7 @@ class Derivation:
             lines.append("  holds for: " + ", ".join(map(str, self.conditions)))
         if self.verification is not None:
             lines.append("  " + str(self.verification))
-        lines.append(f"  derived in {self.seconds:.2f} s")
+        lines.append("  " + self._timing())
         lines += ["  note: " + n for n in self.notes]
         return "\n".join(lines)
 
@@ -125,8 +153,21 @@ class Derivation:
         return self.expr
 
     def _repr_latex_(self):
+        """Jupyter: ``quantity = formula`` and the status, in one line of
+        LaTeX (math mode only: MathJax renders it as it is)."""
         from ..core.printing import to_latex
-        return f"$\\displaystyle {to_latex(self.expr)}$"
+        v = self.verification
+        if not self.closed_form:
+            status = r"\text{no closed form (quadrature)}"
+        elif v is not None and v.passed:
+            status = rf"\text{{verified at {len(v.points)} points, }}\geq {v.min_digits:.0f}\text{{ digits}}"
+        elif v is not None and v.points:
+            status = rf"\text{{FAILED verification, {v.min_digits:.1f} digits}}"
+        else:
+            status = r"\text{not verified}"
+        name = self.quantity.replace("_", r"\_")
+        return (rf"$\displaystyle \mathrm{{{name}}} = {to_latex(self.expr)}"
+                rf"\qquad [{status};\ {self.seconds:.2f}\,\mathrm{{s}}]$")
 
     def __str__(self):
         return self.summary()

@@ -105,12 +105,49 @@ class Evaluation:
     def __float__(self):
         return float(self.value)
 
+    def digits(self) -> int:
+        """The significant digits the value holds: from its error estimate
+        (the enclosure's radius for 'arb'), at most the digits of its binary
+        precision; float64: 17 (its shortest repr is printed)."""
+        return _held_digits(self.value, self.error)
+
+    def _value_text(self) -> str:
+        v = self.value
+        if isinstance(v, np.ndarray):
+            return np.array2string(np.asarray(v, dtype=float), precision=6, threshold=8)
+        if isinstance(v, mpmath.mpf):
+            return mpmath.nstr(v, self.digits())
+        return repr(v)
+
+    def __repr__(self):
+        """One line: the value with the digits it holds, the path and the error."""
+        err = "" if isinstance(self.value, np.ndarray) else f", rel. error <= {self.rel_error:.1e}"
+        return f"<Evaluation {self.quantity} = {self._value_text()} via {self.path}{err}>"
+
     def __str__(self):
-        v = mpmath.nstr(self.value, 20) if isinstance(self.value, mpmath.mpf) else repr(self.value)
-        enc = f" in [{mpmath.nstr(self.enclosure[0], 20)}, {mpmath.nstr(self.enclosure[1], 20)}]" \
+        if isinstance(self.value, np.ndarray):
+            return f"{self.quantity} = {self._value_text()}  via {self.path}: {self.note}"
+        n = self.digits()
+        enc = f" in [{mpmath.nstr(self.enclosure[0], n + 2)}, {mpmath.nstr(self.enclosure[1], n + 2)}]" \
             if self.enclosure else ""
-        return (f"{self.quantity} = {v}{enc}  via {self.path}  (error <= {float(self.error):.2e}, "
+        return (f"{self.quantity} = {self._value_text()}{enc}  via {self.path}  (error <= {float(self.error):.2e}, "
                 f"rel {self.rel_error:.1e}){': ' + self.note if self.note else ''}")
+
+
+def _held_digits(value, error) -> int:
+    """Significant digits of an mpf ``value`` correct to ``error``: the
+    decimal exponent of the relative error, capped by the value's binary
+    precision (its mantissa's bits); at least 1."""
+    if not isinstance(value, mpmath.mpf):
+        return 17
+    sign, man, exp, bc = value._mpf_
+    held = max(1, int(bc * math.log10(2)) + 1)
+    if not value or not error:
+        return max(held, 15)
+    rel = float(abs(error) / abs(value))
+    if not math.isfinite(rel) or rel <= 0:
+        return max(held, 15)
+    return max(1, min(int(math.floor(-math.log10(rel))), max(held, 15)))
 
 
 # ----------------------------------------------------------------- helpers
@@ -311,7 +348,8 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     if rtol is None:
         rtol = 10.0 ** -dps if dps is not None else 1e-12
     if arrays:
-        return _evaluate_array(contact, d, quantity, names, values, rtol, model, t0)
+        return _evaluate_array(contact, d, quantity, names, values, rtol, model, t0,
+                               getattr(values, "outside", None))
 
     # 1. the cheapest model that meets rtol
     if model and quantity == "force" and (kit.expensive or rtol < 1e-15):
@@ -388,12 +426,17 @@ def _check_tolerance(rtol, dps):
         checked_dps(dps)
 
 
-def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0):
+def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0, outside=None):
     """evaluate() at arrays of arguments: the vectorised float64 export with
     the same error estimate per point; the points where it does not meet
-    ``rtol`` are evaluated one by one (model, mpmath)."""
+    ``rtol`` are evaluated one by one (model, mpmath).  ``outside``: the
+    points outside the quantity's domain (the contact's domain check marked
+    them and warned): NaN, path 'outside'."""
     arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
     v, kappa, cancel = vector_float64(d, names, arrays)
+    if outside is not None:
+        outside = np.broadcast_to(outside, v.shape)
+        v = np.where(outside, np.nan, v)
     factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
     with np.errstate(all="ignore"):
         est = factor * EPS * np.maximum(np.maximum(1.0, kappa), cancel) * np.abs(v)
@@ -401,16 +444,23 @@ def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0):
             est = est + _quad_error(d, dict(zip(names, arrays)))
         ok = np.isfinite(v) & ((est <= rtol * np.abs(v)) | ((v == 0) & (est == 0))) if rtol >= 4 * EPS \
             else np.zeros(v.shape, dtype=bool)
+    if outside is not None:
+        ok = ok | outside
+        est = np.where(outside, np.nan, est)
     values_out = np.array(v, dtype=object if not np.all(ok) else float)
     errors = np.array(est, dtype=object if not np.all(ok) else float)
     paths = np.full(v.shape, "float64", dtype=object)
+    if outside is not None:
+        paths[outside] = "outside"
     for idx in zip(*np.nonzero(~ok)) if v.ndim else ([()] if not ok else []):
         point = {n: float(a[idx]) for n, a in zip(names, arrays)}
         r = evaluate(contact, quantity, rtol=rtol, model=model, **point)
         values_out[idx], errors[idx], paths[idx] = r.value, r.error, r.path
     kinds = sorted(set(paths.ravel().tolist()))
-    note = (f"{int(np.sum(ok))} of {ok.size} points by the vectorised float64 export (estimate "
-            f"{factor:g} eps max(1, kappa, cancellation) |value| per point), the rest one by one")
+    n_out = 0 if outside is None else int(np.sum(outside))
+    note = (f"{int(np.sum(ok)) - n_out} of {ok.size} points by the vectorised float64 export (estimate "
+            f"{factor:g} eps max(1, kappa, cancellation) |value| per point), the rest one by one" +
+            (f"; {n_out} outside the domain: NaN" if n_out else ""))
     return Evaluation(quantity, values_out, kinds[0] if len(kinds) == 1 else " + ".join(kinds), errors, rtol,
                       note=note, seconds=time.perf_counter() - t0,
                       details={"paths": paths, "kappa": kappa, "cancellation": cancel})

@@ -129,3 +129,16 @@ def test_tables_compile(tmp_path):
                               cwd=tmp_path, capture_output=True, text=True, timeout=120)
         assert proc.returncode == 0, proc.stdout[-2000:]
         assert (tmp_path / f"{name}.pdf").exists()
+
+
+def test_derivation_repr_is_a_few_lines_with_formula_status_and_time():
+    """Issue 23: a tangential derivation printed a multi-thousand-character
+    dataclass dump; now the formula, the status and the timing."""
+    t = lcs.TangentialLineContact(lcs.parabola(budget=5))
+    d = t.derivation("tangential_force")
+    text = repr(d)
+    assert len(text.splitlines()) <= 4 and len(text) < 400, text
+    assert str(d.expr) in text and "verified at 5 points" in text and "derived in" in text
+    tex = d._repr_latex_()
+    assert tex.startswith("$") and tex.endswith("$") and r"\mathrm{tangential\_force}" in tex
+    assert r"\mu" in tex and "verified at 5 points" in tex
