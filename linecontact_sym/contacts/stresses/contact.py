@@ -287,16 +287,36 @@ class StressField(ContactOn):
             return v, "p_0"
         return fe.mean_pressure, "p_m"
 
-    def _plot_values(self, kw):
+    #: what a plot takes for a value not given: a and E* scale out of the
+    #: normalised axes; Poisson's ratio (von Mises, Tresca, sigma_y) is stated in the title
+    PLOT_DEFAULTS = {"a": 1.0, "E_star": 1.0, "nu": 0.3}
+
+    def _plot_values(self, kw, quantities):
+        """The values of a plot (popped from ``kw``), the defaults
+        :data:`PLOT_DEFAULTS` where not given, and the default title."""
+        from ...views.contact_plots import profile_label
+        from ...views.stress_plots import LABELS
         names = {q.name for q in (S.a,) + self.variables + self.nu_symbols}
-        return {k: kw.pop(k) for k in list(kw) if k in names}
+        values = {k: kw.pop(k) for k in list(kw) if k in names}
+        said = []
+        for k, v in self.PLOT_DEFAULTS.items():
+            if k in names and k not in values:
+                values[k] = v
+                if k == "nu" and any(q in ("von_mises", "tresca", "sigma_y") for q in quantities):
+                    said.append(rf"$\nu = {v:g}$")
+        what = ", ".join(LABELS.get(q, q) for q in quantities)
+        title = f"{what} under {profile_label(self)}" + (f" ({', '.join(said)})" if said else "")
+        kw.setdefault("title", title)
+        return values
 
     def plot(self, quantity="von_mises", mark_maximum=True, **kw):
         """Contour map of a stress over (x/a, z/a), scaled by the reference
-        pressure, the verified maximum marked; parameters by name, other
-        keywords to :func:`linecontact_sym.views.stress_plots.contour`."""
+        pressure, the verified maximum marked; parameters by name (a, E* and
+        Poisson's ratio default to :data:`PLOT_DEFAULTS`; the profile's
+        parameters are needed), other keywords to
+        :func:`linecontact_sym.views.stress_plots.contour`."""
         from ...views.stress_plots import contour
-        values = self._plot_values(kw)
+        values = self._plot_values(kw, (quantity,))
         scale, label = self.reference_pressure(**values)
         if mark_maximum and quantity in F.CRITERIA:
             m = self.maximum(quantity, **values)
@@ -307,7 +327,7 @@ class StressField(ContactOn):
         """The stresses along the axis x = 0 against z/a:
         :func:`linecontact_sym.views.stress_plots.axis_profile`."""
         from ...views.stress_plots import axis_profile
-        values = self._plot_values(kw)
+        values = self._plot_values(kw, quantities)
         scale, label = self.reference_pressure(**values)
         return axis_profile(self.field(**values), float(values["a"]), quantities, scale=scale, scale_label=label, **kw)
 
