@@ -7,7 +7,7 @@ A contact class declares each physical quantity it offers **once**, as a
     class LineContact(Contact):
         kind = "frictionless"
         pressure = Quantity("p(x; a)", "Eq. (12)", "contact pressure, compressive positive",
-                            arguments=("a", "x"), domain="inside")
+                            arguments=("a", "x"), domain="inside", unit="Pa")
 
         def _derive_pressure(self) -> Derivation: ...
 
@@ -62,6 +62,10 @@ class Quantity:
                    serve the symbolic form
         nonnegative  argument names that must be >= 0 here though their symbol
                    is not declared so (the load P of a frictionless contact)
+        unit       its SI unit (``"N/m"``, ``"Pa"``, ``"m"``; ``""``
+                   dimensionless): a result asked for with pint quantities
+                   comes back in it (:mod:`linecontact_sym.core.units`); None:
+                   not declared (no units for it)
     """
 
     symbol: str
@@ -73,6 +77,7 @@ class Quantity:
     aliases: tuple = ()
     method: bool = False
     nonnegative: tuple = ()
+    unit: str | None = None
     name: str = field(default="", compare=False)
 
     def __set_name__(self, owner, name):
@@ -210,46 +215,21 @@ class Contact:
             if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
         self._check_admissible(vals)
-        outside = None                       # array points outside the domain: NaN, with a warning
-        if "x" in vals and "a" in vals and q.domain != "any":
-            xv, av = _abs(vals["x"]), vals["a"]
-            if q.domain == "inside":
-                bad = xv > av
-                if np.any(bad) and not _is_array(bad):
-                    raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
-                                      f"the {name} is defined inside (use the gap outside)")
-            else:
-                bad = xv < av
-                if np.any(bad) and not _is_array(bad):
-                    raise DomainError(f"x = {values['x']} lies inside the contact |x| < a = {values['a']}; "
-                                      f"the {name} is defined outside (zero inside)")
-            if _is_array(bad) and np.any(bad):
-                outside = (bad, f"|x| {'>' if q.domain == 'inside' else '<'} a, the {name} is defined "
-                                f"{'inside' if q.domain == 'inside' else 'outside'} the contact")
-            vals["x"] = xv
+        out = DomainValues(vals)
+        out.mark(*_x_domain(name, q.domain, vals, values))
         if conds and set(known) <= set(vals):
             try:
                 r = cond_fn(*[_as_float_array(vals[k]) for k in known])
+                ok = True if _is_array(r) else bool(r)
                 if _is_array(r):
-                    fails = ~np.asarray(r, dtype=bool)
-                    if np.any(fails):
-                        why = f"{', '.join(map(str, conds))} fails"
-                        outside = (fails, why) if outside is None else (outside[0] | fails, f"{outside[1]} or {why}")
-                    ok = True
-                else:
-                    ok = bool(r)
+                    out.mark(~np.asarray(r, dtype=bool), f"{', '.join(map(str, conds))} fails")
             except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
                 ok = holds(conds, {known[k]: v for k, v in vals.items()}) if not any(
                     isinstance(v, np.ndarray) for v in vals.values()) else True
             if not ok:
                 raise DomainError(f"{name} holds only where {', '.join(map(str, conds))}; "
                                   f"that fails at {values}")
-        out = DomainValues(vals)
-        if outside is not None:
-            mask, why = outside
-            out.outside = mask
-            warnings.warn(f"{int(np.sum(mask))} of {mask.size} points of the {name} lie outside its domain "
-                          f"({why}): their values are NaN, the others are evaluated", DomainWarning, stacklevel=3)
+        out.warn(name)
         return out
 
     def _domain_data(self, name):
@@ -316,20 +296,40 @@ class Contact:
                         f"the contact is tensile; the frictionless solution holds only while dP0/da >= 0 "
                         f"(see admissible_range)")
 
+    # ----------------------------------------------------------- units
+    def _strip_units(self, quantity: str, values: dict):
+        """``(values in SI, pint registry or None, the result's unit)``:
+        :func:`linecontact_sym.core.units.strip_units` with the symbols'
+        units and this quantity's declaration."""
+        from ..core.units import strip_units
+        q = type(self).quantities()[self.resolve(quantity)]
+        return strip_units(values, S.UNITS, q, getattr(self, "profile", None))
+
     # ----------------------------------------------------------- numbers
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
-        """One high-precision value (``dps`` digits) with the domain checked."""
+        """One high-precision value (``dps`` digits) with the domain checked.
+
+        Values may be pint quantities (the ``[units]`` extra): each is
+        checked against its dimension and converted to SI, and the result is
+        a quantity in the SI unit declared for ``quantity`` (a force per unit
+        length in N/m).  Plain numbers are SI values, and give a plain number."""
         checked_dps(dps)
+        values, registry, unit = self._strip_units(quantity, values)
         values = self.check_domain(quantity, values)
-        return self.derivation(quantity).evalf(dps=dps, **values)
+        v = self.derivation(quantity).evalf(dps=dps, **values)
+        if registry is None:
+            return v
+        from ..core.units import with_unit
+        return with_unit(v, unit, registry)
 
     def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, check: bool = True, **params):
         """A callable of the quantity: ``fn(a=..., x=..., E_star=..., R=...)``;
         ``backend='numpy'`` (vectorised float64, stable form) or ``'mpmath'``
         (``dps`` digits).  Keywords given here are fixed once.  ``check``
         (default True): every call passes the contact's domain check
-        (:meth:`check_domain`, arrays elementwise) and raises
-        :class:`~linecontact_sym.core.errors.DomainError` outside it;
+        (:meth:`check_domain`) and raises
+        :class:`~linecontact_sym.core.errors.DomainError` outside it (array
+        points outside it: NaN, with a DomainWarning);
         ``check=False``: no check (a few microseconds less per call), NaN or
         complex values outside the domain."""
         from ..numeric.exports import make_callable
@@ -341,12 +341,19 @@ class Contact:
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
         """The cheapest evaluation that meets ``rtol``: float64, mpmath at a
         sufficient precision, a cheaper model with its error bound, or with
-        ``certified=True`` an Arb ball; see :mod:`linecontact_sym.numeric.evaluate`."""
+        ``certified=True`` an Arb ball; see :mod:`linecontact_sym.numeric.evaluate`.
+        Values may be pint quantities (as in :meth:`evaluate_at`): the
+        Evaluation's numbers stay SI numbers, its ``unit`` says which, and
+        ``.quantity_value()`` is the value as a pint quantity."""
         from ..numeric.evaluate import evaluate
+        values, registry, unit = self._strip_units(quantity, values)
         try:
-            return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
+            r = evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
         except (ZeroDivisionError, OverflowError) as exc:
             raise singular_point(quantity, values, exc) from None
+        if registry is not None:
+            r.unit = registry.Unit(unit or "dimensionless")
+        return r
 
     def plot(self, what: str = "force", **kw):
         """A matplotlib figure of the contact in the literature's normalised
@@ -376,6 +383,39 @@ class DomainValues(dict):
     whose results are NaN (:class:`~linecontact_sym.core.errors.DomainWarning`)."""
 
     outside = None
+    why = ""
+
+    def mark(self, mask, why):
+        """Add the array points ``mask`` (None: none) that fail for the reason ``why``."""
+        if mask is None or not np.any(mask):
+            return
+        self.outside = mask if self.outside is None else (self.outside | mask)
+        self.why = f"{self.why} or {why}" if self.why else why
+
+    def warn(self, name):
+        if self.outside is not None:
+            warnings.warn(f"{int(np.sum(self.outside))} of {self.outside.size} points of the {name} lie outside "
+                          f"its domain ({self.why}): their values are NaN, the others are evaluated",
+                          DomainWarning, stacklevel=4)
+
+
+def _x_domain(name, domain, vals, values):
+    """x against a for a quantity defined inside or outside the contact: a
+    scalar on the wrong side raises; for arrays, ``(mask of the points on the
+    wrong side, why)``; replaces x by |x| in ``vals``.  ``(None, '')`` else."""
+    if "x" not in vals or "a" not in vals or domain == "any":
+        return None, ""
+    xv, av = _abs(vals["x"]), vals["a"]
+    bad = xv > av if domain == "inside" else xv < av
+    if np.any(bad) and not _is_array(bad):
+        if domain == "inside":
+            raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
+                              f"the {name} is defined inside (use the gap outside)")
+        raise DomainError(f"x = {values['x']} lies inside the contact |x| < a = {values['a']}; "
+                          f"the {name} is defined outside (zero inside)")
+    vals["x"] = xv
+    sign = ">" if domain == "inside" else "<"
+    return (bad if _is_array(bad) else None), f"|x| {sign} a, the {name} is defined {domain} the contact"
 
 
 def _is_array(v):

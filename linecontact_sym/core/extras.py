@@ -5,6 +5,7 @@ derive, check or export anything, so they are optional::
 
     pip install "linecontact_sym[plot]"        # matplotlib
     pip install "linecontact_sym[certified]"   # python-flint
+    pip install "linecontact_sym[units]"       # pint: values and results with units
     pip install "linecontact_sym[all]"         # both
 
 Code that needs one imports it through :func:`require`, at the time of use
@@ -17,7 +18,7 @@ install.
 >>> require("nonsense", "math")
 Traceback (most recent call last):
 ...
-ValueError: unknown extra 'nonsense'; the extras are ['all', 'certified', 'plot']
+ValueError: unknown extra 'nonsense'; the extras are ['all', 'certified', 'plot', 'units']
 """
 from __future__ import annotations
 
@@ -31,6 +32,7 @@ __all__ = ["EXTRAS", "require", "install_hint"]
 EXTRAS = {
     "plot": (("matplotlib",), "plotting"),
     "certified": (("python-flint",), "certified (Arb ball) evaluation"),
+    "units": (("pint",), "values with physical units (pint quantities)"),
     "all": (("matplotlib", "python-flint"), "every optional feature"),
 }
 

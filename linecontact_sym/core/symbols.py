@@ -62,6 +62,12 @@ Q = sp.Symbol("Q", real=True)
 c_s = sp.Symbol("c_s", positive=True)
 c_r = sp.Symbol("c_r", positive=True)
 
+#: The SI unit of each symbol's value, for values given with units (pint,
+#: :mod:`linecontact_sym.core.units`): "" is dimensionless.  ``c`` (of c x^n,
+#: unit m^(1-n)) has none: its unit depends on n; it is checked through the profile.
+UNITS = {"x": "m", "a": "m", "P": "N/m", "E_star": "Pa", "gamma": "J/m**2", "R": "m", "b": "m", "n": "",
+         "theta": "rad", "z": "m", "nu": "", "mu": "", "Q": "N/m", "c_s": "m", "c_r": "m"}
+
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
 
@@ -78,4 +84,4 @@ LATEX_NAMES = {
 }
 
 __all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "zeta", "nu",
-           "RESERVED", "LATEX_NAMES"]
+           "RESERVED", "LATEX_NAMES", "UNITS"]

@@ -84,6 +84,8 @@ class Evaluation:
     enclosure   (lower, upper) as mpf for 'arb', else None
     note        why this path, and what the estimate rests on
     seconds     wall-clock time of the evaluation (path selection included)
+    unit        None, or the pint Unit of value and error (SI) when the
+                arguments were given as pint quantities
     """
 
     quantity: str
@@ -96,6 +98,15 @@ class Evaluation:
     note: str = ""
     seconds: float = 0.0
     details: dict = field(default_factory=dict, repr=False)
+    unit: object = None
+
+    def quantity_value(self):
+        """The value as a pint quantity in :attr:`unit` (values given with
+        units: ``contact.evaluate("force", a=Q_(1, "mm"), ...)``); the
+        numbers of the Evaluation are SI numbers."""
+        if self.unit is None:
+            raise LineContactError("this evaluation was given plain numbers (SI): it has no unit")
+        return self.unit._REGISTRY.Quantity(self.value, self.unit)
 
     @property
     def rel_error(self) -> float:
@@ -122,15 +133,19 @@ class Evaluation:
     def __repr__(self):
         """One line: the value with the digits it holds, the path and the error."""
         err = "" if isinstance(self.value, np.ndarray) else f", rel. error <= {self.rel_error:.1e}"
-        return f"<Evaluation {self.quantity} = {self._value_text()} via {self.path}{err}>"
+        return f"<Evaluation {self.quantity} = {self._value_text()}{self._unit_text()} via {self.path}{err}>"
+
+    def _unit_text(self) -> str:
+        return "" if self.unit is None else f" {self.unit:~P}"
 
     def __str__(self):
         if isinstance(self.value, np.ndarray):
-            return f"{self.quantity} = {self._value_text()}  via {self.path}: {self.note}"
+            return f"{self.quantity} = {self._value_text()}{self._unit_text()}  via {self.path}: {self.note}"
         n = self.digits()
         enc = f" in [{mpmath.nstr(self.enclosure[0], n + 2)}, {mpmath.nstr(self.enclosure[1], n + 2)}]" \
             if self.enclosure else ""
-        return (f"{self.quantity} = {self._value_text()}{enc}  via {self.path}  (error <= {float(self.error):.2e}, "
+        return (f"{self.quantity} = {self._value_text()}{enc}{self._unit_text()}  via {self.path}  "
+                f"(error <= {float(self.error):.2e}, "
                 f"rel {self.rel_error:.1e}){': ' + self.note if self.note else ''}")
 
 

@@ -45,11 +45,11 @@ _MAX = {"max_shear": "principal_shear", "max_von_mises": "von_mises", "max_tresc
 
 def _q(symbol, doc, latex, aliases=()):
     return Quantity(symbol, "Johnson (1985) Eq. (2.23)", doc, arguments=_ARGS, domain="any", latex=latex,
-                    aliases=aliases)
+                    aliases=aliases, unit="Pa")
 
 
-def _mx(symbol, doc, latex, aliases=()):
-    return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases)
+def _mx(symbol, doc, latex, aliases=(), unit="Pa"):
+    return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases, unit=unit)
 
 
 class StressField(ContactOn):
@@ -79,13 +79,13 @@ class StressField(ContactOn):
                 r"\sigma_{\mathrm{T}}")
     cauchy_transform = Quantity("G(zeta; a)", "", "Cauchy transform int p(s)/(zeta - s) ds of the pressure, "
                                 "the complex potential of the normal load", arguments=("a", "zeta"),
-                                latex=r"G(\zeta)")
+                                latex=r"G(\zeta)", unit="Pa")
     max_shear = _mx("max tau_1", "largest principal shear stress in the body", r"\tau_{1,\max}")
-    max_shear_depth = _mx("z(max tau_1)", "depth of the largest principal shear", r"z_{\tau_1}")
+    max_shear_depth = _mx("z(max tau_1)", "depth of the largest principal shear", r"z_{\tau_1}", unit="m")
     max_von_mises = _mx("max sigma_vM", "largest von Mises stress (plane strain, nu)", r"\sigma_{\mathrm{vM},\max}")
-    max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}")
+    max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}", unit="m")
     max_tresca = _mx("max sigma_T", "largest Tresca stress", r"\sigma_{\mathrm{T},\max}")
-    max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}")
+    max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}", unit="m")
 
     def __init__(self, contact, tangential=None, mu=S.mu, nu=S.nu, stick=None, breaks=(), verify=True,
                  points: int = 4):
@@ -369,10 +369,10 @@ class SlidingStressField(StressField):
     kind = "sliding_stress"
 
     critical_friction = Quantity("mu_c", "", "the friction coefficient above which the largest principal "
-                                 "shear lies on the surface", arguments=(), latex=r"\mu_c")
+                                 "shear lies on the surface", arguments=(), latex=r"\mu_c", unit="")
     critical_friction_von_mises = Quantity("mu_c,vM", "", "the friction coefficient above which the largest "
                                            "von Mises stress lies on the surface", arguments=(),
-                                           latex=r"\mu_{c,\mathrm{vM}}")
+                                           latex=r"\mu_{c,\mathrm{vM}}", unit="")
 
     def __init__(self, contact, mu=S.mu, nu=S.nu, **kw):
         super().__init__(contact, "sliding", mu, nu, **kw)
