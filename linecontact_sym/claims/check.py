@@ -38,8 +38,7 @@ from .sampling import holds_at, sample_points
 from .spec import X_RANGES, Claim, Form, Paper, load_paper, substitute_placeholders
 from ..core.precision import workdps
 
-#: the digits a claim must reproduce
-REQUIRED_DIGITS = 30
+from .results import REQUIRED_DIGITS   # the digits a claim must reproduce (one place: results)
 
 
 # =====================================================================  one form
