@@ -79,7 +79,7 @@ ln(|x - xi|/a): reference length a)::
 another reference length L adds (2 Q/(pi E*)) ln(L/a): it shears the fretting
 loop and leaves its area W unchanged.
 
-Independent checks: :mod:`.reference` (inversion of the stick-zone
+Independent checks: :mod:`~linecontact_sym.contacts.tangential.reference` (inversion of the stick-zone
 singular integral equation, the Flamant kernel, the friction work, and a
 direct boundary-element solution with a Coulomb active set).
 """
