@@ -77,4 +77,38 @@ def extradps(n: int):
         yield
 
 
-__all__ = ["workdps", "workprec", "extradps", "MAX_DPS", "checked_dps"]
+class HeldDigits(mpmath.mpf):
+    """An mpf that prints the digits it was computed to (``digits``), not
+    mpmath's global 15: what ``evaluate_at(..., dps=40)`` returns.  It is an
+    mpf in every other way; arithmetic on it gives plain mpf."""
+
+    digits = 15
+
+    def __repr__(self):
+        return f"mpf('{mpmath.nstr(self, self.digits)}')"
+
+    def __str__(self):
+        return mpmath.nstr(self, self.digits)
+
+    def __reduce__(self):
+        return _rebuild_held, (self._mpf_, self.digits)
+
+
+def _rebuild_held(mpf_tuple, digits):
+    out = HeldDigits.__new__(HeldDigits)
+    out._mpf_, out.digits = mpf_tuple, digits
+    return out
+
+
+def held(value, dps: int):
+    """``value`` (an mpf) as a :class:`HeldDigits` printing ``dps`` digits
+    (other types are returned as they are)."""
+    if type(value) is not mpmath.mpf:
+        return value
+    with workdps(dps + 5):          # no rounding of the value's bits
+        out = HeldDigits(value)
+    out.digits = int(dps)
+    return out
+
+
+__all__ = ["workdps", "workprec", "extradps", "MAX_DPS", "checked_dps", "HeldDigits", "held"]

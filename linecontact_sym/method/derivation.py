@@ -23,7 +23,7 @@ from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, verify
-from ..core.precision import workdps
+from ..core.precision import held, workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -92,16 +92,17 @@ class Derivation:
     def evalf(self, dps: int = 30, **values):
         """Evaluate at a point (keyword arguments by symbol name) with ``dps``
         digits: the closed form where there is one, else the reference
-        (high-precision quadrature of the defining integral)."""
+        (high-precision quadrature of the defining integral).  The mpf
+        returned prints its ``dps`` digits (:class:`~linecontact_sym.core.precision.HeldDigits`)."""
         vals = values_by_name(self.variables_all, values)
         if self.closed_form:
             with workdps(dps):
                 v = sp.N(self.expr.xreplace(float_values(vals, dps + 20)), dps + 5)
-                return real_mpf(v)
+                return held(real_mpf(v), dps)
         if self.reference is None:
             raise LineContactError(f"this {self.quantity} derivation has no reference quadrature (it was "
                                    f"unpickled, or made without one): evaluate it through its contact")
-        return self.reference(vals, dps)
+        return held(self.reference(vals, dps), dps)
 
     @property
     def variables_all(self):

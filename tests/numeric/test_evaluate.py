@@ -252,3 +252,14 @@ def test_results_print_the_digits_they_hold():
     assert len(repr(r)) < 150 and "mpmath@" in repr(r)
     r = evaluate(c, "force", a=0.5, R=1.0, E_star=2.0, rtol=1e-12)
     assert repr(r) == "<Evaluation force = 0.39269908169872414 via float64, rel. error <= 7.1e-15>"
+
+
+def test_evaluate_at_prints_the_digits_asked_for():
+    c = law("parabola")
+    v = c.evaluate_at("force", a=0.5, R=1, E_star=2, dps=40)
+    with mpmath.workdps(60):
+        pi8 = mpmath.nstr(mpmath.pi / 8, 40)
+        assert abs(v - mpmath.pi / 8) < mpmath.mpf(10) ** -39
+    assert repr(v) == f"mpf('{pi8}')" and str(v) == pi8 and isinstance(v, mpmath.mpf)
+    import pickle
+    assert repr(pickle.loads(pickle.dumps(v))) == repr(v)
