@@ -3,7 +3,7 @@
 Verbs::
 
     linecontact-sym paper popov2017 [--out DIR]        check a paper, write the reports
-    linecontact-sym derive PROFILE [--set R=1 ...] [--adhesion] [--format text|latex|json]
+    linecontact-sym derive PROFILE [--set R=1 ...] [--adhesion [--law jkr]] [--format text|latex|json]
     linecontact-sym eval PROFILE QUANTITY --at a=0.1,0.2 [x=...] --set R=1 E_star=1 [--dps 50]
     linecontact-sym table power-law --n 1,2,3,4,5,6,10 [--latex]
     linecontact-sym check FILE.toml | --profile PROFILE --force FORMULA ...
@@ -173,7 +173,10 @@ def cmd_derive(args):
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
     todo = [(q, c, q) for q in quantities]
     if args.adhesion:
-        ad = c.adhesive(S.gamma)
+        from .contacts.adhesion import LAWS
+        if args.law not in LAWS:
+            raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
+        ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
         todo += [((registry[q].aliases or (q,))[0], ad, q)
                  for q in ("force", "pressure", "adhesion_force", "pull_off_half_width")]
@@ -407,7 +410,8 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--quantities", default="force,pressure,gap",
                     help="comma-separated, from: " + ", ".join(_expression_quantities("frictionless"))
                          + " (default force,pressure,gap)")
-    pd.add_argument("--adhesion", action="store_true", help="also the JKR-adhesive laws (Eqs. 29-36)")
+    pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36)")
+    pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")

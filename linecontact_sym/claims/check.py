@@ -29,7 +29,7 @@ from ..core.budget import checked_budget, run_with_budget
 from ..core.conversion import nsimplify_basic, to_mpf
 from ..core.errors import BudgetExceeded, ClaimError, LineContactError
 from ..parsing import t as T_VAR
-from .derive import Context, Derived, derive, placeholder_laws
+from .derive import REQUIRED_DIGITS, Context, Derived, adhesive_entry, derive, evaluate_point, placeholder_laws
 from .diagnosis import diagnose
 from .references import DPS, Comparison, DerivedUndefined, Divergent, Undefined, num_eval
 from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult, PaperResult, PointResult,
@@ -38,32 +38,8 @@ from .sampling import holds_at, sample_points
 from .spec import X_RANGES, Claim, Form, Paper, load_paper, substitute_placeholders
 from ..core.precision import workdps
 
-from .results import REQUIRED_DIGITS   # the digits a claim must reproduce (one place: results)
-
 
 # =====================================================================  one form
-def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:
-    """Compare at one point; classify what is undefined where."""
-    try:
-        comps = derived.compare(vals, printed_expr, dps, physics=physics)
-    except Divergent as exc:
-        return PointResult(vals, kind, "diverges", reason=str(exc))
-    except DerivedUndefined as exc:
-        try:
-            num_eval(printed_expr, vals, dps)
-        except Undefined:
-            return PointResult(vals, kind, "both_undefined", reason=f"both undefined: {exc}")
-        return PointResult(vals, kind, "derived_undefined", reason=str(exc))
-    except Undefined as exc:
-        return PointResult(vals, kind, "printed_undefined", reason=str(exc))
-    except (LineContactError, ZeroDivisionError, ValueError, TypeError, OverflowError) as exc:
-        return PointResult(vals, kind, "derived_undefined", reason=f"{type(exc).__name__}: {exc}")
-    d = min(c.digits for c in comps)
-    return PointResult(vals, kind, "pass" if d >= REQUIRED_DIGITS else "fail", d, comps)
-
-
-
-
 def _symbolic(printed, derived: Derived, vals, budget) -> str:
     if derived.expr is None or not derived.closed_form:
         return ""
@@ -194,7 +170,8 @@ def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, 
     free |= set(derived.variables)
     if claim.quantity in X_RANGES:
         free |= {S.x, S.a}
-    if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement", "pressure", "adhesive_pressure"):
+    if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement", "pressure") or \
+            (adhesive_entry(claim.quantity) or ("", ""))[1] == "pressure":
         free |= {S.E_star}
     if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement"):
         free |= {S.P}
@@ -355,8 +332,9 @@ def _force_law(claim, prof, ctx, printed):
     if prof is None or S.P not in printed.free_symbols or claim.quantity in ("half_width",):
         return None
     try:
-        if claim.quantity.startswith("adhesive") or claim.quantity.startswith("pull_off"):
-            return ctx.adhesive(prof, claim.range_of).force
+        adhesive = adhesive_entry(claim.quantity)
+        if adhesive is not None:
+            return ctx.adhesive(prof, claim.range_of, adhesive[0]).force
         d = ctx.contact(prof, claim.range_of).derivation("force")
         return d.expr if d.closed_form else None
     except Exception:  # noqa: BLE001 -- only a hint

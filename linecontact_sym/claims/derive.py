@@ -20,8 +20,9 @@ from ..core import symbols as S
 from ..core.budget import run_with_budget
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import ClaimError, DomainError, LineContactError
-from .references import (DPS, Comparison, DerivedUndefined, Undefined, flamant_relative_displacement,
+from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_relative_displacement,
                          flamant_resultant, griffith_punch_force, num_eval, numeric_minimum)
+from .results import REQUIRED_DIGITS, PointResult
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
 from ..core.precision import workdps
 
@@ -81,6 +82,30 @@ class Derived:
         return comps
 
 
+#: the digits a claim must reproduce (declared in .results, where a failing point is described)
+REQUIRED_DIGITS = REQUIRED_DIGITS
+
+
+def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:
+    """Compare at one point; classify what is undefined where."""
+    try:
+        comps = derived.compare(vals, printed_expr, dps, physics=physics)
+    except Divergent as exc:
+        return PointResult(vals, kind, "diverges", reason=str(exc))
+    except DerivedUndefined as exc:
+        try:
+            num_eval(printed_expr, vals, dps)
+        except Undefined:
+            return PointResult(vals, kind, "both_undefined", reason=f"both undefined: {exc}")
+        return PointResult(vals, kind, "derived_undefined", reason=str(exc))
+    except Undefined as exc:
+        return PointResult(vals, kind, "printed_undefined", reason=str(exc))
+    except (LineContactError, ZeroDivisionError, ValueError, TypeError, OverflowError) as exc:
+        return PointResult(vals, kind, "derived_undefined", reason=f"{type(exc).__name__}: {exc}")
+    d = min(c.digits for c in comps)
+    return PointResult(vals, kind, "pass" if d >= REQUIRED_DIGITS else "fail", d, comps)
+
+
 class Context:
     """Caches engine objects across the claims (and figures) of one run."""
 
@@ -102,12 +127,15 @@ class Context:
             self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget)
         return self.contacts[key]
 
-    def adhesive(self, profile, ranges: Callable):
-        """The JKR-adhesive form of :meth:`contact` (work of adhesion gamma)."""
+    def adhesive(self, profile, ranges: Callable, kind: str = "adhesive"):
+        """The adhesive form of :meth:`contact` of the given kind (default
+        JKR, work of adhesion gamma), the law's parameters symbolic."""
+        from ..contacts.base import contact_kind
         c = self.contact(profile, ranges)
-        if id(c) not in self.adhesives:
-            self.adhesives[id(c)] = c.adhesive(S.gamma)
-        return self.adhesives[id(c)]
+        key = (id(c), kind)
+        if key not in self.adhesives:
+            self.adhesives[key] = contact_kind(kind).from_frictionless(c)
+        return self.adhesives[key]
 
 
 def figure_contacts(profiles, file_ranges: dict, budget: float) -> list:
@@ -189,8 +217,9 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
             fd = c.derivation("force")
             physics = _pressure_physics(profile, lambda vals, dps: _from_derivation(fd).value(vals, dps))
         return _from_derivation(d, profile, slope, physics)
-    if q in ("adhesive_force", "adhesive_pressure", "pull_off_force", "adhesion_force", "pull_off_half_width"):
-        return _derive_adhesive(claim, profile, ctx)
+    adhesive = adhesive_entry(q)
+    if adhesive is not None:
+        return _derive_adhesive(claim, profile, ctx, *adhesive)
     if q == "inverse_profile":
         from ..contacts.normal.inverse import profile_from_force
         t0 = time.perf_counter()
@@ -264,16 +293,35 @@ def _as_derived(obj, method) -> Derived:
     return Derived(to_basic(obj), method)
 
 
-def _derive_adhesive(claim, profile, ctx) -> Derived:
+#: the quantities of every adhesive contact kind that the checker derives with
+#: its own checks (the pressure's physics, an independent minimum)
+ADHESIVE_QUANTITIES = ("force", "pressure", "pull_off_force", "adhesion_force", "pull_off_half_width")
+
+
+def adhesive_entry(q):
+    """(kind, name) when ``q`` names a generic quantity of an adhesive contact
+    kind (any cohesive law: 'pull_off_force', 'adhesive_force' for JKR,
+    '<kind>.pull_off_force' for another law), else None."""
+    from ..contacts.base import contact_kind, qualified_quantities
+    entry = qualified_quantities().get(q)
+    if entry is None:
+        return None
+    kind, name, _ = entry
+    if name not in ADHESIVE_QUANTITIES or getattr(contact_kind(kind), "law_class", None) is None:
+        return None
+    return kind, name
+
+
+def _derive_adhesive(claim, profile, ctx, kind="adhesive", q=None) -> Derived:
     t0 = time.perf_counter()
-    q = claim.quantity
-    ad = ctx.adhesive(profile, claim.range_of)
+    q = q or claim.quantity
+    ad = ctx.adhesive(profile, claim.range_of, kind)
     slope = ctx.contact(profile, claim.range_of).profile.slope_at_origin
-    force = _as_derived(_adhesion_item(ad, "force"), "adhesive force law (engine, Eq. 33)")
-    if q == "adhesive_force":
+    force = _as_derived(_adhesion_item(ad, "force"), f"adhesive force law (engine, {ad.law.title})")
+    if q == "force":
         out = force
-    elif q == "adhesive_pressure":
-        out = _as_derived(_adhesion_item(ad, "pressure"), "adhesive pressure (engine, Eq. 29)")
+    elif q == "pressure":
+        out = _as_derived(_adhesion_item(ad, "pressure"), f"adhesive pressure (engine, {ad.law.title})")
         out.physics = _pressure_physics(profile, force.value)
     elif q == "pull_off_half_width":
         out = _as_derived(_adhesion_item(ad, "pull_off_half_width"), "half-width at pull-off (engine)")
@@ -291,6 +339,14 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
     sign = 1 if q == "pull_off_force" else -1      # the claimed value is sign * min_a P(a)
     engine = _as_derived(_adhesion_item(ad, q), f"{q} (engine)")
     Pexpr = force.expr
+    if not force.closed_form:   # P(a) is a system (an inner solve): the contact's method B minimum
+        from ..contacts.adhesion.pull_off import reference as pull_off_reference
+        def minimum(vals, dps):
+            try:
+                return sign * pull_off_reference(ad, vals, dps).force
+            except LineContactError as exc:
+                raise DerivedUndefined(f"P(a) has no minimum over a > 0: {exc}")
+        return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr)
     dPexpr = sp.diff(Pexpr, S.a)
 
     def minimum(vals, dps):
@@ -301,7 +357,10 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
         if m is None:
             raise DerivedUndefined("P(a) of Eq. (33) has no minimum over a > 0: no pull-off force exists")
         return sign * m[1]
+    return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr)
 
+
+def _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr) -> Derived:
     what = "min_a P(a)" if sign == 1 else "-min_a P(a)"
 
     def comparer(vals, printed_expr, dps):
@@ -315,11 +374,12 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
         return comps
 
     note = (f"{q} = {'P_min = min_a P(a) < 0' if sign == 1 else 'P_adh = -min_a P(a) > 0'}; the minimum of "
-            f"the engine's Eq. (33) over a is also located numerically")
-    return Derived(engine.expr, engine.method + "; independent: numeric minimum of Eq. (33)", engine.conditions,
+            f"the engine's P(a) over a is also located numerically")
+    return Derived(engine.expr, engine.method + "; independent: numeric minimum of P(a)", engine.conditions,
                    engine.closed_form, tuple(engine.notes) + (note,), time.perf_counter() - t0,
                    engine.verified_digits, evaluator=minimum, comparer=comparer, profile=profile, slope=slope,
-                   variables=frozenset(Pexpr.free_symbols - {S.a}))
+                   variables=frozenset(ad.variables) if not isinstance(Pexpr, sp.Expr) else
+                   frozenset(Pexpr.free_symbols - {S.a}))
 
 
 # ---------------------------------------------------------------- first principles
@@ -366,4 +426,4 @@ def _punch_adhesion_force(ctx) -> Derived:
                    notes=(note,), seconds=time.perf_counter() - t0)
 
 
-__all__ = ["Derived", "Context", "derive", "placeholder_laws", "figure_contacts", "power_law_force"]
+__all__ = ["Derived", "Context", "derive", "evaluate_point", "REQUIRED_DIGITS", "adhesive_entry", "ADHESIVE_QUANTITIES", "placeholder_laws", "figure_contacts", "power_law_force"]

@@ -52,6 +52,21 @@ def _float_P0(quad):
     return P0
 
 
+def _float_P(quad, P0f):
+    """P(a) in float64: the cohesive law's own float form on top of P0f
+    (``quad.float_P``, JKR: P0 - sqrt(2 pi a gamma E*)), else the law's
+    mpmath P at 17 digits (a law with an inner solve), else P0 itself."""
+    if quad.float_P is not None:
+        return quad.float_P(P0f)
+    if quad.base is quad:
+        return P0f
+
+    def Pf(A):
+        with workdps(17):
+            return float(quad.P(mpmath.mpf(A)))
+    return Pf
+
+
 def _parabolic_polish(P, A, h, steps: int = 5):
     """Successive parabolic interpolation of a smooth minimum from a location
     ``A`` known to about ``h``: each step fits P at A - h, A, A + h and moves
@@ -72,7 +87,7 @@ def _parabolic_polish(P, A, h, steps: int = 5):
 def minimum_by_grid(law, dps: int) -> PullOff:
     """The second, independent pull-off: shares nothing with :func:`minimum`
     (no dP/da, no closed form, no subdivision, no breakpoints of the engine).
-    On the quadrature force law (10*) minus Phat: P on a dense grid
+    On the quadrature force law (10*) with the cohesive law on top: P on a dense grid
     (:data:`GRID_POINTS` log-spaced points, 1e-8 .. 1e8 times the scale, in
     float64), cut where P0 stops increasing or stops being real (its own
     admissible range); golden-section search around the lowest grid point;
@@ -82,10 +97,7 @@ def minimum_by_grid(law, dps: int) -> PullOff:
     interpolation (a stationary minimum)."""
     quad = law.quadrature_law
     P0f = _float_P0(quad)
-    B1 = float(quad.B1()) if quad.B1 is not None else 0.0
-
-    def Pf(A):
-        return P0f(A) - B1 * math.sqrt(float(A))
+    Pf = _float_P(quad, P0f)
     s = float(quad.scale)
     grid = [s * 10.0**(-8 + 16 * k / (GRID_POINTS - 1)) for k in range(GRID_POINTS)]
     pts, last0, cut = [], None, False
@@ -99,7 +111,7 @@ def minimum_by_grid(law, dps: int) -> PullOff:
             cut = True
             break
         last0 = p0
-        pts.append((A, p0 - B1 * math.sqrt(A)))
+        pts.append((A, Pf(A)))
     if len(pts) < 3:
         raise NoPullOffError("the quadrature force law is real and rising at fewer than 3 grid points")
     k = min(range(len(pts)), key=lambda i: pts[i][1])

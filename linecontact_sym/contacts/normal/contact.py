@@ -290,6 +290,14 @@ class LineContact(Contact):
         from ..adhesion.contact import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
 
+    def adhesion(self, law: str = "jkr", *args, **params):
+        """The adhesive form of this contact under a registered cohesive law
+        (by name: ``"jkr"``, ...) with the law's parameters (positional in
+        its order or by name; unset ones symbolic), see
+        :mod:`linecontact_sym.contacts.adhesion`."""
+        from ..adhesion.contact import adhesive_contact
+        return adhesive_contact(self, law, *args, **params)
+
     def tangential(self, friction=S.mu):
         """The partial-slip tangential form of this contact under Coulomb
         friction mu at constant normal load (Cattaneo-Mindlin-Ciavarella-Jaeger),

@@ -392,14 +392,15 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
     listed; the extrema are located on ``scan_law`` (default ``law``).
     Raises :class:`NoPullOffError` where P has no finite negative minimum."""
     scan_law = scan_law or law
-    if getattr(law, "gamma", None) == 0:
-        raise NoPullOffError("no adhesion (gamma = 0): P(a) = P0(a) >= 0, no tensile pull-off")
+    if law.inactive:
+        raise NoPullOffError(f"{law.inactive if isinstance(law.inactive, str) else 'no adhesion'}: "
+                             f"P(a) = P0(a) >= 0, no tensile pull-off")
     land = landscape(scan_law)
     if not land.rising_at_end and land.end == "search":
         raise NoPullOffError(
             f"P(a) is still decreasing at a = {mpmath.nstr(land.hi, 6)} (the end of the search range): P(a) "
             f"has no finite minimum, no finite pull-off (the profile grows no faster than sqrt(x) there, "
-            f"so the adhesive term sqrt(2 pi a gamma E*) dominates)")
+            f"so the adhesive term dominates)")
     with workdps(dps + GUARD):
         mins = [_refine(law, e, dps) for e in land.minima]
         neg = [e for e in mins if e.force < 0]
@@ -411,7 +412,7 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
         note = land.describe()
         if best.kind == "end":
             note += ("; the global minimum is at the end of the admissible range: the lowest load the "
-                     "frictionless JKR solution describes, not a proven separation load")
+                     "frictionless adhesive solution describes, not a proven separation load")
         return PullOff(+best.force, -best.force, +best.half_width, best.kind, None, tuple(mins), note)
 
 

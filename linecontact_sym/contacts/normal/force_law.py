@@ -20,8 +20,10 @@ Two routes to the same law, which share nothing but the profile:
 
             J_b = f'(b+) - f'(b-) the slope jump at a kink b < a.
 
-The JKR-adhesive law (Eq. 33) is P(a) = P0(a) - B1 sqrt(a) with
-B1 = sqrt(2 pi gamma E*) (:meth:`ForceLaw.with_adhesion`).
+An adhesive law is a ForceLaw built on the non-adhesive one (its ``base``)
+by a cohesive law (:mod:`linecontact_sym.contacts.adhesion.law`): JKR's
+P(a) = P0(a) - sqrt(2 pi a gamma E*) (Eq. 33), or one whose P(a) needs an
+inner solve at each a.
 """
 from __future__ import annotations
 
@@ -76,13 +78,14 @@ class ForceLaw:
     where the law is not real.  ``breaks`` are the profile's breakpoints
     (kinks of P), ``scale`` a length scale for the scans."""
 
-    def __init__(self, P, dP, breaks=(), mode: str = "closed", fallback=None, B1=None, expr=None,
-                 conditions=()):
+    def __init__(self, P, dP, breaks=(), mode: str = "closed", fallback=None, expr=None,
+                 conditions=(), float_P=None, inactive=False):
         self._P, self._dP = P, dP
         self.breaks_exact = tuple(sorted(breaks))
         self.mode = mode
         self.fallback = fallback   # a quadrature law used where the closed form does not hold
-        self.B1 = B1               # adhesive term sqrt(2 pi gamma E*) (None: non-adhesive)
+        self.float_P = float_P     # float_P(P0f) -> P(a) in float64 from P0 in float64 (adhesive laws; optional)
+        self.inactive = inactive   # an adhesive law that exerts no adhesion (JKR with gamma = 0)
         self.expr = expr           # P(a) as a SymPy expression in a (closed form), else None
         self.conditions = tuple(conditions)   # where ``expr`` holds (relations in a)
         self.base = self           # the non-adhesive law P0 (admissibility is read from it)
@@ -189,24 +192,13 @@ class ForceLaw:
         breaks = [sp.N(bp.xreplace(pf), 80) for bp in contact.profile.breakpoints]
         return cls.from_closed_form(fd.expr, values, fd.conditions, [bp for bp in breaks if bp > 0], fallback=quad)
 
-    def with_adhesion(self, gamma, E_star) -> "ForceLaw":
-        """The JKR law P(a) = P0(a) - sqrt(2 pi a gamma E*) (Eq. 33)."""
-        g, E = to_basic_number(gamma), to_basic_number(E_star)
-        if g < 0:
-            raise DomainError(f"the work of adhesion must be >= 0, got {g}")
-
-        def B1():
-            return mpmath.sqrt(2 * mpmath.pi * to_mpf(g) * to_mpf(E))
-        P0, dP0 = self._P, self._dP
-        expr = None if self.expr is None else self.expr - sp.sqrt(2 * sp.pi * g * E * S.a)
-        law = ForceLaw(lambda A: P0(A) - B1() * mpmath.sqrt(A), lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
-                       self.breaks_exact, self.mode, B1=B1, expr=expr, conditions=self.conditions)
-        law.gamma = g
+    def on_top(self, P, dP, expr=None, float_P=None, inactive=False) -> "ForceLaw":
+        """A law built on this one (an adhesive law on the non-adhesive
+        ``self``, its ``base``): P, dP callables of a (mpf), ``expr`` the
+        closed form in ``a`` if any, ``float_P`` see the constructor."""
+        law = ForceLaw(P, dP, self.breaks_exact, self.mode, expr=expr, conditions=self.conditions,
+                       float_P=float_P, inactive=inactive)
         law.base = self
-        if self.fallback is not None:
-            law.quad = self.fallback.with_adhesion(g, E)
-        elif self.mode == "quad":
-            law.quad = law
         return law
 
     # ----------------------------------------------------------- values
