@@ -86,3 +86,13 @@ def test_plain_numbers_without_pint(monkeypatch):
     v = contact("parabola").evaluate_at("force", a=0.5, R=1, E_star=2)
     with mpmath.workdps(30):
         assert abs(v - mpmath.pi / 8) < mpmath.mpf(10) ** -29
+
+
+def test_adhesive_force_with_units():
+    """JKR, Eq. (33): P = pi E* a^2/(4R) - sqrt(2 pi a gamma E*), gamma in J/m^2."""
+    ad = contact("parabola").adhesive(lcs.gamma)
+    P = ad.evaluate_at("force", a=Q_(1, "mm"), E_star=Q_(1, "GPa"), R=Q_(5, "mm"), gamma=Q_(50, "mJ/m**2"))
+    expect = math.pi * 1e9 * 1e-6 / (4 * 5e-3) - math.sqrt(2 * math.pi * 1e-3 * 0.05 * 1e9)
+    assert float(P.to("N/m").magnitude) == pytest.approx(expect, rel=1e-13)
+    with pytest.raises(DomainError, match="gamma is an energy per area"):
+        ad.evaluate_at("force", a=Q_(1, "mm"), E_star=Q_(1, "GPa"), R=Q_(5, "mm"), gamma=Q_(50, "mN"))

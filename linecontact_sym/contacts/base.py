@@ -303,7 +303,10 @@ class Contact:
         units and this quantity's declaration."""
         from ..core.units import strip_units
         q = type(self).quantities()[self.resolve(quantity)]
-        return strip_units(values, S.UNITS, q, getattr(self, "profile", None))
+        law = getattr(self, "law", None)          # a cohesive law declares its own symbols' units
+        units = {**S.UNITS, **{p.symbol.name: p.unit for p in getattr(law, "parameters", ())
+                               if getattr(p, "unit", None) is not None}}
+        return strip_units(values, units, q, getattr(self, "profile", None))
 
     # ----------------------------------------------------------- numbers
     def evaluate_at(self, quantity: str, dps: int = 30, **values):

@@ -59,7 +59,7 @@ def split_units(values: dict, units: dict):
             continue
         target = reg.Quantity(1, unit)
         if v.dimensionality != target.dimensionality:
-            raise DomainError(f"{k} = {v} has the dimension {v.dimensionality}; {k} is a "
+            raise DomainError(f"{k} = {v} has the dimension {v.dimensionality}; {k} is "
                               f"{describe(unit)} ({unit or 'dimensionless'}, dimension {target.dimensionality})")
         out[k] = _plain(v.to(target.units).magnitude)
     return out, registry
@@ -127,12 +127,12 @@ def with_unit(value, unit, registry):
 
 
 def describe(unit: str) -> str:
-    return _WORDS.get(unit, "quantity")
+    return _WORDS.get(unit, "a quantity")
 
 
-_WORDS = {"m": "length", "Pa": "pressure (stress)", "N/m": "force per unit length", "J/m**2": "energy per area",
-          "J/m": "energy per unit length", "N/m**2": "force per area", "": "dimensionless number",
-          "rad": "angle"}
+_WORDS = {"m": "a length", "Pa": "a pressure (stress)", "N/m": "a force per unit length",
+          "J/m**2": "an energy per area", "J/m": "an energy per unit length", "N/m**2": "a force per area",
+          "": "a dimensionless number", "rad": "an angle"}
 
 
 def _plain(m):
