@@ -146,7 +146,32 @@ _DOCUTILS_MESSAGES = ("Definition list ends without a blank line", "Unexpected i
                       "Inline strong start-string", "Inline interpreted text")
 
 
+def _relative_modules(app, what, name, obj, options, lines):
+    """``:mod:`.sibling``` in a docstring means the module next to the one
+    documented (Python's reading); Sphinx would search every module of that
+    name.  Rewritten to the absolute name where that module exists."""
+    import importlib.util
+    import re
+    mod = name if what == "module" else getattr(obj, "__module__", "") or ""
+    is_package = what == "module" and hasattr(obj, "__path__")
+    package = mod if is_package or "." not in mod else mod.rsplit(".", 1)[0]
+    if not package:
+        return
+
+    def absolute(m):
+        target = f"{package}.{m.group(1)}"
+        try:
+            found = importlib.util.find_spec(target) is not None
+        except (ImportError, ValueError):
+            found = False
+        return f":mod:`~{target}`" if found else m.group(0)
+    for i, line in enumerate(lines):
+        if ":mod:`." in line:
+            lines[i] = re.sub(r":mod:`\.([A-Za-z_][A-Za-z0-9_.]*)`", absolute, line)
+
+
 def setup(app):
+    app.connect("autodoc-process-docstring", _relative_modules)
     import logging
     logging.getLogger("sphinx").addFilter(_PlainTextDocstrings())
     for h in logging.getLogger("sphinx").handlers:
