@@ -180,6 +180,9 @@ def cmd_derive(args):
         registry = type(ad).quantities()
         todo += [((registry[q].aliases or (q,))[0], ad, q)
                  for q in ("force", "pressure", "adhesion_force", "pull_off_half_width")]
+    if getattr(args, "maugis_dugdale", False):
+        md = c.maugis_dugdale()
+        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("force", "cohesive_gap", "pressure")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -287,6 +290,37 @@ def _eval_one(c, q, values, dps):
         out = getattr(contact, name)(load, **values)
         return out[0] if isinstance(out, tuple) else out
     return contact.evaluate_at(name, dps=dps, **values)
+
+
+# ------------------------------------------------------------------ model
+def cmd_model(args):
+    """Which adhesion model a tolerance needs: JKR or Maugis-Dugdale."""
+    import mpmath
+    prof = _profile(args.profile, args.symbols)
+    values = {k.name: v for k, v in _settings(args.set, args.symbols).items()}
+    md = _contact(args, prof).maugis_dugdale()
+    missing = [s.name for s in md.variables if s.name not in values]
+    if missing:
+        raise LineContactError(f"model needs values for {', '.join(missing)} (--set NAME=VALUE)")
+    ch = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values)
+    po = md.pull_off_at(args.dps, **values)
+    out = {"profile": str(prof), "set": {k: str(v) for k, v in values.items()}, "model": ch.model,
+           "maugis_parameter": mpmath.nstr(ch.maugis_parameter, args.dps),
+           "pull_off_jkr": mpmath.nstr(ch.jkr, args.dps), "pull_off_md": mpmath.nstr(ch.md, args.dps),
+           "relative_difference": mpmath.nstr(ch.relative_difference, 6), "rtol": args.rtol,
+           "md_pull_off_kind": po.kind, "md_pull_off_half_width": mpmath.nstr(po.half_width, args.dps),
+           "note": po.note, "displacement_control": "not defined for line contacts"}
+    if args.json:
+        _emit_json(out)
+    else:
+        print(f"profile f(x) = {prof}")
+        print(f"model: {ch.model}   (JKR suffices when its pull-off is within rtol = {args.rtol} of MD's)")
+        print(f"Maugis parameter lambda = {out['maugis_parameter']}")
+        print(f"pull-off (load control): JKR {out['pull_off_jkr']}, MD {out['pull_off_md']} "
+              f"(relative difference {out['relative_difference']}); MD minimum: {po.kind} at a = "
+              f"{out['md_pull_off_half_width']}")
+        print("displacement control: not defined for line contacts (the indentation depth of a half-plane is not)")
+    return EXIT_OK
 
 
 # ------------------------------------------------------------------ table
@@ -412,6 +446,9 @@ def build_parser() -> argparse.ArgumentParser:
                          + " (default force,pressure,gap)")
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36)")
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
+    pd.add_argument("--maugis-dugdale", dest="maugis_dugdale", action="store_true",
+                    help="also the Maugis-Dugdale conditions: P(a, c_D), the gap at c_D (= gamma/sigma_0), "
+                         "the pressure (the same as --adhesion --law maugis_dugdale's conditions)")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")
@@ -434,6 +471,21 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
+
+    pm = sub.add_parser("model", help="which adhesion model a tolerance needs: JKR or Maugis-Dugdale",
+                        description="Given the profile, E_star, the work of adhesion gamma, the Dugdale stress "
+                                    "sigma_0 and the profile's parameters, compare the load-control pull-off of "
+                                    "the JKR and the Maugis-Dugdale laws and print the Maugis parameter, e.g. "
+                                    "linecontact-sym model 'x**2/(2*R)' --set R=1 E_star=1 gamma=1 sigma_0=0.5.",
+                        epilog="exit status: 0 done; 2 bad input; 3 internal error.")
+    pm.add_argument("profile", help="the profile f(x) in SymPy syntax")
+    pm.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE",
+                    help="values: E_star, gamma, sigma_0 and the profile's parameters")
+    pm.add_argument("--rtol", default="0.05", help="relative tolerance on the pull-off (default 0.05)")
+    pm.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
+    pm.add_argument("--dps", type=_dps, default=15, help="significant digits (default 15)")
+    common(pm)
+    pm.set_defaults(func=cmd_model)
 
     pt = sub.add_parser("table", help="tables of derived laws (power-law Z_n)",
                         description="Z_n and the force law P(a) = E* c Z_n a^n of the power-law profile c x^n "

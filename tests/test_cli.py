@@ -20,7 +20,7 @@ def run(capsys, *argv):
     return code, out, err
 
 
-@pytest.mark.parametrize("verb", [None, "paper", "derive", "eval", "table", "check"])
+@pytest.mark.parametrize("verb", [None, "paper", "derive", "eval", "table", "check", "model"])
 def test_help(capsys, verb):
     with pytest.raises(SystemExit) as info:
         cli.main(([verb] if verb else []) + ["--help"])
@@ -319,3 +319,14 @@ def test_profile_starting_with_a_minus(capsys):
     code, out, _ = run(capsys, "derive", "--quantities", "force", "--format", "json", "--",
                        "-x**2/(2*R) + x**2/R")
     assert code == 0 and json.loads(out)["profile"] == "x**2/(2*R)"
+
+
+def test_model_maugis_dugdale(capsys):
+    """JKR or MD for an rtol, with the Maugis parameter (Baney & Hui's for the parabola)."""
+    code, out, _ = run(capsys, "model", "x**2/(2*R)", "--set", "R=1", "E_star=1", "gamma=1", "sigma_0=0.5", "--json")
+    assert code == 0
+    d = json.loads(out)
+    assert d["model"] == "MD" and abs(float(d["maugis_parameter"]) - 0.932388154070823) < 1e-12
+    code, out, _ = run(capsys, "model", "x**2/(2*R)", "--set", "R=1", "E_star=1", "gamma=1", "sigma_0=30",
+                       "--rtol", "0.01", "--json")
+    assert code == 0 and json.loads(out)["model"] == "JKR"

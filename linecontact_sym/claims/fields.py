@@ -5,7 +5,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import sympy as sp
 
 from ..core.conversion import exact_number
 from ..core.errors import ClaimError
@@ -44,9 +43,9 @@ def _sign_ok(name, value, syms, where):
 def _num(v, where):
     if isinstance(v, bool):
         raise ClaimError(f"{where}: expected a number, got {v!r}")
-    if isinstance(v, (int, float)):
-        return exact_number(v) if isinstance(v, float) else sp.Integer(v)
-    e = parse_expr(str(v), where=where)
+    if not isinstance(v, str):
+        return exact_number(v)       # the one converter (floats: their shortest decimal)
+    e = parse_expr(v, where=where)
     if e.free_symbols:
         raise ClaimError(f"{where}: expected a number, got {v!r}")
     return e

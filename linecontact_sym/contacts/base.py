@@ -32,7 +32,8 @@ import numpy as np
 import sympy as sp
 
 from ..core import symbols as S
-from ..core.precision import checked_dps
+from ..core.conversion import point_value
+from ..core.precision import checked_dps, serialized
 from ..core.errors import DomainError, DomainWarning, InadmissibleProfileError, LineContactError, singular_point
 from ..method.derivation import Derivation
 from ..numeric.special import NUMPY_LOGIC
@@ -180,7 +181,9 @@ class Contact:
         name = self.resolve(quantity)
         cache = self._caches()
         if name not in cache:
-            cache[name] = getattr(self, "_derive_" + name)()
+            with serialized():   # symbolic work changes mpmath's precision (core.precision)
+                if name not in cache:
+                    cache[name] = getattr(self, "_derive_" + name)()
         return cache[name]
 
     def _value(self, name: str):
@@ -452,7 +455,7 @@ def _checked_value(name, v, sym):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
         return v
-    if isinstance(v, (list, tuple, np.ndarray)):
+    if isinstance(v, (list, tuple)) or isinstance(v, np.ndarray) and v.ndim:
         arr = np.asarray(v)
         if arr.dtype.kind not in "iuf":
             raise DomainError(f"{name} = {v!r}: expected real numbers")
@@ -464,8 +467,12 @@ def _checked_value(name, v, sym):
         return arr
     if v is None or isinstance(v, bool):
         raise DomainError(f"{name} = {v!r} is not a number")
+    if isinstance(v, np.ndarray) and v.ndim == 0:
+        v = v[()]
     try:
-        val = to_sympy(v, where=name)
+        # text through the whitelisted parser, every number through the one
+        # converter (exact; a Float as its binary value, never capping precision)
+        val = point_value(to_sympy(v, where=name) if isinstance(v, str) else v)
     except LineContactError as exc:
         raise DomainError(f"{name} = {v!r} is not a number ({exc})") from None
     if not val.is_number or val.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or val.is_real is False:

@@ -37,6 +37,13 @@ Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential.con
   reversal it is the stick half-width at the turning point.
 * ``c_r`` -- half-width of the stick zone of a *reversal* (Mindlin-Deresiewicz
   unloading or reloading), c_s <= c_r <= a.
+
+Maugis-Dugdale adhesion, :mod:`linecontact_sym.contacts.adhesion.maugis`:
+
+* ``sigma_0`` -- the Dugdale (cohesive) tension, constant while the gap is
+  below h0 = gamma/sigma_0.
+* ``c_D``     -- half-width of the Dugdale (cohesive) zone a <= |x| <= c_D
+  (Maugis' and Baney & Hui's ``c``; ``c`` is the power-law coefficient here).
 """
 from __future__ import annotations
 
@@ -61,12 +68,15 @@ mu = sp.Symbol("mu", positive=True)
 Q = sp.Symbol("Q", real=True)
 c_s = sp.Symbol("c_s", positive=True)
 c_r = sp.Symbol("c_r", positive=True)
+sigma_0 = sp.Symbol("sigma_0", positive=True)
+c_D = sp.Symbol("c_D", positive=True)
 
 #: The SI unit of each symbol's value, for values given with units (pint,
 #: :mod:`linecontact_sym.core.units`): "" is dimensionless.  ``c`` (of c x^n,
 #: unit m^(1-n)) has none: its unit depends on n; it is checked through the profile.
 UNITS = {"x": "m", "a": "m", "P": "N/m", "E_star": "Pa", "gamma": "J/m**2", "R": "m", "b": "m", "n": "",
-         "theta": "rad", "z": "m", "nu": "", "mu": "", "Q": "N/m", "c_s": "m", "c_r": "m"}
+         "theta": "rad", "z": "m", "nu": "", "mu": "", "Q": "N/m", "c_s": "m", "c_r": "m",
+         "sigma_0": "Pa", "c_D": "m"}
 
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
@@ -78,10 +88,12 @@ LATEX_NAMES = {
     theta: r"\theta",
     c_s: r"c_{\mathrm{s}}",
     c_r: r"c_{\mathrm{r}}",
+    sigma_0: r"\sigma_0",
+    c_D: r"c_{\mathrm{D}}",
     zeta: r"\zeta",
     nu: r"\nu",
     mu: r"\mu",
 }
 
-__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "zeta", "nu",
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "sigma_0", "c_D", "z", "zeta", "nu",
            "RESERVED", "LATEX_NAMES", "UNITS"]

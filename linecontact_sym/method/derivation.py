@@ -18,12 +18,12 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.budget import Deadline, checked_budget, run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
-from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError, LineContactError
+from ..core.errors import BudgetExceeded, ClaimError, DivergentIntegralError, DomainError, LineContactError
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, verify
-from ..core.precision import held, workdps
+from ..core.precision import held, serialized, workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -180,16 +180,23 @@ def fallback_step(why: str = "no closed form found") -> Step:
 
 
 def values_by_name(symbols, values):
-    """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
-    a float is its exact binary value (:func:`~linecontact_sym.core.conversion.point_value`),
-    as in every evaluation path of the package."""
+    """THE binding of values: keyword values (by symbol name or Symbol) ->
+    {Symbol: exact SymPy number}; text through the whitelisted parser, every
+    number through the one converter
+    (:func:`~linecontact_sym.core.conversion.point_value`: a float is its
+    exact binary value, as in every evaluation path of the package)."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = point_value(v) if isinstance(v, float) else to_sympy(v)
+        try:
+            out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
+        except DomainError:
+            raise
+        except LineContactError as exc:     # not a number (a list, an array): the user's input
+            raise ClaimError(f"{sym.name}: {exc}") from None
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
@@ -313,7 +320,8 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
         return Derivation(quantity, rec["expr"], rec["closed_form"], rec["step"], rec["conditions"],
                           rec["verification"], rec["seconds"], rec["notes"], reference, tuple(variables),
                           rec["attempts"], rec["source"])
-    d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0)
+    with serialized():   # SymPy's symbolic work changes mpmath's precision (core.precision)
+        d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0)
     store.put(key, {"expr": d.expr, "closed_form": d.closed_form, "step": d.step, "conditions": d.conditions,
                     "verification": d.verification, "seconds": d.seconds, "notes": d.notes,
                     "attempts": d.attempts, "budget": budget})

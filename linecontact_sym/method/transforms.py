@@ -41,6 +41,8 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.quadrature import quad0
+from ..core.conversion import to_mpf
+from ..core.roots import root_in_bracket
 from ..core.precision import workdps
 
 # dummy integration variables: the defining Integrals print with these
@@ -84,8 +86,7 @@ def profile_integral(P: sp.Expr) -> sp.Expr:
 
 
 # --------------------------------------------------------------- quadratures
-def _mpf(v):
-    return mpmath.mpf(sp.N(v, mpmath.mp.dps + 10)) if not isinstance(v, mpmath.mpf) else v
+_mpf = to_mpf      # the one converter (core.conversion)
 
 
 class NumericProfile:
@@ -177,24 +178,9 @@ def inside(fn, lo, hi):
 
 
 def _sign_change(g, x0, x1):
-    """A zero of g in the sign-change bracket [x0, x1] (bisection, then secant)."""
-    g0 = mpmath.re(g(x0))
-    for _ in range(40):
-        m = (x0 + x1) / 2
-        gm = mpmath.re(g(m))
-        if gm == 0:
-            return m
-        if (gm < 0) == (g0 < 0):
-            x0, g0 = m, gm
-        else:
-            x1 = m
-    try:
-        r = mpmath.findroot(lambda v: mpmath.re(g(v)), (x0, x1), solver="anderson", verify=False)
-        if x0 <= r <= x1:
-            return r
-    except (ZeroDivisionError, ValueError):
-        pass
-    return (x0 + x1) / 2
+    """A zero of g in the sign-change bracket [x0, x1]: the package's one
+    bracketed root finder (:func:`~linecontact_sym.core.roots.root_in_bracket`)."""
+    return root_in_bracket(lambda v: mpmath.re(g(v)), x0, x1, width=(x1 - x0) * mpmath.mpf(2)**-40)
 
 
 def force_quad(profile, values: dict, dps: int = 50):

@@ -51,8 +51,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..parsing import to_sympy
 from ..core import symbols as S
+from ..core.conversion import to_mpf
 from ..core.errors import DomainError, LineContactError
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
@@ -172,23 +172,10 @@ _CACHE = IdentityCache()
 
 
 def _as_float(v):
-    if isinstance(v, str):
-        return float(mpmath.mpf(v))
-    return float(v)
+    return float(v) if type(v) in (float, int) else float(to_mpf(v))
 
 
-def _as_mpf(v):
-    """Exact for floats/ints/mpf; strings and Rationals at the working precision."""
-    if isinstance(v, mpmath.mpf):
-        return v
-    if isinstance(v, (int, float)):
-        return mpmath.mpf(v)
-    if isinstance(v, str):
-        return mpmath.mpf(v)
-    v = to_sympy(v)
-    if v.is_Rational:
-        return mpmath.mpf(int(v.p)) / int(v.q)
-    return mpmath.mpf(sp.N(v, mpmath.mp.dps + 5))
+_as_mpf = to_mpf      # the one converter (core.conversion), exact where the value is
 
 
 def _float64_fn(d):
@@ -350,6 +337,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     kit = scalar_kit(d)
     names = kit.names
     check_arguments(names, values, quantity)
+    values = {k: v[()] if isinstance(v, np.ndarray) and v.ndim == 0 else v for k, v in values.items()}
     arrays = {k: np.asarray(v, dtype=float) for k, v in values.items()
               if isinstance(v, (np.ndarray, list, tuple))}
     if arrays:

@@ -39,6 +39,7 @@ import scipy.special as sc
 import sympy as sp
 
 from ..core import symbols as S
+from ..core.conversion import point_value, to_mpf
 from ..core.errors import DomainError, LineContactError, singular_point
 from ..parsing import to_sympy
 from .cache import IdentityCache
@@ -511,6 +512,7 @@ class NumericFunction:
         if args:
             raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
                               f"fn({', '.join(n + '=...' for n in self.arguments)})")
+        kw = {k: v[()] if isinstance(v, np.ndarray) and v.ndim == 0 else v for k, v in kw.items()}
         if self.backend == "mpmath" and any(isinstance(v, (list, tuple, np.ndarray)) for v in kw.values()):
             raise DomainError(f"the mpmath function of {self.derivation.quantity} takes scalars; use "
                               f"backend='numpy' for arrays (or loop over the points)")
@@ -568,14 +570,13 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
 
         def fn(**kw):
             with workdps(dps):
-                return +f(*[mpmath.mpf(v) if not isinstance(v, mpmath.mpf) else v for v in collect(kw)])
+                return +f(*[to_mpf(to_sympy(v) if isinstance(v, str) else v) for v in collect(kw)])
     else:
         ref = derivation.reference
 
         def fn(**kw):
             with workdps(dps):
-                vals = dict(zip(syms, (sp.Float(v, dps) if isinstance(v, mpmath.mpf)
-                                       else sp.Float(float(v), 20) if isinstance(v, float)
-                                       else to_sympy(v) for v in collect(kw))))
+                vals = dict(zip(syms, (point_value(to_sympy(v) if isinstance(v, str) else v)
+                                       for v in collect(kw))))
                 return ref(vals, dps)
     return fn

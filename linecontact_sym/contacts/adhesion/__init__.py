@@ -15,7 +15,10 @@ P(a), plots, claims and the CLI.
   :func:`register_law`, :func:`adhesive_contact`;
 * :mod:`.pull_off`    -- the pull-off (symbolic attempt and numeric minimum);
 * :mod:`.branches`    -- jump-in half-width, the branches of P(a), the equilibrium check of p;
-* :mod:`.brute_force` -- the independent second pull-off method.
+* :mod:`.brute_force` -- the independent second pull-off method;
+* :mod:`.maugis`      -- the Maugis-Dugdale (cohesive-zone) law of any profile, :class:`MaugisDugdale`
+  and :class:`MaugisDugdaleContact` (:mod:`.maugis_derive` the derivation, :mod:`.maugis_law` the
+  numbers, :mod:`.maugis_check` the independent checks, :mod:`.maugis_choice` JKR or MD).
 
 The registered laws (a new law: its module, and one line here):
 """
@@ -23,7 +26,10 @@ from .contact import LAWS, AdhesiveContact, AdhesiveLineContact, adhesive_contac
 from .jkr import JKR
 from .law import CohesiveLaw, Parameter
 
+from .maugis import MaugisDugdale, MaugisDugdaleContact
+
 register_law(JKR, AdhesiveLineContact)
+register_law(MaugisDugdale, MaugisDugdaleContact)
 
 __all__ = ["AdhesiveContact", "AdhesiveLineContact", "CohesiveLaw", "Parameter", "JKR", "LAWS", "register_law",
-           "adhesive_contact"]
+           "adhesive_contact", "MaugisDugdale", "MaugisDugdaleContact"]

@@ -173,15 +173,14 @@ class AdhesiveContact(ContactOn):
     def _numeric_values(self, values):
         vals = dict(self.values)
         if values:
-            vals.update(values_by_name(self.variables, values) if len(values) >= len(self.variables)
-                        else {s: to_sympy(values[s.name]) for s in self.variables if s.name in values})
+            vals.update(values_by_name([s for s in self.variables if s.name in values],
+                                       values))
         missing = [s.name for s in self.variables if s not in vals]
         if missing:
             raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
         for s in self.variables:
-            if isinstance(vals[s], float):
-                vals[s] = point_value(vals[s])
-            if not to_sympy(vals[s]).is_number:
+            vals[s] = point_value(vals[s])
+            if not vals[s].is_number:
                 raise DomainError(f"{s.name} = {vals[s]} is not a number")
         return vals
 

@@ -290,6 +290,12 @@ class LineContact(Contact):
         from ..adhesion.contact import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
 
+    def maugis_dugdale(self, w=S.gamma, sigma0=S.sigma_0):
+        """The Maugis-Dugdale adhesive contact (cohesive tension sigma0 over
+        a range h0 = w/sigma0), see :mod:`~linecontact_sym.contacts.adhesion.maugis`."""
+        from ..adhesion.maugis import MaugisDugdaleContact
+        return MaugisDugdaleContact(self, w, sigma0)
+
     def adhesion(self, law: str = "jkr", *args, **params):
         """The adhesive form of this contact under a registered cohesive law
         (by name: ``"jkr"``, ...) with the law's parameters (positional in

@@ -27,13 +27,12 @@ either, the search runs up to 4**40 times the law's length scale.
 [4**-20 s, a*] (s the length scale, :data:`SPAN`) is found by subdivision in ln a, split
 at the profile's breakpoints:
 
-* closed-form law with python-flint: dP/da (and d2P/da2) evaluated in ball
+* closed-form law (python-flint, a core dependency): dP/da (and d2P/da2) evaluated in ball
   arithmetic on each interval; an interval whose ball excludes 0 holds no
   stationary point, one with dP/da of opposite signs at its ends and a ball
   of d2P/da2 that excludes 0 holds exactly one.  This is a proof, up to the
   widths below.
-* quadrature law (or no python-flint, or a function without a ball
-  translation; the landscape's ``method`` and ``notes`` say which): an
+* quadrature law (or a function without a ball translation; the landscape's ``method`` and ``notes`` say which): an
   interval is excluded when the values of dP/da at its ends and log-midpoint
   have one sign and each is more than twice the largest change between them
   (the error bound assumes dP/da varies by at most twice its sampled change
@@ -53,10 +52,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import flint
 import mpmath
 
 from ...core.conversion import to_mpf
-from ...core.extras import require
 from ...core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
 from ...core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
@@ -143,8 +142,8 @@ class _Balls:
             d1 = sp.diff(expr, S.a)
             self.f = compile_arb(d1, [S.a])
             self.df = compile_arb(sp.diff(d1, S.a), [S.a])
-            self.flint = require("certified", "flint")
-        except Exception as exc:  # MissingExtraError, CertificationError: the numeric method
+            self.flint = flint
+        except Exception as exc:  # CertificationError (no ball translation): the numeric method
             self.reason = f"{type(exc).__name__}: {str(exc).splitlines()[0]}"
             self.f = None
         self.ok = None

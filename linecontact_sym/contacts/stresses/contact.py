@@ -35,6 +35,7 @@ from . import extrema as X
 from . import field as F
 from ..base import ContactOn, Quantity
 from .kolosov import cauchy_transform, punch_integral, t
+from ...core.conversion import real_mpf, to_mpf
 from ...core.precision import workdps
 
 #: the integration variable of a traction given as an expression (real: s < 0 too)
@@ -213,9 +214,7 @@ class StressField(ContactOn):
         given, is NaN (sigma_y, von Mises and Tresca are then NaN)."""
         syms = tuple(S.__dict__[n] for n in need) + self.variables + \
             tuple(q for q in self.nu_symbols if q.name in values)
-        # NumPy scalars as Python floats (core.conversion.exact_number parses repr(), which is
-        # 'np.float64(...)' under NumPy 2)
-        given = {k: (float(v) if isinstance(v, np.floating) else v) for k, v in values.items() if k not in ("x", "z")}
+        given = {k: v for k, v in values.items() if k not in ("x", "z")}
         try:
             vals = values_by_name(syms, given)
         except DomainError as exc:
@@ -409,7 +408,8 @@ def _mp_criterion(sf, criterion, vals):
     H = sf.tangential_transform().xreplace(at)
     fns = [sp.lambdify(S.zeta, e, "mpmath") for e in (G, sp.diff(G, S.zeta), H, sp.diff(H, S.zeta))]
     nuv = sf.nu.xreplace(vals)
-    nu = mpmath.mpf(sp.N(nuv, 40)) if nuv.is_number else mpmath.nan
+    with workdps(40):
+        nu = to_mpf(nuv) if nuv.is_number else mpmath.nan
 
     def f(xv, zv):
         from .kolosov import kolosov_stresses
@@ -523,7 +523,7 @@ def _check_maximum(sf, expr, reference, variables):
             continue
         vals = {k: v for k, v in vals.items() if k in variables}
         with workdps(30):
-            val = mpmath.mpf(sp.N(expr.xreplace(vals), 40))
+            val = real_mpf(expr.xreplace(vals))
             digits.append(digits_agreeing(val, reference(vals, 30), 30))
         pts.append(vals)
     return VerificationRecord(tuple(pts), tuple(digits), 30, "2-D Nelder-Mead search of the field refined by an "

@@ -12,11 +12,11 @@ import numpy as np
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.conversion import exact_number, to_mpf
+from ...core.conversion import to_mpf
 from ...core.errors import DomainError, GrossSlidingError, LineContactError
 from ...core.roots import root_in_log
 from ...numeric.exports import lambdify_numpy, make_callable
-from ...parsing import to_sympy
+from ...parsing import user_value
 from . import reference as ref
 from ..normal.equilibria import half_width_at
 from .states import _law, _mu
@@ -265,8 +265,9 @@ def reversal(t, Q_max, Q, values, branch) -> TangentialState:
 
 def to_sympy_number(v):
     """An exact SymPy number for a value (floats as the rational of their
-    shortest decimal, like the rest of the package)."""
-    return exact_number(v) if isinstance(v, float) else to_sympy(v)
+    shortest decimal): :func:`~linecontact_sym.parsing.user_value`, the one
+    reading of a parameter value."""
+    return user_value(v)
 
 
 @dataclass
