@@ -44,7 +44,7 @@ A_VALUES = ("0.05", "0.2", "0.5", "1", "1.7", "3")
 def derivation_time(mk, verify):
     md = mk(verify=verify).maugis_dugdale()
     t0 = time.perf_counter()
-    for q in ("force", "cohesive_gap", "pressure"):
+    for q in ("zone_force", "cohesive_gap", "pressure"):
         md.derivation(q)
     return time.perf_counter() - t0
 

@@ -148,10 +148,18 @@ def test_derive_formats(capsys):
 
 
 def test_derive_adhesion(capsys):
-    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force", "--adhesion", "--format", "json",
-                       "--budget", "5")
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force,adhesion_force", "--adhesion",
+                       "--format", "json", "--budget", "5")
     d = json.loads(out)
     assert code == 0 and "adhesion_force" in d["quantities"]
+    # only what is asked (issue 22: --quantities force derived all five quantities)
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force", "--adhesion", "--format", "json")
+    d = json.loads(out)
+    assert code == 0 and sorted(d["quantities"]) == ["adhesive_force", "force"]
+    assert d["quantities"]["adhesive_force"]["expr"].replace(" ", "") == \
+        "-sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(a)*sqrt(gamma)+pi*E_star*a**2/(4*R)"
+    code, _, err = run(capsys, "derive", "x**2/(2*R)", "--quantities", "adhesion_force")
+    assert code == 2 and "--adhesion" in err
 
 
 def test_eval_grid_and_precision(capsys):

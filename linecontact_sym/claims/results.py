@@ -44,6 +44,12 @@ def fmt_num(v) -> str:
 REQUIRED_DIGITS = 30
 
 
+def _fails(c) -> bool:
+    """Fewer agreeing digits than the comparison must show (its own resolution may ask fewer)."""
+    need = c.required(REQUIRED_DIGITS) if hasattr(c, "required") else REQUIRED_DIGITS
+    return c.digits < need
+
+
 def _compared(c) -> str:
     return f"{c.what}: printed {fmt_mp(c.printed)}, derived {fmt_mp(c.target)} ({c.digits:.1f} digits agree)"
 
@@ -75,9 +81,9 @@ class PointResult:
         if self.status == "fail":
             # the quantity itself first (a pressure's value, not the resultant of a physics
             # check), then the other checks that failed at this point
-            value = [c for c in self.comparisons if c.what == "value" and c.digits < REQUIRED_DIGITS]
+            value = [c for c in self.comparisons if c.what == "value" and _fails(c)]
             head = value[0] if value else min(self.comparisons, key=lambda c: c.digits)
-            also = [c for c in self.comparisons if c is not head and c.digits < REQUIRED_DIGITS]
+            also = [c for c in self.comparisons if c is not head and _fails(c)]
             return f"at {pt}: " + "; also ".join(_compared(c) for c in [head] + also)
         return f"at {pt}: {self.reason}"
 

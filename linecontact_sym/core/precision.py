@@ -35,6 +35,7 @@ True
 """
 from __future__ import annotations
 
+import math
 import numbers
 import os
 import threading
@@ -132,4 +133,20 @@ def held(value, dps: int):
     return out
 
 
-__all__ = ["workdps", "workprec", "extradps", "serialized", "MAX_DPS", "checked_dps", "HeldDigits", "held"]
+def held_digits(value, error) -> int:
+    """Significant digits of an mpf ``value`` correct to ``error``: the
+    decimal exponent of the relative error, capped by the value's binary
+    precision (its mantissa's bits); at least 1."""
+    if not isinstance(value, mpmath.mpf):
+        return 17
+    sign, man, exp, bc = value._mpf_
+    held = max(1, int(bc * math.log10(2)) + 1)
+    if not value or not error:
+        return max(held, 15)
+    rel = float(abs(error) / abs(value))
+    if not math.isfinite(rel) or rel <= 0:
+        return max(held, 15)
+    return max(1, min(int(math.floor(-math.log10(rel))), max(held, 15)))
+
+
+__all__ = ["workdps", "workprec", "extradps", "serialized", "MAX_DPS", "checked_dps", "HeldDigits", "held", "held_digits"]

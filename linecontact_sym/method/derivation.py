@@ -328,6 +328,40 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     return d
 
 
+def remembered(parts, make, budget, reference) -> Derivation:
+    """A derivation made by ``make()`` once per key (:mod:`.store`: in this
+    process and on disk), for quantities derived outside :func:`derive`
+    (the half-width, the tangential stick half-width ...).  ``parts`` name
+    the problem completely (the key adds the code version); ``budget`` is
+    the caller's (a result that ran out of time is made again under a
+    larger one); ``reference(derivation)`` rebuilds the numeric reference
+    of a stored derivation (closures are not stored)."""
+    def rebuild(d):
+        d.reference = reference(d)
+        return d
+    return remembered_many(parts, lambda: (make(),), budget, rebuild)[0]
+
+
+def remembered_many(parts, make, budget, rebuild) -> tuple:
+    """:func:`remembered` for derivations made together (the three pull-off
+    quantities): ``make()`` returns a tuple of them; ``rebuild(d)`` returns
+    a stored one ready for use (its reference set, its class restored)."""
+    key = store.make_key("remembered", *parts)
+    rec = store.get(key)
+    if rec is not None and "derivations" in rec and all(_usable(r, budget) for r in rec["derivations"]):
+        return tuple(rebuild(Derivation(r["quantity"], r["expr"], r["closed_form"], r["step"], r["conditions"],
+                                        r["verification"], r["seconds"], r["notes"], None, r["variables"],
+                                        r["attempts"], rec["source"]))
+                     for r in rec["derivations"])
+    ds = tuple(make())
+    store.put(key, {"derivations": tuple(
+        {"quantity": d.quantity, "expr": d.expr, "closed_form": d.closed_form, "step": d.step,
+         "conditions": tuple(d.conditions), "verification": d.verification, "seconds": d.seconds,
+         "notes": tuple(d.notes), "variables": tuple(d.variables), "attempts": tuple(d.attempts),
+         "budget": checked_budget(budget)} for d in ds)})
+    return ds
+
+
 def _problem_parts(problem):
     prof = problem.profile
     if prof is None:

@@ -31,7 +31,7 @@ import scipy.special as sc
 import sympy as sp
 
 from .cache import IdentityCache
-from .exports import (_fold_constants, _to_scipy_names, cancellation_probe, cancellation_sums,
+from .exports import (_fold_constants, _mp_hyper_vec, _to_scipy_names, cancellation_probe, cancellation_sums,
                       compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
@@ -47,6 +47,8 @@ _SCALAR_FUNCS = {
     "gamma_ratio": lambda u, v: float(np_gamma_ratio(u, v)),
     "hyp2f1c": lambda *a: float(np_hyp2f1c(*a)),
     "gamma": math.gamma, "loggamma": math.lgamma, "besseli": sc.iv, "besselj": sc.jv,
+    # pFq beyond SciPy's 2F1/1F1/0F1 (a sin(x) profile's force law): mpmath, as in the NumPy export
+    "_mphyper": lambda *a: float(_mp_hyper_vec(*a)),
 }
 
 _CACHE = IdentityCache()

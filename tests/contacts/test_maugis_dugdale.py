@@ -46,13 +46,13 @@ def test_conditions_closed_and_verified(mds, name):
     bounded, gap = md.conditions
     assert isinstance(bounded, sp.Eq) and isinstance(gap, sp.Eq)
     assert gap.rhs == md.w / md.sigma0
-    for q in ("force", "cohesive_gap", "pressure"):
+    for q in ("zone_force", "cohesive_gap", "pressure"):
         d = md.derivation(q)
         assert d.closed_form and not d.expr.has(sp.Integral), q
         assert d.verification is not None and d.verification.passed and len(d.verification.points) >= 3, q
     # the Dugdale force and the bounded condition: P = P0 - 2 sigma_0 sqrt(c_D^2 - a^2)
     P0 = md.contact.derivation("force").expr
-    assert sp.simplify(md.force - P0 + 2 * S.sigma_0 * sp.sqrt(S.c_D**2 - S.a**2)) == 0
+    assert sp.simplify(md.zone_force - P0 + 2 * S.sigma_0 * sp.sqrt(S.c_D**2 - S.a**2)) == 0
 
 
 @pytest.mark.parametrize("name", PROFILES)

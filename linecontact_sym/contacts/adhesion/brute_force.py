@@ -107,11 +107,16 @@ def minimum_by_grid(law, dps: int) -> PullOff:
         except (Outside, ValueError, ZeroDivisionError):
             cut = True
             break
-        if not math.isfinite(p0) or (last0 is not None and p0 < last0):
+        # falling beyond float64 rounding (relative to P0 and to the adhesive term it is
+        # weighed against): on a flat P0 = 0, and the 97-node rule over the sliver of
+        # a grid point just past the flat's end may give -1e-17 (a false cut there)
+        pa = Pf(A) if math.isfinite(p0) else math.nan
+        noise = 1e-12 * max(abs(p0), abs(last0 or 0.0), abs(pa - p0)) if math.isfinite(pa) else 0.0
+        if not math.isfinite(p0) or (last0 is not None and p0 < last0 - noise):
             cut = True
             break
         last0 = p0
-        pts.append((A, Pf(A)))
+        pts.append((A, pa))
     if len(pts) < 3:
         raise NoPullOffError("the quadrature force law is real and rising at fewer than 3 grid points")
     k = min(range(len(pts)), key=lambda i: pts[i][1])

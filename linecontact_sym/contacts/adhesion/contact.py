@@ -32,6 +32,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ...core import symbols as S
+from ...core.budget import checked_budget
 from ...core.conversion import float_values, point_value
 from ...core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
                            VerificationError)
@@ -40,7 +41,7 @@ from ...parsing import to_sympy
 from . import branches
 from . import pull_off
 from ..base import ContactOn, Quantity
-from ..normal.equilibria import equilibria
+from ..normal.equilibria import SEARCH_BUDGET, equilibria, searching_until
 from ..normal.force_law import PullOff, ForceLaw
 from .jkr import GAMMA_RANGE, JKR, energy_release_rate, flat_punch_force, stress_intensity
 from .law import CohesiveLaw
@@ -198,14 +199,15 @@ class AdhesiveContact(ContactOn):
 
     # ----------------------------------------------------------- pull-off
     def _pull_off_closed(self):
-        """The symbolic attempt alone (cached), see :func:`.pull_off.closed_attempt`."""
+        """The symbolic attempt alone (cached in memory and on disk), see
+        :func:`.pull_off.closed_attempt`."""
         if "_po_closed" not in self._cache:
-            self._cache["_po_closed"] = pull_off.closed_attempt(self)
+            self._cache["_po_closed"] = pull_off.remembered_closed_attempt(self)
         return self._cache["_po_closed"]
 
     def _derive_pull_off(self, quantity) -> Derivation:
         if "_po" not in self._cache:
-            self._cache["_po"] = dict(zip(_PULL_OFF, pull_off.derivations(self)))
+            self._cache["_po"] = dict(zip(_PULL_OFF, pull_off.remembered_derivations(self)))
         return self._cache["_po"][quantity]
 
     _derive_pull_off_force = lambda self: self._derive_pull_off("pull_off_force")  # noqa: E731
@@ -218,13 +220,19 @@ class AdhesiveContact(ContactOn):
     def _pull_off_checked(self, vals, dps) -> PullOff:
         return pull_off.checked(self, vals, dps)
 
-    def pull_off_at(self, dps: int = 30, **values) -> PullOff:
+    def pull_off_at(self, dps: int = 30, budget=None, **values) -> PullOff:
         """The pull-off at numeric values (by name): a :class:`PullOff` with
         the force P_min < 0, P_adh = -P_min, the half-width and how the two
         independent methods agree.  Raises :class:`NoPullOffError` where no
         finite pull-off exists, :class:`VerificationError` if the methods
-        disagree below ``dps`` digits."""
-        return pull_off.at_values(self, self._numeric_values(values), dps)
+        disagree below ``dps`` digits, :class:`BudgetExceeded` when the
+        numeric search outlasts ``budget`` seconds (default
+        :data:`~linecontact_sym.contacts.normal.equilibria.SEARCH_BUDGET`; the
+        symbolic attempt has its own, the contact's)."""
+        vals = self._numeric_values(values)
+        budget = SEARCH_BUDGET if budget is None else checked_budget(budget)
+        with searching_until(budget):
+            return pull_off.at_values(self, vals, dps)
 
     def pull_off_force_at(self, dps: int = 30, **values):
         """P_min (< 0) at numeric values, verified to ``dps`` digits."""

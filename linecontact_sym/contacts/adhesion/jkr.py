@@ -221,7 +221,7 @@ class JKR(CohesiveLaw):
             b1f = math.sqrt(2 * math.pi * float(g) * float(E))
             return b.on_top(lambda A: P0(A) - B1() * mpmath.sqrt(A), lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
                             expr=expr, float_P=lambda P0f: (lambda A: P0f(A) - b1f * math.sqrt(float(A))),
-                            inactive=self.inactive)
+                            inactive=self.inactive, monotone_term=True)
         return on_base(base, build)
 
     # ----------------------------------------------------------- closed forms
@@ -251,6 +251,18 @@ class JKR(CohesiveLaw):
                                      "((2 pi gamma E*)**m/(2 m C))**(1/(2m-1)) (equal to the solve "
                                      "result at 5 points to 40 digits)")
         return None
+
+    def stationary_candidates(self, ad, force0):
+        """For P0 = C a**m: m C a**(m-1) = B1/(2 sqrt(a)) solved by hand,
+        a**(m - 1/2) = B1/(2 m C); sympy.solve of the same equation with
+        symbolic C and m spent its whole budget (K x**4: 20 s)."""
+        single = single_power(force0.expr) if force0.closed_form else None
+        if single is None:
+            return None
+        C, m = single
+        a_po = (2 * sp.pi * self.gamma * S.E_star / (4 * m**2 * C**2))**(1 / (2 * m - 1))
+        return [a_po], ("dP/da = 0 of P = C a**m - sqrt(2 pi a gamma E*) solved as a**(m - 1/2) = "
+                        "sqrt(2 pi gamma E*)/(2 m C)")
 
     def jump_in_candidates(self, ad, force0):
         single = single_power(force0.expr) if force0.closed_form else None

@@ -203,6 +203,12 @@ class CohesiveLaw:
         or None (then ``sympy.solve``'s result, tidied, stands)."""
         return None
 
+    def stationary_candidates(self, ad, force0):
+        """``(candidates, note)``: half-widths where dP/da = 0 may hold, in
+        closed form, tried (checked at random points) before ``sympy.solve``;
+        or None."""
+        return None
+
     def jump_in_candidates(self, ad, force0):
         """``(candidates, method, extra conditions)`` for the stable root of
         P(a) = 0 in closed form, or None (then ``sympy.solve`` is tried)."""

@@ -130,15 +130,18 @@ class MaugisDugdaleContact(ContactOn):
 
     >>> import linecontact_sym as lcs
     >>> md = lcs.parabola().maugis_dugdale()
-    >>> md.force
+    >>> md.zone_force
     pi*E_star*a**2/(4*R) - 2*sigma_0*sqrt(-a**2 + c_D**2)
     """
 
     kind = "maugis_dugdale"
 
-    force = Quantity("P(a, c_D)", "bounded pressure", "load per unit length P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2) "
-                     "(negative = tensile)", arguments=("a", "c_D"), aliases=("md_force",), latex=r"P_{\mathrm{MD}}",
-                     unit="N/m")
+    force = Quantity("P(a)", "", "load per unit length at the half-width a, c_D(a) solved from the gap "
+                     "condition (negative = tensile); numeric: its expression is the two conditions",
+                     latex=r"P_{\mathrm{MD}}(a)", unit="N/m")
+    zone_force = Quantity("P(a, c_D)", "bounded pressure", "load per unit length P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2) "
+                          "at the half-widths a and c_D (negative = tensile)", arguments=("a", "c_D"),
+                          aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})", unit="N/m")
     cohesive_gap = Quantity("g(c_D; a)", "Dugdale gap", "surface separation at the end of the cohesive zone; "
                             "equals h0 = w/sigma_0 at equilibrium", arguments=("a", "c_D"),
                             aliases=("gap_at_c",), latex=r"g(c_{\mathrm{D}})", unit="m")
@@ -212,7 +215,7 @@ class MaugisDugdaleContact(ContactOn):
 
     @property
     def force_expr(self):
-        return self.derivation("force").expr
+        return self.derivation("zone_force").expr
 
     @property
     def gap_c_expr(self):
@@ -236,7 +239,7 @@ class MaugisDugdaleContact(ContactOn):
     def conditions(self):
         """The two Maugis-Dugdale conditions as SymPy equations: bounded
         pressure at x = +-a (solved for P) and the gap at c_D equal to h0."""
-        return (sp.Eq(S.P, self.force), sp.Eq(self.cohesive_gap, self.h0))
+        return (sp.Eq(S.P, self.zone_force), sp.Eq(self.cohesive_gap, self.h0))
 
     def _sampler(self, domain="any"):
         base = point_sampler(self.profile, domain, {s: SIGMA0_RANGE for s in self._esyms})
@@ -262,6 +265,18 @@ class MaugisDugdaleContact(ContactOn):
                           tuple(steps), reference, (S.a, S.c_D) + self.variables)
 
     def _derive_force(self):
+        return self.law.derive_force(self)
+
+    def _law(self, vals: dict, mode: str):
+        """The numeric force law P(a) of the generic layer ('closed' or 'quad' P0 underneath)."""
+        from ..normal.force_law import ForceLaw
+        fixed = float_values({k: to_sympy(v) for k, v in vals.items() if k in set(self.variables)}, 80)
+        key = (mode, tuple(sorted((k.name, v) for k, v in fixed.items())))
+        if key not in self._laws:
+            self._laws[key] = self.law.numeric(ForceLaw.from_contact(self.contact, fixed, mode), fixed)
+        return self._laws[key]
+
+    def _derive_zone_force(self):
         from . import maugis_check as chk
         t0 = time.perf_counter()
         fd = self.contact.derivation("force")
@@ -269,7 +284,7 @@ class MaugisDugdaleContact(ContactOn):
         expr = fd.expr + d.force
         steps = (f"P0(a) of the engine ({fd.method})",) + d.steps[:1] + d.steps[-2:] + (
             "P = P0(a) + (force of the Dugdale punches); the punch of width a carries no force (K_I = 0)",)
-        return self._record("force", expr, fd.closed_form, steps, chk.force_reference(self), t0, fd.conditions)
+        return self._record("zone_force", expr, fd.closed_form, steps, chk.force_reference(self), t0, fd.conditions)
 
     def _derive_dugdale_force(self):
         t0 = time.perf_counter()
@@ -348,16 +363,6 @@ class MaugisDugdaleContact(ContactOn):
             self._laws[key] = MDLaw(self, vals)
         return self._laws[key]
 
-    def kinks_at(self, fixed):
-        """The profile's breakpoints (kinks of P(a)) at numeric parameters."""
-        out = []
-        for pc in self.profile.pieces:
-            if pc.lo != 0:
-                v = sp.N(pc.lo.xreplace(fixed), 40)
-                if v.is_number and v > 0:
-                    out.append(mpmath.mpf(str(v)))
-        return sorted(set(out))
-
     def state(self, a, dps: int = 30, **values) -> MDState:
         """The contact at the half-width a: c_D (unique root of the gap
         condition, bracketed), P, dP/da, h0 and the pressure and gap
@@ -417,12 +422,12 @@ class MaugisDugdaleContact(ContactOn):
         data = adhesion_map_data(self, values, lambdas, rigid=rigid, **kw)
         return plot_adhesion_map(data, path, title=f"Maugis-Dugdale line contact, f(x) = {self.profile.expr}")
 
-    def report(self, quantities=("force", "cohesive_gap", "pressure")) -> str:
+    def report(self, quantities=("zone_force", "cohesive_gap", "pressure")) -> str:
         return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
 
 
 _REFERENCE_NAMES = {
-    "force": "Johnson's bounded-solution condition P = (E*/2) int_-a^a s phi'(s)/sqrt(a^2-s^2) ds on the effective "
+    "zone_force": "Johnson's bounded-solution condition P = (E*/2) int_-a^a s phi'(s)/sqrt(a^2-s^2) ds on the effective "
              "profile phi = f + u_D (u_D' of the Dugdale strip from the Flamant log kernel), minus 2 sigma_0 (c_D - a), "
              "mpmath quadrature",
     "cohesive_gap": "the engine's quadrature of the adhesionless gap plus the Flamant (log-kernel) displacement "

@@ -140,7 +140,7 @@ def baney_hui_equations(md):
     if sig_of_lam is None:
         raise ValueError("Baney & Hui's form needs sigma_0 as a symbol")
     sub = {S.a: A * ABAR, S.c_D: A * ABAR * MBAR}
-    P = sp.simplify(sp.expand_power_base((md.force.xreplace(sub) / F).subs(md.sigma0, sig_of_lam), force=True))
+    P = sp.simplify(sp.expand_power_base((md.zone_force.xreplace(sub) / F).subs(md.sigma0, sig_of_lam), force=True))
     g = md.cohesive_gap.xreplace(sub).subs(md.sigma0, sig_of_lam)
     h = (md.h0).subs(md.sigma0, sig_of_lam)
     G = sp.simplify(sp.expand_power_base(sp.expand(g / h), force=True))

@@ -29,6 +29,7 @@ import mpmath
 import sympy as sp
 
 from ...core import symbols as S
+from ...core.conversion import float_values, number
 from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
 
@@ -87,8 +88,20 @@ class MDPullOff:
 
 
 def fixed_values(vals, digits=80):
-    """{Symbol: Float} of numeric values given exactly or as expressions (pi**(2/3)/4 ...)."""
-    return {k: sp.Float(sp.N(sp.sympify(v), digits), digits) for k, v in vals.items()}
+    """{Symbol: Float} of numeric values given exactly, as expressions (pi**(2/3)/4 ...) or as
+    Python/mpmath numbers: the package's converter, then Floats for substitution."""
+    return float_values({k: v if isinstance(v, sp.Basic) else number(v) for k, v in vals.items()}, digits)
+
+
+def profile_kinks(profile, fixed):
+    """The profile's breakpoints (kinks of P(a)) at numeric parameters, ascending."""
+    out = []
+    for pc in profile.pieces:
+        if pc.lo != 0:
+            v = sp.N(pc.lo.xreplace(fixed), 40)
+            if v.is_number and v > 0:
+                out.append(mpmath.mpf(str(v)))
+    return sorted(set(out))
 
 
 def _lam(expr, args):
@@ -136,7 +149,7 @@ class MDLaw:
         self._g0 = _lam(md.contact.derivation("gap").expr.xreplace(fixed), (x, a))
         self._gD_density = _lam(md.dugdale.density.xreplace(fixed), (S.a, c))  # not used in closed paths
         self._f = _lam(md.profile.expr.xreplace(fixed), (x,))
-        self.kinks = md.kinks_at(fixed)
+        self.kinks = profile_kinks(md.profile, fixed)
         self._warm = None
 
     # ------------------------------------------------------------ c_D(a)

@@ -32,7 +32,8 @@ from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.conversion import float_values, real_mpf
 from ...core.errors import BudgetExceeded, NoPullOffError, VerificationError
-from ...method.derivation import Derivation, tidy
+from ...method import store
+from ...method.derivation import Derivation, remembered_many, tidy
 from ...method.hyperseries import NotDecomposable, decompose
 from ...method.rules import Step
 from ...method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
@@ -165,14 +166,20 @@ def closed_attempt(ad):
         P = force.expr
         conds += law.pull_off_conditions(ad, fd)
         cands = []
-        try:
-            cands = run_with_budget(solve_stationary, P, seconds=ad.contact.budget)
-            notes.append(f"sympy.solve(dP/da = 0) gave {len(cands)} candidate(s)")
-        except BudgetExceeded:
-            notes.append(f"sympy.solve(dP/da = 0) found nothing within {ad.contact.budget:g} s")
-        except (NotImplementedError, ValueError, TypeError) as exc:
-            notes.append(f"sympy.solve(dP/da = 0) gave up: {type(exc).__name__}")
-        a_star = pick_minimum(ad, cands, P, conds)
+        by_law = law.stationary_candidates(ad, fd)
+        if by_law is not None:   # closed-form candidates of the law, checked like any (dP/da = 0, P'' > 0)
+            a_star = pick_minimum(ad, by_law[0], P, conds)
+            if a_star is not None:
+                notes.append(by_law[1])
+        if a_star is None:
+            try:
+                cands = run_with_budget(solve_stationary, P, seconds=ad.contact.budget)
+                notes.append(f"sympy.solve(dP/da = 0) gave {len(cands)} candidate(s)")
+            except BudgetExceeded:
+                notes.append(f"sympy.solve(dP/da = 0) found nothing within {ad.contact.budget:g} s")
+            except (NotImplementedError, ValueError, TypeError) as exc:
+                notes.append(f"sympy.solve(dP/da = 0) gave up: {type(exc).__name__}")
+            a_star = pick_minimum(ad, cands, P, conds)
         if a_star is None and cands:
             notes.append("none of them is a real positive minimum at every admissible sample point")
         if a_star is not None:
@@ -280,6 +287,47 @@ def numeric_derivations(ad, P, notes, t0):
     return mk("pull_off_force", "force"), mk("adhesion_force", "force", -1), mk("pull_off_half_width", "half_width")
 
 
+def _parts(ad, what):
+    """What names a pull-off problem for the store: the profile with its
+    parameter ranges, the force law, the work of adhesion, the checks."""
+    fd = ad.contact.derivation("force")
+    return (what, ad.profile.expr, dict(ad.profile.ranges), fd.expr, ad.law.name, dict(ad.law.values),
+            ad.contact.points,
+            ad.contact.verify)
+
+
+def remembered_closed_attempt(ad):
+    """:func:`closed_attempt`, remembered (:mod:`~linecontact_sym.method.store`,
+    get/put by key): sympy.solve is not run again in a new process."""
+    key = store.make_key(*_parts(ad, "pull_off_closed_attempt"))
+    rec = store.get(key)
+    if rec is not None and "Pmin" in rec:
+        return {k: v for k, v in rec.items() if k not in ("key", "version", "source")} | {"t0": time.perf_counter()}
+    r = closed_attempt(ad)
+    store.put(key, {k: (tuple(v) if isinstance(v, list) else v) for k, v in r.items() if k != "t0"})
+    return r
+
+
+def remembered_derivations(ad):
+    """:func:`derivations`, remembered with their verification
+    (:func:`~linecontact_sym.method.derivation.remembered_many`)."""
+    def rebuild(d):
+        if d.closed_form:
+            if d.quantity == "pull_off_half_width":
+                d.reference = lambda v, dd: ad._pull_off_reference(v, dd).half_width
+            else:
+                sign = 1 if d.quantity == "pull_off_force" else -1
+                d.reference = lambda v, dd: mpmath.fmul(sign, ad._pull_off_reference(v, dd).force, exact=True)
+            return d
+        attr, sign = ("half_width", 1) if d.quantity == "pull_off_half_width" else \
+            ("force", 1 if d.quantity == "pull_off_force" else -1)
+        return NumericDerivation(d.quantity, d.expr, False, d.step, d.conditions, d.verification, d.seconds,
+                                 d.notes, lambda v, dd: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, dd), attr),
+                                                                    exact=True),
+                                 d.variables, d.attempts, d.cached)
+    return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild)
+
+
 def _key(ad, vals):
     return tuple(sorted((k.name, v) for k, v in vals.items() if k in set(ad.variables)))
 
@@ -355,6 +403,7 @@ def checked_or_fail(ad, vals, dps) -> PullOff:
     return po
 
 
-__all__ = ["reference", "checked", "at_values", "single_power", "closed_attempt", "derivations", "numeric_derivations",
+__all__ = ["reference", "checked", "at_values", "remembered_derivations", "remembered_closed_attempt", "single_power",
+           "closed_attempt", "derivations", "numeric_derivations",
            "NumericDerivation", "pick_minimum", "tidy_checked", "sample_points", "same_at_points",
            "solve_stationary", "solve_load", "statement"]

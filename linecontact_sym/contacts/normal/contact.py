@@ -23,7 +23,7 @@ from ...method.verification import REQUIRED_DIGITS, verify
 from ...parsing import to_sympy
 from . import admissibility
 from ..base import Contact, Quantity
-from .equilibria import half_width_at
+from .equilibria import SEARCH_BUDGET, half_width_at, searching_until
 from .force_law import ForceLaw
 from .inverse import derive_half_width
 from ..sampling import point_sampler
@@ -153,14 +153,17 @@ class LineContact(Contact):
             xp = sp.Dummy("x", positive=True)
             # a test that SymPy's assumptions decide for every admissible value
             # is not sampled at every call (x**2/(2R): f' = x/R >= 0 always)
+            # removable singularities are patched where x (or a) is 0, never
+            # where a parameter is (parameters are > 0; a symbolic limit in
+            # w of 2 x exp(-x**2/w**2)/w**2 cost 10 s, the first Gaussian evaluate)
             fprime = None if d1.xreplace({S.x: xp}).is_nonnegative else \
-                lambdify_numpy(d1, [S.x] + params, stable=False)
+                lambdify_numpy(d1, [S.x] + params, stable=False, patch=(S.x,))
             fd = self.derivation("force")
             slope = None
             if fd.closed_form and not fd.expr.has(sp.Integral):
                 dP = sp.diff(fd.expr, S.a)
                 if not dP.is_nonnegative:
-                    slope = lambdify_numpy(dP, [S.a, S.E_star] + params, stable=False)
+                    slope = lambdify_numpy(dP, [S.a, S.E_star] + params, stable=False, patch=(S.a,))
             cache["_adm_fns"] = (fprime, slope, [p.name for p in params])
         return cache["_adm_fns"]
 
@@ -192,8 +195,19 @@ class LineContact(Contact):
                 return T.pressure_quad(dP, breaks, vals, dps)
         fallback = T.pressure_integral(fd.expr)
         if not fd.closed_form:
+            notes = ()
+            if not self.profile.is_piecewise:   # one quadrature instead of Eq. (12) over a quadrature law
+                prof = self.profile
+
+                def reference(vals, dps):
+                    fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x)}
+                    with workdps(dps + 10):
+                        f1 = T.NumericProfile(prof, fixed).f1
+                        return T.pressure_direct_quad(f1, vals, dps)
+                notes = ("numbers by one quadrature from the profile (the bounded inversion of the punch "
+                         "equation, transforms.pressure_direct_quad), not Eq. (12) over the quadrature force law",)
             return Derivation("pressure", fallback, False, fallback_step("force law has no closed form"), (),
-                              None, time.perf_counter() - t0, (), reference, (S.a, S.x) + self.variables)
+                              None, time.perf_counter() - t0, notes, reference, (S.a, S.x) + self.variables)
         return self._derive("pressure", Problem("pressure", self.profile, fd.expr), reference, fallback,
                             "inside", t0=t0)
 
@@ -259,29 +273,33 @@ class LineContact(Contact):
                                        "dP/da against mpmath.diff of the quadrature of Eq. (10*)", t0)
 
     # --------------------------------------------------------------- half-width
-    def _half_width(self, load=S.P, **values):
+    def _half_width(self, load=S.P, budget=None, **values):
         """Contact half-width a at load P.
 
         With a symbolic load: the closed-form inverse of the force law where
         SymPy finds one (a :class:`Derivation`, verified: P(a(P)) = P to 30
         digits at random points), else a Derivation with ``closed_form=False``
-        whose ``evalf`` solves P(a) = load numerically.  With a numeric load and
-        numeric parameters (keywords): the number (mpmath, 30 digits).
+        whose ``evalf`` solves P(a) = load numerically; ``budget`` (seconds,
+        default the contact's) limits the symbolic inversion.  With a numeric
+        load and numeric parameters (keywords): the number (mpmath, 30 digits),
+        the numeric search under ``budget`` too (default
+        :data:`~.equilibria.SEARCH_BUDGET`; :class:`BudgetExceeded` after it).
         """
         load = to_sympy(load)
         if load.is_number:
             if load <= 0:
                 raise DomainError(f"the load must be positive for a non-adhesive contact, got {load}")
-            return half_width_at(self.force_law(**values), load)
+            with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
+                return half_width_at(self.force_law(**values), load)
         cache = self._caches()
         key = ("half_width", load)
-        if key not in cache:
-            cache[key] = self._derive_half_width(load)
+        if key not in cache or (not cache[key].closed_form and cache[key].attempts):
+            cache[key] = self._derive_half_width(load, budget)
         return cache[key]
 
-    def _derive_half_width(self, load=S.P) -> Derivation:
+    def _derive_half_width(self, load=S.P, budget=None) -> Derivation:
         """a(P), see :func:`~.inverse.derive_half_width`."""
-        return derive_half_width(self, load)
+        return derive_half_width(self, load, budget)
 
     # --------------------------------------------------------------- other forms
     def adhesive(self, work_of_adhesion=S.gamma):

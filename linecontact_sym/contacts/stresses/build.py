@@ -13,7 +13,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.conversion import nsimplify_basic, rational
-from ...method.derivation import Derivation, fallback_step
+from ...method.derivation import Derivation, fallback_step, remembered_many
 from ...method.rules import Step
 from ...method.verification import verify_many
 from . import field as F
@@ -174,14 +174,53 @@ def derive_components(sf) -> dict:
     G_rule = sf.derivation("cauchy_transform").rule
     out = {}
     for k, e in exprs.items():
-        def ref(vals, dps, k=k):
-            return full(vals, dps)[k]
-        ref.full = full
+        ref = component_reference(full, k)
         step = Step(f"kolosov({G_rule})", e, (), ("Kolosov-Muskhelishvili formulas from G and H",)) if closed \
             else fallback_step("no closed form of the potentials: Flamant quadrature")
         out[k] = Derivation(k, e, closed, step, (), recs.get(k), time.perf_counter() - t0, tuple(notes), ref,
                             (S.a, S.x, S.z) + sf.variables)
     return out
+
+
+def _store_parts(sf, what):
+    """What names a field's problem for the on-disk store (None: a callable
+    traction, which is code, not data: not stored)."""
+    if callable(sf.tangential) and not isinstance(sf.tangential, sp.Basic):
+        return None
+    c = sf.contact
+    return (what, c.profile.expr, dict(c.profile.ranges), c.derivation("force").expr, sf.tangential, sf.mu,
+            sf.nu, sf.stick, tuple(sf.breaks), sf.verify, sf.points, c.budget)
+
+
+def remembered(sf, what, make, rebuild):
+    """``make()`` (a tuple of derivations) remembered in memory and on disk
+    (:func:`~linecontact_sym.method.derivation.remembered_many`, the store's
+    get/put by key), unless the traction is a callable."""
+    parts = _store_parts(sf, what)
+    return make() if parts is None else remembered_many(parts, make, sf.contact.budget, rebuild)
+
+
+def remembered_components(sf) -> dict:
+    """:func:`derive_components`, remembered with their verification; the
+    Flamant reference of stored ones is rebuilt (closures are not stored)."""
+    full = []
+
+    def rebuild(d):
+        if not full:
+            sf.contact.derivation("pressure")
+            full.append(flamant_reference(sf))
+        d.reference = component_reference(full[0], d.quantity)
+        return d
+    ds = remembered(sf, "stress_components", lambda: tuple(derive_components(sf).values()), rebuild)
+    return {d.quantity: d for d in ds}
+
+
+def component_reference(full, k):
+    """The reference of one stress component from the shared Flamant reference."""
+    def ref(vals, dps):
+        return full(vals, dps)[k]
+    ref.full = full
+    return ref
 
 
 _ELEMENTARY = (sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Number, sp.NumberSymbol, sp.core.numbers.ImaginaryUnit, sp.log,
@@ -245,4 +284,4 @@ def build_field(sf, vals) -> F.FieldEvaluator:
     return F.FieldEvaluator(normal, tangential, nu, friction=mu, mean_pressure=force / (2 * float(vals[S.a])))
 
 
-__all__ = ["derive_components", "build_field", "flamant_reference", "sampler"]
+__all__ = ["derive_components", "remembered_components", "remembered", "component_reference", "build_field", "flamant_reference", "sampler"]

@@ -136,6 +136,9 @@ class StressField(ContactOn):
         return sp.diff(self.contact.derivation("force").expr, S.a)
 
     def _derive_cauchy_transform(self) -> Derivation:
+        return B.remembered(self, "cauchy_transform", lambda: (self._cauchy_transform(),), lambda d: d)[0]
+
+    def _cauchy_transform(self) -> Derivation:
         t0 = time.perf_counter()
         D = self._density()
         step, attempts = cauchy_transform(D, self.contact.budget)
@@ -168,7 +171,7 @@ class StressField(ContactOn):
     def _components(self):
         cache = self._caches()
         if "_components" not in cache:
-            cache["_components"] = B.derive_components(self)
+            cache["_components"] = B.remembered_components(self)
         return cache["_components"]
 
     def _derive_sigma_x(self):
@@ -286,13 +289,11 @@ class StressField(ContactOn):
             return v, "p_0"
         return fe.mean_pressure, "p_m"
 
-    #: what a plot takes for a value not given: a and E* scale out of the
-    #: normalised axes; Poisson's ratio (von Mises, Tresca, sigma_y) is stated in the title
+    #: a plot's values where not given: a, E* scale out; nu (von Mises, Tresca, sigma_y) is in the title
     PLOT_DEFAULTS = {"a": 1.0, "E_star": 1.0, "nu": 0.3}
 
     def _plot_values(self, kw, quantities):
-        """The values of a plot (popped from ``kw``), the defaults
-        :data:`PLOT_DEFAULTS` where not given, and the default title."""
+        """The values of a plot (popped from ``kw``), :data:`PLOT_DEFAULTS` where not given; the title."""
         from ...views.contact_plots import profile_label
         from ...views.stress_plots import LABELS
         names = {q.name for q in (S.a,) + self.variables + self.nu_symbols}

@@ -341,12 +341,14 @@ class TangentialLineContact(ContactOn):
                             self._variables(S.a, S.c_s), t0, self._sampler("any"), ("pressure", "gap"))
 
     # ----------------------------------------------------------- stick zone
-    def _stick_half_width(self, force=S.Q, **values):
+    def _stick_half_width(self, force=S.Q, budget=None, **values):
         """Stick half-width at the tangential force Q (|Q| <= mu P).
 
         Symbolic Q: a :class:`Derivation` of c_s(a, Q) -- closed where the force
         law inverts (Hertz: sqrt(a^2 - 4 R |Q|/(pi E* mu)), i.e. c_s/a =
-        sqrt(1 - |Q|/(mu P))), else P(c_s) = P(a) - |Q|/mu solved numerically.
+        sqrt(1 - |Q|/(mu P))), else P(c_s) = P(a) - |Q|/mu solved numerically;
+        ``budget`` (seconds, default the contact's) is a deadline for the
+        inversion and its verification together; remembered on disk.
         Numeric Q with numbers for the parameters, and ``a`` or the normal load
         ``P``: the number (30 digits).  |Q| > mu P raises
         :class:`~linecontact_sym.core.errors.GrossSlidingError`."""
@@ -354,8 +356,8 @@ class TangentialLineContact(ContactOn):
         if Qv.is_number:
             return history.stick_half_width_at(self, Qv, values).c
         key = ("stick_half_width", Qv)
-        if key not in self._cache:
-            self._cache[key] = states.derive_stick_half_width(self, Qv)
+        if key not in self._cache or (not self._cache[key].closed_form and self._cache[key].attempts):
+            self._cache[key] = states.derive_stick_half_width(self, Qv, budget)
         return self._cache[key]
 
     def _derive_stick_half_width(self):

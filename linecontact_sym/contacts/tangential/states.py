@@ -10,11 +10,11 @@ import mpmath
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.budget import run_with_budget
+from ...core.budget import Deadline, checked_budget, run_with_budget
 from ...core.conversion import float_values, rational, to_mpf
 from ...core.errors import BudgetExceeded
 from ...method import transforms as T
-from ...method.derivation import Derivation, fallback_step
+from ...method.derivation import Derivation, fallback_step, remembered
 from ...method.rules import Step
 from ...method.verification import verify
 from ...numeric.exports import make_callable
@@ -23,6 +23,7 @@ from ..normal.equilibria import half_width_at
 from ..normal.force_law import ForceLaw
 from ..sampling import point_sampler
 from ...core.precision import workdps
+from ...core.roots import root_in_log
 
 #: the conditions of validity, attached to every tangential derivation
 CONDITIONS = ("valid for: plane strain; elastically similar bodies or Dundurs' beta neglected; Coulomb friction "
@@ -256,15 +257,31 @@ def energy_references(t):
 
 
 # =====================================================================  stick zone
-def derive_stick_half_width(t, Qv) -> Derivation:
+def derive_stick_half_width(t, Qv, budget=None) -> Derivation:
     """c_s(a, Q): the force law's inverse at P(a) - |Q|/mu (closed where the
     engine inverts the force law), verified against the root of the quadrature
-    force law (Eq. 10*)."""
-    t0 = time.perf_counter()
+    force law (Eq. 10*).
+
+    ``budget`` (seconds, default the contact's) is a deadline for the whole
+    derivation: the inversion and the verification share it; a closed form
+    not verified in time is returned unevaluated (P(c_s) = P(a) - |Q|/mu
+    with its numeric root), with a note.  Remembered in memory and on disk
+    (:func:`~linecontact_sym.method.derivation.remembered`)."""
+    budget = t.contact.budget if budget is None else checked_budget(budget)
+    deadline = Deadline(budget)        # the force law's derivation (cached) counts too
     fd = t.contact.derivation("force")
-    load = fd.expr - sp.Abs(Qv) / t.mu
-    inv = t.contact.half_width(S.P)
-    conds = tuple(fd.conditions) + (sp.Lt(sp.Abs(Qv), t.mu * fd.expr),)
+    variables = (S.a, Qv) + t.variables
+    parts = ("stick_half_width", t.profile.expr, dict(t.profile.ranges), fd.expr, t.mu, Qv, t.contact.points,
+             t.contact.verify)
+    return remembered(parts, lambda: _derive_stick(t, Qv, fd, deadline), budget,
+                      lambda d: (_check_ref if d.closed_form else _value_ref)(t, Qv))
+
+
+def _check_ref(t, Qv):
+    """The independent reference of c_s: the root of P(c) = P(a) - |Q|/mu with
+    the quadrature force law of the profile (Eq. 10*), bracketed on (0, a]
+    (the law is non-decreasing on [c_s, a], :data:`CONDITIONS`): located at
+    17 digits, refined at the working precision."""
     prof = t.profile
 
     def check(vals, dps):
@@ -273,27 +290,70 @@ def derive_stick_half_width(t, Qv) -> Derivation:
             law = ForceLaw.from_profile(prof, fixed)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
             L = law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / _mu(t, vals)
-            return half_width_at(law, L, dps)
+            return root_below(law.P, L, A)
+    return check
 
+
+def _value_ref(t, Qv):
     def value(vals, dps):
         with workdps(dps + 10):
             law = _law(t, vals)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
             return half_width_at(law, law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / _mu(t, vals), dps)
+    return value
+
+
+def root_below(P, load, A):
+    """The largest c in (0, A] with P(c) = load, for P(0+) = 0 <= load <= P(A)
+    and P non-decreasing on [c, A]: bisection in ln c at 17 digits, then the
+    root refined at the working precision around it (a few evaluations)."""
+    if load <= 0:
+        raise ValueError("no positive load below P(a)")
+    dps = mpmath.mp.dps
+    with workdps(17):
+        lo, k = A / 2, 0
+        while P(lo) >= load:
+            lo, k = lo / 4, k + 1
+            if k > 200:
+                raise ValueError("P(c) does not fall below the load as c -> 0")
+        approx = root_in_log(lambda c: P(c) - load, lo, A)
+    with workdps(dps):
+        return root_in_log(lambda c: P(c) - load, lo, A, approx=approx)
+
+
+def _derive_stick(t, Qv, fd, deadline) -> Derivation:
+    t0 = time.perf_counter()
+    load = fd.expr - sp.Abs(Qv) / t.mu
+    left = deadline.left()
+    inv = t.contact._half_width(S.P, budget=None if left is None else max(left, 0.05))
+    conds = tuple(fd.conditions) + (sp.Lt(sp.Abs(Qv), t.mu * fd.expr),)
+    check = _check_ref(t, Qv)
     variables = (S.a, Qv) + t.variables
+    notes = (CONDITIONS,)
     if inv.closed_form and Qv == S.Q:
         expr = _tidy_root(sp.simplify(inv.expr.xreplace({S.P: load})))
-        rec = verify(expr, check, t._sampler("any", load=True), conds, n_points=t.contact.points,
-                     reference_name="root of P(c) = P(a) - |Q|/mu with the quadrature force law (Eq. 10*)") \
-            if t.contact.verify else None
+        rec = None
+        if t.contact.verify:
+            left = deadline.left()
+            rec = verify(expr, check, t._sampler("any", load=True), conds, n_points=t.contact.points,
+                         reference_name="root of P(c) = P(a) - |Q|/mu with the quadrature force law (Eq. 10*)",
+                         budget=max(left, 0.05) if left is not None else None)
         if rec is None or rec.passed:
             step = Step("invert_force_law", expr, conds, ("c_s = a(P(a) - |Q|/mu), the inverse of the force law",
                                                           CONDITIONS))
             return Derivation("stick_half_width", expr, True, step, conds, rec, time.perf_counter() - t0,
-                              (CONDITIONS,), check, variables)
+                              notes, check, variables)
+        why = ("not verified within the budget's remaining time" if not rec.points else
+               f"FAILED verification ({rec.min_digits:.1f} digits)")
+        notes = (f"closed form {expr} {why}; returned unevaluated",) + notes
+        attempts = (("invert_force_law", f"closed form {why}" + (" (no result within the budget)"
+                                                                 if not rec.points else "")),)
+        return Derivation("stick_half_width", sp.Eq(fd.expr.xreplace({S.a: S.c_s}), load), False,
+                          fallback_step("numeric root of P(c_s) = P(a) - |Q|/mu"), (), rec,
+                          time.perf_counter() - t0, notes, _value_ref(t, Qv), variables, attempts)
     return Derivation("stick_half_width", sp.Eq(fd.expr.xreplace({S.a: S.c_s}), load), False,
                       fallback_step("numeric root of P(c_s) = P(a) - |Q|/mu"), (), None, time.perf_counter() - t0,
-                      (CONDITIONS,), value, variables)
+                      notes, _value_ref(t, Qv), variables, inv.attempts)
 
 
 def _tidy_root(e):
