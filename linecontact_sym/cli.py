@@ -37,12 +37,12 @@ import time
 import traceback
 from pathlib import Path
 
-
 from .core.budget import DEFAULT_BUDGET, checked_budget
 from .core.precision import MAX_DPS
 from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK
 from .core import symbols as S
 from .core.errors import LineContactError
+from .core.parallel import add_jobs_argument
 from .core.progress import Progress
 
 #: kept for scripts that imported the old name (1: a claim without a verdict)
@@ -120,7 +120,7 @@ def _derivation_dict(d, values=None):
 
 # ------------------------------------------------------------------ paper
 def cmd_paper(args):
-    from .claims.check import check_paper
+    from .claims.batch import check_and_draw          # the claims and, beside them, the figures
     from .claims.report import text_table, write_paper_outputs
     from .claims.spec import load_paper
     paper = load_paper(args.name)
@@ -135,10 +135,11 @@ def cmd_paper(args):
     if not args.quiet:
         print(f"checking {n} claims of {paper.title or paper.key}", file=sys.stderr, flush=True)
     bar = Progress(n, "checking", enabled=not args.quiet)
-    result = check_paper(paper, budget=args.budget, only=only, on_start=lambda i, n_, c: bar.start(c.label),
-                         progress=lambda i, n_, r: bar.done(r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
+    result, drawn = check_and_draw(paper, args.jobs, None if args.no_figures else out, args.budget, only=only,
+                                   on_start=lambda i, n_, c: bar.start(c.label), progress=lambda i, n_, r: bar.done(
+                                       r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
     bar.close()
-    written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget)
+    written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget, drawn=drawn)
     if args.json:
         d = result.to_dict()
         d["written"] = {k: [str(p) for p in v] if isinstance(v, list) else str(v) for k, v in written.items()}
@@ -386,7 +387,7 @@ def cmd_check(args):
                                          force_law=args.force_law))
         paper = Paper("command-line", "claims from the command line", "", claims, {}, "command line")
     bar = Progress(len(paper.claims), "checking", enabled=not args.quiet, min_total=2)
-    result = check_paper(paper, budget=args.budget, on_start=lambda i, n, c: bar.start(c.label),
+    result = check_paper(paper, budget=args.budget, jobs=args.jobs, on_start=lambda i, n, c: bar.start(c.label),
                          progress=lambda i, n, r: bar.done(r.label, r.status, r.seconds))
     bar.close()
     if args.json:
@@ -435,6 +436,7 @@ def build_parser() -> argparse.ArgumentParser:
     pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
     pp.add_argument("--only", nargs="+", metavar="LABEL", help="check only these claims, e.g. --only 'Eq. (10)'")
     pp.add_argument("--no-figures", action="store_true", help="do not draw the figures")
+    add_jobs_argument(pp)
     common(pp, quiet=True)
     pp.set_defaults(func=cmd_paper)
 
@@ -533,6 +535,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="sampling ranges, e.g. n=0.3:6")
     pc.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pc.add_argument("--strict", action="store_true", help="exit 1 unless every claim holds unconditionally")
+    add_jobs_argument(pc)
     common(pc, quiet=True)
     pc.set_defaults(func=cmd_check)
     return p

@@ -9,6 +9,7 @@ first-principles references of :mod:`.references`.
 """
 from __future__ import annotations
 
+import dataclasses
 import time
 from dataclasses import dataclass
 from typing import Callable
@@ -22,6 +23,7 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.errors import ClaimError, DomainError, LineContactError
 from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_relative_displacement,
                          flamant_resultant, griffith_punch_force, num_eval, numeric_minimum, resolution)
+from .memo import point_key, remember, remembered
 from .results import REQUIRED_DIGITS, PointResult
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
 from ..core.precision import workdps
@@ -87,7 +89,26 @@ REQUIRED_DIGITS = REQUIRED_DIGITS
 
 
 def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:
-    """Compare at one point; classify what is undefined where."""
+    """Compare at one point; classify what is undefined where.
+
+    The comparison (the printed form's value, the derived one, the
+    first-principles references) is remembered in the derivation store
+    (:mod:`.memo`: in this process, and on disk unless the cache is off)
+    under a key of everything it depends on: the derived record (profile,
+    expression, method, conditions), the printed form, the point, the digits,
+    and the source of the computing modules (so a changed reference never
+    meets a value of its predecessor).  A second run reads the numbers its
+    first run computed independently; nothing is skipped."""
+    key = point_key(derived, printed_expr, vals, dps, physics)
+    pr = remembered(key, PointResult)
+    if pr is not None:
+        return dataclasses.replace(pr, values=vals, kind=kind)
+    pr = _evaluate_point(derived, printed_expr, vals, kind, dps, physics)
+    remember(key, pr)
+    return pr
+
+
+def _evaluate_point(derived, printed_expr, vals, kind, dps, physics) -> PointResult:
     try:
         comps = derived.compare(vals, printed_expr, dps, physics=physics)
     except Divergent as exc:

@@ -313,10 +313,11 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
     return standalone(body, title=f"Claims check: {paper.title or paper.key}")
 
 
-def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float = 20.0) -> dict:
+def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float = 20.0, drawn=None) -> dict:
     """Write report.md, report.tex, table1.tex, results.json and the paper's
     figures (its ``[[figures]]``, PNG and PDF) into ``out_dir``; returns
-    {kind: path or [paths]}."""
+    {kind: path or [paths]}.  ``drawn``: the figures' paths where they were
+    already drawn into ``out_dir`` (by a worker, while the claims were checked)."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     written = {}
@@ -331,7 +332,7 @@ def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float 
     caps = {}
     if figures and result.paper.figures:
         from .figures import captions, draw_figures
-        figs = draw_figures(result.paper, out, budget=budget)
+        figs = list(drawn) if drawn is not None else draw_figures(result.paper, out, budget=budget)
         caps = captions(result.paper)
         written["figures"] = figs
     (out / "report.md").write_text(markdown_report(result, figs, written.get("table1"), caps), encoding="utf-8")

@@ -44,7 +44,7 @@ import numpy as np
 import sympy as sp
 
 from .conversion import to_mpf
-from .precision import extradps
+from .precision import extradps, workprec
 
 #: tanh-sinh degree used throughout (mpmath's default is 6)
 MAXDEGREE = 10
@@ -158,6 +158,19 @@ def quad_segments(g, pts, alphas=(None, None)):
     return total
 
 
+def _decades_below(r) -> int:
+    """int(-log10(r)) for 0 < r < 1, the logarithm taken at 53 bits (the
+    working precision's logarithm costs a fifth of a quadrature near the
+    ends); recomputed at the working precision in the rare case that the
+    53-bit value lies within 1e-9 of an integer, so the result is exact."""
+    with workprec(53):
+        v = float(-mpmath.log10(r))
+    k = int(v)
+    if min(v - k, k + 1 - v) < 1e-9:
+        return int(-mpmath.log10(r))
+    return k
+
+
 class EndpointGuard:
     """An integrand g on [lo, hi] wrapped for tanh-sinh nodes near the ends.
 
@@ -186,6 +199,7 @@ class EndpointGuard:
         self.span = hi - lo
         self.tol = mpmath.mpf(10) ** (-(mpmath.mp.dps // 2))
         self.cap = mpmath.mp.dps
+        self.near = self.span * mpmath.mpf(10) ** -5
         self.complex_at = None
 
     def near_end(self, tv) -> bool:
@@ -195,8 +209,8 @@ class EndpointGuard:
     def _eval(self, tv):
         dist = min(abs(tv - self.lo), abs(tv - self.hi))
         extra = 0
-        if dist < self.span * mpmath.mpf(10) ** -5:
-            extra = self.cap if dist == 0 else min(self.cap, int(-mpmath.log10(dist / self.span)))
+        if dist < self.near:
+            extra = self.cap if dist == 0 else min(self.cap, _decades_below(dist / self.span))
         if extra:
             with extradps(extra):
                 return self.g(tv)

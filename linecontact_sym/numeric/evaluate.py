@@ -263,13 +263,16 @@ class SeriesModel:
         r = [mags[j + 1] / mags[j] for j in range(len(mags) - 1)]
         jl = len(r) - 1
         r_inf = r[jl] + (r[jl] - r[jl - 1]) * jl
+        # rising[N]: the ratios r[N:] do not decrease (one backward pass, not one scan per N)
+        rising = [True] * (len(r) + 1)
+        for j in range(len(r) - 2, -1, -1):
+            rising[j] = rising[j + 1] and not r[j + 1] < r[j] * (1 - 1e-12)
+        rb = max(r_inf, r[-1]) * (1 + 1e-3)
         partial = 0
         for N in range(1, len(t) - 2):
             partial += t[N - 1]
-            tail_r = r[N:]
-            if any(tail_r[i + 1] < tail_r[i] * (1 - 1e-12) for i in range(len(tail_r) - 1)):
+            if not rising[N]:
                 continue
-            rb = max(r_inf, r[-1]) * (1 + 1e-3)
             if rb >= 1:
                 return None
             bound = mags[N] / (1 - rb)
@@ -329,7 +332,10 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         if certified:
             raise LineContactError("certified evaluation takes scalars; loop over the points")
         values = {**values, **arrays}
-    values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
+    if not arrays and hasattr(contact, "check_domain_scalar"):
+        values = contact.check_domain_scalar(quantity, values)   # the same check, plain Python for scalars
+    else:
+        values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
 
     if certified:
         return _certified(d, quantity, values, rtol, dps, t0)

@@ -507,8 +507,18 @@ class NumericFunction:
         self.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(self.arguments)}.\n"
                         f"Formula: {derivation.expr}\nMethod: {derivation.method}")
         self._fn = compile_callable(derivation, backend, dps, params, stable)
+        self._scalar = None   # the scalar fast path, built on the first call
 
     def __call__(self, *args, **kw):
+        if not args:
+            fast = self._scalar
+            if fast is None:
+                from .fastpath import scalar_plan
+                fast = self._scalar = scalar_plan(self) or False
+            if fast:
+                v = fast(kw)
+                if v is not None:
+                    return v
         if args:
             raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
                               f"fn({', '.join(n + '=...' for n in self.arguments)})")
@@ -537,6 +547,7 @@ class NumericFunction:
                                    f"contact and export again")
         state = dict(self.__dict__)
         state["_fn"] = None
+        state["_scalar"] = None
         return state
 
     def __repr__(self):

@@ -31,11 +31,11 @@ import scipy.special as sc
 import sympy as sp
 
 from .cache import IdentityCache
-from .exports import (_fold_constants, _mp_hyper_vec, _to_scipy_names, cancellation_probe, cancellation_sums,
-                      compile_callable, stable_form)
+from .exports import (_fold_constants, _guarded, _mp_hyper_vec, _to_scipy_names, cancellation_probe,
+                      cancellation_sums, compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
-__all__ = ["ScalarKit", "scalar_kit", "vector_float64", "STEP"]
+__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "STEP"]
 
 #: relative step of the central differences for kappa
 STEP = 1e-6
@@ -164,3 +164,40 @@ def vector_float64(d, names, arrays):
         cancel = np.broadcast_to(np.asarray(cancellation_probe(d)(*arrays), dtype=float), shape)
     return v, kappa, cancel
 
+
+def scalar_plan(nf):
+    """The scalar fast path of a float64 export (None where there is none): a
+    call whose values are all Python floats (or ints) evaluates the same
+    stable form compiled for ``math`` and the scalar SciPy special functions
+    (:class:`~.fastpath.ScalarKit`, as :func:`~.evaluate.evaluate` does),
+    after the contact's scalar domain check; it returns None (the call takes
+    the NumPy path) for anything else: an argument 0 (where a removable
+    singularity is patched), a value that is not finite, a guarded export."""
+    d = nf.derivation
+    if nf.backend != "numpy" or not nf.stable or not d.closed_form or _guarded(d):
+        return None
+    kit = scalar_kit(d)
+    if kit.f is None or any(type(v) not in (float, int) for v in nf.params.values()):
+        return None
+    f, names, params = kit.f, kit.names, dict(nf.params)
+    if any(not n.isidentifier() for n in names):
+        return None
+    wanted = frozenset(names) - frozenset(params)
+    domain = getattr(nf.domain, "scalar", nf.domain)
+    scalar_types = (float, int)
+
+    def fast(kw):
+        if kw.keys() != wanted:
+            return None
+        for v in kw.values():
+            if v.__class__ not in scalar_types or not v:
+                return None
+        merged = {**params, **kw} if params else kw
+        if domain is not None:
+            merged = domain(merged)
+        try:
+            v = float(f(**merged))
+        except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+            return None
+        return np.float64(v) if math.isfinite(v) else None
+    return fast

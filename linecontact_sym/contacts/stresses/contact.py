@@ -88,6 +88,9 @@ class StressField(ContactOn):
     max_tresca = _mx("max sigma_T", "largest Tresca stress", r"\sigma_{\mathrm{T},\max}")
     max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}", unit="m")
 
+    # the numeric fields built per parameter point are rebuilt, not pickled
+    _transient = ("_cache", "_laws", "_fields")
+
     def __init__(self, contact, tangential=None, mu=S.mu, nu=S.nu, stick=None, breaks=(), verify=True,
                  points: int = 4):
         if tangential not in (None, "sliding", "partial_slip") and not callable(tangential) \
@@ -250,11 +253,7 @@ class StressField(ContactOn):
             return lambda **kw: float(self.evaluate_at(name, dps=15, **{**params, **kw}))
         if name == "cauchy_transform":
             raise DomainError("the Cauchy transform is complex: use fn = sf.field(...).normal")
-
-        def fn(**kw):
-            kw = {**params, **kw}
-            return self.field(**kw)(kw["x"], kw["z"], name)
-        return fn
+        return FieldFunction(self, name, params)
 
     def maximum(self, criterion: str = "principal_shear", **values) -> X.StressMaximum:
         """The verified maximum of an equivalent stress ('principal_shear',
@@ -545,3 +544,21 @@ def _derive_critical(sf, name, criterion):
                          "'the maximum is on the surface'")
     return Derivation(name, sp.Function(name)(*variables), False, step, (), None, time.perf_counter() - t0, (),
                       reference, variables)
+
+class FieldFunction:
+    """What :meth:`StressContact.to_numeric` returns for a field component:
+    ``fn(x=..., z=..., a=..., E_star=..., ...)`` (arrays of x and z).  Pickles
+    (the contact, the quantity and the fixed values; the field is built again
+    in the process that calls it), so a 500x500 grid can be cut into blocks
+    for worker processes or a Dask cluster
+    (:func:`~linecontact_sym.core.parallel.map_chunks`)."""
+
+    def __init__(self, contact, quantity, params):
+        self.contact, self.quantity, self.params = contact, quantity, dict(params)
+
+    def __call__(self, **kw):
+        kw = {**self.params, **kw}
+        return self.contact.field(**kw)(kw["x"], kw["z"], self.quantity)
+
+    def __repr__(self):
+        return f"<{self.quantity} of the stress field of {self.contact.contact.profile.expr}>"
