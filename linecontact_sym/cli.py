@@ -163,16 +163,13 @@ def cmd_derive(args):
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof)
-    asked = args.quantities is not None
-    quantities = [q.strip() for q in (args.quantities or "force,pressure,gap").split(",") if q.strip()]
-    if not quantities:
+    quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
+    if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
     known = _expression_quantities("frictionless")
     adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
-    for q in quantities:
-        if q not in known and not (args.adhesion and q in adhesive):
-            more = f", or with --adhesion {', '.join(a for a in adhesive if a not in known)}"
-            raise LineContactError(f"unknown quantity {q!r} for derive; choose from {', '.join(known)}{more}")
+    for q in (q for q in quantities if q not in known and not (args.adhesion and q in adhesive)):
+        raise LineContactError(f"unknown quantity {q!r}; choose from {', '.join(known)} (--adhesion: {adhesive})")
     out = {"profile": str(prof), "profile_latex": to_latex(prof),
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
     todo = [(q, c, q) for q in quantities if q in known]
@@ -182,10 +179,8 @@ def cmd_derive(args):
             raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
         ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
-        # derive only what is asked (--quantities force: the two force laws, not the pull-off too)
-        wanted = [q for q in adhesive if q in quantities] if asked else \
-            ["force", "pressure", "adhesion_force", "pull_off_half_width"]
-        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in wanted]
+        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
+                 if q in quantities or (args.quantities is None and q != "pull_off_force")]
     if getattr(args, "maugis_dugdale", False):
         md = c.maugis_dugdale()
         todo += [(f"maugis_dugdale.{q}", md, q) for q in ("zone_force", "cohesive_gap", "pressure")]
@@ -448,12 +443,10 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("profile", help="the profile f(x) in SymPy syntax, e.g. 'x**2/(2*R)'")
     pd.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fix parameters, e.g. R=1")
     pd.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
-    pd.add_argument("--quantities", default=None,
-                    help="comma-separated, from: " + ", ".join(_expression_quantities("frictionless"))
-                         + " (default force,pressure,gap); with --adhesion also adhesion_force, pull_off_force, "
-                           "pull_off_half_width, and force/pressure then name the adhesive laws too")
+    pd.add_argument("--quantities", default=None, help="comma-separated, from: " + ", ".join(_expression_quantities(
+        "frictionless")) + " (default force,pressure,gap); --adhesion: also adhesion_force, pull_off_force, ...")
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
-                    "the force and pressure laws, P_adh and a at pull-off, or those of --quantities")
+                    "force, pressure, P_adh, a at pull-off, or those of --quantities")
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
     pd.add_argument("--maugis-dugdale", dest="maugis_dugdale", action="store_true",
                     help="also the Maugis-Dugdale conditions: P(a, c_D), the gap at c_D (= gamma/sigma_0), "

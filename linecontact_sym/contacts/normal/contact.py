@@ -153,9 +153,7 @@ class LineContact(Contact):
             xp = sp.Dummy("x", positive=True)
             # a test that SymPy's assumptions decide for every admissible value
             # is not sampled at every call (x**2/(2R): f' = x/R >= 0 always)
-            # removable singularities are patched where x (or a) is 0, never
-            # where a parameter is (parameters are > 0; a symbolic limit in
-            # w of 2 x exp(-x**2/w**2)/w**2 cost 10 s, the first Gaussian evaluate)
+            # patched at x = 0 (a = 0) only: parameters are > 0 (a limit in w cost the first Gaussian 10 s)
             fprime = None if d1.xreplace({S.x: xp}).is_nonnegative else \
                 lambdify_numpy(d1, [S.x] + params, stable=False, patch=(S.x,))
             fd = self.derivation("force")
@@ -197,15 +195,7 @@ class LineContact(Contact):
         if not fd.closed_form:
             notes = ()
             if not self.profile.is_piecewise:   # one quadrature instead of Eq. (12) over a quadrature law
-                prof = self.profile
-
-                def reference(vals, dps):
-                    fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x)}
-                    with workdps(dps + 10):
-                        f1 = T.NumericProfile(prof, fixed).f1
-                        return T.pressure_direct_quad(f1, vals, dps)
-                notes = ("numbers by one quadrature from the profile (the bounded inversion of the punch "
-                         "equation, transforms.pressure_direct_quad), not Eq. (12) over the quadrature force law",)
+                reference, notes = _direct_pressure(self.profile)
             return Derivation("pressure", fallback, False, fallback_step("force law has no closed form"), (),
                               None, time.perf_counter() - t0, notes, reference, (S.a, S.x) + self.variables)
         return self._derive("pressure", Problem("pressure", self.profile, fd.expr), reference, fallback,
@@ -274,17 +264,9 @@ class LineContact(Contact):
 
     # --------------------------------------------------------------- half-width
     def _half_width(self, load=S.P, budget=None, **values):
-        """Contact half-width a at load P.
-
-        With a symbolic load: the closed-form inverse of the force law where
-        SymPy finds one (a :class:`Derivation`, verified: P(a(P)) = P to 30
-        digits at random points), else a Derivation with ``closed_form=False``
-        whose ``evalf`` solves P(a) = load numerically; ``budget`` (seconds,
-        default the contact's) limits the symbolic inversion.  With a numeric
-        load and numeric parameters (keywords): the number (mpmath, 30 digits),
-        the numeric search under ``budget`` too (default
-        :data:`~.equilibria.SEARCH_BUDGET`; :class:`BudgetExceeded` after it).
-        """
+        """Contact half-width a at load P.  Symbolic load: the closed inverse of the force law (P(a(P)) = P checked at random points) or the
+        unevaluated P(a) = load, the inversion under ``budget`` (s, default the contact's).  Numeric load and
+        parameters: the number (30 digits), searched under ``budget`` (default :data:`~.equilibria.SEARCH_BUDGET`)."""
         load = to_sympy(load)
         if load.is_number:
             if load <= 0:
@@ -294,12 +276,12 @@ class LineContact(Contact):
         cache = self._caches()
         key = ("half_width", load)
         if key not in cache or (not cache[key].closed_form and cache[key].attempts):
-            cache[key] = self._derive_half_width(load, budget)
+            cache[key] = derive_half_width(self, load, budget)
         return cache[key]
 
-    def _derive_half_width(self, load=S.P, budget=None) -> Derivation:
+    def _derive_half_width(self, load=S.P) -> Derivation:
         """a(P), see :func:`~.inverse.derive_half_width`."""
-        return derive_half_width(self, load, budget)
+        return derive_half_width(self, load)
 
     # --------------------------------------------------------------- other forms
     def adhesive(self, work_of_adhesion=S.gamma):
@@ -347,3 +329,14 @@ class LineContact(Contact):
 
     def report(self, quantities=("force", "pressure", "gap")) -> str:
         return super().report(quantities)
+
+
+def _direct_pressure(prof):
+    """(reference, notes) of the pressure of a smooth profile without closed
+    force law: one quadrature of the profile (:func:`~linecontact_sym.method.transforms.pressure_direct_quad`)."""
+    def reference(vals, dps):
+        fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x)}
+        with workdps(dps + 10):
+            return T.pressure_direct_quad(T.NumericProfile(prof, fixed).f1, vals, dps)
+    return reference, ("numbers by one quadrature from the profile (the bounded inversion of the punch equation, "
+                       "transforms.pressure_direct_quad), not Eq. (12) over the quadrature force law",)
