@@ -181,9 +181,6 @@ def cmd_derive(args):
         registry = type(ad).quantities()
         todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
                  if q in quantities or (args.quantities is None and q != "pull_off_force")]
-    if getattr(args, "maugis_dugdale", False):
-        md = c.maugis_dugdale()
-        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("zone_force", "cohesive_gap", "pressure")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -303,8 +300,7 @@ def cmd_model(args):
     missing = [s.name for s in md.variables if s.name not in values]
     if missing:
         raise LineContactError(f"model needs values for {', '.join(missing)} (--set NAME=VALUE)")
-    ch = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values)
-    po = md.pull_off_at(args.dps, **values)
+    ch, po = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values), md.pull_off_at(args.dps, **values)
     out = {"profile": str(prof), "set": {k: str(v) for k, v in values.items()}, "model": ch.model,
            "maugis_parameter": mpmath.nstr(ch.maugis_parameter, args.dps),
            "pull_off_jkr": mpmath.nstr(ch.jkr, args.dps), "pull_off_md": mpmath.nstr(ch.md, args.dps),
@@ -448,9 +444,6 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
                     "force, pressure, P_adh, a at pull-off, or those of --quantities")
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
-    pd.add_argument("--maugis-dugdale", dest="maugis_dugdale", action="store_true",
-                    help="also the Maugis-Dugdale conditions: P(a, c_D), the gap at c_D (= gamma/sigma_0), "
-                         "the pressure (the same as --adhesion --law maugis_dugdale's conditions)")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")

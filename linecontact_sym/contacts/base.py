@@ -33,11 +33,11 @@ from ..core import symbols as S
 from ..core.conversion import point_value
 from ..core.precision import checked_dps, serialized
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
-from ..method.derivation import Derivation
+from ..method.derivation import Derivation, timing
 from ..numeric.special import NUMPY_LOGIC
 from ..parsing import to_sympy
 from ..method.verification import holds
-from .domain import DomainValues, _abs, _is_array, _x_domain
+from .domain import DomainValues, elementwise_abs, is_array, x_domain
 
 #: every contact class, by its ``kind``
 CONTACT_KINDS: dict = {}
@@ -182,7 +182,8 @@ class Contact:
         if name not in cache:
             with serialized():   # symbolic work changes mpmath's precision (core.precision)
                 if name not in cache:
-                    cache[name] = getattr(self, "_derive_" + name)()
+                    with timing():
+                        cache[name] = getattr(self, "_derive_" + name)()
         return cache[name]
 
     def _value(self, name: str):
@@ -218,12 +219,12 @@ class Contact:
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
         self._check_admissible(vals)
         out = DomainValues(vals)
-        out.mark(*_x_domain(name, q.domain, vals, values))
+        out.mark(*x_domain(name, q.domain, vals, values))
         if conds and set(known) <= set(vals):
             try:
                 r = cond_fn(*[_as_float_array(vals[k]) for k in known])
-                ok = True if _is_array(r) else bool(r)
-                if _is_array(r):
+                ok = True if is_array(r) else bool(r)
+                if is_array(r):
                     out.mark(~np.asarray(r, dtype=bool), f"{', '.join(map(str, conds))} fails")
             except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
                 ok = holds(conds, {known[k]: v for k, v in vals.items()}) if not any(
@@ -387,8 +388,19 @@ class Contact:
 
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
-#: mirrored, f(-x) = f(x)) or 0 (gamma = 0: the non-adhesive limit)
-_ANY_SIGN, _MAY_BE_ZERO = {"x"}, {"gamma"}
+#: mirrored, f(-x) = f(x))
+_ANY_SIGN = {"x"}
+
+
+def may_be_zero(name: str) -> bool:
+    """Is ``name`` (a symbol declared positive) allowed the value 0?  The
+    symbols of a registered cohesive law's parameters of domain
+    'nonnegative' are (JKR's gamma = 0: the non-adhesive limit)."""
+    for cls in CONTACT_KINDS.values():
+        for p in getattr(getattr(cls, "law_class", None), "parameters", ()):
+            if p.domain == "nonnegative" and p.symbol.name == name:
+                return True
+    return False
 
 
 def _positive_required(name, sym):
@@ -405,7 +417,7 @@ def _checked_value(name, v, sym):
     if type(v) in (float, int):  # the common, fast case
         if not math.isfinite(v):
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
-        if _positive_required(name, sym) and not v > 0 and not (name in _MAY_BE_ZERO and v == 0):
+        if _positive_required(name, sym) and not v > 0 and not (v == 0 and may_be_zero(name)):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
         return v
@@ -416,7 +428,7 @@ def _checked_value(name, v, sym):
         arr = arr.astype(float)
         if not np.all(np.isfinite(arr)):
             raise DomainError(f"{name} = {v!r}: values must be finite")
-        if _positive_required(name, sym) and np.any(arr <= 0) and not (name in _MAY_BE_ZERO and np.all(arr >= 0)):
+        if _positive_required(name, sym) and np.any(arr <= 0) and not (np.all(arr >= 0) and may_be_zero(name)):
             raise DomainError(f"{name} must be positive, got {v!r}")
         return arr
     if v is None or isinstance(v, bool):
@@ -435,7 +447,7 @@ def _checked_value(name, v, sym):
         if val.is_real is None and abs(sp.im(sp.N(val, 30))) > 0:
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
     if _positive_required(name, sym) and not val.is_positive:
-        if not (name in _MAY_BE_ZERO and val.is_zero):
+        if not (val.is_zero and may_be_zero(name)):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
     return val
@@ -454,7 +466,7 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
     known, positive, nonneg, domain, cond_names, cond_fn, adm = plan
     for k, v in values.items():
         if type(v) not in (float, int) or k not in known or not math.isfinite(v) or \
-                (k in positive and not v > 0 and not (k in _MAY_BE_ZERO and v == 0)) or \
+                (k in positive and not v > 0 and not (v == 0 and may_be_zero(k))) or \
                 (k in nonneg and v < 0):
             return self.check_domain(quantity, values)
     vals = dict(values)

@@ -38,15 +38,15 @@ class DomainValues(dict):
                           DomainWarning, stacklevel=4)
 
 
-def _x_domain(name, domain, vals, values):
+def x_domain(name, domain, vals, values):
     """x against a for a quantity defined inside or outside the contact: a
     scalar on the wrong side raises; for arrays, ``(mask of the points on the
     wrong side, why)``; replaces x by |x| in ``vals``.  ``(None, '')`` else."""
     if "x" not in vals or "a" not in vals or domain == "any":
         return None, ""
-    xv, av = _abs(vals["x"]), vals["a"]
+    xv, av = elementwise_abs(vals["x"]), vals["a"]
     bad = xv > av if domain == "inside" else xv < av
-    if np.any(bad) and not _is_array(bad):
+    if np.any(bad) and not is_array(bad):
         if domain == "inside":
             raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
                               f"the {name} is defined inside (use the gap outside)")
@@ -54,15 +54,15 @@ def _x_domain(name, domain, vals, values):
                           f"the {name} is defined outside (zero inside)")
     vals["x"] = xv
     sign = ">" if domain == "inside" else "<"
-    return (bad if _is_array(bad) else None), f"|x| {sign} a, the {name} is defined {domain} the contact"
+    return (bad if is_array(bad) else None), f"|x| {sign} a, the {name} is defined {domain} the contact"
 
 
-def _is_array(v):
+def is_array(v):
     return isinstance(v, np.ndarray) and v.ndim > 0
 
 
-def _abs(v):
+def elementwise_abs(v):
     return np.abs(v) if isinstance(v, np.ndarray) else abs(v)
 
 
-__all__ = ["DomainValues"]
+__all__ = ["DomainValues", "x_domain", "is_array", "elementwise_abs"]

@@ -29,6 +29,8 @@ of its own kind whose quantities are the generic ones plus the law's.
 """
 from __future__ import annotations
 
+import sys
+
 import sympy as sp
 
 from ...core import symbols as S
@@ -381,7 +383,12 @@ def register_law(law_class, contact_class=None):
         ns = {"kind": law_class.kind, "law_class": law_class, "__doc__": law_class.__doc__,
               **law_class.quantities,
               **{f"_derive_{q}": _deriver(q) for q in law_class.quantities}}
-        contact_class = type(f"{law_class.__name__}Contact", (AdhesiveContact,), ns)
+        name = f"{law_class.__name__}Contact"
+        contact_class = type(name, (AdhesiveContact,), ns)
+        # pickled by reference like a hand-written class: an attribute of the law's module
+        contact_class.__module__ = law_class.__module__
+        contact_class.__qualname__ = name
+        setattr(sys.modules[law_class.__module__], name, contact_class)
     LAWS[law_class.name] = contact_class
     return contact_class
 

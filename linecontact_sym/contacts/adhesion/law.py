@@ -163,7 +163,7 @@ class CohesiveLaw:
         a :class:`DomainError` when one stays symbolic."""
         out = {}
         for name, v in self.values.items():
-            n = sp.sympify(v).xreplace(values)
+            n = v.xreplace(values)
             if not n.is_number:
                 raise DomainError(f"{name} = {v} needs a value")
             out[name] = n

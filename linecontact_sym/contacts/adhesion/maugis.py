@@ -120,8 +120,9 @@ class MaugisDugdale(CohesiveLaw):
 def _numeric(ad, name, expr, fn, what, args):
     from .pull_off import NumericDerivation
     step = Step("numeric", expr, (), (what,))
-    return NumericDerivation(name, expr, False, step, (), None, 0.0, (what,),
-                             lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps), args + ad.variables)
+    return NumericDerivation(name, expr=expr, closed_form=False, step=step, seconds=0.0, notes=(what,),
+                             reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
+                             variables=args + ad.variables)
 
 
 class MaugisDugdaleContact(ContactOn):
@@ -138,10 +139,10 @@ class MaugisDugdaleContact(ContactOn):
 
     force = Quantity("P(a)", "", "load per unit length at the half-width a, c_D(a) solved from the gap "
                      "condition (negative = tensile); numeric: its expression is the two conditions",
-                     latex=r"P_{\mathrm{MD}}(a)", unit="N/m")
+                     aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a)", unit="N/m")
     zone_force = Quantity("P(a, c_D)", "bounded pressure", "load per unit length P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2) "
                           "at the half-widths a and c_D (negative = tensile)", arguments=("a", "c_D"),
-                          aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})", unit="N/m")
+                          aliases=("md_zone_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})", unit="N/m")
     cohesive_gap = Quantity("g(c_D; a)", "Dugdale gap", "surface separation at the end of the cohesive zone; "
                             "equals h0 = w/sigma_0 at equilibrium", arguments=("a", "c_D"),
                             aliases=("gap_at_c",), latex=r"g(c_{\mathrm{D}})", unit="m")
@@ -261,8 +262,9 @@ class MaugisDugdaleContact(ContactOn):
                 from ...core.errors import VerificationError
                 raise VerificationError(f"{name} of the Maugis-Dugdale contact of {self.profile.name!r}: {rec}")
         step = Step("maugis_dugdale", expr, tuple(conditions), tuple(steps))
-        return Derivation(name, expr, closed, step, tuple(conditions), rec, time.perf_counter() - t0,
-                          tuple(steps), reference, (S.a, S.c_D) + self.variables)
+        return Derivation(name, expr=expr, closed_form=closed, step=step, conditions=tuple(conditions),
+                          verification=rec, notes=tuple(steps), reference=reference,
+                          variables=(S.a, S.c_D) + self.variables)
 
     def _derive_force(self):
         return self.law.derive_force(self)
@@ -316,8 +318,10 @@ class MaugisDugdaleContact(ContactOn):
         from .pull_off import NumericDerivation
         stat = sp.Function(name)(*self.variables)     # a number of the variables, no closed form
         step = Step("numeric", stat, (), (what,))
-        return NumericDerivation(name, stat, False, step, (), None, 0.0, (what, DISPLACEMENT_CONTROL),
-                                 lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps), self.variables)
+        return NumericDerivation(name, expr=stat, closed_form=False, step=step, seconds=0.0,
+                                 notes=(what, DISPLACEMENT_CONTROL),
+                                 reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
+                                 variables=self.variables)
 
     def _derive_pull_off_force(self):
         return self._numeric_derivation("pull_off_force", lambda v, d: self.pull_off_at(d, **v).force,

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import dataclasses
 import numbers
-import time
 
 import mpmath
 import sympy as sp
@@ -109,10 +108,10 @@ class LineContact(Contact):
     def _sampler(self, domain="any"):
         return point_sampler(self.profile, domain)
 
-    def _derive(self, quantity, problem, reference, fallback, domain, notes=(), t0=None):
+    def _derive(self, quantity, problem, reference, fallback, domain, notes=()):
         d = derive(quantity, problem, reference=reference, sampler=self._sampler(domain), fallback=fallback,
                    budget=self.budget, check=self.verify, points=self.points, notes=notes,
-                   variables=(S.a,) + (() if domain == "any" else (S.x,)) + self.variables, t0=t0)
+                   variables=(S.a,) + (() if domain == "any" else (S.x,)) + self.variables)
         return self._restricted(d)
 
     def _restricted(self, d: Derivation) -> Derivation:
@@ -183,7 +182,6 @@ class LineContact(Contact):
         return law.dP, law.breaks()
 
     def _derive_pressure(self) -> Derivation:
-        t0 = time.perf_counter()
         fd = self.derivation("force")
 
         def reference(vals, dps):
@@ -196,13 +194,13 @@ class LineContact(Contact):
             notes = ()
             if not self.profile.is_piecewise:   # one quadrature instead of Eq. (12) over a quadrature law
                 reference, notes = _direct_pressure(self.profile)
-            return Derivation("pressure", fallback, False, fallback_step("force law has no closed form"), (),
-                              None, time.perf_counter() - t0, notes, reference, (S.a, S.x) + self.variables)
+            return Derivation("pressure", expr=fallback, closed_form=False,
+                              step=fallback_step("force law has no closed form"), notes=notes, reference=reference,
+                              variables=(S.a, S.x) + self.variables)
         return self._derive("pressure", Problem("pressure", self.profile, fd.expr), reference, fallback,
-                            "inside", t0=t0)
+                            "inside")
 
     def _derive_gap(self) -> Derivation:
-        t0 = time.perf_counter()
         fd = self.derivation("force")
 
         def reference(vals, dps):
@@ -213,44 +211,45 @@ class LineContact(Contact):
                 return T.gap_quad(f, dP, breaks, vals, dps)
         fallback = T.gap_integral(self.profile.expr, fd.expr)
         if not fd.closed_form:
-            return Derivation("gap", fallback, False, fallback_step("force law has no closed form"), (), None,
-                              time.perf_counter() - t0, (), reference, (S.a, S.x) + self.variables)
-        return self._derive("gap", Problem("gap", self.profile, fd.expr), reference, fallback, "outside", t0=t0)
+            return Derivation("gap", expr=fallback, closed_form=False,
+                              step=fallback_step("force law has no closed form"), reference=reference,
+                              variables=(S.a, S.x) + self.variables)
+        return self._derive("gap", Problem("gap", self.profile, fd.expr), reference, fallback, "outside")
 
-    def _derive_from_force(self, quantity, make, reference, what, t0):
+    def _derive_from_force(self, quantity, make, reference, what):
         """A quantity built from the force law by ``make(P)`` (an identity),
         verified against an independent ``reference``."""
         fd = self.derivation("force")
         if not fd.closed_form:
-            return Derivation(quantity, make(fd.expr), False, fallback_step("force law has no closed form"),
-                              (), None, time.perf_counter() - t0, (), reference, (S.a,) + self.variables)
+            return Derivation(quantity, expr=make(fd.expr), closed_form=False,
+                              step=fallback_step("force law has no closed form"), reference=reference,
+                              variables=(S.a,) + self.variables)
         expr = sp.simplify(make(fd.expr))
         rec = verify(expr, reference, self._sampler(), fd.conditions, n_points=self.points,
                      reference_name=what) if self.verify else None
         if rec is not None and not rec.passed:
             note = f"closed form FAILED verification ({rec.min_digits:.1f} digits); returned unevaluated: {expr}"
-            return Derivation(quantity, make(T.force_integral(self.profile)), False, fallback_step(), (), rec,
-                              time.perf_counter() - t0, (note,), reference, (S.a,) + self.variables)
+            return Derivation(quantity, expr=make(T.force_integral(self.profile)), closed_form=False,
+                              step=fallback_step(), verification=rec, notes=(note,), reference=reference,
+                              variables=(S.a,) + self.variables)
         step = Step(quantity, expr, fd.conditions, (what,))
-        return Derivation(quantity, expr, True, step, fd.conditions, rec, time.perf_counter() - t0, (),
-                          reference, (S.a,) + self.variables)
+        return Derivation(quantity, expr=expr, closed_form=True, step=step, conditions=fd.conditions, verification=rec,
+                          reference=reference, variables=(S.a,) + self.variables)
 
     def _derive_mean_pressure(self) -> Derivation:
         """P(a)/(2a) of the closed force law, checked against the quadrature of
         Eq. (10*) divided by 2a."""
-        t0 = time.perf_counter()
         prof = self.profile
 
         def reference(vals, dps):
             with workdps(dps + 10):
                 return T.force_quad(prof, vals, dps) / (2 * to_mpf(vals[S.a]))
         return self._derive_from_force("mean_pressure", lambda P: P / (2 * S.a), reference,
-                                       "P(a)/(2a) against the quadrature of Eq. (10*) over 2a", t0)
+                                       "P(a)/(2a) against the quadrature of Eq. (10*) over 2a")
 
     def _derive_stiffness(self) -> Derivation:
         """dP/da of the closed force law, checked against numerical
         differentiation of the quadrature of Eq. (10*)."""
-        t0 = time.perf_counter()
         prof = self.profile
 
         def reference(vals, dps):
@@ -260,7 +259,7 @@ class LineContact(Contact):
                 # the quadrature runs above diff's own (raised) working precision
                 return mpmath.diff(lambda u: T.force_quad(prof, {**fixed, S.a: u}, mpmath.mp.dps), A)
         return self._derive_from_force("stiffness", lambda P: sp.diff(P, S.a), reference,
-                                       "dP/da against mpmath.diff of the quadrature of Eq. (10*)", t0)
+                                       "dP/da against mpmath.diff of the quadrature of Eq. (10*)")
 
     # --------------------------------------------------------------- half-width
     def _half_width(self, load=S.P, budget=None, **values):
@@ -291,10 +290,8 @@ class LineContact(Contact):
         return AdhesiveLineContact(self, work_of_adhesion)
 
     def maugis_dugdale(self, w=S.gamma, sigma0=S.sigma_0):
-        """The Maugis-Dugdale adhesive contact (cohesive tension sigma0 over
-        a range h0 = w/sigma0), see :mod:`~linecontact_sym.contacts.adhesion.maugis`."""
-        from ..adhesion.maugis import MaugisDugdaleContact
-        return MaugisDugdaleContact(self, w, sigma0)
+        """The Maugis-Dugdale contact (tension sigma0 over h0 = w/sigma0), see :mod:`..adhesion.maugis`."""
+        return self.adhesion("maugis_dugdale", w, sigma0)
 
     def adhesion(self, law: str = "jkr", *args, **params):
         """The adhesive form of this contact under a registered cohesive law

@@ -5,7 +5,6 @@ potentials where they are elementary, Popov's punch superposition or the
 Cauchy quadrature otherwise).  Functions of the field object ``sf``."""
 from __future__ import annotations
 
-import time
 
 import mpmath
 import numpy as np
@@ -13,7 +12,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.conversion import nsimplify_basic, rational, real_mpf, to_mpf
-from ...method.derivation import Derivation, fallback_step, remembered_many
+from ...method.derivation import Derivation, fallback_step, remembered_many, timed
 from ...method.rules import Step
 from ...method.verification import verify_many
 from . import field as F
@@ -154,8 +153,8 @@ def combine_reference(ref, make):
     return reference
 
 
+@timed
 def derive_components(sf) -> dict:
-    t0 = time.perf_counter()
     G = sf.derivation("cauchy_transform").expr
     H = sf.tangential_transform()
     exprs = dict(zip(("sigma_x", "sigma_z", "tau_xz"), symbolic_stresses(G, H)))
@@ -177,8 +176,8 @@ def derive_components(sf) -> dict:
         ref = component_reference(full, k)
         step = Step(f"kolosov({G_rule})", e, (), ("Kolosov-Muskhelishvili formulas from G and H",)) if closed \
             else fallback_step("no closed form of the potentials: Flamant quadrature")
-        out[k] = Derivation(k, e, closed, step, (), recs.get(k), time.perf_counter() - t0, tuple(notes), ref,
-                            (S.a, S.x, S.z) + sf.variables)
+        out[k] = Derivation(k, expr=e, closed_form=closed, step=step, verification=recs.get(k), notes=tuple(notes),
+                            reference=ref, variables=(S.a, S.x, S.z) + sf.variables)
     return out
 
 

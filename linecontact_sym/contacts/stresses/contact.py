@@ -20,7 +20,6 @@ quadrature of the Flamant integrals of p and q (:mod:`~linecontact_sym.contacts.
 """
 from __future__ import annotations
 
-import time
 
 import numpy as np
 import sympy as sp
@@ -28,7 +27,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
 from ...parsing import user_value
-from ...method.derivation import Derivation, fallback_step, values_by_name
+from ...method.derivation import Derivation, fallback_step, values_by_name, timed
 from ...method.rules import Step
 from . import build as B
 from . import extrema as X
@@ -142,16 +141,15 @@ class StressField(ContactOn):
         return B.remembered(self, "cauchy_transform", lambda: (self._cauchy_transform(),), lambda d: d)[0]
 
     def _cauchy_transform(self) -> Derivation:
-        t0 = time.perf_counter()
         D = self._density()
         step, attempts = cauchy_transform(D, self.contact.budget)
         if step is None:
             expr = punch_integral(D.subs(S.a, t))
-            return Derivation("cauchy_transform", expr, False, fallback_step(), (), None, time.perf_counter() - t0,
-                              tuple(f"{r}: {w}" for r, w in attempts), None, (S.a, S.zeta) + self.variables,
-                              tuple(attempts))
-        return Derivation("cauchy_transform", step.expr, True, step, step.conditions, None,
-                          time.perf_counter() - t0, (), None, (S.a, S.zeta) + self.variables, tuple(attempts))
+            return Derivation("cauchy_transform", expr=expr, closed_form=False, step=fallback_step(),
+                              notes=tuple(f"{r}: {w}" for r, w in attempts), variables=(S.a, S.zeta) + self.variables,
+                              attempts=tuple(attempts))
+        return Derivation("cauchy_transform", expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
+                          variables=(S.a, S.zeta) + self.variables, attempts=tuple(attempts))
 
     def tangential_transform(self):
         """H(zeta) = int q(s)/(zeta - s) ds of the tangential traction (an
@@ -192,8 +190,9 @@ class StressField(ContactOn):
         d0 = c["sigma_x"]
         step = Step(name, expr, d0.conditions, (note,)) if d0.closed_form else fallback_step(note)
         extra = self.nu_symbols if name in ("sigma_y", "von_mises", "tresca") else ()
-        return Derivation(name, expr, d0.closed_form, step, d0.conditions, d0.verification, d0.seconds, (note,),
-                          B.combine_reference(d0.reference, make), d0.variables + extra)
+        return Derivation(name, expr=expr, closed_form=d0.closed_form, step=step, conditions=d0.conditions,
+                          verification=d0.verification, seconds=d0.seconds, notes=(note,),
+                          reference=B.combine_reference(d0.reference, make), variables=d0.variables + extra)
 
     def _derive_sigma_y(self):
         return self._from_components("sigma_y", lambda sx, sz, txz: self.nu * (sx + sz), "plane strain")
@@ -487,8 +486,8 @@ def _axis_closed_form(sf):
     return cache["_axis"]
 
 
+@timed
 def _derive_maximum(sf, name):
-    t0 = time.perf_counter()
     depth = name.endswith("_depth")
     criterion = _MAX[name.replace("_depth", "")]
     variables = (S.a,) + sf.variables + (sf.nu_symbols if criterion != "principal_shear" else ())
@@ -503,11 +502,11 @@ def _derive_maximum(sf, name):
             rec = _check_maximum(sf, expr, reference, variables)
             if rec.passed:
                 step = Step("axis_stationary_point", expr, (), ("root of d tau_1/dz on the axis x = 0 (sympy.solve)",))
-                return Derivation(name, expr, True, step, (), rec, time.perf_counter() - t0, (), reference,
-                                  variables)
+                return Derivation(name, expr=expr, closed_form=True, step=step, verification=rec, reference=reference,
+                                  variables=variables)
     expr = sp.Function(name)(*variables)
     step = fallback_step("verified numeric maximum: grid, Nelder-Mead, checked by a root of the gradient")
-    return Derivation(name, expr, False, step, (), None, time.perf_counter() - t0, (), reference, variables)
+    return Derivation(name, expr=expr, closed_form=False, step=step, reference=reference, variables=variables)
 
 
 def _check_maximum(sf, expr, reference, variables):
@@ -530,8 +529,8 @@ def _check_maximum(sf, expr, reference, variables):
                               "mpmath root of the gradient", required=12)
 
 
+@timed
 def _derive_critical(sf, name, criterion):
-    t0 = time.perf_counter()
     variables = (S.a,) + tuple(v for v in sf.variables if v != S.mu) + \
         (sf.nu_symbols if criterion != "principal_shear" else ())
 
@@ -542,8 +541,8 @@ def _derive_critical(sf, name, criterion):
         raise LineContactError(f"{name} is defined for a sliding contact (tangential='sliding')")
     step = fallback_step("Brent root of (surface max - interior max) in mu, checked by bisection on "
                          "'the maximum is on the surface'")
-    return Derivation(name, sp.Function(name)(*variables), False, step, (), None, time.perf_counter() - t0, (),
-                      reference, variables)
+    return Derivation(name, expr=sp.Function(name)(*variables), closed_form=False, step=step, reference=reference,
+                      variables=variables)
 
 class FieldFunction:
     """What :meth:`StressContact.to_numeric` returns for a field component:

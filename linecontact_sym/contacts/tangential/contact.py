@@ -85,7 +85,6 @@ direct boundary-element solution with a Coulomb active set).
 """
 from __future__ import annotations
 
-import time
 
 import sympy as sp
 
@@ -258,7 +257,7 @@ class TangentialLineContact(ContactOn):
     def _variables(self, *args):
         return tuple(args) + self.variables
 
-    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, t0, sampler,
+    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, sampler,
                 needs=("pressure",)):
         """Verify a closed form against ``check`` (30 digits at random points);
         a failed check or no closed form leaves a numeric derivation evaluated
@@ -279,12 +278,11 @@ class TangentialLineContact(ContactOn):
                 closed = False
         step = Step("cattaneo_mindlin", expr, conditions, (STEP_NOTES[quantity],)) if closed \
             else fallback_step("the normal solution it is built from has no closed form here")
-        return Derivation(quantity, expr, closed, step, conditions if closed else (), rec,
-                          time.perf_counter() - t0, notes + (states.CONDITIONS,),
-                          check if closed else value, variables)
+        return Derivation(quantity, expr=expr, closed_form=closed, step=step, conditions=conditions if closed else (),
+                          verification=rec, notes=notes + (states.CONDITIONS,), reference=check if closed else value,
+                          variables=variables)
 
     def _combination(self, quantity, what, terms, domain):
-        t0 = time.perf_counter()
         expr = sum(k * self._monotone(what, C) for k, C in terms)
         if what == "force":
             expr = sp.factor_terms(expr)
@@ -297,7 +295,7 @@ class TangentialLineContact(ContactOn):
             conds += (sp.Lt(S.x, S.a),)
         check, value, how = states.references(self, what, terms)
         args = (S.a,) + tuple(C for _, C in terms) + ((S.x,) if domain == "inside" else ())
-        return self._finish(quantity, expr, closed, conds, check, value, how, self._variables(*args), t0,
+        return self._finish(quantity, expr, closed, conds, check, value, how, self._variables(*args),
                             self._sampler("slip" if what == "slip" else domain, len(terms) > 1))
 
     # ----------------------------------------------------------- derivations
@@ -332,13 +330,12 @@ class TangentialLineContact(ContactOn):
         return self._cache["_energy"]
 
     def _derive_dissipated_energy(self):
-        t0 = time.perf_counter()
         W, _, closed = self._energy_parts()
         conds = tuple(self._normal("force").conditions) + (sp.Lt(S.c_s, S.a),) \
             + ((sp.Lt(self.c0, S.c_s),) if self.c0 != 0 else ())
         check, value, how = states.energy_references(self)
         return self._finish("dissipated_energy", W, closed, conds, check, value, how,
-                            self._variables(S.a, S.c_s), t0, self._sampler("any"), ("pressure", "gap"))
+                            self._variables(S.a, S.c_s), self._sampler("any"), ("pressure", "gap"))
 
     # ----------------------------------------------------------- stick zone
     def _stick_half_width(self, force=S.Q, budget=None, **values):
