@@ -17,7 +17,11 @@ from ..core.conversion import exact_number, nsimplify_basic
 from ..core.errors import DomainError
 from ..core.printing import ELLIPTIC_CONVENTION, ELLIPTIC_CONVENTION_TEX
 from ..parsing import to_sympy
-from ..views.latex import booktabs_table, fit_math, latex_escape, longtable, standalone, text_to_latex, to_latex
+from ..views.latex import (booktabs_table, fit_math, latex_escape, longtable, standalone, text_to_latex, to_latex,
+                           wrapped_latex)
+
+#: printed characters per line of a formula in the reports (verdicts; the claims table's column)
+FORMULA_WIDTH, TABLE_FORMULA_WIDTH = 90, 48
 
 
 
@@ -148,8 +152,8 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
         out.append("")
         if c.forms:
             for f in c.forms:
-                out.append(f"- printed: `{f.text}`  ")
-                out.append(f"  $${to_latex(f.shown)}$$")
+                out.append(f"- printed: `{f.text}`")
+                out += ["", f"  $${wrapped_latex(f.shown, FORMULA_WIDTH)}$$", ""]
         if c.profiles:
             out.append("- profile(s): " + ", ".join(f"`{p}`" for p, _ in c.profiles))
         if c.assumptions:
@@ -160,9 +164,10 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
             if d is not None and d.expr is not None and not c.values:
                 who = f" for `{t.profile_text}`" if c.general else ""
                 out.append(f"- derived{who}: `{d.expr}` ({d.method})")
+                out += ["", f"  $${wrapped_latex(d.expr, FORMULA_WIDTH)}$$", ""]
             for f in t.forms:
                 if f.symbolic:
-                    out.append(f"  - `{f.form.text[:60]}`: symbolic: {f.symbolic}")
+                    out.append(f"  - `{f.form.text}`: symbolic: {f.symbolic}")
                 if f.note:
                     out.append(f"  - {md_escape(f.note)}")
         for line in r.details:
@@ -238,7 +243,7 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
     rows = []
     for r in res:
         c = r.claim
-        formula = (fit_math(to_latex(c.formula.shown)) if c.forms
+        formula = (fit_math(wrapped_latex(c.formula.shown, TABLE_FORMULA_WIDTH)) if c.forms
                    else ", ".join(f"${to_latex(v)}$" for _, v in c.values))
         rows.append([latex_escape(c.label), formula, _STATUS_TEX[r.status], digits_text(r), f"{r.seconds:.1f}"])
     table = longtable(["Claim", "Formula as printed", "Status", "Digits", "Time (s)"], rows,
@@ -254,7 +259,7 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
                 + _status_sentence(r)]
         if len(c.forms) > 1:
             for f in c.forms:
-                item.append("Printed form:\n" + _centred(fit_math(to_latex(f.shown))))
+                item.append("Printed form:\n" + _centred(fit_math(wrapped_latex(f.shown, FORMULA_WIDTH))))
         if c.profiles and c.general:
             item.append("Test profiles: " + ", ".join(f"${to_latex(p)}$" for _, p in c.profiles) + ".")
         if c.assumptions:
@@ -263,7 +268,7 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
             d = t.derived
             if d is not None and d.expr is not None and not c.values:
                 who = f" for $f(x) = {to_latex(d.profile)}$" if c.general and d.profile is not None else ""
-                item.append(f"Derived{who}:\n" + _centred(fit_math(to_latex(d.expr))))
+                item.append(f"Derived{who}:\n" + _centred(fit_math(wrapped_latex(d.expr, FORMULA_WIDTH))))
             for f in t.forms:
                 if f.diagnosis is not None:
                     item.append(r"\emph{Diagnosis:} " + text_to_latex(f.diagnosis.message) + ".")

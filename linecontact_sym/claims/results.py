@@ -40,6 +40,20 @@ def fmt_num(v) -> str:
     return str(v)
 
 
+#: the digits a claim must reproduce (fewer agreeing digits at a point: that comparison fails)
+REQUIRED_DIGITS = 30
+
+
+def _fails(c) -> bool:
+    """Fewer agreeing digits than the comparison must show (its own resolution may ask fewer)."""
+    need = c.required(REQUIRED_DIGITS) if hasattr(c, "required") else REQUIRED_DIGITS
+    return c.digits < need
+
+
+def _compared(c) -> str:
+    return f"{c.what}: printed {fmt_mp(c.printed)}, derived {fmt_mp(c.target)} ({c.digits:.1f} digits agree)"
+
+
 def fmt_mp(v, digits: int = 20) -> str:
     """An mpf for a message (``-`` for None)."""
     if v is None:
@@ -65,9 +79,12 @@ class PointResult:
     def describe(self) -> str:
         pt = ", ".join(f"{k} = {fmt_num(v)}" for k, v in sorted(self.values.items(), key=lambda kv: kv[0].name))
         if self.status == "fail":
-            worst = min(self.comparisons, key=lambda c: c.digits)
-            return (f"at {pt}: {worst.what}: printed {fmt_mp(worst.printed)}, derived {fmt_mp(worst.target)} "
-                    f"({worst.digits:.1f} digits agree)")
+            # the quantity itself first (a pressure's value, not the resultant of a physics
+            # check), then the other checks that failed at this point
+            value = [c for c in self.comparisons if c.what == "value" and _fails(c)]
+            head = value[0] if value else min(self.comparisons, key=lambda c: c.digits)
+            also = [c for c in self.comparisons if c is not head and _fails(c)]
+            return f"at {pt}: " + "; also ".join(_compared(c) for c in [head] + also)
         return f"at {pt}: {self.reason}"
 
     def to_dict(self):
@@ -244,7 +261,7 @@ def markdown_summary(result) -> str:
     for r in res:
         verdict = r.verdict.split(": ", 1)[1] if ": " in r.verdict and r.status != HOLDS else ""
         out.append(f"| {r.label} | {md_escape(r.claim.title)} | {SHORT[r.status]} | {digits_text(r)} | "
-                   f"{r.seconds:.1f} s | {md_escape(verdict[:300])} |")
+                   f"{r.seconds:.1f} s | {md_escape(verdict)} |")
     return "\n".join(out)
 
 

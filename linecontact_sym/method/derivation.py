@@ -26,7 +26,7 @@ from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, verify
-from ..core.precision import serialized, workdps
+from ..core.precision import held, serialized, workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -141,22 +141,51 @@ class Derivation:
     def evalf(self, dps: int = 30, **values):
         """Evaluate at a point (keyword arguments by symbol name) with ``dps``
         digits: the closed form where there is one, else the reference
-        (high-precision quadrature of the defining integral)."""
+        (high-precision quadrature of the defining integral).  The mpf
+        returned prints its ``dps`` digits (:class:`~linecontact_sym.core.precision.HeldDigits`)."""
         vals = values_by_name(self.variables_all, values)
         if self.closed_form:
             with workdps(dps):
                 v = sp.N(self.expr.xreplace(float_values(vals, dps + 20)), dps + 5)
-                return real_mpf(v)
+                return held(real_mpf(v), dps)
         if self.reference is None:
             raise LineContactError(f"this {self.quantity} derivation has no reference quadrature (it was "
                                    f"unpickled, or made without one): evaluate it through its contact")
-        return self.reference(vals, dps)
+        return held(self.reference(vals, dps), dps)
 
     @property
     def variables_all(self):
         syms = set(self.variables) if (self.variables and not self.closed_form) \
             else self.expr.free_symbols | set(self.variables)
         return tuple(sorted(syms, key=lambda s: s.name))
+
+    @property
+    def status(self) -> str:
+        """One line: closed form or not, verified or not, with the numbers
+        (points, digits) -- what a reader needs before trusting ``expr``."""
+        v = self.verification
+        if not self.closed_form:
+            what = "no closed form: unevaluated integral, evaluated by quadrature"
+        elif v is None:
+            what = "closed form, not verified"
+        elif not v.points:
+            what = "closed form, NOT verified (0 points)"
+        elif not v.passed:
+            what = f"closed form, FAILED verification ({v.min_digits:.1f} digits)"
+        else:
+            what = f"closed form, verified at {len(v.points)} points (>= {v.min_digits:.0f} digits)"
+        return f"{what}; rule {self.rule}"
+
+    def _timing(self) -> str:
+        where = {"memory": ", from this session's cache", "disk": ", from the disk cache"}.get(self.cached, "")
+        return f"derived in {self.seconds:.2f} s{where}"
+
+    def __repr__(self):
+        """A few lines: the formula, its status and timing (the whole record
+        is :meth:`summary`; the fields are attributes)."""
+        cond = f"\n  holds for: {', '.join(map(str, self.conditions))}" if self.conditions else ""
+        return (f"<Derivation {self.quantity} = {self.expr}\n  {self.status}{cond}\n"
+                f"  {self._timing()}>")
 
     def summary(self) -> str:
         lines = [f"{self.quantity}: {self.expr}",
@@ -165,7 +194,7 @@ class Derivation:
             lines.append("  holds for: " + ", ".join(map(str, self.conditions)))
         if self.verification is not None:
             lines.append("  " + str(self.verification))
-        lines.append(f"  derived in {self.seconds:.2f} s")
+        lines.append("  " + self._timing())
         lines += ["  note: " + n for n in self.notes]
         return "\n".join(lines)
 
@@ -174,8 +203,21 @@ class Derivation:
         return self.expr
 
     def _repr_latex_(self):
+        """Jupyter: ``quantity = formula`` and the status, in one line of
+        LaTeX (math mode only: MathJax renders it as it is)."""
         from ..core.printing import to_latex
-        return f"$\\displaystyle {to_latex(self.expr)}$"
+        v = self.verification
+        if not self.closed_form:
+            status = r"\text{no closed form (quadrature)}"
+        elif v is not None and v.passed:
+            status = rf"\text{{verified at {len(v.points)} points, }}\geq {v.min_digits:.0f}\text{{ digits}}"
+        elif v is not None and v.points:
+            status = rf"\text{{FAILED verification, {v.min_digits:.1f} digits}}"
+        else:
+            status = r"\text{not verified}"
+        name = self.quantity.replace("_", r"\_")
+        return (rf"$\displaystyle \mathrm{{{name}}} = {to_latex(self.expr)}"
+                rf"\qquad [{status};\ {self.seconds:.2f}\,\mathrm{{s}}]$")
 
     def __str__(self):
         return self.summary()

@@ -526,14 +526,19 @@ class NumericFunction:
         if self.backend == "mpmath" and any(isinstance(v, (list, tuple, np.ndarray)) for v in kw.values()):
             raise DomainError(f"the mpmath function of {self.derivation.quantity} takes scalars; use "
                               f"backend='numpy' for arrays (or loop over the points)")
+        outside = None
         if self.domain is not None:          # the contact's domain check (raises DomainError)
-            self.domain({**self.params, **kw})
+            outside = getattr(self.domain({**self.params, **kw}), "outside", None)
         if self._fn is None:
             self._fn = compile_callable(self.derivation, self.backend, self.dps, self.params, self.stable)
         try:
-            return self._fn(**kw)
+            out = self._fn(**kw)
         except (ZeroDivisionError, OverflowError) as exc:   # mpmath at a singular point
             raise singular_point(self.derivation.quantity, kw, exc) from None
+        if outside is not None:              # array points outside the domain (a DomainWarning said so)
+            out = np.array(np.broadcast_to(out, np.broadcast_shapes(np.shape(out), outside.shape)), dtype=float)
+            out[np.broadcast_to(outside, out.shape)] = np.nan
+        return out
 
     def __getstate__(self):
         if self.backend == "mpmath" and not self.derivation.closed_form:

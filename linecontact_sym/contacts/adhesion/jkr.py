@@ -117,7 +117,8 @@ class JKR(CohesiveLaw):
     label = "JKR"
     parameters = (Parameter("work_of_adhesion", S.gamma, "nonnegative", "the work of adhesion", GAMMA_RANGE),)
     quantities = {"flat_punch_force": Quantity("Phat(a)", "Eq. (31)", "force of the pulled flat punch "
-                                               "sqrt(2 pi a gamma E*)", aliases=("Phat",), latex=r"\hat{P}(a)")}
+                                               "sqrt(2 pi a gamma E*)", aliases=("Phat",), latex=r"\hat{P}(a)",
+                                               unit="N/m")}
 
     @property
     def gamma(self):

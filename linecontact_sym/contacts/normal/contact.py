@@ -60,17 +60,17 @@ class LineContact(Contact):
     kind = "frictionless"
 
     force = Quantity("P(a)", "Eq. (10*)", "load per unit length at the half-width a (compressive positive)",
-                     arguments=("a",), latex="P(a)")
+                     arguments=("a",), latex="P(a)", unit="N/m")
     pressure = Quantity("p(x; a)", "Eq. (12)", "contact pressure for |x| < a (compressive positive)",
-                        arguments=("a", "x"), domain="inside", latex="p(x)")
+                        arguments=("a", "x"), domain="inside", latex="p(x)", unit="Pa")
     gap = Quantity("g(x; a)", "Eqs. (3)/(5)", "surface separation f(x) - (d - u_z(x)) for |x| > a",
-                   arguments=("a", "x"), domain="outside", latex="g(x)")
+                   arguments=("a", "x"), domain="outside", latex="g(x)", unit="m")
     mean_pressure = Quantity("p_m(a)", "", "mean contact pressure P(a)/(2a)", arguments=("a",),
-                             latex=r"\bar{p}(a)")
+                             latex=r"\bar{p}(a)", unit="Pa")
     stiffness = Quantity("dP/da", "", "contact stiffness: the slope of the force law, load per unit length "
-                         "per unit half-width", arguments=("a",), latex=r"\frac{dP}{da}")
+                         "per unit half-width", arguments=("a",), latex=r"\frac{dP}{da}", unit="N/m**2")
     half_width = Quantity("a(P)", "", "contact half-width at the load P (the inverse of the force law)",
-                          arguments=("P",), method=True, latex="a(P)", nonnegative=("P",))
+                          arguments=("P",), method=True, latex="a(P)", nonnegative=("P",), unit="m")
 
     def __init__(self, profile, params=None, name: str | None = None,
                  budget: float = DEFAULT_BUDGET, verify: bool = True,

@@ -16,7 +16,7 @@ a callable          q(s) vectorised float64 (numeric field only)
 The closed forms go through the Cauchy transform of the pressure, G(zeta) =
 int p(s)/(zeta - s) ds = int_0^a P'(t) (zeta^2 - t^2)^(-1/2) dt (Popov's
 flat punches, :mod:`.kolosov`), and are verified against the mpmath
-quadrature of the Flamant integrals of p and q (:mod:`.reference`).
+quadrature of the Flamant integrals of p and q (:mod:`~linecontact_sym.contacts.stresses.reference`).
 """
 from __future__ import annotations
 
@@ -45,11 +45,11 @@ _MAX = {"max_shear": "principal_shear", "max_von_mises": "von_mises", "max_tresc
 
 def _q(symbol, doc, latex, aliases=()):
     return Quantity(symbol, "Johnson (1985) Eq. (2.23)", doc, arguments=_ARGS, domain="any", latex=latex,
-                    aliases=aliases)
+                    aliases=aliases, unit="Pa")
 
 
-def _mx(symbol, doc, latex, aliases=()):
-    return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases)
+def _mx(symbol, doc, latex, aliases=(), unit="Pa"):
+    return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases, unit=unit)
 
 
 class StressField(ContactOn):
@@ -79,13 +79,13 @@ class StressField(ContactOn):
                 r"\sigma_{\mathrm{T}}")
     cauchy_transform = Quantity("G(zeta; a)", "", "Cauchy transform int p(s)/(zeta - s) ds of the pressure, "
                                 "the complex potential of the normal load", arguments=("a", "zeta"),
-                                latex=r"G(\zeta)")
+                                latex=r"G(\zeta)", unit="Pa")
     max_shear = _mx("max tau_1", "largest principal shear stress in the body", r"\tau_{1,\max}")
-    max_shear_depth = _mx("z(max tau_1)", "depth of the largest principal shear", r"z_{\tau_1}")
+    max_shear_depth = _mx("z(max tau_1)", "depth of the largest principal shear", r"z_{\tau_1}", unit="m")
     max_von_mises = _mx("max sigma_vM", "largest von Mises stress (plane strain, nu)", r"\sigma_{\mathrm{vM},\max}")
-    max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}")
+    max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}", unit="m")
     max_tresca = _mx("max sigma_T", "largest Tresca stress", r"\sigma_{\mathrm{T},\max}")
-    max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}")
+    max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}", unit="m")
 
     # the numeric fields built per parameter point are rebuilt, not pickled
     _transient = ("_cache", "_laws", "_fields")
@@ -287,16 +287,34 @@ class StressField(ContactOn):
             return v, "p_0"
         return fe.mean_pressure, "p_m"
 
-    def _plot_values(self, kw):
+    #: a plot's values where not given: a, E* scale out; nu (von Mises, Tresca, sigma_y) is in the title
+    PLOT_DEFAULTS = {"a": 1.0, "E_star": 1.0, "nu": 0.3}
+
+    def _plot_values(self, kw, quantities):
+        """The values of a plot (popped from ``kw``), :data:`PLOT_DEFAULTS` where not given; the title."""
+        from ...views.contact_plots import profile_label
+        from ...views.stress_plots import LABELS
         names = {q.name for q in (S.a,) + self.variables + self.nu_symbols}
-        return {k: kw.pop(k) for k in list(kw) if k in names}
+        values = {k: kw.pop(k) for k in list(kw) if k in names}
+        said = []
+        for k, v in self.PLOT_DEFAULTS.items():
+            if k in names and k not in values:
+                values[k] = v
+                if k == "nu" and any(q in ("von_mises", "tresca", "sigma_y") for q in quantities):
+                    said.append(rf"$\nu = {v:g}$")
+        what = ", ".join(LABELS.get(q, q) for q in quantities)
+        title = f"{what} under {profile_label(self)}" + (f" ({', '.join(said)})" if said else "")
+        kw.setdefault("title", title)
+        return values
 
     def plot(self, quantity="von_mises", mark_maximum=True, **kw):
         """Contour map of a stress over (x/a, z/a), scaled by the reference
-        pressure, the verified maximum marked; parameters by name, other
-        keywords to :func:`linecontact_sym.views.stress_plots.contour`."""
+        pressure, the verified maximum marked; parameters by name (a, E* and
+        Poisson's ratio default to :data:`PLOT_DEFAULTS`; the profile's
+        parameters are needed), other keywords to
+        :func:`linecontact_sym.views.stress_plots.contour`."""
         from ...views.stress_plots import contour
-        values = self._plot_values(kw)
+        values = self._plot_values(kw, (quantity,))
         scale, label = self.reference_pressure(**values)
         if mark_maximum and quantity in F.CRITERIA:
             m = self.maximum(quantity, **values)
@@ -307,7 +325,7 @@ class StressField(ContactOn):
         """The stresses along the axis x = 0 against z/a:
         :func:`linecontact_sym.views.stress_plots.axis_profile`."""
         from ...views.stress_plots import axis_profile
-        values = self._plot_values(kw)
+        values = self._plot_values(kw, quantities)
         scale, label = self.reference_pressure(**values)
         return axis_profile(self.field(**values), float(values["a"]), quantities, scale=scale, scale_label=label, **kw)
 
@@ -349,10 +367,10 @@ class SlidingStressField(StressField):
     kind = "sliding_stress"
 
     critical_friction = Quantity("mu_c", "", "the friction coefficient above which the largest principal "
-                                 "shear lies on the surface", arguments=(), latex=r"\mu_c")
+                                 "shear lies on the surface", arguments=(), latex=r"\mu_c", unit="")
     critical_friction_von_mises = Quantity("mu_c,vM", "", "the friction coefficient above which the largest "
                                            "von Mises stress lies on the surface", arguments=(),
-                                           latex=r"\mu_{c,\mathrm{vM}}")
+                                           latex=r"\mu_{c,\mathrm{vM}}", unit="")
 
     def __init__(self, contact, mu=S.mu, nu=S.nu, **kw):
         super().__init__(contact, "sliding", mu, nu, **kw)
