@@ -58,7 +58,8 @@ def numbers():
 
 def digits(got, ref):
     with mpmath.workdps(60):
-        got = mpmath.mpf(got) if not isinstance(got, mpmath.mpf) else got
+        got = mpmath.mpf(got) if not isinstance(got, (mpmath.mpf, np.ndarray)) else \
+            mpmath.mpf(float(got)) if isinstance(got, np.ndarray) else got
         if ref == 0:
             return 60 if got == 0 else float(-mpmath.log10(abs(got)))
         err = abs(got - ref) / abs(ref)
@@ -86,6 +87,7 @@ def cases():
         lambda V: p_ref(0, 1, V), 28
     yield "evaluate_at half_width P", lambda v: c.evaluate_at("half_width", dps=40, P=v, **E1), \
         lambda V: mpmath.sqrt(4 * V / pi), 28
+    yield "half_width(P) method", lambda v: c.half_width(v, **E1), lambda V: mpmath.sqrt(4 * V / pi), 28
     yield "Derivation.evalf force E*", lambda v: c.derivation("force").evalf(dps=40, a=1, R=1, E_star=v), \
         lambda V: pi * V / 4, 28
     yield "evaluate pressure x (auto)", lambda v: c.evaluate("pressure", x=v, a=1, **E1).value, \
@@ -108,6 +110,8 @@ def cases():
         P = lambda A: pi * E * A**2 / (4 * R) - mpmath.sqrt(2 * pi * g * E * A)
         A = (2 * g * R**2 / (pi * E)) ** (mpmath.mpf(1) / 3)
         return P(A)
+    yield "adhesive().at(gamma) closed pull_off_force", \
+        lambda v: sp.N(ad.at(gamma=v, **E1).pull_off_force, 45), pull_ref, 28
     yield "pull_off_at force gamma", lambda v: ad.pull_off_at(dps=30, gamma=v, **E1).force, pull_ref, 28
     yield "pull_off_at force R", lambda v: ad.pull_off_at(dps=30, gamma=1, R=v, E_star=1).force, \
         lambda V: pull_ref(1, V), 28
@@ -141,6 +145,59 @@ def cases():
     yield "stresses maximum a", lambda v: st.maximum(a=v, **E1).value, tau_max, 6
 
 
+def cli_cases():
+    """(label, argv, reference as a 60-digit mpf or a verdict): the command line
+    and a claims file with exact values as text."""
+    import os
+    import tempfile
+    pi = mpmath.pi
+    base = ["--set", "R=1", "E_star=1", "--dps", "40", "--json"]
+    with mpmath.workdps(60):
+        yield "CLI eval pressure x=sqrt(3)/2", ["eval", "x**2/(2*R)", "pressure", "--at", "x=sqrt(3)/2", "a=1"] + base, \
+            mpmath.mpf(1) / 4
+        yield "CLI eval pressure x=pi/8", ["eval", "x**2/(2*R)", "pressure", "--at", "x=pi/8", "a=1"] + base, \
+            mpmath.sqrt(1 - (pi / 8)**2) / 2
+        yield "CLI eval force a=<31 digits>", ["eval", "x**2/(2*R)", "force", "--at", "a=" + D31] + base, \
+            pi * mpmath.mpf(D31)**2 / 4
+        yield "CLI eval half_width P=<31 digits>", ["eval", "x**2/(2*R)", "half_width", "--at", "P=" + D31] + base, \
+            mpmath.sqrt(4 * mpmath.mpf(D31) / pi)
+        yield "CLI eval force R=E", ["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=E", "E_star=exp(-1)",
+                                     "--dps", "40", "--json"], pi / (4 * mpmath.e * mpmath.e)
+    claims = os.path.join(tempfile.mkdtemp(), "exact.toml")
+    with open(claims, "w") as fh:
+        fh.write('[[claims]]\nlabel = "sweep"\ntitle = "Hertz pressure at exact points"\nquantity = "pressure"\n'
+                 'profile = "x**2/(2*R)"\nformula = "E_star/(2*R)*sqrt(a**2 - x**2)"\n'
+                 'special = { x = ["sqrt(3)/4", "' + D31 + '", "pi/8", "exp(-1)"], '
+                 'R = ["E", "1.0000000000000000000000000000001"] }\n')
+    yield "claims file special values", ["check", claims, "--json"], "holds"
+
+
+def run_cli():
+    import json
+    import os
+    import subprocess
+    n = ok = 0
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    for label, argv, ref in cli_cases():
+        n += 1
+        out = subprocess.run([sys.executable, "-m", "linecontact_sym", *argv], capture_output=True, text=True,
+                             timeout=600, env=env)
+        try:
+            data = json.loads(out.stdout)
+            if isinstance(ref, str):
+                good = data["claims"][0]["status"] == ref
+                what = data["claims"][0]["status"]
+            else:
+                d = digits(mpmath.mpf(data["rows"][0]["value"]), ref)
+                good, what = d >= 28, f"{d:.1f} digits"
+        except Exception as exc:  # noqa: BLE001
+            good, what = False, f"{type(exc).__name__}: {exc}; {out.stderr[-300:]}"
+        ok += good
+        if not good:
+            print(f"{label} | {what}")
+    return n, ok
+
+
 def main():
     rows, fails = [], []
     n = ok = 0
@@ -168,7 +225,10 @@ def main():
             rows.append((label, tname, d))
     for f in fails:
         print(" | ".join(f))
-    print(f"cases {n}, ok {ok}, failing {n - ok}  ({time.perf_counter() - t0:.0f} s)")
+    print(f"API: cases {n}, ok {ok}, failing {n - ok}  ({time.perf_counter() - t0:.0f} s)")
+    cn, cok = run_cli()
+    print(f"CLI and claims: cases {cn}, ok {cok}, failing {cn - cok}")
+    n, ok = n + cn, ok + cok
     assert mpmath.mp.dps == 15, mpmath.mp.dps
     return 0 if ok == n else 1
 

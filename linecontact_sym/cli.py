@@ -163,16 +163,13 @@ def cmd_derive(args):
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof)
-    asked = args.quantities is not None
-    quantities = [q.strip() for q in (args.quantities or "force,pressure,gap").split(",") if q.strip()]
-    if not quantities:
+    quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
+    if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
     known = _expression_quantities("frictionless")
     adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
-    for q in quantities:
-        if q not in known and not (args.adhesion and q in adhesive):
-            more = f", or with --adhesion {', '.join(a for a in adhesive if a not in known)}"
-            raise LineContactError(f"unknown quantity {q!r} for derive; choose from {', '.join(known)}{more}")
+    for q in (q for q in quantities if q not in known and not (args.adhesion and q in adhesive)):
+        raise LineContactError(f"unknown quantity {q!r}; choose from {', '.join(known)} (--adhesion: {adhesive})")
     out = {"profile": str(prof), "profile_latex": to_latex(prof),
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
     todo = [(q, c, q) for q in quantities if q in known]
@@ -182,13 +179,8 @@ def cmd_derive(args):
             raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
         ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
-        # derive only what is asked (--quantities force: the two force laws, not the pull-off too)
-        wanted = [q for q in adhesive if q in quantities] if asked else \
-            ["force", "pressure", "adhesion_force", "pull_off_half_width"]
-        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in wanted]
-    if getattr(args, "maugis_dugdale", False):
-        md = c.maugis_dugdale()
-        todo += [(f"maugis_dugdale.{q}", md, q) for q in ("zone_force", "cohesive_gap", "pressure")]
+        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
+                 if q in quantities or (args.quantities is None and q != "pull_off_force")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -308,8 +300,7 @@ def cmd_model(args):
     missing = [s.name for s in md.variables if s.name not in values]
     if missing:
         raise LineContactError(f"model needs values for {', '.join(missing)} (--set NAME=VALUE)")
-    ch = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values)
-    po = md.pull_off_at(args.dps, **values)
+    ch, po = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values), md.pull_off_at(args.dps, **values)
     out = {"profile": str(prof), "set": {k: str(v) for k, v in values.items()}, "model": ch.model,
            "maugis_parameter": mpmath.nstr(ch.maugis_parameter, args.dps),
            "pull_off_jkr": mpmath.nstr(ch.jkr, args.dps), "pull_off_md": mpmath.nstr(ch.md, args.dps),
@@ -448,16 +439,11 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("profile", help="the profile f(x) in SymPy syntax, e.g. 'x**2/(2*R)'")
     pd.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fix parameters, e.g. R=1")
     pd.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
-    pd.add_argument("--quantities", default=None,
-                    help="comma-separated, from: " + ", ".join(_expression_quantities("frictionless"))
-                         + " (default force,pressure,gap); with --adhesion also adhesion_force, pull_off_force, "
-                           "pull_off_half_width, and force/pressure then name the adhesive laws too")
+    pd.add_argument("--quantities", default=None, help="comma-separated, from: " + ", ".join(_expression_quantities(
+        "frictionless")) + " (default force,pressure,gap); --adhesion: also adhesion_force, pull_off_force, ...")
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
-                    "the force and pressure laws, P_adh and a at pull-off, or those of --quantities")
+                    "force, pressure, P_adh, a at pull-off, or those of --quantities")
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
-    pd.add_argument("--maugis-dugdale", dest="maugis_dugdale", action="store_true",
-                    help="also the Maugis-Dugdale conditions: P(a, c_D), the gap at c_D (= gamma/sigma_0), "
-                         "the pressure (the same as --adhesion --law maugis_dugdale's conditions)")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")

@@ -49,3 +49,21 @@ def test_sphinx_site_builds_offline(tmp_path):
         assert (tmp_path / f"{page}.html").exists(), page
     api = (tmp_path / "api.html").read_text(encoding="utf-8")
     assert "parabola" in api and "check_paper" in api and "plot_contact" in api
+    # issue 23: every module has a page generated from its docstrings
+    import pkgutil
+    import linecontact_sym
+    modules = [m.name for m in pkgutil.walk_packages(linecontact_sym.__path__, "linecontact_sym.")
+               if not m.name.endswith("__main__")]
+    missing = [m for m in modules if not (tmp_path / "reference" / f"{m}.html").exists()]
+    assert not missing, missing
+    units = (tmp_path / "reference" / "linecontact_sym.core.units.html").read_text(encoding="utf-8")
+    assert "split_units" in units and "dimension" in units
+    # every notebook is a tutorial page; the gallery shows every figure of docs/gallery.py with its code
+    for nb in (ROOT / "notebooks").glob("*.ipynb"):
+        assert (tmp_path / "tutorials" / f"{nb.stem}.html").exists(), nb.stem
+    gallery = (tmp_path / "gallery.html").read_text(encoding="utf-8")
+    pngs = sorted((DOCS / "gallery").glob("*.png"))
+    assert len(pngs) >= 6
+    for png in pngs:
+        assert f"_images/{png.name}" in gallery and (tmp_path / "_images" / png.name).exists(), png.name
+    assert '<span class="n">plot</span><span class="p">(</span><span class="s2">&quot;pressure&quot;' in gallery

@@ -24,7 +24,7 @@ from ..core.errors import ClaimError, DomainError, LineContactError
 from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_relative_displacement,
                          flamant_resultant, griffith_punch_force, num_eval, numeric_minimum, resolution)
 from .memo import point_key, remember, remembered
-from .results import PointResult
+from .results import REQUIRED_DIGITS, PointResult
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
 from ..core.precision import workdps
 
@@ -84,8 +84,8 @@ class Derived:
         return comps
 
 
-#: the digits a claim must reproduce
-REQUIRED_DIGITS = 30
+#: the digits a claim must reproduce (declared in .results, where a failing point is described)
+REQUIRED_DIGITS = REQUIRED_DIGITS
 
 
 def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:

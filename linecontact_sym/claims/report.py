@@ -12,14 +12,17 @@ from pathlib import Path
 import sympy as sp
 
 from ..core import symbols as S
-from .results import FAILS, HOLDS, HOLDS_IF, UNDECIDED
+from .results import FAILS, HOLDS, HOLDS_IF, SHORT, UNDECIDED, digits_text, markdown_summary, md_escape
 from ..core.conversion import exact_number, nsimplify_basic
 from ..core.errors import DomainError
 from ..core.printing import ELLIPTIC_CONVENTION, ELLIPTIC_CONVENTION_TEX
 from ..parsing import to_sympy
-from ..views.latex import booktabs_table, fit_math, latex_escape, longtable, standalone, text_to_latex, to_latex
+from ..views.latex import (booktabs_table, fit_math, latex_escape, longtable, standalone, text_to_latex, to_latex,
+                           wrapped_latex)
 
-_SHORT = {HOLDS: "holds", HOLDS_IF: "holds if", FAILS: "DOES NOT HOLD", UNDECIDED: "UNDECIDED"}
+#: printed characters per line of a formula in the reports (verdicts; the claims table's column)
+FORMULA_WIDTH, TABLE_FORMULA_WIDTH = 90, 48
+
 
 
 # ------------------------------------------------------------------ power-law table
@@ -62,10 +65,6 @@ def power_law_latex(rows, caption=None, label="tab:Zn") -> str:
 
 
 # ------------------------------------------------------------------ claims reports
-def _digits(r):
-    return f"{r.digits:.1f}" if r.status in (HOLDS, HOLDS_IF) or r.digits else "-"
-
-
 def text_table(result, width: int = 110, notes: bool = True) -> str:
     """The terminal report: one row per claim, then (``notes``) the
     conditions and counterexamples."""
@@ -74,7 +73,7 @@ def text_table(result, width: int = 110, notes: bool = True) -> str:
     head = f"{'claim':<{lab_w}}  {'status':<24} {'digits':>6}  {'time':>7}  quantity"
     lines = [head, "-" * len(head)]
     for r in res:
-        lines.append(f"{r.label:<{lab_w}}  {r.status:<24} {_digits(r):>6}  {r.seconds:6.1f}s  "
+        lines.append(f"{r.label:<{lab_w}}  {r.status:<24} {digits_text(r):>6}  {r.seconds:6.1f}s  "
                      f"{r.claim.title or r.claim.quantity}")
     counts = {s: sum(r.status == s for r in res) for s in (HOLDS, HOLDS_IF, FAILS, UNDECIDED)}
     lines.append("-" * len(head))
@@ -126,21 +125,6 @@ def _wrap(text, width, indent):
                          break_on_hyphens=False)
 
 
-def _md_escape(text):
-    return str(text).replace("|", "\\|").replace("\n", " ")
-
-
-def markdown_summary(result) -> str:
-    """The claims table alone, in Markdown (notebooks display a PaperResult so)."""
-    res = result.results
-    out = ["| claim | result | status | digits | time | verdict |", "|---|---|---|---:|---:|---|"]
-    for r in res:
-        verdict = r.verdict.split(": ", 1)[1] if ": " in r.verdict and r.status != HOLDS else ""
-        out.append(f"| {r.label} | {_md_escape(r.claim.title)} | {_SHORT[r.status]} | {_digits(r)} | "
-                   f"{r.seconds:.1f} s | {_md_escape(verdict[:300])} |")
-    return "\n".join(out)
-
-
 def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
     """The full report in Markdown: counts, the claims table, each verdict
     with the derived expressions, Table 1 and the figures (``captions``:
@@ -159,7 +143,7 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
             f"{counts[FAILS]} do not hold, {counts[UNDECIDED]} undecided** ({result.seconds:.0f} s).", "",
             "| claim | result | status | digits | time |", "|---|---|---|---:|---:|"]
     for r in res:
-        out.append(f"| {r.label} | {_md_escape(r.claim.title)} | {_SHORT[r.status]} | {_digits(r)} | "
+        out.append(f"| {r.label} | {md_escape(r.claim.title)} | {SHORT[r.status]} | {digits_text(r)} | "
                    f"{r.seconds:.1f} s |")
     out += ["", "## Verdicts", ""]
     for r in res:
@@ -168,8 +152,8 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
         out.append("")
         if c.forms:
             for f in c.forms:
-                out.append(f"- printed: `{f.text}`  ")
-                out.append(f"  $${to_latex(f.shown)}$$")
+                out.append(f"- printed: `{f.text}`")
+                out += ["", f"  $${wrapped_latex(f.shown, FORMULA_WIDTH)}$$", ""]
         if c.profiles:
             out.append("- profile(s): " + ", ".join(f"`{p}`" for p, _ in c.profiles))
         if c.assumptions:
@@ -180,11 +164,12 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
             if d is not None and d.expr is not None and not c.values:
                 who = f" for `{t.profile_text}`" if c.general else ""
                 out.append(f"- derived{who}: `{d.expr}` ({d.method})")
+                out += ["", f"  $${wrapped_latex(d.expr, FORMULA_WIDTH)}$$", ""]
             for f in t.forms:
                 if f.symbolic:
-                    out.append(f"  - `{f.form.text[:60]}`: symbolic: {f.symbolic}")
+                    out.append(f"  - `{f.form.text}`: symbolic: {f.symbolic}")
                 if f.note:
-                    out.append(f"  - {_md_escape(f.note)}")
+                    out.append(f"  - {md_escape(f.note)}")
         for line in r.details:
             out.append(f"- {line}")
         if c.reading:
@@ -199,9 +184,9 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
         for p in figures:
             if str(p).endswith(".png"):
                 cap = captions.get(Path(p).stem)
-                out.append(f"![{_md_escape(cap or Path(p).stem)}]({Path(p).name})")
+                out.append(f"![{md_escape(cap or Path(p).stem)}]({Path(p).name})")
                 if cap:
-                    out += ["", f"*{_md_escape(cap)}*", ""]
+                    out += ["", f"*{md_escape(cap)}*", ""]
         out.append("")
     return "\n".join(out)
 
@@ -258,9 +243,9 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
     rows = []
     for r in res:
         c = r.claim
-        formula = (fit_math(to_latex(c.formula.shown)) if c.forms
+        formula = (fit_math(wrapped_latex(c.formula.shown, TABLE_FORMULA_WIDTH)) if c.forms
                    else ", ".join(f"${to_latex(v)}$" for _, v in c.values))
-        rows.append([latex_escape(c.label), formula, _STATUS_TEX[r.status], _digits(r), f"{r.seconds:.1f}"])
+        rows.append([latex_escape(c.label), formula, _STATUS_TEX[r.status], digits_text(r), f"{r.seconds:.1f}"])
     table = longtable(["Claim", "Formula as printed", "Status", "Digits", "Time (s)"], rows,
                       align=r"l>{\raggedright\arraybackslash}p{0.50\linewidth}>{\raggedright\arraybackslash}p{0.15\linewidth}rr",
                       caption=latex_escape(f"The claims of {paper.title or paper.key}, checked against the "
@@ -274,7 +259,7 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
                 + _status_sentence(r)]
         if len(c.forms) > 1:
             for f in c.forms:
-                item.append("Printed form:\n" + _centred(fit_math(to_latex(f.shown))))
+                item.append("Printed form:\n" + _centred(fit_math(wrapped_latex(f.shown, FORMULA_WIDTH))))
         if c.profiles and c.general:
             item.append("Test profiles: " + ", ".join(f"${to_latex(p)}$" for _, p in c.profiles) + ".")
         if c.assumptions:
@@ -283,7 +268,7 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
             d = t.derived
             if d is not None and d.expr is not None and not c.values:
                 who = f" for $f(x) = {to_latex(d.profile)}$" if c.general and d.profile is not None else ""
-                item.append(f"Derived{who}:\n" + _centred(fit_math(to_latex(d.expr))))
+                item.append(f"Derived{who}:\n" + _centred(fit_math(wrapped_latex(d.expr, FORMULA_WIDTH))))
             for f in t.forms:
                 if f.diagnosis is not None:
                     item.append(r"\emph{Diagnosis:} " + text_to_latex(f.diagnosis.message) + ".")

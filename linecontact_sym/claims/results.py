@@ -40,6 +40,20 @@ def fmt_num(v) -> str:
     return str(v)
 
 
+#: the digits a claim must reproduce (fewer agreeing digits at a point: that comparison fails)
+REQUIRED_DIGITS = 30
+
+
+def _fails(c) -> bool:
+    """Fewer agreeing digits than the comparison must show (its own resolution may ask fewer)."""
+    need = c.required(REQUIRED_DIGITS) if hasattr(c, "required") else REQUIRED_DIGITS
+    return c.digits < need
+
+
+def _compared(c) -> str:
+    return f"{c.what}: printed {fmt_mp(c.printed)}, derived {fmt_mp(c.target)} ({c.digits:.1f} digits agree)"
+
+
 def fmt_mp(v, digits: int = 20) -> str:
     """An mpf for a message (``-`` for None)."""
     if v is None:
@@ -65,9 +79,12 @@ class PointResult:
     def describe(self) -> str:
         pt = ", ".join(f"{k} = {fmt_num(v)}" for k, v in sorted(self.values.items(), key=lambda kv: kv[0].name))
         if self.status == "fail":
-            worst = min(self.comparisons, key=lambda c: c.digits)
-            return (f"at {pt}: {worst.what}: printed {fmt_mp(worst.printed)}, derived {fmt_mp(worst.target)} "
-                    f"({worst.digits:.1f} digits agree)")
+            # the quantity itself first (a pressure's value, not the resultant of a physics
+            # check), then the other checks that failed at this point
+            value = [c for c in self.comparisons if c.what == "value" and _fails(c)]
+            head = value[0] if value else min(self.comparisons, key=lambda c: c.digits)
+            also = [c for c in self.comparisons if c is not head and _fails(c)]
+            return f"at {pt}: " + "; also ".join(_compared(c) for c in [head] + also)
         return f"at {pt}: {self.reason}"
 
     def to_dict(self):
@@ -202,7 +219,6 @@ class PaperResult:
         return EXIT_OK
 
     def _repr_markdown_(self):
-        from .report import markdown_summary
         return markdown_summary(self)
 
     def to_dict(self):
@@ -223,6 +239,32 @@ def verdict_line(status, condition, cex: PointResult | None, extra="") -> str:
     return f"{UNDECIDED}: {extra}"
 
 
+# ---------------------------------------------------------------- the claims table in Markdown
+#: the status as the tables print it
+SHORT = {HOLDS: "holds", HOLDS_IF: "holds if", FAILS: "DOES NOT HOLD", UNDECIDED: "UNDECIDED"}
+
+
+def digits_text(r):
+    """The agreeing digits of a claim result as the tables print them ('-' where none)."""
+    return f"{r.digits:.1f}" if r.status in (HOLDS, HOLDS_IF) or r.digits else "-"
+
+
+def md_escape(text):
+    """Text for a Markdown table cell (pipes escaped, one line)."""
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def markdown_summary(result) -> str:
+    """The claims table alone, in Markdown (notebooks display a PaperResult so)."""
+    res = result.results
+    out = ["| claim | result | status | digits | time | verdict |", "|---|---|---|---:|---:|---|"]
+    for r in res:
+        verdict = r.verdict.split(": ", 1)[1] if ": " in r.verdict and r.status != HOLDS else ""
+        out.append(f"| {r.label} | {md_escape(r.claim.title)} | {SHORT[r.status]} | {digits_text(r)} | "
+                   f"{r.seconds:.1f} s | {md_escape(verdict)} |")
+    return "\n".join(out)
+
+
 __all__ = ["HOLDS", "HOLDS_IF", "FAILS", "UNDECIDED", "STATUSES", "EXIT_CODES", "EXIT_OK", "EXIT_FAILS",
            "EXIT_INPUT", "EXIT_INTERNAL", "EXIT_UNDECIDED", "PointResult", "FormResult", "TargetResult",
-           "ClaimResult", "PaperResult", "verdict_line", "fmt_num", "fmt_mp"]
+           "ClaimResult", "PaperResult", "verdict_line", "fmt_num", "fmt_mp", "SHORT", "digits_text", "md_escape", "markdown_summary"]

@@ -7,7 +7,7 @@ A contact class declares each physical quantity it offers **once**, as a
     class LineContact(Contact):
         kind = "frictionless"
         pressure = Quantity("p(x; a)", "Eq. (12)", "contact pressure, compressive positive",
-                            arguments=("a", "x"), domain="inside")
+                            arguments=("a", "x"), domain="inside", unit="Pa")
 
         def _derive_pressure(self) -> Derivation: ...
 
@@ -33,10 +33,11 @@ from ..core import symbols as S
 from ..core.conversion import point_value
 from ..core.precision import checked_dps, serialized
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
-from ..method.derivation import Derivation
+from ..method.derivation import Derivation, timing
 from ..numeric.special import NUMPY_LOGIC
 from ..parsing import to_sympy
 from ..method.verification import holds
+from .domain import DomainValues, elementwise_abs, is_array, x_domain
 
 #: every contact class, by its ``kind``
 CONTACT_KINDS: dict = {}
@@ -61,6 +62,10 @@ class Quantity:
                    serve the symbolic form
         nonnegative  argument names that must be >= 0 here though their symbol
                    is not declared so (the load P of a frictionless contact)
+        unit       its SI unit (``"N/m"``, ``"Pa"``, ``"m"``; ``""``
+                   dimensionless): a result asked for with pint quantities
+                   comes back in it (:mod:`linecontact_sym.core.units`); None:
+                   not declared (no units for it)
     """
 
     symbol: str
@@ -72,6 +77,7 @@ class Quantity:
     aliases: tuple = ()
     method: bool = False
     nonnegative: tuple = ()
+    unit: str | None = None
     name: str = field(default="", compare=False)
 
     def __set_name__(self, owner, name):
@@ -176,7 +182,8 @@ class Contact:
         if name not in cache:
             with serialized():   # symbolic work changes mpmath's precision (core.precision)
                 if name not in cache:
-                    cache[name] = getattr(self, "_derive_" + name)()
+                    with timing():
+                        cache[name] = getattr(self, "_derive_" + name)()
         return cache[name]
 
     def _value(self, name: str):
@@ -193,7 +200,12 @@ class Contact:
         outside the contact as the quantity's domain says; and, where the
         result holds under conditions (e.g. a < R), they hold.  Raises
         :class:`~linecontact_sym.core.errors.DomainError` naming the problem;
-        returns the values with x replaced by |x|."""
+        returns the values with x replaced by |x| (a :class:`DomainValues`).
+        Arrays: the points outside the contact or where the conditions fail
+        are marked in ``outside`` (their results are NaN, a
+        :class:`~linecontact_sym.core.errors.DomainWarning` says how many);
+        the other points are evaluated.  Invalid values (not finite, a
+        positive symbol <= 0) raise for arrays too."""
         name = self.resolve(quantity)
         q = type(self)._registry[name]
         known, conds, cond_fn = self._domain_data(name)
@@ -206,26 +218,22 @@ class Contact:
             if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
         self._check_admissible(vals)
-        if "x" in vals and "a" in vals and q.domain != "any":
-            xv, av = _abs(vals["x"]), vals["a"]
-            if q.domain == "inside" and np.any(xv > av):
-                raise DomainError(f"x = {values['x']} lies outside the contact |x| <= a = {values['a']}; "
-                                  f"the {name} is defined inside (use the gap outside)")
-            if q.domain == "outside" and np.any(xv < av):
-                raise DomainError(f"x = {values['x']} lies inside the contact |x| < a = {values['a']}; "
-                                  f"the {name} is defined outside (zero inside)")
-            vals["x"] = xv
+        out = DomainValues(vals)
+        out.mark(*x_domain(name, q.domain, vals, values))
         if conds and set(known) <= set(vals):
             try:
                 r = cond_fn(*[_as_float_array(vals[k]) for k in known])
-                ok = bool(r) if isinstance(r, (bool, np.bool_)) else bool(np.all(r))
+                ok = True if is_array(r) else bool(r)
+                if is_array(r):
+                    out.mark(~np.asarray(r, dtype=bool), f"{', '.join(map(str, conds))} fails")
             except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
                 ok = holds(conds, {known[k]: v for k, v in vals.items()}) if not any(
                     isinstance(v, np.ndarray) for v in vals.values()) else True
             if not ok:
                 raise DomainError(f"{name} holds only where {', '.join(map(str, conds))}; "
                                   f"that fails at {values}")
-        return vals
+        out.warn(name)
+        return out
 
     def check_domain_scalar(self, quantity: str, values: dict) -> dict:
         """:meth:`check_domain` for a point of plain Python numbers, in
@@ -296,20 +304,43 @@ class Contact:
                         f"the contact is tensile; the frictionless solution holds only while dP0/da >= 0 "
                         f"(see admissible_range)")
 
+    # ----------------------------------------------------------- units
+    def _strip_units(self, quantity: str, values: dict):
+        """``(values in SI, pint registry or None, the result's unit)``:
+        :func:`linecontact_sym.core.units.strip_units` with the symbols'
+        units and this quantity's declaration."""
+        from ..core.units import strip_units
+        q = type(self).quantities()[self.resolve(quantity)]
+        law = getattr(self, "law", None)          # a cohesive law declares its own symbols' units
+        units = {**S.UNITS, **{p.symbol.name: p.unit for p in getattr(law, "parameters", ())
+                               if getattr(p, "unit", None) is not None}}
+        return strip_units(values, units, q, getattr(self, "profile", None))
+
     # ----------------------------------------------------------- numbers
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
-        """One high-precision value (``dps`` digits) with the domain checked."""
+        """One high-precision value (``dps`` digits) with the domain checked.
+
+        Values may be pint quantities (the ``[units]`` extra): each is
+        checked against its dimension and converted to SI, and the result is
+        a quantity in the SI unit declared for ``quantity`` (a force per unit
+        length in N/m).  Plain numbers are SI values, and give a plain number."""
         checked_dps(dps)
+        values, registry, unit = self._strip_units(quantity, values)
         values = self.check_domain(quantity, values)
-        return self.derivation(quantity).evalf(dps=dps, **values)
+        v = self.derivation(quantity).evalf(dps=dps, **values)
+        if registry is None:
+            return v
+        from ..core.units import with_unit
+        return with_unit(v, unit, registry)
 
     def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, check: bool = True, **params):
         """A callable of the quantity: ``fn(a=..., x=..., E_star=..., R=...)``;
         ``backend='numpy'`` (vectorised float64, stable form) or ``'mpmath'``
         (``dps`` digits).  Keywords given here are fixed once.  ``check``
         (default True): every call passes the contact's domain check
-        (:meth:`check_domain`, arrays elementwise) and raises
-        :class:`~linecontact_sym.core.errors.DomainError` outside it;
+        (:meth:`check_domain`) and raises
+        :class:`~linecontact_sym.core.errors.DomainError` outside it (array
+        points outside it: NaN, with a DomainWarning);
         ``check=False``: no check (a few microseconds less per call), NaN or
         complex values outside the domain."""
         from ..numeric.exports import make_callable
@@ -321,12 +352,19 @@ class Contact:
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
         """The cheapest evaluation that meets ``rtol``: float64, mpmath at a
         sufficient precision, a cheaper model with its error bound, or with
-        ``certified=True`` an Arb ball; see :mod:`linecontact_sym.numeric.evaluate`."""
+        ``certified=True`` an Arb ball; see :mod:`linecontact_sym.numeric.evaluate`.
+        Values may be pint quantities (as in :meth:`evaluate_at`): the
+        Evaluation's numbers stay SI numbers, its ``unit`` says which, and
+        ``.quantity_value()`` is the value as a pint quantity."""
         from ..numeric.evaluate import evaluate
+        values, registry, unit = self._strip_units(quantity, values)
         try:
-            return evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
+            r = evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
         except (ZeroDivisionError, OverflowError) as exc:
             raise singular_point(quantity, values, exc) from None
+        if registry is not None:
+            r.unit = registry.Unit(unit or "dimensionless")
+        return r
 
     def plot(self, what: str = "force", **kw):
         """A matplotlib figure of the contact in the literature's normalised
@@ -349,13 +387,20 @@ class Contact:
         return "\n".join(self.derivation(q).summary() for q in names)
 
 
-def _abs(v):
-    return np.abs(v) if isinstance(v, np.ndarray) else abs(v)
-
-
 #: symbols declared positive whose values may be <= 0 (x: the profile is
-#: mirrored, f(-x) = f(x)) or 0 (gamma = 0: the non-adhesive limit)
-_ANY_SIGN, _MAY_BE_ZERO = {"x"}, {"gamma"}
+#: mirrored, f(-x) = f(x))
+_ANY_SIGN = {"x"}
+
+
+def may_be_zero(name: str) -> bool:
+    """Is ``name`` (a symbol declared positive) allowed the value 0?  The
+    symbols of a registered cohesive law's parameters of domain
+    'nonnegative' are (JKR's gamma = 0: the non-adhesive limit)."""
+    for cls in CONTACT_KINDS.values():
+        for p in getattr(getattr(cls, "law_class", None), "parameters", ()):
+            if p.domain == "nonnegative" and p.symbol.name == name:
+                return True
+    return False
 
 
 def _positive_required(name, sym):
@@ -372,7 +417,7 @@ def _checked_value(name, v, sym):
     if type(v) in (float, int):  # the common, fast case
         if not math.isfinite(v):
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
-        if _positive_required(name, sym) and not v > 0 and not (name in _MAY_BE_ZERO and v == 0):
+        if _positive_required(name, sym) and not v > 0 and not (v == 0 and may_be_zero(name)):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
         return v
@@ -383,7 +428,7 @@ def _checked_value(name, v, sym):
         arr = arr.astype(float)
         if not np.all(np.isfinite(arr)):
             raise DomainError(f"{name} = {v!r}: values must be finite")
-        if _positive_required(name, sym) and np.any(arr <= 0) and not (name in _MAY_BE_ZERO and np.all(arr >= 0)):
+        if _positive_required(name, sym) and np.any(arr <= 0) and not (np.all(arr >= 0) and may_be_zero(name)):
             raise DomainError(f"{name} must be positive, got {v!r}")
         return arr
     if v is None or isinstance(v, bool):
@@ -402,7 +447,7 @@ def _checked_value(name, v, sym):
         if val.is_real is None and abs(sp.im(sp.N(val, 30))) > 0:
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
     if _positive_required(name, sym) and not val.is_positive:
-        if not (name in _MAY_BE_ZERO and val.is_zero):
+        if not (val.is_zero and may_be_zero(name)):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
             raise DomainError(f"{what} must be positive (declared positive), got {name} = {v}")
     return val
@@ -421,7 +466,7 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
     known, positive, nonneg, domain, cond_names, cond_fn, adm = plan
     for k, v in values.items():
         if type(v) not in (float, int) or k not in known or not math.isfinite(v) or \
-                (k in positive and not v > 0 and not (k in _MAY_BE_ZERO and v == 0)) or \
+                (k in positive and not v > 0 and not (v == 0 and may_be_zero(k))) or \
                 (k in nonneg and v < 0):
             return self.check_domain(quantity, values)
     vals = dict(values)

@@ -63,6 +63,12 @@ def singular_point(quantity, values, exc) -> "DomainError":
                        f"({type(exc).__name__})")
 
 
+class DomainWarning(UserWarning):
+    """Points of an array argument lie outside a quantity's domain: their
+    results are NaN, the other points are evaluated (a scalar outside the
+    domain raises :class:`DomainError`)."""
+
+
 class BudgetError(LineContactError, ValueError):
     """A time budget that is not a number of seconds > 0 (None: no limit)."""
 
@@ -76,4 +82,4 @@ class MissingExtraError(LineContactError, ImportError):
     installs it (see :func:`linecontact_sym.core.extras.require`)."""
 
 
-__all__ = [name for name in dir() if name.endswith("Error") or name in ("BudgetExceeded", "NumericValuesRequired")]
+__all__ = [name for name in dir() if name.endswith("Error") or name in ("BudgetExceeded", "NumericValuesRequired", "DomainWarning")]

@@ -4,6 +4,7 @@ matplotlib (plots) is not needed to derive, check or export anything, so it
 is optional::
 
     pip install "linecontact_sym[plot]"        # matplotlib
+    pip install "linecontact_sym[units]"       # pint: values and results with units
     pip install "linecontact_sym[all]"         # every extra
 
 python-flint (Arb balls) is a core dependency (an optional package may add a
@@ -20,7 +21,7 @@ install.
 >>> require("nonsense", "math")
 Traceback (most recent call last):
 ...
-ValueError: unknown extra 'nonsense'; the extras are ['all', 'certified', 'plot']
+ValueError: unknown extra 'nonsense'; the extras are ['all', 'certified', 'plot', 'units']
 """
 from __future__ import annotations
 
@@ -34,6 +35,7 @@ __all__ = ["EXTRAS", "require", "install_hint"]
 EXTRAS = {
     "plot": (("matplotlib",), "plotting"),
     "certified": (("python-flint",), "certified (Arb ball) evaluation (a core dependency; alias)"),
+    "units": (("pint",), "values with physical units (pint quantities)"),
     "all": (("matplotlib", "python-flint"), "every optional feature"),
 }
 

@@ -35,6 +35,7 @@ True
 """
 from __future__ import annotations
 
+import math
 import numbers
 import os
 import threading
@@ -98,4 +99,54 @@ def extradps(n: int):
         yield
 
 
-__all__ = ["workdps", "workprec", "extradps", "serialized", "MAX_DPS", "checked_dps"]
+class HeldDigits(mpmath.mpf):
+    """An mpf that prints the digits it was computed to (``digits``), not
+    mpmath's global 15: what ``evaluate_at(..., dps=40)`` returns.  It is an
+    mpf in every other way; arithmetic on it gives plain mpf."""
+
+    digits = 15
+
+    def __repr__(self):
+        return f"mpf('{mpmath.nstr(self, self.digits)}')"
+
+    def __str__(self):
+        return mpmath.nstr(self, self.digits)
+
+    def __reduce__(self):
+        return _rebuild_held, (self._mpf_, self.digits)
+
+
+def _rebuild_held(mpf_tuple, digits):
+    out = HeldDigits.__new__(HeldDigits)
+    out._mpf_, out.digits = mpf_tuple, digits
+    return out
+
+
+def held(value, dps: int):
+    """``value`` (an mpf) as a :class:`HeldDigits` printing ``dps`` digits
+    (other types are returned as they are)."""
+    if type(value) is not mpmath.mpf:
+        return value
+    with workdps(dps + 5):          # no rounding of the value's bits
+        out = HeldDigits(value)
+    out.digits = int(dps)
+    return out
+
+
+def held_digits(value, error) -> int:
+    """Significant digits of an mpf ``value`` correct to ``error``: the
+    decimal exponent of the relative error, capped by the value's binary
+    precision (its mantissa's bits); at least 1."""
+    if not isinstance(value, mpmath.mpf):
+        return 17
+    sign, man, exp, bc = value._mpf_
+    held = max(1, int(bc * math.log10(2)) + 1)
+    if not value or not error:
+        return max(held, 15)
+    rel = float(abs(error) / abs(value))
+    if not math.isfinite(rel) or rel <= 0:
+        return max(held, 15)
+    return max(1, min(int(math.floor(-math.log10(rel))), max(held, 15)))
+
+
+__all__ = ["workdps", "workprec", "extradps", "serialized", "MAX_DPS", "checked_dps", "HeldDigits", "held", "held_digits"]

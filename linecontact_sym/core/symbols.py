@@ -71,6 +71,13 @@ c_r = sp.Symbol("c_r", positive=True)
 sigma_0 = sp.Symbol("sigma_0", positive=True)
 c_D = sp.Symbol("c_D", positive=True)
 
+#: The SI unit of each symbol's value, for values given with units (pint,
+#: :mod:`linecontact_sym.core.units`): "" is dimensionless.  ``c`` (of c x^n,
+#: unit m^(1-n)) has none: its unit depends on n; it is checked through the profile.
+UNITS = {"x": "m", "a": "m", "P": "N/m", "E_star": "Pa", "gamma": "J/m**2", "R": "m", "b": "m", "n": "",
+         "theta": "rad", "z": "m", "nu": "", "mu": "", "Q": "N/m", "c_s": "m", "c_r": "m",
+         "sigma_0": "Pa", "c_D": "m"}
+
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
 
@@ -89,4 +96,4 @@ LATEX_NAMES = {
 }
 
 __all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "sigma_0", "c_D", "z", "zeta", "nu",
-           "RESERVED", "LATEX_NAMES"]
+           "RESERVED", "LATEX_NAMES", "UNITS"]

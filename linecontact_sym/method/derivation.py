@@ -9,8 +9,11 @@ when nothing closes or a closed form fails its check.
 """
 from __future__ import annotations
 
+import contextlib
+import contextvars
+import functools
 import time
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 from typing import Callable
 
 import sympy as sp
@@ -23,15 +26,56 @@ from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, verify
-from ..core.precision import serialized, workdps
+from ..core.precision import held, serialized, workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
 
+#: start times of the derivations under way (innermost last), see :func:`timing`
+_CLOCKS: contextvars.ContextVar = contextvars.ContextVar("derivation_clocks", default=())
+
+
+@contextlib.contextmanager
+def timing(new: bool = True):
+    """The one place derivation times are taken: a :class:`Derivation` made
+    without ``seconds`` records the time since the innermost ``timing``
+    began.  :meth:`~linecontact_sym.contacts.base.Contact.derivation` opens
+    one per quantity; ``new=False`` (:func:`timed`) opens one only where none
+    is under way (a derivation function called on its own)."""
+    clocks = _CLOCKS.get()
+    if not new and clocks:
+        yield
+        return
+    token = _CLOCKS.set(clocks + (time.perf_counter(),))
+    try:
+        yield
+    finally:
+        _CLOCKS.reset(token)
+
+
+def elapsed() -> float:
+    """Seconds since the innermost :func:`timing` began (0 outside any)."""
+    clocks = _CLOCKS.get()
+    return time.perf_counter() - clocks[-1] if clocks else 0.0
+
+
+def timed(fn):
+    """Decorator: ``fn`` runs under :func:`timing` ``(new=False)``."""
+    @functools.wraps(fn)
+    def wrapper(*args, **kw):
+        with timing(new=False):
+            return fn(*args, **kw)
+    return wrapper
+
 
 @dataclass
 class Derivation:
-    """One derived quantity.
+    """One derived quantity, built by keywords after the quantity's name::
+
+        Derivation("force", expr=P, closed_form=True, step=step, conditions=conds,
+                   verification=rec, reference=quad, variables=(a,) + params)
+
+    ``seconds`` is taken by :func:`timing` unless given (a stored result's).
 
     Attributes
     ----------
@@ -55,17 +99,22 @@ class Derivation:
     """
 
     quantity: str
+    _: KW_ONLY
     expr: sp.Expr
     closed_form: bool
     step: Step
     conditions: tuple = ()
     verification: VerificationRecord | None = None
-    seconds: float = 0.0
+    seconds: float | None = None
     notes: tuple = ()
     reference: Callable | None = field(default=None, repr=False)
     variables: tuple = ()
     attempts: tuple = ()
     cached: str = ""
+
+    def __post_init__(self):
+        if self.seconds is None:
+            self.seconds = elapsed()
 
     @property
     def rule(self) -> str:
@@ -92,22 +141,51 @@ class Derivation:
     def evalf(self, dps: int = 30, **values):
         """Evaluate at a point (keyword arguments by symbol name) with ``dps``
         digits: the closed form where there is one, else the reference
-        (high-precision quadrature of the defining integral)."""
+        (high-precision quadrature of the defining integral).  The mpf
+        returned prints its ``dps`` digits (:class:`~linecontact_sym.core.precision.HeldDigits`)."""
         vals = values_by_name(self.variables_all, values)
         if self.closed_form:
             with workdps(dps):
                 v = sp.N(self.expr.xreplace(float_values(vals, dps + 20)), dps + 5)
-                return real_mpf(v)
+                return held(real_mpf(v), dps)
         if self.reference is None:
             raise LineContactError(f"this {self.quantity} derivation has no reference quadrature (it was "
                                    f"unpickled, or made without one): evaluate it through its contact")
-        return self.reference(vals, dps)
+        return held(self.reference(vals, dps), dps)
 
     @property
     def variables_all(self):
         syms = set(self.variables) if (self.variables and not self.closed_form) \
             else self.expr.free_symbols | set(self.variables)
         return tuple(sorted(syms, key=lambda s: s.name))
+
+    @property
+    def status(self) -> str:
+        """One line: closed form or not, verified or not, with the numbers
+        (points, digits) -- what a reader needs before trusting ``expr``."""
+        v = self.verification
+        if not self.closed_form:
+            what = "no closed form: unevaluated integral, evaluated by quadrature"
+        elif v is None:
+            what = "closed form, not verified"
+        elif not v.points:
+            what = "closed form, NOT verified (0 points)"
+        elif not v.passed:
+            what = f"closed form, FAILED verification ({v.min_digits:.1f} digits)"
+        else:
+            what = f"closed form, verified at {len(v.points)} points (>= {v.min_digits:.0f} digits)"
+        return f"{what}; rule {self.rule}"
+
+    def _timing(self) -> str:
+        where = {"memory": ", from this session's cache", "disk": ", from the disk cache"}.get(self.cached, "")
+        return f"derived in {self.seconds:.2f} s{where}"
+
+    def __repr__(self):
+        """A few lines: the formula, its status and timing (the whole record
+        is :meth:`summary`; the fields are attributes)."""
+        cond = f"\n  holds for: {', '.join(map(str, self.conditions))}" if self.conditions else ""
+        return (f"<Derivation {self.quantity} = {self.expr}\n  {self.status}{cond}\n"
+                f"  {self._timing()}>")
 
     def summary(self) -> str:
         lines = [f"{self.quantity}: {self.expr}",
@@ -116,7 +194,7 @@ class Derivation:
             lines.append("  holds for: " + ", ".join(map(str, self.conditions)))
         if self.verification is not None:
             lines.append("  " + str(self.verification))
-        lines.append(f"  derived in {self.seconds:.2f} s")
+        lines.append("  " + self._timing())
         lines += ["  note: " + n for n in self.notes]
         return "\n".join(lines)
 
@@ -125,8 +203,21 @@ class Derivation:
         return self.expr
 
     def _repr_latex_(self):
+        """Jupyter: ``quantity = formula`` and the status, in one line of
+        LaTeX (math mode only: MathJax renders it as it is)."""
         from ..core.printing import to_latex
-        return f"$\\displaystyle {to_latex(self.expr)}$"
+        v = self.verification
+        if not self.closed_form:
+            status = r"\text{no closed form (quadrature)}"
+        elif v is not None and v.passed:
+            status = rf"\text{{verified at {len(v.points)} points, }}\geq {v.min_digits:.0f}\text{{ digits}}"
+        elif v is not None and v.points:
+            status = rf"\text{{FAILED verification, {v.min_digits:.1f} digits}}"
+        else:
+            status = r"\text{not verified}"
+        name = self.quantity.replace("_", r"\_")
+        return (rf"$\displaystyle \mathrm{{{name}}} = {to_latex(self.expr)}"
+                rf"\qquad [{status};\ {self.seconds:.2f}\,\mathrm{{s}}]$")
 
     def __str__(self):
         return self.summary()
@@ -251,7 +342,7 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
 
 
 def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.Expr, budget,
-           check: bool = True, points: int = 5, notes=(), variables=(), t0=None) -> Derivation:
+           check: bool = True, points: int = 5, notes=(), variables=()) -> Derivation:
     """One transform carried out: :func:`integrate`, then verification of the
     closed form against ``reference`` at ``points`` points drawn by
     ``sampler`` (fewer than the required digits anywhere: the closed form is
@@ -268,18 +359,23 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     the whole derivation: rules, tidying and verification.  A closed form
     whose verification did not finish in what remained is not returned as
     verified: the unevaluated integral is, with a note."""
-    budget = checked_budget(budget)
+    with timing(new=False):
+        return _derive_remembered(quantity, problem, reference, sampler, fallback, checked_budget(budget), check,
+                           points, notes, variables)
+
+
+def _derive_remembered(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables):
     deadline = Deadline(budget)
-    t0 = time.perf_counter() if t0 is None else t0
     key = store.make_key("derive", quantity, problem.transform, *_problem_parts(problem), fallback, check,
                          points, REQUIRED_DIGITS, tuple(notes), tuple(variables))
     rec = store.get(key)
     if rec is not None and _usable(rec, budget):
-        return Derivation(quantity, rec["expr"], rec["closed_form"], rec["step"], rec["conditions"],
-                          rec["verification"], rec["seconds"], rec["notes"], reference, tuple(variables),
-                          rec["attempts"], rec["source"])
+        return Derivation(quantity, expr=rec["expr"], closed_form=rec["closed_form"], step=rec["step"],
+                          conditions=rec["conditions"], verification=rec["verification"], seconds=rec["seconds"],
+                          notes=rec["notes"], reference=reference, variables=tuple(variables), attempts=rec["attempts"],
+                          cached=rec["source"])
     with serialized():   # SymPy's symbolic work changes mpmath's precision (core.precision)
-        d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0)
+        d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables)
     store.put(key, {"expr": d.expr, "closed_form": d.closed_form, "step": d.step, "conditions": d.conditions,
                     "verification": d.verification, "seconds": d.seconds, "notes": d.notes,
                     "attempts": d.attempts, "budget": budget})
@@ -307,9 +403,10 @@ def remembered_many(parts, make, budget, rebuild) -> tuple:
     key = store.make_key("remembered", *parts)
     rec = store.get(key)
     if rec is not None and "derivations" in rec and all(_usable(r, budget) for r in rec["derivations"]):
-        return tuple(rebuild(Derivation(r["quantity"], r["expr"], r["closed_form"], r["step"], r["conditions"],
-                                        r["verification"], r["seconds"], r["notes"], None, r["variables"],
-                                        r["attempts"], rec["source"]))
+        return tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
+                                        conditions=r["conditions"], verification=r["verification"],
+                                        seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
+                                        attempts=r["attempts"], cached=rec["source"]))
                      for r in rec["derivations"])
     ds = tuple(make())
     store.put(key, {"derivations": tuple(
@@ -343,7 +440,7 @@ def _usable(rec, budget) -> bool:
     return not (timed_out and (more or (budget is not None and budget > rec["budget"])))
 
 
-def _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0):
+def _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables):
     step, attempts = integrate(problem, None, deadline=deadline)
     rec = None
     extra = []
@@ -366,7 +463,9 @@ def _derive(quantity, problem, reference, sampler, fallback, deadline, check, po
             step = None
     if step is None:
         reasons = tuple(f"{r}: {why}" for r, why in attempts)
-        return Derivation(quantity, fallback, False, fallback_step(), (), rec, time.perf_counter() - t0,
-                          tuple(extra) + reasons + tuple(notes), reference, tuple(variables), tuple(attempts))
-    return Derivation(quantity, step.expr, True, step, step.conditions, rec, time.perf_counter() - t0,
-                      tuple(notes), reference, tuple(variables), tuple(attempts))
+        return Derivation(quantity, expr=fallback, closed_form=False, step=fallback_step(), verification=rec,
+                          notes=tuple(extra) + reasons + tuple(notes), reference=reference, variables=tuple(variables),
+                          attempts=tuple(attempts))
+    return Derivation(quantity, expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
+                      verification=rec, notes=tuple(notes), reference=reference, variables=tuple(variables),
+                      attempts=tuple(attempts))

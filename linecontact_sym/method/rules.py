@@ -53,6 +53,16 @@ def _power_terms(expr, var):
     return [(T.coef, T.mu) for T in terms]
 
 
+def _no_closed_force_law(problem):
+    """The reason a rule that integrates the force law cannot start, or None."""
+    P = problem.force_law
+    if P is None:
+        return "no force law given"
+    if P.has(sp.Integral):
+        return "the force law is an unevaluated integral (no closed form)"
+    return None
+
+
 #: functions whose definite integrals against the kernels of Eqs. (12) and
 #: (3/5) SymPy may find in closed form; any other function of ``a`` in a force
 #: law (Bessel, hypergeometric, elliptic, error functions ...) gives
@@ -181,7 +191,7 @@ class PressureSympy(Rule):
     name, transform = "pressure_sympy", "pressure"
 
     def applies(self, problem):
-        return _special_law(problem)
+        return _no_closed_force_law(problem) or _special_law(problem)
 
     def run(self, problem):
         bps = list(problem.profile.breakpoints) if problem.profile is not None else []
@@ -283,6 +293,9 @@ class InverseSympy(Rule):
     """Eq. (9) by ``sympy.integrate``."""
 
     name, transform = "inverse_sympy", "profile"
+
+    def applies(self, problem):
+        return _no_closed_force_law(problem)
 
     def run(self, problem):
         Ps = problem.force_law.subs(S.a, s)

@@ -63,7 +63,7 @@ from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, 
 from .fastpath import scalar_kit, vector_float64
 from .switches import safe_step, switch_near_end
 from .quadrature import VectorQuad
-from ..core.precision import checked_dps, workdps
+from ..core.precision import checked_dps, held_digits, workdps
 
 #: safety factor of the float64 error estimate (times eps * max(1, kappa, cancellation));
 #: closed forms / quadratures (what tests/test_extremes.py checks on the grid)
@@ -85,6 +85,8 @@ class Evaluation:
     enclosure   (lower, upper) as mpf for 'arb', else None
     note        why this path, and what the estimate rests on
     seconds     wall-clock time of the evaluation (path selection included)
+    unit        None, or the pint Unit of value and error (SI) when the
+                arguments were given as pint quantities
     """
 
     quantity: str
@@ -97,6 +99,15 @@ class Evaluation:
     note: str = ""
     seconds: float = 0.0
     details: dict = field(default_factory=dict, repr=False)
+    unit: object = None
+
+    def quantity_value(self):
+        """The value as a pint quantity in :attr:`unit` (values given with
+        units: ``contact.evaluate("force", a=Q_(1, "mm"), ...)``); the
+        numbers of the Evaluation are SI numbers."""
+        if self.unit is None:
+            raise LineContactError("this evaluation was given plain numbers (SI): it has no unit")
+        return self.unit._REGISTRY.Quantity(self.value, self.unit)
 
     @property
     def rel_error(self) -> float:
@@ -106,11 +117,36 @@ class Evaluation:
     def __float__(self):
         return float(self.value)
 
+    def digits(self) -> int:
+        """The significant digits the value holds: from its error estimate
+        (the enclosure's radius for 'arb'), at most the digits of its binary
+        precision; float64: 17 (its shortest repr is printed)."""
+        return held_digits(self.value, self.error)
+
+    def _value_text(self) -> str:
+        v = self.value
+        if isinstance(v, np.ndarray):
+            return np.array2string(np.asarray(v, dtype=float), precision=6, threshold=8)
+        if isinstance(v, mpmath.mpf):
+            return mpmath.nstr(v, self.digits())
+        return repr(v)
+
+    def __repr__(self):
+        """One line: the value with the digits it holds, the path and the error."""
+        err = "" if isinstance(self.value, np.ndarray) else f", rel. error <= {self.rel_error:.1e}"
+        return f"<Evaluation {self.quantity} = {self._value_text()}{self._unit_text()} via {self.path}{err}>"
+
+    def _unit_text(self) -> str:
+        return "" if self.unit is None else f" {self.unit:~P}"
+
     def __str__(self):
-        v = mpmath.nstr(self.value, 20) if isinstance(self.value, mpmath.mpf) else repr(self.value)
-        enc = f" in [{mpmath.nstr(self.enclosure[0], 20)}, {mpmath.nstr(self.enclosure[1], 20)}]" \
+        if isinstance(self.value, np.ndarray):
+            return f"{self.quantity} = {self._value_text()}{self._unit_text()}  via {self.path}: {self.note}"
+        n = self.digits()
+        enc = f" in [{mpmath.nstr(self.enclosure[0], n + 2)}, {mpmath.nstr(self.enclosure[1], n + 2)}]" \
             if self.enclosure else ""
-        return (f"{self.quantity} = {v}{enc}  via {self.path}  (error <= {float(self.error):.2e}, "
+        return (f"{self.quantity} = {self._value_text()}{enc}{self._unit_text()}  via {self.path}  "
+                f"(error <= {float(self.error):.2e}, "
                 f"rel {self.rel_error:.1e}){': ' + self.note if self.note else ''}")
 
 
@@ -312,7 +348,8 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
             raise LineContactError(f"{quantity} is a numeric root here; evaluate it point by point")
         return _reference_path(d, quantity, values, rtol, t0)
     if arrays:
-        return _evaluate_array(contact, d, quantity, names, values, rtol, model, t0)
+        return _evaluate_array(contact, d, quantity, names, values, rtol, model, t0,
+                               getattr(values, "outside", None))
 
     # 1. the cheapest model that meets rtol
     if model and quantity == "force" and (kit.expensive or rtol < 1e-15):
@@ -394,12 +431,17 @@ def _check_tolerance(rtol, dps):
         checked_dps(dps)
 
 
-def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0):
+def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0, outside=None):
     """evaluate() at arrays of arguments: the vectorised float64 export with
     the same error estimate per point; the points where it does not meet
-    ``rtol`` are evaluated one by one (model, mpmath)."""
+    ``rtol`` are evaluated one by one (model, mpmath).  ``outside``: the
+    points outside the quantity's domain (the contact's domain check marked
+    them and warned): NaN, path 'outside'."""
     arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
     v, kappa, cancel = vector_float64(d, names, arrays)
+    if outside is not None:
+        outside = np.broadcast_to(outside, v.shape)
+        v = np.where(outside, np.nan, v)
     factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
     with np.errstate(all="ignore"):
         est = factor * EPS * np.maximum(np.maximum(1.0, kappa), cancel) * np.abs(v)
@@ -407,16 +449,23 @@ def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0):
             est = est + _quad_error(d, dict(zip(names, arrays)))
         ok = np.isfinite(v) & ((est <= rtol * np.abs(v)) | ((v == 0) & (est == 0))) if rtol >= 4 * EPS \
             else np.zeros(v.shape, dtype=bool)
+    if outside is not None:
+        ok = ok | outside
+        est = np.where(outside, np.nan, est)
     values_out = np.array(v, dtype=object if not np.all(ok) else float)
     errors = np.array(est, dtype=object if not np.all(ok) else float)
     paths = np.full(v.shape, "float64", dtype=object)
+    if outside is not None:
+        paths[outside] = "outside"
     for idx in zip(*np.nonzero(~ok)) if v.ndim else ([()] if not ok else []):
         point = {n: float(a[idx]) for n, a in zip(names, arrays)}
         r = evaluate(contact, quantity, rtol=rtol, model=model, **point)
         values_out[idx], errors[idx], paths[idx] = r.value, r.error, r.path
     kinds = sorted(set(paths.ravel().tolist()))
-    note = (f"{int(np.sum(ok))} of {ok.size} points by the vectorised float64 export (estimate "
-            f"{factor:g} eps max(1, kappa, cancellation) |value| per point), the rest one by one")
+    n_out = 0 if outside is None else int(np.sum(outside))
+    note = (f"{int(np.sum(ok)) - n_out} of {ok.size} points by the vectorised float64 export (estimate "
+            f"{factor:g} eps max(1, kappa, cancellation) |value| per point), the rest one by one" +
+            (f"; {n_out} outside the domain: NaN" if n_out else ""))
     return Evaluation(quantity, values_out, kinds[0] if len(kinds) == 1 else " + ".join(kinds), errors, rtol,
                       note=note, seconds=time.perf_counter() - t0,
                       details={"paths": paths, "kappa": kappa, "cancellation": cancel})

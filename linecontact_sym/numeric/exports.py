@@ -57,7 +57,7 @@ _SCIPY_FUNCS = {
 }
 
 
-def _mp_hyper_vec(*args):
+def mp_hyper_vec(*args):
     p = int(args[0])
     ap, bq, z = args[1:1 + p], args[1 + p:-1], args[-1]
 
@@ -67,7 +67,7 @@ def _mp_hyper_vec(*args):
     return np.vectorize(one, otypes=[float])(*ap, *bq, z)
 
 
-def _to_scipy_names(expr):
+def to_scipy_names(expr):
     def hyp(h):
         ap, bq, z = list(h.ap), list(h.bq), h.argument
         if len(ap) == 2 and len(bq) == 1:
@@ -87,7 +87,7 @@ def _to_scipy_names(expr):
     return expr
 
 
-def _fold_constants(expr):
+def fold_constants(expr):
     """Replace constant transcendental subexpressions (gamma(1/4), sqrt(pi) ...)
     by 20-digit Floats: the float64 export then does not recompute them."""
     def want(e):
@@ -143,8 +143,8 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
             quads[name] = q
             return sp.Function(name)(*q.params)
         expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
-    mods = [dict(_SCIPY_FUNCS, _mphyper=_mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
-    f = sp.lambdify(args, _to_scipy_names(_fold_constants(expr)), modules=mods, cse=True)
+    mods = [dict(_SCIPY_FUNCS, _mphyper=mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
+    f = sp.lambdify(args, to_scipy_names(fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):
         if patch is not None and sym not in patch:
@@ -385,7 +385,7 @@ GUARD_RATIO = 16.0
 GUARDED_RULES = ("gap_swap", "pressure_swap")
 
 
-def _guarded(derivation) -> bool:
+def is_guarded(derivation) -> bool:
     """Closed forms that can cancel beyond what the condition number allows:
     those with elliptic integrals of the third kind (Pi(n|m) diverges as
     n -> 1; the exact cylinder's gap cancels terms of size R to O(a^2/R)) and
@@ -473,7 +473,7 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     >>> from linecontact_sym.method.rules import Step
     >>> R = sp.Symbol("R", positive=True)
     >>> P_expr = sp.pi * E_star * a**2 / (4 * R)                                   # Eq. (13)
-    >>> d = Derivation("force", P_expr, True, Step("example", P_expr))
+    >>> d = Derivation("force", expr=P_expr, closed_form=True, step=Step("example", P_expr))
     >>> P = make_callable(d)
     >>> P.arguments
     ('E_star', 'R', 'a')
@@ -526,14 +526,19 @@ class NumericFunction:
         if self.backend == "mpmath" and any(isinstance(v, (list, tuple, np.ndarray)) for v in kw.values()):
             raise DomainError(f"the mpmath function of {self.derivation.quantity} takes scalars; use "
                               f"backend='numpy' for arrays (or loop over the points)")
+        outside = None
         if self.domain is not None:          # the contact's domain check (raises DomainError)
-            self.domain({**self.params, **kw})
+            outside = getattr(self.domain({**self.params, **kw}), "outside", None)
         if self._fn is None:
             self._fn = compile_callable(self.derivation, self.backend, self.dps, self.params, self.stable)
         try:
-            return self._fn(**kw)
+            out = self._fn(**kw)
         except (ZeroDivisionError, OverflowError) as exc:   # mpmath at a singular point
             raise singular_point(self.derivation.quantity, kw, exc) from None
+        if outside is not None:              # array points outside the domain (a DomainWarning said so)
+            out = np.array(np.broadcast_to(out, np.broadcast_shapes(np.shape(out), outside.shape)), dtype=float)
+            out[np.broadcast_to(outside, out.shape)] = np.nan
+        return out
 
     def __getstate__(self):
         if self.backend == "mpmath" and not self.derivation.closed_form:
@@ -564,7 +569,7 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
 
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
-        if stable and _guarded(derivation):
+        if stable and is_guarded(derivation):
             f = _guard(f, cancellation_probe(derivation), _cached_lambdify(derivation, "mpmath", True))
 
         def fn(**kw):

@@ -31,7 +31,7 @@ import scipy.special as sc
 import sympy as sp
 
 from .cache import IdentityCache
-from .exports import (_fold_constants, _guarded, _mp_hyper_vec, _to_scipy_names, cancellation_probe,
+from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, cancellation_probe,
                       cancellation_sums, compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
@@ -48,7 +48,7 @@ _SCALAR_FUNCS = {
     "hyp2f1c": lambda *a: float(np_hyp2f1c(*a)),
     "gamma": math.gamma, "loggamma": math.lgamma, "besseli": sc.iv, "besselj": sc.jv,
     # pFq beyond SciPy's 2F1/1F1/0F1 (a sin(x) profile's force law): mpmath, as in the NumPy export
-    "_mphyper": lambda *a: float(_mp_hyper_vec(*a)),
+    "_mphyper": lambda *a: float(mp_hyper_vec(*a)),
 }
 
 _CACHE = IdentityCache()
@@ -75,10 +75,10 @@ class ScalarKit:
         if expr.has(sp.Integral):
             return
         try:
-            self.f = sp.lambdify(syms, _to_scipy_names(_fold_constants(expr)), modules=[_SCALAR_FUNCS, "math"])
+            self.f = sp.lambdify(syms, to_scipy_names(fold_constants(expr)), modules=[_SCALAR_FUNCS, "math"])
             pairs = cancellation_sums(d)
             if pairs:
-                tup = _to_scipy_names(_fold_constants(sp.Tuple(*[q for p in pairs for q in p])))
+                tup = to_scipy_names(fold_constants(sp.Tuple(*[q for p in pairs for q in p])))
                 self.probe = sp.lambdify(syms, tup, modules=[_SCALAR_FUNCS, "math"], cse=True)
         except Exception:          # a function the math module does not have
             self.f = self.probe = None
@@ -174,7 +174,7 @@ def scalar_plan(nf):
     the NumPy path) for anything else: an argument 0 (where a removable
     singularity is patched), a value that is not finite, a guarded export."""
     d = nf.derivation
-    if nf.backend != "numpy" or not nf.stable or not d.closed_form or _guarded(d):
+    if nf.backend != "numpy" or not nf.stable or not d.closed_form or is_guarded(d):
         return None
     kit = scalar_kit(d)
     if kit.f is None or any(type(v) not in (float, int) for v in nf.params.values()):

@@ -103,7 +103,7 @@ _ALLOWED_CMP = (ast.Lt, ast.LtE, ast.Gt, ast.GtE, ast.Eq, ast.NotEq)
 
 
 
-def _where(where: str) -> str:
+def where_prefix(where: str) -> str:
     return f"{where}: " if where else ""
 
 
@@ -118,7 +118,7 @@ class _Validator(ast.NodeVisitor):
 
     def fail(self, problem, node=None):
         pos = f" (at column {node.col_offset + 1})" if node is not None and hasattr(node, "col_offset") else ""
-        raise ClaimError(f"{_where(self.where)}{problem}{pos} in {self.text!r}")
+        raise ClaimError(f"{where_prefix(self.where)}{problem}{pos} in {self.text!r}")
 
     depth = 0
 
@@ -403,9 +403,9 @@ def declare_symbols(names, where: str = "") -> dict:
     out = {}
     for name in names or ():
         if not isinstance(name, str) or not name.isidentifier() or name.startswith("_"):
-            raise ClaimError(f"{_where(where)}symbol name {name!r} is not a plain identifier")
+            raise ClaimError(f"{where_prefix(where)}symbol name {name!r} is not a plain identifier")
         if name in FUNCTIONS or name in CONSTANTS:
-            raise ClaimError(f"{_where(where)}symbol name {name!r} clashes with a function or constant")
+            raise ClaimError(f"{where_prefix(where)}symbol name {name!r} clashes with a function or constant")
         out[name] = SYMBOLS.get(name) or sp.Symbol(name, positive=True)
     return out
 
@@ -452,19 +452,19 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
         if isinstance(text, (int, float)) and not isinstance(text, bool):
             text = repr(text)
         else:
-            raise ClaimError(f"{_where(where)}expected a formula string, got {type(text).__name__}: {text!r}")
+            raise ClaimError(f"{where_prefix(where)}expected a formula string, got {type(text).__name__}: {text!r}")
     if not text.strip():
-        raise ClaimError(f"{_where(where)}empty formula")
+        raise ClaimError(f"{where_prefix(where)}empty formula")
     if len(text) > MAX_LENGTH:
-        raise ClaimError(f"{_where(where)}formula longer than {MAX_LENGTH} characters")
+        raise ClaimError(f"{where_prefix(where)}formula longer than {MAX_LENGTH} characters")
     try:
         # "^" means power with the precedence of "**" (token level, like SymPy's convert_xor)
         source = text.strip().replace("^", "**")
         tree = ast.parse(source, mode="eval")
     except SyntaxError as exc:
-        raise ClaimError(f"{_where(where)}not a valid formula ({exc.msg}) in {text!r}") from None
+        raise ClaimError(f"{where_prefix(where)}not a valid formula ({exc.msg}) in {text!r}") from None
     except (RecursionError, MemoryError, ValueError):
-        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+        raise ClaimError(f"{where_prefix(where)}formula nested too deeply: {text[:60]!r}...") from None
 
     sym_table = dict(SYMBOLS)
     if isinstance(symbols, dict):
@@ -485,7 +485,7 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
         checker.source = source
         checker.visit(tree)
     except RecursionError:
-        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+        raise ClaimError(f"{where_prefix(where)}formula nested too deeply: {text[:60]!r}...") from None
 
     local = dict(names)
     local.pop("True", None)
@@ -495,20 +495,20 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
     except ClaimError:
         raise
     except RecursionError:
-        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+        raise ClaimError(f"{where_prefix(where)}formula nested too deeply: {text[:60]!r}...") from None
     except Exception as exc:
-        raise ClaimError(f"{_where(where)}cannot build the formula {text!r}: {type(exc).__name__}: {exc}") from None
+        raise ClaimError(f"{where_prefix(where)}cannot build the formula {text!r}: {type(exc).__name__}: {exc}") from None
     if isinstance(expr, tuple):
-        raise ClaimError(f"{_where(where)}expected one expression, got a tuple: {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected one expression, got a tuple: {text!r}")
     if not isinstance(expr, sp.Basic):
         expr = sp.sympify(expr, strict=True)  # safe: parser output, never a string
     is_relation = isinstance(expr, (sp.logic.boolalg.Boolean, sp.Rel)) and not isinstance(expr, sp.Expr)
     if is_relation and not allow_relational:
-        raise ClaimError(f"{_where(where)}expected an expression, got the relation {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected an expression, got the relation {text!r}")
     if allow_relational and not is_relation:
-        raise ClaimError(f"{_where(where)}expected a relation such as 'a < R', got {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected a relation such as 'a < R', got {text!r}")
     if expr.has(sp.zoo, sp.nan) and not expr.is_Relational:
-        raise ClaimError(f"{_where(where)}the formula {text!r} is undefined (division by zero?)")
+        raise ClaimError(f"{where_prefix(where)}the formula {text!r} is undefined (division by zero?)")
     return expr
 
 

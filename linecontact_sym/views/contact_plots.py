@@ -96,6 +96,31 @@ def _scale(contact, vals, scale):
     return "1", 1.0
 
 
+def _a_max(contact, vals, name, L):
+    conds = getattr(contact.derivation("force"), "conditions", ())
+    bounded = any(name in {s.name for s in getattr(c, "free_symbols", ())} for c in conds)
+    return 0.99 * L if bounded else (4 * L if name == "b" else L)
+
+
+def default_loads(contact, values=None, fractions=(0.25, 0.5, 0.75)) -> list:
+    """The loads of the pressure and gap plots when none are given: the
+    forces P(a) at half-widths a = 0.25, 0.5, 0.75 of the force plot's range
+    (its length scale R or b, or 1), rounded to 3 significant digits.
+
+    >>> import linecontact_sym as lcs                # Hertz: P = pi E* a^2/(4R)
+    >>> default_loads(lcs.parabola(), {"R": 1})
+    [0.0491, 0.196, 0.442]
+    """
+    vals = _values(contact, values)
+    name, L = _scale(contact, vals, None)
+    A = _a_max(contact, vals, name, L) * np.asarray(fractions, dtype=float)
+    P = _call(contact.to_numeric("force", check=False), **vals, a=A)
+    loads = [float(f"{p:.3g}") for p in np.atleast_1d(P) if np.isfinite(p) and p > 0]
+    if not loads:
+        raise DomainError(f"no positive load P(a) at a = {A.tolist()}: pass loads=[...]")
+    return loads
+
+
 def force_data(contact, values=None, a_max=None, points: int = 401, scale=None):
     """``(X, Y, L)``: X = a/L in (0, a_max/L], Y = P/(E* L); L is the name
     of the length scale ('R', 'b', or '1').  Default a_max: L for R (0.99 L
@@ -103,9 +128,7 @@ def force_data(contact, values=None, a_max=None, points: int = 401, scale=None):
     vals = _values(contact, values)
     name, L = _scale(contact, vals, scale)
     if a_max is None:
-        conds = getattr(contact.derivation("force"), "conditions", ())
-        bounded = any(name in {s.name for s in getattr(c, "free_symbols", ())} for c in conds)
-        a_max = 0.99 * L if bounded else (4 * L if name == "b" else L)
+        a_max = _a_max(contact, vals, name, L)
     a_max = float(a_max)
     A = np.linspace(a_max / points, a_max, int(points))
     P = _call(contact.to_numeric("force", check=False), **vals, a=A)
@@ -166,21 +189,47 @@ def _finish(fig, ax, path, title=""):
     return fig
 
 
-def _name(contact):
+def _mathtext(tex: str) -> str:
+    """``$tex$`` when matplotlib's mathtext draws it and it fits a title, else ''."""
+    if len(tex) > 90:
+        return ""
+    try:
+        from matplotlib.mathtext import MathTextParser
+        MathTextParser("path").parse(f"${tex}$")
+    except Exception:  # noqa: BLE001 -- LaTeX that mathtext does not know (cases, ...)
+        return ""
+    return f"${tex}$"
+
+
+def profile_label(contact) -> str:
+    """The profile for a title, in LaTeX (the package's printer,
+    :func:`~linecontact_sym.core.printing.to_latex`): 'the parabola,
+    $f(x) = \\frac{x^{2}}{2 R}$'; a profile without a name of its own is its
+    formula; a formula mathtext cannot draw is left out."""
+    from ..core.printing import to_latex
     prof = getattr(contact, "contact", contact).profile
-    return getattr(prof, "name", None) or ""
+    name = getattr(prof, "name", None) or ""
+    tex = _mathtext("f(x) = " + to_latex(prof.expr))
+    if name and name != str(prof.expr):
+        return f"the {name}" + (f", {tex}" if tex else "")
+    return tex or (f"f(x) = {name}" if name else "")
+
+
+def _name(contact):
+    return profile_label(contact)
 
 
 def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=None, title=None,
                  points=None, **kw):
     """Draw ``what`` (one of :data:`PLOTS`) for ``contact``; see the module
     docstring for the normalisations.  ``loads``: the loads P (pressure and
-    gap); ``values``: parameter values by name; ``path``: write the figure
+    gap; default :func:`default_loads`, the loads at a = 0.25, 0.5, 0.75 of
+    the length scale); ``values``: parameter values by name; ``path``: write the figure
     there (PNG, PDF, ... by its suffix).  Returns the matplotlib Figure."""
     if what not in PLOTS:
         raise DomainError(f"unknown plot {what!r}; choose one of {', '.join(PLOTS)}")
     if what in ("pressure", "gap") and not loads:
-        raise DomainError(f"the {what} plot needs loads, e.g. loads=[0.1, 0.5, 1.0]")
+        loads = default_loads(contact, values)
     name = _name(contact)
     if what == "pressure":
         X, Ys, As = pressure_data(contact, loads, values, points or 201)
@@ -191,7 +240,7 @@ def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=
         ax.set_ylabel(r"$p(x)/p_0$,  $p_0 = 2P/(\pi a)$")
         ax.set_xlim(-1, 1)
         ax.set_ylim(bottom=0)
-        default = f"Contact pressure{' of the ' + name if name else ''}"
+        default = f"Contact pressure{' of ' + name if name else ''}"
     elif what == "force":
         X, Y, L = force_data(contact, values, points=points or 401, **kw)
         fig, ax = _figure()
@@ -201,7 +250,7 @@ def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=
         ax.set_ylabel(f"$P/(E^* {sub})$" if sub else "$P/E^*$")
         ax.set_xlim(0, X[-1])
         ax.set_ylim(bottom=0)
-        default = f"Force law{' of the ' + name if name else ''}"
+        default = f"Force law{' of ' + name if name else ''}"
     elif what == "adhesive":
         d = adhesive_data(contact, values, points or 601, **kw)
         fig, ax = _figure()
@@ -216,7 +265,7 @@ def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=
         ax.set_ylabel(r"$P/P_{\mathrm{adh}}$")
         ax.set_xlim(0, X[-1])
         law = getattr(getattr(contact, "law", None), "label", "")
-        default = f"{law + ' f' if law else 'F'}orce law{' of the ' + name if name else ''}"
+        default = f"{law + ' f' if law else 'F'}orce law{' of ' + name if name else ''}"
     else:
         X, Ys, As = gap_data(contact, loads, values, points=points or 201, **kw)
         fig, ax = _figure()
@@ -226,8 +275,8 @@ def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=
         ax.set_ylabel("$g(x)/f(a)$")
         ax.set_xlim(1, X[-1])
         ax.set_ylim(bottom=0)
-        default = f"Gap outside the contact{' of the ' + name if name else ''}"
+        default = f"Gap outside the contact{' of ' + name if name else ''}"
     return _finish(fig, ax, path, default if title is None else title)
 
 
-__all__ = ["PLOTS", "plot_contact", "pressure_data", "force_data", "adhesive_data", "gap_data"]
+__all__ = ["PLOTS", "plot_contact", "default_loads", "profile_label", "pressure_data", "force_data", "adhesive_data", "gap_data"]

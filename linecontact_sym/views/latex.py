@@ -200,6 +200,70 @@ def fit_math(tex: str) -> str:
     return r"\fitmath{%s}" % tex
 
 
+def visible_length(tex: str) -> int:
+    """A rough printed width of a LaTeX formula: its characters without the
+    command names and braces (``\\frac{a}{b}`` counts 2)."""
+    return len(re.sub(r"\\[a-zA-Z]+|[{}\s]", "", tex))
+
+
+def wrapped_latex(expr, width: int = 80) -> str:
+    r"""LaTeX of ``expr`` (the package's printer) whole, broken into lines of
+    about ``width`` printed characters where it is longer: a sum at its top
+    level terms (an ``aligned`` block, the continued lines indented), a
+    product around its longest sum factor (``\Bigl( ... \Bigr)``), each
+    case of a Piecewise.  A
+    formula is never cut: the lines together are the whole expression.
+
+    >>> import sympy as sp
+    >>> t = sp.symbols("t0:12")
+    >>> tex = wrapped_latex(sum(ti**2 for ti in t), width=30)
+    >>> tex.count(r"\\"), tex.startswith(r"\begin{aligned}")
+    (2, True)
+    """
+    import sympy as sp
+    from ..core.conversion import to_basic
+    expr = to_basic(expr)
+    whole = to_latex(expr)
+    if visible_length(whole) <= width or not isinstance(expr, sp.Expr):
+        return whole
+    if isinstance(expr, sp.Piecewise):
+        rows = [wrapped_latex(e, width - 20) + r" & " + (r"\text{otherwise}" if c == sp.true
+                                                         else r"\text{for}\: " + to_latex(c))
+                for e, c in expr.args]
+        return r"\begin{cases} " + r" \\ ".join(rows) + r" \end{cases}"
+    if isinstance(expr, sp.Add):
+        return r"\begin{aligned}&" + r" \\ &\quad ".join(_lines(expr, width)) + r"\end{aligned}"
+    if isinstance(expr, sp.Mul):
+        sums = [f for f in expr.args if isinstance(f, sp.Add)]
+        if sums:
+            big = max(sums, key=lambda f: len(to_latex(f)))
+            rest = expr / big
+            sign = "-" if rest.could_extract_minus_sign() else ""
+            rest = -rest if sign else rest
+            head = "" if rest == 1 else to_latex(rest)
+            lines = _lines(big, width)
+            return (r"\begin{aligned}&" + sign + head + r"\Bigl(" + r" \\ &\quad ".join(lines) + r"\Bigr)"
+                    + r"\end{aligned}")
+    return whole
+
+
+def _lines(add, width: int = 80) -> list:
+    """The terms of a sum, signed, gathered into lines of about ``width``."""
+    lines, cur = [], ""
+    for i, t in enumerate(add.as_ordered_terms()):
+        neg = t.could_extract_minus_sign()
+        tex = to_latex(-t if neg else t)
+        if t.is_Add or (neg and (-t).is_Add):
+            tex = rf"\left({tex}\right)"
+        piece = ("- " if neg else ("" if i == 0 else "+ ")) + tex
+        if cur and visible_length(cur + piece) > width:
+            lines.append(cur.rstrip())
+            cur = ""
+        cur += piece + " "
+    lines.append(cur.rstrip())
+    return lines
+
+
 def standalone(body: str, title: str | None = None, landscape: bool = False) -> str:
     """A complete LaTeX document around ``body`` (article, A4, booktabs,
     longtable, amsmath, graphicx; :data:`PREAMBLE`)."""
@@ -284,5 +348,5 @@ def check_latex(text: str) -> list[str]:
     return problems
 
 
-__all__ = ["to_latex", "latex_escape", "text_to_latex", "booktabs_table", "longtable", "standalone",
+__all__ = ["to_latex", "latex_escape", "text_to_latex", "wrapped_latex", "visible_length", "booktabs_table", "longtable", "standalone",
            "fit_math", "check_latex", "PaperLatexPrinter", "PREAMBLE"]

@@ -123,10 +123,14 @@ def plot_quantity(contacts, quantity: str = "force", *, x, y, x_range, values=No
     styles such as ``"--"``) and ``widths`` go one per contact (colours C0,
     C1, ... in order).  ``marks`` are ``(X, text)`` vertical marker lines;
     ``ratio = (i, j)`` adds a lower panel with curve i / curve j (where
-    curve j is non-zero) labelled ``ratio_label``.  Returns the paths
+    curve j is non-zero) labelled ``ratio_label``.  Axis labels not given
+    are the axis formulas in LaTeX (``$\\frac{a}{R}$``).  Returns the paths
     written, one per format.  Needs matplotlib (the ``[plot]`` extra).
     """
     Figure = _figure_class()
+    from ..core.printing import to_latex
+    xlabel = xlabel or f"${to_latex(_axis_expr(x, where='x axis'))}$"     # the axis formulas, in LaTeX
+    ylabel = ylabel or f"${to_latex(_axis_expr(y, quantity, where='y axis'))}$"
     X, curves = curve_data(contacts, quantity, x=x, y=y, x_range=x_range, values=values, points=points)
     k = len(curves)
     labels = list(labels or [None] * k)

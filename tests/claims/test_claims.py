@@ -273,3 +273,20 @@ def test_printed_figures_hold_to_their_printed_digits():
     assert res["off"].status == C.FAILS
     assert all(p.values[sp.Symbol("R", positive=True)] == 2 for t in res["ok"].targets
                for f in t.forms for p in f.points)
+
+
+def test_pressure_counterexample_shows_the_pressure():
+    """Issue 23: a failing pressure claim reports the printed and derived
+    pressures at the point (Hertz p = E* sqrt(a^2 - x^2)/(2R): the printed form
+    has twice that), not only a resultant of the Flamant checks."""
+    r = check({"quantity": "pressure", "profile": "x**2/(2*R)", "formula": "E_star/R*sqrt(a**2 - x**2)",
+               "points": 1})
+    assert r.status == FAILS
+    cex = r.targets[0].forms[0].counterexample
+    text = cex.describe()
+    assert text.split(": ", 1)[1].startswith("value: printed "), text
+    v = cex.values
+    with mpmath.workdps(40):
+        E, R, a, x = (mpmath.mpf(sp.Rational(v[s]).p) / sp.Rational(v[s]).q for s in (lcs.E_star, lcs.R, lcs.a, lcs.x))
+        hertz = E * mpmath.sqrt(a**2 - x**2) / (2 * R)
+        assert mpmath.nstr(hertz, 20) in text and mpmath.nstr(2 * hertz, 20) in text

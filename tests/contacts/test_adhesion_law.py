@@ -8,6 +8,8 @@ Both are the JKR law in disguise, so every generic result must equal the JKR
 closed form of Popov (2017), Eq. (34), recomputed here."""
 from __future__ import annotations
 
+import pickle
+
 import mpmath
 import pytest
 import sympy as sp
@@ -36,8 +38,8 @@ class ScaledJKR(CohesiveLaw):
     def derive_force(self, ad):
         fd = ad.contact.derivation("force")
         expr = fd.expr - sp.sqrt(4 * sp.pi * S.a * self["w"] * S.E_star)
-        return Derivation("force", expr, fd.closed_form, Step("test", expr, (), ()), fd.conditions,
-                          variables=(S.a,) + ad.variables)
+        return Derivation("force", expr=expr, closed_form=fd.closed_form, step=Step("test", expr),
+                          conditions=fd.conditions, variables=(S.a,) + ad.variables)
 
     def numeric(self, base, values):
         wv, E = self.numbers(values)["w"], values[S.E_star]
@@ -67,8 +69,8 @@ class InnerSolveJKR(CohesiveLaw):
         fd = ad.contact.derivation("force")
         eqs = sp.Tuple(sp.Eq(_c**2, 2 * sp.pi * S.a * self["work_of_adhesion"] * S.E_star),
                        sp.Eq(S.P, fd.expr - _c))
-        return Derivation("force", eqs, False, Step("test_system", eqs, (), ()), fd.conditions,
-                          variables=(S.a,) + ad.variables)
+        return Derivation("force", expr=eqs, closed_form=False, step=Step("test_system", eqs),
+                          conditions=fd.conditions, variables=(S.a,) + ad.variables)
 
     def numeric(self, base, values):
         gv, Ev = self.numbers(values)["work_of_adhesion"], values[S.E_star]
@@ -83,8 +85,15 @@ class InnerSolveJKR(CohesiveLaw):
         return on_base(base, build)
 
 
-SCALED = register_law(ScaledJKR)
-INNER = register_law(InnerSolveJKR)
+@pytest.fixture(scope="module", autouse=True)
+def registered():
+    """The two test laws registered for this module only (a law's module and
+    its one registration line), removed afterwards: no other test sees them."""
+    classes = {law: register_law(law) for law in (ScaledJKR, InnerSolveJKR)}
+    yield classes
+    for law in classes:
+        LAWS.pop(law.name)
+        CONTACT_KINDS.pop(law.kind)
 
 
 def _jkr_parabola_pull_off(R, E, g):
@@ -93,12 +102,17 @@ def _jkr_parabola_pull_off(R, E, g):
             mpmath.cbrt(2 * R**2 * g / (mpmath.pi * E)))
 
 
-def test_registration_makes_a_contact_kind_with_the_generic_quantities():
+def test_registration_makes_a_contact_kind_with_the_generic_quantities(registered):
+    SCALED = registered[ScaledJKR]
     assert LAWS["jkr"] is lcs.parabola().adhesive().__class__
     assert CONTACT_KINDS["test_scaled_jkr"] is SCALED and SCALED.law_class is ScaledJKR
     assert {"force", "pressure", "pull_off_force", "adhesion_force", "pull_off_half_width",
             "jump_in_half_width", "half_width"} <= set(SCALED.quantities())
     assert "flat_punch_force" in LAWS["jkr"].quantities() and "flat_punch_force" not in SCALED.quantities()
+    ad = lcs.parabola().adhesion("test_scaled_jkr")         # a made class pickles like a written one
+    P = ad.force
+    back = pickle.loads(pickle.dumps(ad))
+    assert type(back) is SCALED and back.law == ad.law and sp.simplify(back.force - P) == 0
 
 
 def test_parameters_are_checked_against_their_domains():

@@ -289,3 +289,17 @@ def test_principal_shear_reaches_the_surface_at_mu_one_over_sqrt7(sliding):
     assert abs(f(x0, z0 + h) - f(x0, z0 - h)) / (2 * h) < 1e-8
     m = sliding.maximum("principal_shear", mu=1 / math.sqrt(7) - 1e-3, **HERTZ)
     assert not m.on_surface and m.value > 1 / math.sqrt(7) - 1e-3
+
+
+def test_stress_plot_needs_only_the_profile_parameters(hertz):
+    """Issue 23: a, E* and Poisson's ratio default (a = E* = 1 scale out of
+    sigma/p0 over (x/a, z/a); nu = 0.3 is said in the title); the maximum
+    marked is Hertz's tau_1 = 0.300 p0 at z = 0.786 a (Johnson, Eq. 4.51)."""
+    plt = pytest.importorskip("matplotlib.pyplot")
+    ax = hertz.plot("principal_shear", R=1, n=(41, 21))
+    assert ax.get_title() == r"$\tau_1$ under the parabola, $f(x) = \frac{x^{2}}{2 R}$"
+    star = [ln for ln in ax.lines if ln.get_marker() == "*"][0]
+    assert star.get_ydata()[0] == pytest.approx(0.786, abs=2e-3)
+    ax = hertz.plot(R=1, n=(41, 21))
+    assert ax.get_title().endswith(r"($\nu = 0.3$)")
+    plt.close("all")

@@ -213,3 +213,53 @@ def test_caches_are_kept_by_the_numeric_layer_not_in_the_objects():
     del c, d, f64
     gc.collect()
     assert gone() is None
+
+
+# ------------------------------------------------------------------ issue 23: arrays, printed digits
+def test_array_point_outside_the_contact_is_nan_with_a_warning_the_others_evaluated():
+    """One x outside |x| <= a in an array: NaN there and a DomainWarning; the
+    other points are Hertz's p = E* sqrt(a^2 - x^2)/(2R); a scalar still raises."""
+    c = law("parabola")
+    x = [0.0, 0.5, 1.5, -0.9]
+    hertz = [math.sqrt(1 - v * v) / 2 if abs(v) <= 1 else math.nan for v in x]
+    with pytest.warns(lcs.core.errors.DomainWarning, match="1 of 4 points"):
+        v = c.to_numeric("pressure")(a=1.0, x=x, R=1.0, E_star=1.0)
+    assert math.isnan(v[2]) and v[[0, 1, 3]] == pytest.approx([hertz[i] for i in (0, 1, 3)], rel=1e-15)
+    for rtol in (1e-12, 1e-30):
+        with pytest.warns(lcs.core.errors.DomainWarning):
+            r = evaluate(c, "pressure", a=1.0, x=x, R=1.0, E_star=1.0, rtol=rtol)
+        assert r.details["paths"][2] == "outside" and math.isnan(float(r.value[2]))
+        assert [float(r.value[i]) for i in (0, 1, 3)] == pytest.approx([hertz[i] for i in (0, 1, 3)], rel=1e-15)
+    with pytest.raises(DomainError, match="outside the contact"):
+        c.to_numeric("pressure")(a=1.0, x=1.5, R=1.0, E_star=1.0)
+
+
+def test_array_point_breaking_a_condition_is_nan():
+    """The exact cylinder's force law holds for a < R: a = 1.5 R in an array is NaN."""
+    c = law("exact")
+    with pytest.warns(lcs.core.errors.DomainWarning, match="a < R"):
+        v = c.to_numeric("force")(a=[0.5, 1.5], R=1.0, E_star=1.0)
+    assert math.isnan(v[1])
+    assert v[0] == pytest.approx(float(ref("exact", "force", a=0.5, R=1.0, E_star=1.0)), rel=1e-14)
+
+
+def test_results_print_the_digits_they_hold():
+    c = law("parabola")                      # P = pi E* a^2/(4R) = pi/8 here
+    r = evaluate(c, "force", a=0.5, R=1.0, E_star=2.0, rtol=1e-40)
+    with mpmath.workdps(60):
+        pi8 = mpmath.nstr(mpmath.pi / 8, 41)
+    assert pi8[:40] in repr(r) and pi8[:40] in str(r)      # 40 digits, not mpf's 17
+    assert len(repr(r)) < 150 and "mpmath@" in repr(r)
+    r = evaluate(c, "force", a=0.5, R=1.0, E_star=2.0, rtol=1e-12)
+    assert repr(r) == "<Evaluation force = 0.39269908169872414 via float64, rel. error <= 7.1e-15>"
+
+
+def test_evaluate_at_prints_the_digits_asked_for():
+    c = law("parabola")
+    v = c.evaluate_at("force", a=0.5, R=1, E_star=2, dps=40)
+    with mpmath.workdps(60):
+        pi8 = mpmath.nstr(mpmath.pi / 8, 40)
+        assert abs(v - mpmath.pi / 8) < mpmath.mpf(10) ** -39
+    assert repr(v) == f"mpf('{pi8}')" and str(v) == pi8 and isinstance(v, mpmath.mpf)
+    import pickle
+    assert repr(pickle.loads(pickle.dumps(v))) == repr(v)

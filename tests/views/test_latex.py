@@ -129,3 +129,48 @@ def test_tables_compile(tmp_path):
                               cwd=tmp_path, capture_output=True, text=True, timeout=120)
         assert proc.returncode == 0, proc.stdout[-2000:]
         assert (tmp_path / f"{name}.pdf").exists()
+
+
+def test_derivation_repr_is_a_few_lines_with_formula_status_and_time():
+    """Issue 23: a tangential derivation printed a multi-thousand-character
+    dataclass dump; now the formula, the status and the timing."""
+    t = lcs.TangentialLineContact(lcs.parabola(budget=5))
+    d = t.derivation("tangential_force")
+    text = repr(d)
+    assert len(text.splitlines()) <= 4 and len(text) < 400, text
+    assert str(d.expr) in text and "verified at 5 points" in text and "derived in" in text
+    tex = d._repr_latex_()
+    assert tex.startswith("$") and tex.endswith("$") and r"\mathrm{tangential\_force}" in tex
+    assert r"\mu" in tex and "verified at 5 points" in tex
+
+
+def test_long_formulas_are_wrapped_whole():
+    """Issue 23: reports never cut a formula: a long sum breaks at its terms into
+    lines of about the width; the lines hold every term; Piecewise keeps its cases."""
+    from linecontact_sym.views.latex import visible_length, wrapped_latex
+    t = sp.symbols("t0:16")
+    expr = lcs.E_star * (sum(ti**3 / (ti + 1) for ti in t) - lcs.a)
+    tex = wrapped_latex(expr, width=40)
+    assert check_latex(f"${tex}$") == []
+    body = tex[tex.index(r"\Bigl(") + 6:tex.index(r"\Bigr)")]
+    lines = body.split(r" \\ &\quad ")
+    assert len(lines) >= 4 and all(visible_length(ln) <= 40 + 12 for ln in lines)
+    for ti in t:                                             # every term is there, once
+        assert tex.count(to_latex(ti**3 / (ti + 1))) == 1
+    short = lcs.pi * lcs.a if hasattr(lcs, "pi") else sp.pi * lcs.a
+    assert wrapped_latex(short) == to_latex(short)
+    pw = sp.Piecewise((0, lcs.a <= lcs.b), (expr, True))
+    assert wrapped_latex(pw, 40).startswith(r"\begin{cases}") and r"\Bigl(" in wrapped_latex(pw, 40)
+
+
+def test_markdown_report_keeps_the_whole_printed_formula():
+    paper = paper_from_dict({
+        "key": "demo", "title": "long",
+        "claims": [{"label": "long", "title": "a long wrong law", "quantity": "force", "profile": "x**2/(2*R)",
+                    "formula": " + ".join(f"E_star*a**{k}/(R**{k - 1}*{k + 1})" for k in range(2, 12)),
+                    "points": 1}]}, "demo.toml")
+    result = C.check_paper(paper, budget=5)
+    md = markdown_report(result)
+    printed = paper.claims[0].forms[0].text
+    assert f"`{printed}`" in md and len(printed) > 150
+    assert r"\begin{aligned}" in md

@@ -181,3 +181,39 @@ def test_contact_plot_writes_figures(tmp_path):
         c.plot("torque")
     with pytest.raises(DomainError, match="'R'"):
         c.plot("pressure", loads=[1.0])
+
+
+def test_plots_need_no_loads_and_title_the_profile_in_latex():
+    """Issue 23: a plot without loads draws the loads at a = 0.25, 0.5, 0.75 R
+    (Hertz: P = pi E* a^2/(4R)); titles carry the profile in LaTeX, not SymPy's str."""
+    pytest.importorskip("matplotlib")
+    from linecontact_sym.views.contact_plots import default_loads
+    c = hertz()[0]
+    assert default_loads(c, {"R": 2, "E_star": 3}) == [float(f"{np.pi * 3 * (f * 2)**2 / 8:.3g}") for f in (0.25, 0.5, 0.75)]
+    for what in ("pressure", "gap"):
+        fig = c.plot(what, values={"R": 1}, points=21)
+        ax = fig.axes[0]
+        labels = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert labels == ["$P = 0.0491$ ($a = 0.25$)", "$P = 0.196$ ($a = 0.5$)", "$P = 0.442$ ($a = 0.75$)"]
+        assert r"$f(x) = \frac{x^{2}}{2 R}$" in ax.get_title() and "**" not in ax.get_title()
+
+
+def test_plot_quantity_labels_default_to_the_axis_formulas_in_latex(tmp_path):
+    pytest.importorskip("matplotlib")
+    import linecontact_sym as lcs
+    from unittest import mock
+    from linecontact_sym.views import plots
+    seen = {}
+    real = plots._figure_class
+
+    def spy():
+        Fig = real()
+
+        class F(Fig):
+            def savefig(self, *a, **k):
+                seen["x"], seen["y"] = self.axes[0].get_xlabel(), self.axes[0].get_ylabel()
+        return F
+    with mock.patch.object(plots, "_figure_class", spy):
+        plots.plot_quantity([hertz()[0]], "force", x="a/R", y="P/(E_star*R)", x_range=(0, 1), points=5,
+                            values={"R": 1, "E_star": 1}, out_dir=tmp_path, formats=("png",))
+    assert seen == {"x": r"$\frac{a}{R}$", "y": r"$\frac{P}{E^{*} R}$"}

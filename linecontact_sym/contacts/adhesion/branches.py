@@ -5,7 +5,6 @@ the one that produced it; the equilibrium check of a pressure."""
 from __future__ import annotations
 
 import random
-import time
 
 import mpmath
 import sympy as sp
@@ -14,7 +13,7 @@ from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.conversion import rational, real_mpf, to_mpf
 from ...core.errors import BudgetExceeded, DomainError, NoEquilibriumError, NoPullOffError
-from ...method.derivation import Derivation
+from ...method.derivation import Derivation, timed
 from ...method.transforms import mean_quad
 from ...method.rules import Step
 from ...method.verification import VERIFY_DPS, VerificationRecord, digits_agreeing, verify
@@ -52,10 +51,10 @@ def equilibrium_digits(ad, pexpr) -> float:
     return worst
 
 
+@timed
 def derive_jump_in(ad) -> Derivation:
     """Stable root of P(a) = 0: the half-width the contact snaps to at zero
     load; verified against the stable root of the quadrature law."""
-    t0 = time.perf_counter()
     fd = ad.contact.derivation("force")
     force = ad.derivation("force")
     P = force.expr
@@ -98,15 +97,16 @@ def derive_jump_in(ad) -> Derivation:
     if expr is None:
         stmt = statement(P, "load", 0)
         step = Step("numeric_root", stmt, (), ("numeric: stable root of P(a) = 0",))
-        return NumericDerivation("jump_in_half_width", stmt, False, step, (), None,
-                                 time.perf_counter() - t0, tuple(notes), reference, ad.variables)
+        return NumericDerivation("jump_in_half_width", expr=stmt, closed_form=False, step=step, notes=tuple(notes),
+                                 reference=reference, variables=ad.variables)
     rec = None
     if ad.contact.verify:
         rec = verify(expr, reference, ad._sampler(), conds, n_points=ad.contact.points,
                      reference_name="stable root of the quadrature force law P(a) = 0")
         ad._require(rec, "jump_in_half_width")
-    return Derivation("jump_in_half_width", expr, True, Step("solve_load", expr, tuple(conds), (method,)),
-                      tuple(conds), rec, time.perf_counter() - t0, tuple(notes), reference, ad.variables)
+    return Derivation("jump_in_half_width", expr=expr, closed_form=True,
+                      step=Step("solve_load", expr, tuple(conds), (method,)), conditions=tuple(conds), verification=rec,
+                      notes=tuple(notes), reference=reference, variables=ad.variables)
 
 
 def why_no_equilibrium(law, load) -> str:
@@ -128,11 +128,11 @@ def why_no_equilibrium(law, load) -> str:
         return f"above the loads reached on the search range a <= {mpmath.nstr(land.hi, 6)}"
 
 
+@timed
 def derive_half_widths(ad, load):
     """(stable, unstable) Derivations of a(P): closed forms from sympy.solve
     (under the budget), each identified with its branch at random points,
     else the unevaluated P(a) = P with a numeric evalf."""
-    t0 = time.perf_counter()
     force = ad.derivation("force")
     P = force.expr
     notes, cands = [], []
@@ -179,14 +179,15 @@ def derive_half_widths(ad, load):
             expr = tidy_checked(ad, chosen, []) if sp.count_ops(chosen) < 80 else chosen
             step = Step("solve_load", expr, tuple(cond), ("sympy.solve of P(a) = P, branch identified at random "
                                                           "points",))
-            out.append(Derivation(q, expr, True, step, tuple(cond), rec, time.perf_counter() - t0, tuple(notes),
-                                  ref(stable), variables))
+            out.append(Derivation(q, expr=expr, closed_form=True, step=step, conditions=tuple(cond), verification=rec,
+                                  notes=tuple(notes), reference=ref(stable), variables=variables))
         else:
             step = Step("numeric_root", statement(P, "load", load), (), (f"numeric root of P(a) = P on the "
                                                              f"{'stable' if stable else 'unstable'} branch "
                                                              f"(no closed form)",))
-            out.append(Derivation(q, statement(P, "load", load), False, step, tuple(cond), None, time.perf_counter() - t0,
-                                  tuple(notes), ref(stable), variables))
+            out.append(Derivation(q, expr=statement(P, "load", load), closed_form=False, step=step,
+                                  conditions=tuple(cond), notes=tuple(notes), reference=ref(stable),
+                                  variables=variables))
     return tuple(out)
 
 

@@ -29,6 +29,8 @@ of its own kind whose quantities are the generic ones plus the law's.
 """
 from __future__ import annotations
 
+import sys
+
 import sympy as sp
 
 from ...core import symbols as S
@@ -76,19 +78,20 @@ class AdhesiveContact(ContactOn):
     law_class = None
 
     force = Quantity("P(a)", "", "load per unit length P(a) of the adhesive contact (negative = tensile)",
-                     aliases=("adhesive_force",), latex=r"P(a)")
+                     aliases=("adhesive_force",), latex=r"P(a)", unit="N/m")
     pressure = Quantity("p(x; a)", "", "pressure of the adhesive contact, |x| < a (compressive positive)",
-                        arguments=("a", "x"), domain="inside", aliases=("adhesive_pressure",), latex=r"p(x)")
+                        arguments=("a", "x"), domain="inside", aliases=("adhesive_pressure",), latex=r"p(x)",
+                        unit="Pa")
     pull_off_force = Quantity("P_min", "", "pull-off load under load control, the minimum of "
-                              "P(a): negative (tensile)", arguments=(), latex=r"P_{\min}")
+                              "P(a): negative (tensile)", arguments=(), latex=r"P_{\min}", unit="N/m")
     adhesion_force = Quantity("P_adh", "", "adhesive force P_adh = -P_min > 0", arguments=(),
-                              latex=r"P_{\mathrm{adh}}")
+                              latex=r"P_{\mathrm{adh}}", unit="N/m")
     pull_off_half_width = Quantity("a_po", "", "half-width at pull-off (= jump-out half-width)", arguments=(),
-                                   aliases=("jump_out_half_width",), latex=r"a_{\mathrm{po}}")
+                                   aliases=("jump_out_half_width",), latex=r"a_{\mathrm{po}}", unit="m")
     jump_in_half_width = Quantity("a_in", "", "half-width the contact snaps to at zero load (stable root of "
-                                  "P(a) = 0)", arguments=(), latex=r"a_{\mathrm{in}}")
+                                  "P(a) = 0)", arguments=(), latex=r"a_{\mathrm{in}}", unit="m")
     half_width = Quantity("a(P)", "", "equilibrium half-widths at the load P, stable branch first",
-                          arguments=("P",), method=True, latex="a(P)")
+                          arguments=("P",), method=True, latex="a(P)", unit="m")
 
     def __init__(self, contact, law: CohesiveLaw, values=None):
         if not isinstance(law, CohesiveLaw):
@@ -323,16 +326,17 @@ class AdhesiveLineContact(AdhesiveContact):
     law_class = JKR
 
     force = Quantity("P(a)", "Eq. (33)", "JKR load per unit length P0(a) - Phat (negative = tensile)",
-                     aliases=("adhesive_force",), latex=r"P_{\mathrm{JKR}}(a)")
+                     aliases=("adhesive_force",), latex=r"P_{\mathrm{JKR}}(a)", unit="N/m")
     pressure = Quantity("p(x; a)", "Eq. (29)", "JKR pressure p0 - Phat/(pi sqrt(a^2 - x^2)), |x| < a "
                         "(compressive positive; tensile and singular at the edges)", arguments=("a", "x"),
-                        domain="inside", aliases=("adhesive_pressure",), latex=r"p_{\mathrm{JKR}}(x)")
+                        domain="inside", aliases=("adhesive_pressure",), latex=r"p_{\mathrm{JKR}}(x)",
+                        unit="Pa")
     flat_punch_force = JKR.quantities["flat_punch_force"]
     _derive_flat_punch_force = lambda self: self.law.derive_flat_punch_force(self)  # noqa: E731
     pull_off_force = Quantity("P_min", "Eqs. (34)-(36)", "pull-off load under load control, the minimum of "
-                              "P(a): negative (tensile)", arguments=(), latex=r"P_{\min}")
+                              "P(a): negative (tensile)", arguments=(), latex=r"P_{\min}", unit="N/m")
     adhesion_force = Quantity("P_adh", "Eqs. (34)-(36)", "adhesive force P_adh = -P_min > 0 (the paper's)",
-                              arguments=(), latex=r"P_{\mathrm{adh}}")
+                              arguments=(), latex=r"P_{\mathrm{adh}}", unit="N/m")
 
     def __init__(self, contact, work_of_adhesion=S.gamma, values=None):
         super().__init__(contact, JKR(work_of_adhesion), values)
@@ -379,7 +383,12 @@ def register_law(law_class, contact_class=None):
         ns = {"kind": law_class.kind, "law_class": law_class, "__doc__": law_class.__doc__,
               **law_class.quantities,
               **{f"_derive_{q}": _deriver(q) for q in law_class.quantities}}
-        contact_class = type(f"{law_class.__name__}Contact", (AdhesiveContact,), ns)
+        name = f"{law_class.__name__}Contact"
+        contact_class = type(name, (AdhesiveContact,), ns)
+        # pickled by reference like a hand-written class: an attribute of the law's module
+        contact_class.__module__ = law_class.__module__
+        contact_class.__qualname__ = name
+        setattr(sys.modules[law_class.__module__], name, contact_class)
     LAWS[law_class.name] = contact_class
     return contact_class
 

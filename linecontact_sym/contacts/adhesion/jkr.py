@@ -26,7 +26,6 @@ import mpmath
 import sympy as sp
 
 import math
-import time
 
 from ...core import symbols as S
 from ...core.conversion import float_values, rational, to_mpf
@@ -118,7 +117,8 @@ class JKR(CohesiveLaw):
     label = "JKR"
     parameters = (Parameter("work_of_adhesion", S.gamma, "nonnegative", "the work of adhesion", GAMMA_RANGE),)
     quantities = {"flat_punch_force": Quantity("Phat(a)", "Eq. (31)", "force of the pulled flat punch "
-                                               "sqrt(2 pi a gamma E*)", aliases=("Phat",), latex=r"\hat{P}(a)")}
+                                               "sqrt(2 pi a gamma E*)", aliases=("Phat",), latex=r"\hat{P}(a)",
+                                               unit="N/m")}
 
     @property
     def gamma(self):
@@ -153,7 +153,6 @@ class JKR(CohesiveLaw):
     def derive_force(self, ad) -> Derivation:
         """Eq. (33): P(a) = P0(a) - Phat, verified against the quadrature of
         Eq. (10*) minus Phat from the energy balance."""
-        t0 = time.perf_counter()
         fd = ad.contact.derivation("force")
         expr = fd.expr - flat_punch_force(self.gamma)
         prof, gexpr = ad.profile, self.gamma
@@ -171,14 +170,13 @@ class JKR(CohesiveLaw):
         step = Step("jkr_superposition", expr, fd.conditions,
                     (f"Eq. (33): P0(a) of the engine ({fd.method}) minus Phat, Eq. (31)" if fd.closed_form
                      else "numeric fallback: unevaluated Eq. (10*) minus Phat",))
-        return Derivation("force", expr, fd.closed_form, step, fd.conditions, rec, time.perf_counter() - t0,
-                          fd.notes, reference, (S.a,) + ad.variables)
+        return Derivation("force", expr=expr, closed_form=fd.closed_form, step=step, conditions=fd.conditions,
+                          verification=rec, notes=fd.notes, reference=reference, variables=(S.a,) + ad.variables)
 
     def derive_pressure(self, ad) -> Derivation:
         """Eq. (29): p(x) = p0(x) - Phat/(pi sqrt(a^2 - x^2)), verified against
         the quadrature of Eq. (12) minus the punch with Phat from the energy
         balance, and by equilibrium: 2 int_0^a p dx = P(a) of Eq. (33)."""
-        t0 = time.perf_counter()
         pd = ad.contact.derivation("pressure")
         expr = pd.expr - flat_punch_force(self.gamma) / (sp.pi * sp.sqrt(S.a**2 - S.x**2))
         gexpr = self.gamma
@@ -200,14 +198,15 @@ class JKR(CohesiveLaw):
         step = Step("jkr_superposition", expr, pd.conditions,
                     ("Eq. (29): p0 of the engine (" + pd.method + ") minus the pulled flat punch" if pd.closed_form
                      else "numeric fallback: unevaluated Eq. (12) minus the flat punch",))
-        return Derivation("pressure", expr, pd.closed_form, step, pd.conditions, rec, time.perf_counter() - t0,
-                          tuple(notes), reference, (S.a, S.x) + ad.variables)
+        return Derivation("pressure", expr=expr, closed_form=pd.closed_form, step=step, conditions=pd.conditions,
+                          verification=rec, notes=tuple(notes), reference=reference,
+                          variables=(S.a, S.x) + ad.variables)
 
     # ----------------------------------------------------------- numbers
     def numeric(self, base, values):
         """P(a) = P0(a) - B1 sqrt(a), B1 = sqrt(2 pi gamma E*), on ``base``."""
         g = self.numbers(values)["work_of_adhesion"]
-        E = sp.sympify(values[S.E_star])
+        E = sp.sympify(values[S.E_star], strict=True)
         if g < 0:
             raise DomainError(f"the work of adhesion must be >= 0, got {g}")
 
@@ -302,7 +301,6 @@ def _derive_phat(ad, gamma) -> Derivation:
     """Eq. (31), verified against the energy balance G = gamma computed from
     the flat-punch compliance by quadrature (Eq. 3), numerical
     differentiation and root finding."""
-    t0 = time.perf_counter()
     expr = flat_punch_force(gamma)
     gsyms = tuple(sorted(gamma.free_symbols, key=lambda s: s.name))
 
@@ -322,11 +320,11 @@ def _derive_phat(ad, gamma) -> Derivation:
         ad._require(rec, "flat_punch_force")
     step = Step("griffith", expr, (), ("Eq. (31): Griffith balance K_I^2/(2 E*) = gamma at the edge, "
                                        "K_I = Phat/sqrt(pi a) (Eq. 30)",))
-    return Derivation("flat_punch_force", expr, True, step, (), rec, time.perf_counter() - t0,
-                      ("K_I = Phat/sqrt(pi*a) = sqrt(2*gamma*E_star); G = K_I^2/(2 E*) = Phat^2/(2 pi a E*)",),
-                      lambda vals, dps: phat_energy(vals[S.a], gamma.xreplace(vals), vals[S.E_star], dps),
-                      (S.a, S.E_star) + gsyms)
+    return Derivation("flat_punch_force", expr=expr, closed_form=True, step=step, verification=rec,
+                      notes=("K_I = Phat/sqrt(pi*a) = sqrt(2*gamma*E_star); G = K_I^2/(2 E*) = Phat^2/(2 pi a E*)",),
+                      reference=lambda vals, dps: phat_energy(vals[S.a], gamma.xreplace(vals), vals[S.E_star], dps),
+                      variables=(S.a, S.E_star) + gsyms)
 
 
-__all__ = ["JKR", "check_existence", "flat_punch_force", "stress_intensity", "energy_release_rate", "compliance_quad", "phat_energy",
-           "GAMMA_RANGE"]
+__all__ = ["JKR", "check_existence", "flat_punch_force", "stress_intensity", "energy_release_rate",
+           "compliance_quad", "phat_energy", "GAMMA_RANGE"]

@@ -56,6 +56,8 @@ class Parameter:
     domain   ``"nonnegative"`` (zero allowed: no adhesion) or ``"positive"``
     doc      what it is, as it reads in an error message ("the work of adhesion")
     sample   range of the random verification points of its symbols
+    unit     the SI unit of a value given with units (pint), for a symbol of the
+             law's own; the standard symbols' are in ``core.symbols.UNITS``
     """
 
     name: str
@@ -63,6 +65,7 @@ class Parameter:
     domain: str = "positive"
     doc: str = ""
     sample: tuple = (0.005, 0.5)
+    unit: str | None = None
 
     def checked(self, value) -> sp.Expr:
         """A user's value of the parameter, checked against its domain (a
@@ -160,7 +163,7 @@ class CohesiveLaw:
         a :class:`DomainError` when one stays symbolic."""
         out = {}
         for name, v in self.values.items():
-            n = sp.sympify(v).xreplace(values)
+            n = v.xreplace(values)
             if not n.is_number:
                 raise DomainError(f"{name} = {v} needs a value")
             out[name] = n

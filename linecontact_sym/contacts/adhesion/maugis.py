@@ -120,8 +120,9 @@ class MaugisDugdale(CohesiveLaw):
 def _numeric(ad, name, expr, fn, what, args):
     from .pull_off import NumericDerivation
     step = Step("numeric", expr, (), (what,))
-    return NumericDerivation(name, expr, False, step, (), None, 0.0, (what,),
-                             lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps), args + ad.variables)
+    return NumericDerivation(name, expr=expr, closed_form=False, step=step, seconds=0.0, notes=(what,),
+                             reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
+                             variables=args + ad.variables)
 
 
 class MaugisDugdaleContact(ContactOn):
@@ -138,29 +139,31 @@ class MaugisDugdaleContact(ContactOn):
 
     force = Quantity("P(a)", "", "load per unit length at the half-width a, c_D(a) solved from the gap "
                      "condition (negative = tensile); numeric: its expression is the two conditions",
-                     latex=r"P_{\mathrm{MD}}(a)")
+                     aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a)", unit="N/m")
     zone_force = Quantity("P(a, c_D)", "bounded pressure", "load per unit length P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2) "
                           "at the half-widths a and c_D (negative = tensile)", arguments=("a", "c_D"),
-                          aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})")
+                          aliases=("md_zone_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})", unit="N/m")
     cohesive_gap = Quantity("g(c_D; a)", "Dugdale gap", "surface separation at the end of the cohesive zone; "
                             "equals h0 = w/sigma_0 at equilibrium", arguments=("a", "c_D"),
-                            aliases=("gap_at_c",), latex=r"g(c_{\mathrm{D}})")
+                            aliases=("gap_at_c",), latex=r"g(c_{\mathrm{D}})", unit="m")
     pressure = Quantity("p(x; a, c_D)", "Eq. (12) + Dugdale", "pressure in the contact |x| < a (compressive "
                         "positive; -sigma_0 at the edges, bounded)", arguments=("a", "c_D", "x"), domain="inside",
-                        aliases=("md_pressure",), latex=r"p_{\mathrm{MD}}(x)")
+                        aliases=("md_pressure",), latex=r"p_{\mathrm{MD}}(x)", unit="Pa")
     dugdale_force = Quantity("P_D(a, c_D)", "", "force of the Dugdale punches, -2 sigma_0 sqrt(c_D^2 - a^2)",
-                             arguments=("a", "c_D"), latex=r"P_{\mathrm{D}}")
+                             arguments=("a", "c_D"), latex=r"P_{\mathrm{D}}", unit="N/m")
 
     pull_off_force = Quantity("P_min", "", "load-control pull-off: the global minimum of P(a) (or its infimum "
                               "P(0+) as a -> 0+), negative (tensile); numeric", arguments=(),
-                              aliases=("md_pull_off_force",), latex=r"P_{\min}^{\mathrm{MD}}")
+                              aliases=("md_pull_off_force",), latex=r"P_{\min}^{\mathrm{MD}}", unit="N/m")
     adhesion_force = Quantity("P_adh", "", "adhesion force -P_min > 0; numeric", arguments=(),
-                              aliases=("md_adhesion_force",), latex=r"P_{\mathrm{adh}}^{\mathrm{MD}}")
+                              aliases=("md_adhesion_force",), latex=r"P_{\mathrm{adh}}^{\mathrm{MD}}",
+                              unit="N/m")
     pull_off_half_width = Quantity("a_po", "", "half-width at pull-off (0 where the pull-off is the infimum "
-                                   "P(0+)); numeric", arguments=(), latex=r"a_{\mathrm{po}}^{\mathrm{MD}}")
+                                   "P(0+)); numeric", arguments=(), latex=r"a_{\mathrm{po}}^{\mathrm{MD}}",
+                                   unit="m")
     maugis_lambda = Quantity("lambda", "", "Maugis parameter sqrt(2^(5/3) a_JKR/delta), delta = pi E* w/(4 sigma_0^2) "
                              "(Baney & Hui's 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3) for the parabola); numeric",
-                             arguments=(), aliases=("maugis_parameter",), latex=r"\lambda")
+                             arguments=(), aliases=("maugis_parameter",), latex=r"\lambda", unit="")
 
     law_class = MaugisDugdale
 
@@ -259,8 +262,9 @@ class MaugisDugdaleContact(ContactOn):
                 from ...core.errors import VerificationError
                 raise VerificationError(f"{name} of the Maugis-Dugdale contact of {self.profile.name!r}: {rec}")
         step = Step("maugis_dugdale", expr, tuple(conditions), tuple(steps))
-        return Derivation(name, expr, closed, step, tuple(conditions), rec, time.perf_counter() - t0,
-                          tuple(steps), reference, (S.a, S.c_D) + self.variables)
+        return Derivation(name, expr=expr, closed_form=closed, step=step, conditions=tuple(conditions),
+                          verification=rec, notes=tuple(steps), reference=reference,
+                          variables=(S.a, S.c_D) + self.variables)
 
     def _derive_force(self):
         return self.law.derive_force(self)
@@ -314,8 +318,10 @@ class MaugisDugdaleContact(ContactOn):
         from .pull_off import NumericDerivation
         stat = sp.Function(name)(*self.variables)     # a number of the variables, no closed form
         step = Step("numeric", stat, (), (what,))
-        return NumericDerivation(name, stat, False, step, (), None, 0.0, (what, DISPLACEMENT_CONTROL),
-                                 lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps), self.variables)
+        return NumericDerivation(name, expr=stat, closed_form=False, step=step, seconds=0.0,
+                                 notes=(what, DISPLACEMENT_CONTROL),
+                                 reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
+                                 variables=self.variables)
 
     def _derive_pull_off_force(self):
         return self._numeric_derivation("pull_off_force", lambda v, d: self.pull_off_at(d, **v).force,

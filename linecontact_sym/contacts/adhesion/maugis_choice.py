@@ -15,7 +15,9 @@ import mpmath
 import sympy as sp
 
 from ...core import symbols as S
+from ...core.conversion import to_mpf
 from ...core.errors import DomainError
+from ...parsing import user_value
 from ...core.precision import workdps
 from .maugis_law import fixed_values
 
@@ -65,7 +67,7 @@ def sigma0_for(md, lam, dps: int = 20, **values):
         raise DomainError("sigma0_for needs sigma_0 to be a symbol of the contact")
     with workdps(dps + 10):
         one = md.maugis_parameter(dps, **{**values, md.sigma0.name: 1})
-        return mpmath.mpf(str(sp.N(sp.sympify(lam), dps + 10))) / one
+        return to_mpf(user_value(lam)) / one
 
 
 def model_choice(md, rtol=0.05, dps: int = 15, **values) -> ModelChoice:

@@ -23,7 +23,6 @@ sqrt(2 pi gamma E*) at large a; for a power law both hold **iff n > 1/2**.
 from __future__ import annotations
 
 import random
-import time
 
 import mpmath
 import sympy as sp
@@ -147,8 +146,7 @@ def pick_minimum(ad, cands, P, conds):
 def closed_attempt(ad):
     """The symbolic pull-off: a dict with Pmin, a_star, adh, conds, notes,
     method, unique (the law's compact form says the stationary point is the
-    global minimum), t0 -- Pmin None when there is no closed form."""
-    t0 = time.perf_counter()
+    global minimum) -- Pmin None when there is no closed form."""
     law = ad.law
     fd = ad.contact.derivation("force")
     force = ad.derivation("force")
@@ -194,7 +192,7 @@ def closed_attempt(ad):
             a_star = tidy_checked(ad, a_star, conds, simplify=not unique)
             if adh is None:
                 adh = tidy_checked(ad, -Pmin, conds)
-    return dict(Pmin=Pmin, a_star=a_star, adh=adh, conds=conds, notes=notes, method=method, unique=unique, t0=t0)
+    return dict(Pmin=Pmin, a_star=a_star, adh=adh, conds=conds, notes=notes, method=method, unique=unique)
 
 
 def derivations(ad):
@@ -203,9 +201,9 @@ def derivations(ad):
     numeric ones verified by two independent methods."""
     r = ad._pull_off_closed()
     Pmin, a_star, adh, conds = r["Pmin"], r["a_star"], r["adh"], r["conds"]
-    notes, method, t0 = list(r["notes"]), r["method"], r["t0"]
+    notes, method = list(r["notes"]), r["method"]
     if Pmin is None:
-        return numeric_derivations(ad, ad.derivation("force").expr, notes, t0)
+        return numeric_derivations(ad, ad.derivation("force").expr, notes)
     recs = {"P": None, "adh": None, "a": None}
     if ad.contact.verify:
         def reference(v, d):
@@ -213,19 +211,18 @@ def derivations(ad):
             return {"P": po.force, "adh": po.adhesion_force, "a": po.half_width}
         recs = verify_many(
             {"P": Pmin, "adh": adh, "a": a_star}, reference, ad._sampler(), conds, ad.contact.points,
-            reference_name={"P": "global minimum of the quadrature force law (10*) with the cohesive law on top, over its "
-                                  "admissible range: dense grid + golden section + parabolic polish",
+            reference_name={"P": "global minimum of the quadrature force law (10*) with the cohesive law on top, "
+                                  "over its admissible range: dense grid + golden section + parabolic polish",
                             "adh": "minus the quadrature-based global minimum of P(a)",
                             "a": "half-width of the quadrature-based global minimum of P(a)"})
         for k, what in (("P", "pull_off_force"), ("a", "pull_off_half_width"), ("adh", "adhesion_force")):
             ad._require(recs[k], what)
-    dt = time.perf_counter() - t0
     note = tuple(notes) + ("load control; pull_off_force = P_min < 0, adhesion_force = -P_min (the paper's P_adh)",)
     ref_f = lambda v, d: ad._pull_off_reference(v, d).force  # noqa: E731
 
     def mk(q, expr, rec, ref):
-        return Derivation(q, expr, True, Step("solve_stationary", expr, tuple(conds), (method,)), tuple(conds),
-                          rec, dt, note, ref, ad.variables)
+        return Derivation(q, expr=expr, closed_form=True, step=Step("solve_stationary", expr, tuple(conds), (method,)),
+                          conditions=tuple(conds), verification=rec, notes=note, reference=ref, variables=ad.variables)
     return (mk("pull_off_force", Pmin, recs["P"], ref_f),
             mk("adhesion_force", adh, recs["adh"], lambda v, d: mpmath.fneg(ref_f(v, d), exact=True)),
             mk("pull_off_half_width", a_star, recs["a"], lambda v, d: ad._pull_off_reference(v, d).half_width))
@@ -240,7 +237,7 @@ class NumericDerivation(Derivation):
         return tuple(sorted(set(self.variables), key=lambda s: s.name))
 
 
-def numeric_derivations(ad, P, notes, t0):
+def numeric_derivations(ad, P, notes):
     """No closed form: Derivations whose evalf is the numeric minimum,
     verified at random points by two independent methods."""
     notes = list(notes) + [
@@ -277,13 +274,13 @@ def numeric_derivations(ad, P, notes, t0):
         rec = VerificationRecord(tuple(pts), tuple(digs), VERIFY_DPS, name)
         ad._require(rec, "pull_off_force")
     stat = statement(P, "stationary")
-    dt = time.perf_counter() - t0
     step = Step("numeric_minimum", stat, (), ("numeric: global minimum of P(a) (no closed form)",))
 
     def mk(q, attr, sign=1):
-        return NumericDerivation(q, stat, False, step, (), rec, dt, tuple(notes),
-                                 lambda v, d: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, d), attr), exact=True),
-                                 ad.variables)
+        def reference(v, d):
+            return mpmath.fmul(sign, getattr(ad._pull_off_checked(v, d), attr), exact=True)
+        return NumericDerivation(q, expr=stat, closed_form=False, step=step, verification=rec, notes=tuple(notes),
+                                 reference=reference, variables=ad.variables)
     return mk("pull_off_force", "force"), mk("adhesion_force", "force", -1), mk("pull_off_half_width", "half_width")
 
 
@@ -302,9 +299,9 @@ def remembered_closed_attempt(ad):
     key = store.make_key(*_parts(ad, "pull_off_closed_attempt"))
     rec = store.get(key)
     if rec is not None and "Pmin" in rec:
-        return {k: v for k, v in rec.items() if k not in ("key", "version", "source")} | {"t0": time.perf_counter()}
+        return {k: v for k, v in rec.items() if k not in ("key", "version", "source")}
     r = closed_attempt(ad)
-    store.put(key, {k: (tuple(v) if isinstance(v, list) else v) for k, v in r.items() if k != "t0"})
+    store.put(key, {k: (tuple(v) if isinstance(v, list) else v) for k, v in r.items()})
     return r
 
 
@@ -321,10 +318,11 @@ def remembered_derivations(ad):
             return d
         attr, sign = ("half_width", 1) if d.quantity == "pull_off_half_width" else \
             ("force", 1 if d.quantity == "pull_off_force" else -1)
-        return NumericDerivation(d.quantity, d.expr, False, d.step, d.conditions, d.verification, d.seconds,
-                                 d.notes, lambda v, dd: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, dd), attr),
-                                                                    exact=True),
-                                 d.variables, d.attempts, d.cached)
+        return NumericDerivation(d.quantity, expr=d.expr, closed_form=False, step=d.step, conditions=d.conditions,
+                                 verification=d.verification, seconds=d.seconds, notes=d.notes,
+                                 reference=lambda v, dd: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, dd), attr),
+                                                                    exact=True), variables=d.variables,
+                                 attempts=d.attempts, cached=d.cached)
     return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild)
 
 

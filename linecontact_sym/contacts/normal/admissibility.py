@@ -9,7 +9,7 @@ profile (a bump, a periodic profile) the gap turns negative far enough away
 whatever a is: such profiles are admissible only "within 1000 a".
 
 The same conditions, cheaply, are part of every result: the verification
-points (:mod:`.sampling`), the pull-off search range
+points (:mod:`~linecontact_sym.contacts.sampling`), the pull-off search range
 (:func:`.equilibria.admissible_range`: dP0/da >= 0 and the real domain) and
 ``evaluate`` / ``evaluate_at`` (:meth:`.base.Contact._check_admissible`:
 parameter assumptions, f' >= 0 on (0, a), dP0/da >= 0)."""

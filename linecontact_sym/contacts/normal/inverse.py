@@ -3,7 +3,6 @@ force law."""
 from __future__ import annotations
 
 import random
-import time
 
 import sympy as sp
 
@@ -12,12 +11,13 @@ from ...core.budget import DEFAULT_BUDGET, checked_budget, run_with_budget
 from ...core.conversion import rational
 from ...core.errors import BudgetExceeded, ProfileError
 from ...method import transforms as T
-from ...method.derivation import Derivation, derive, fallback_step, remembered
+from ...method.derivation import Derivation, derive, fallback_step, remembered, timed
 from ...method.rules import Problem, Step
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 
 
+@timed
 def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
                        verify_points: int = 5) -> Derivation:
     """Eq. (9): the profile f(x) whose contact has the force law ``force_law``
@@ -32,7 +32,6 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
     """
     if isinstance(force_law, str) or not isinstance(force_law, sp.Basic):
         raise ProfileError(f"the force law must be a SymPy expression in a, got {force_law!r}")
-    t0 = time.perf_counter()
     free = force_law.free_symbols - {S.a, S.E_star}
     declared = set(params or ())
     for s in free:
@@ -58,17 +57,20 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
         return reference({**vals, S.a: vals[S.x]}, dps)
     d = derive("profile", Problem("profile", force_law=force_law), reference=reference, sampler=sampler,
                fallback=T.profile_integral(force_law), budget=budget, points=verify_points,
-               variables=(S.a, S.E_star) + psyms, t0=t0)
+               variables=(S.a, S.E_star) + psyms)
     variables = (S.x, S.E_star) + psyms
     if not d.closed_form:
-        return Derivation("profile", d.expr.subs(S.a, S.x), False, d.step, (), d.verification, d.seconds,
-                          d.notes, reference_in_x, variables, d.attempts, d.cached)
+        return Derivation("profile", expr=d.expr.subs(S.a, S.x), closed_form=False, step=d.step,
+                          verification=d.verification, seconds=d.seconds, notes=d.notes, reference=reference_in_x,
+                          variables=variables, attempts=d.attempts, cached=d.cached)
     sub = {S.a: S.x}  # the profile is reported in x
     step = Step(d.step.rule, d.expr.xreplace(sub), tuple(c.xreplace(sub) for c in d.conditions), d.step.notes)
-    return Derivation("profile", step.expr, True, step, step.conditions, d.verification, d.seconds, d.notes,
-                      reference_in_x, variables, d.attempts, d.cached)
+    return Derivation("profile", expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
+                      verification=d.verification, seconds=d.seconds, notes=d.notes, reference=reference_in_x,
+                      variables=variables, attempts=d.attempts, cached=d.cached)
 
 
+@timed
 def derive_half_width(contact, load=S.P, budget=None) -> Derivation:
     """The half-width a(P) of a frictionless contact: the closed-form inverse of
     the force law where ``sympy.solve`` finds one (under ``budget`` seconds,
@@ -93,7 +95,6 @@ def _half_width_reference(contact, load):
 
 
 def _derive_half_width(contact, load, fd, budget) -> Derivation:
-    t0 = time.perf_counter()
     expr, notes, attempts = None, [], []
     if fd.closed_form and not fd.expr.has(sp.Piecewise):
         try:
@@ -126,11 +127,11 @@ def _derive_half_width(contact, load, fd, budget) -> Derivation:
     if expr is not None:
         step = Step("solve_force_law", expr, (), ("sympy.solve of P(a) = P, root checked by substitution "
                                                   "at random points",))
-        return Derivation("half_width", expr, True, step, (), None, time.perf_counter() - t0,
-                          tuple(notes), reference, variables)
-    return Derivation("half_width", sp.Eq(fd.expr, load), False,
-                      fallback_step("numeric root of P(a) = P (no closed-form inverse)"), (), None,
-                      time.perf_counter() - t0, tuple(notes), reference, variables, tuple(attempts))
+        return Derivation("half_width", expr=expr, closed_form=True, step=step, notes=tuple(notes), reference=reference,
+                          variables=variables)
+    return Derivation("half_width", expr=sp.Eq(fd.expr, load), closed_form=False,
+                      step=fallback_step("numeric root of P(a) = P (no closed-form inverse)"), notes=tuple(notes),
+                      reference=reference, variables=variables, attempts=tuple(attempts))
 
 
 def _solve_for_a(Pexpr, load):

@@ -16,11 +16,10 @@ a callable          q(s) vectorised float64 (numeric field only)
 The closed forms go through the Cauchy transform of the pressure, G(zeta) =
 int p(s)/(zeta - s) ds = int_0^a P'(t) (zeta^2 - t^2)^(-1/2) dt (Popov's
 flat punches, :mod:`.kolosov`), and are verified against the mpmath
-quadrature of the Flamant integrals of p and q (:mod:`.reference`).
+quadrature of the Flamant integrals of p and q (:mod:`~linecontact_sym.contacts.stresses.reference`).
 """
 from __future__ import annotations
 
-import time
 
 import numpy as np
 import sympy as sp
@@ -28,7 +27,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
 from ...parsing import user_value
-from ...method.derivation import Derivation, fallback_step, values_by_name
+from ...method.derivation import Derivation, fallback_step, values_by_name, timed
 from ...method.rules import Step
 from . import build as B
 from . import extrema as X
@@ -46,11 +45,11 @@ _MAX = {"max_shear": "principal_shear", "max_von_mises": "von_mises", "max_tresc
 
 def _q(symbol, doc, latex, aliases=()):
     return Quantity(symbol, "Johnson (1985) Eq. (2.23)", doc, arguments=_ARGS, domain="any", latex=latex,
-                    aliases=aliases)
+                    aliases=aliases, unit="Pa")
 
 
-def _mx(symbol, doc, latex, aliases=()):
-    return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases)
+def _mx(symbol, doc, latex, aliases=(), unit="Pa"):
+    return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases, unit=unit)
 
 
 class StressField(ContactOn):
@@ -80,13 +79,13 @@ class StressField(ContactOn):
                 r"\sigma_{\mathrm{T}}")
     cauchy_transform = Quantity("G(zeta; a)", "", "Cauchy transform int p(s)/(zeta - s) ds of the pressure, "
                                 "the complex potential of the normal load", arguments=("a", "zeta"),
-                                latex=r"G(\zeta)")
+                                latex=r"G(\zeta)", unit="Pa")
     max_shear = _mx("max tau_1", "largest principal shear stress in the body", r"\tau_{1,\max}")
-    max_shear_depth = _mx("z(max tau_1)", "depth of the largest principal shear", r"z_{\tau_1}")
+    max_shear_depth = _mx("z(max tau_1)", "depth of the largest principal shear", r"z_{\tau_1}", unit="m")
     max_von_mises = _mx("max sigma_vM", "largest von Mises stress (plane strain, nu)", r"\sigma_{\mathrm{vM},\max}")
-    max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}")
+    max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}", unit="m")
     max_tresca = _mx("max sigma_T", "largest Tresca stress", r"\sigma_{\mathrm{T},\max}")
-    max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}")
+    max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}", unit="m")
 
     # the numeric fields built per parameter point are rebuilt, not pickled
     _transient = ("_cache", "_laws", "_fields")
@@ -142,16 +141,15 @@ class StressField(ContactOn):
         return B.remembered(self, "cauchy_transform", lambda: (self._cauchy_transform(),), lambda d: d)[0]
 
     def _cauchy_transform(self) -> Derivation:
-        t0 = time.perf_counter()
         D = self._density()
         step, attempts = cauchy_transform(D, self.contact.budget)
         if step is None:
             expr = punch_integral(D.subs(S.a, t))
-            return Derivation("cauchy_transform", expr, False, fallback_step(), (), None, time.perf_counter() - t0,
-                              tuple(f"{r}: {w}" for r, w in attempts), None, (S.a, S.zeta) + self.variables,
-                              tuple(attempts))
-        return Derivation("cauchy_transform", step.expr, True, step, step.conditions, None,
-                          time.perf_counter() - t0, (), None, (S.a, S.zeta) + self.variables, tuple(attempts))
+            return Derivation("cauchy_transform", expr=expr, closed_form=False, step=fallback_step(),
+                              notes=tuple(f"{r}: {w}" for r, w in attempts), variables=(S.a, S.zeta) + self.variables,
+                              attempts=tuple(attempts))
+        return Derivation("cauchy_transform", expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
+                          variables=(S.a, S.zeta) + self.variables, attempts=tuple(attempts))
 
     def tangential_transform(self):
         """H(zeta) = int q(s)/(zeta - s) ds of the tangential traction (an
@@ -192,8 +190,9 @@ class StressField(ContactOn):
         d0 = c["sigma_x"]
         step = Step(name, expr, d0.conditions, (note,)) if d0.closed_form else fallback_step(note)
         extra = self.nu_symbols if name in ("sigma_y", "von_mises", "tresca") else ()
-        return Derivation(name, expr, d0.closed_form, step, d0.conditions, d0.verification, d0.seconds, (note,),
-                          B.combine_reference(d0.reference, make), d0.variables + extra)
+        return Derivation(name, expr=expr, closed_form=d0.closed_form, step=step, conditions=d0.conditions,
+                          verification=d0.verification, seconds=d0.seconds, notes=(note,),
+                          reference=B.combine_reference(d0.reference, make), variables=d0.variables + extra)
 
     def _derive_sigma_y(self):
         return self._from_components("sigma_y", lambda sx, sz, txz: self.nu * (sx + sz), "plane strain")
@@ -288,16 +287,34 @@ class StressField(ContactOn):
             return v, "p_0"
         return fe.mean_pressure, "p_m"
 
-    def _plot_values(self, kw):
+    #: a plot's values where not given: a, E* scale out; nu (von Mises, Tresca, sigma_y) is in the title
+    PLOT_DEFAULTS = {"a": 1.0, "E_star": 1.0, "nu": 0.3}
+
+    def _plot_values(self, kw, quantities):
+        """The values of a plot (popped from ``kw``), :data:`PLOT_DEFAULTS` where not given; the title."""
+        from ...views.contact_plots import profile_label
+        from ...views.stress_plots import LABELS
         names = {q.name for q in (S.a,) + self.variables + self.nu_symbols}
-        return {k: kw.pop(k) for k in list(kw) if k in names}
+        values = {k: kw.pop(k) for k in list(kw) if k in names}
+        said = []
+        for k, v in self.PLOT_DEFAULTS.items():
+            if k in names and k not in values:
+                values[k] = v
+                if k == "nu" and any(q in ("von_mises", "tresca", "sigma_y") for q in quantities):
+                    said.append(rf"$\nu = {v:g}$")
+        what = ", ".join(LABELS.get(q, q) for q in quantities)
+        title = f"{what} under {profile_label(self)}" + (f" ({', '.join(said)})" if said else "")
+        kw.setdefault("title", title)
+        return values
 
     def plot(self, quantity="von_mises", mark_maximum=True, **kw):
         """Contour map of a stress over (x/a, z/a), scaled by the reference
-        pressure, the verified maximum marked; parameters by name, other
-        keywords to :func:`linecontact_sym.views.stress_plots.contour`."""
+        pressure, the verified maximum marked; parameters by name (a, E* and
+        Poisson's ratio default to :data:`PLOT_DEFAULTS`; the profile's
+        parameters are needed), other keywords to
+        :func:`linecontact_sym.views.stress_plots.contour`."""
         from ...views.stress_plots import contour
-        values = self._plot_values(kw)
+        values = self._plot_values(kw, (quantity,))
         scale, label = self.reference_pressure(**values)
         if mark_maximum and quantity in F.CRITERIA:
             m = self.maximum(quantity, **values)
@@ -308,7 +325,7 @@ class StressField(ContactOn):
         """The stresses along the axis x = 0 against z/a:
         :func:`linecontact_sym.views.stress_plots.axis_profile`."""
         from ...views.stress_plots import axis_profile
-        values = self._plot_values(kw)
+        values = self._plot_values(kw, quantities)
         scale, label = self.reference_pressure(**values)
         return axis_profile(self.field(**values), float(values["a"]), quantities, scale=scale, scale_label=label, **kw)
 
@@ -350,10 +367,10 @@ class SlidingStressField(StressField):
     kind = "sliding_stress"
 
     critical_friction = Quantity("mu_c", "", "the friction coefficient above which the largest principal "
-                                 "shear lies on the surface", arguments=(), latex=r"\mu_c")
+                                 "shear lies on the surface", arguments=(), latex=r"\mu_c", unit="")
     critical_friction_von_mises = Quantity("mu_c,vM", "", "the friction coefficient above which the largest "
                                            "von Mises stress lies on the surface", arguments=(),
-                                           latex=r"\mu_{c,\mathrm{vM}}")
+                                           latex=r"\mu_{c,\mathrm{vM}}", unit="")
 
     def __init__(self, contact, mu=S.mu, nu=S.nu, **kw):
         super().__init__(contact, "sliding", mu, nu, **kw)
@@ -469,8 +486,8 @@ def _axis_closed_form(sf):
     return cache["_axis"]
 
 
+@timed
 def _derive_maximum(sf, name):
-    t0 = time.perf_counter()
     depth = name.endswith("_depth")
     criterion = _MAX[name.replace("_depth", "")]
     variables = (S.a,) + sf.variables + (sf.nu_symbols if criterion != "principal_shear" else ())
@@ -485,11 +502,11 @@ def _derive_maximum(sf, name):
             rec = _check_maximum(sf, expr, reference, variables)
             if rec.passed:
                 step = Step("axis_stationary_point", expr, (), ("root of d tau_1/dz on the axis x = 0 (sympy.solve)",))
-                return Derivation(name, expr, True, step, (), rec, time.perf_counter() - t0, (), reference,
-                                  variables)
+                return Derivation(name, expr=expr, closed_form=True, step=step, verification=rec, reference=reference,
+                                  variables=variables)
     expr = sp.Function(name)(*variables)
     step = fallback_step("verified numeric maximum: grid, Nelder-Mead, checked by a root of the gradient")
-    return Derivation(name, expr, False, step, (), None, time.perf_counter() - t0, (), reference, variables)
+    return Derivation(name, expr=expr, closed_form=False, step=step, reference=reference, variables=variables)
 
 
 def _check_maximum(sf, expr, reference, variables):
@@ -512,8 +529,8 @@ def _check_maximum(sf, expr, reference, variables):
                               "mpmath root of the gradient", required=12)
 
 
+@timed
 def _derive_critical(sf, name, criterion):
-    t0 = time.perf_counter()
     variables = (S.a,) + tuple(v for v in sf.variables if v != S.mu) + \
         (sf.nu_symbols if criterion != "principal_shear" else ())
 
@@ -524,8 +541,8 @@ def _derive_critical(sf, name, criterion):
         raise LineContactError(f"{name} is defined for a sliding contact (tangential='sliding')")
     step = fallback_step("Brent root of (surface max - interior max) in mu, checked by bisection on "
                          "'the maximum is on the surface'")
-    return Derivation(name, sp.Function(name)(*variables), False, step, (), None, time.perf_counter() - t0, (),
-                      reference, variables)
+    return Derivation(name, expr=sp.Function(name)(*variables), closed_form=False, step=step, reference=reference,
+                      variables=variables)
 
 class FieldFunction:
     """What :meth:`StressContact.to_numeric` returns for a field component:

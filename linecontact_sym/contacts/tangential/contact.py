@@ -79,13 +79,12 @@ ln(|x - xi|/a): reference length a)::
 another reference length L adds (2 Q/(pi E*)) ln(L/a): it shears the fretting
 loop and leaves its area W unchanged.
 
-Independent checks: :mod:`.reference` (inversion of the stick-zone
+Independent checks: :mod:`~linecontact_sym.contacts.tangential.reference` (inversion of the stick-zone
 singular integral equation, the Flamant kernel, the friction work, and a
 direct boundary-element solution with a Coulomb active set).
 """
 from __future__ import annotations
 
-import time
 
 import sympy as sp
 
@@ -147,27 +146,31 @@ class TangentialLineContact(ContactOn):
 
     traction = Quantity("q(x; a, c_s)", "", "shear traction under monotonic loading, positive in the direction "
                         "of Q: mu [p(x; a) - p(x; c_s)] in the stick zone |x| < c_s, mu p(x; a) in the slip zones",
-                        arguments=("a", "c_s", "x"), domain="inside", latex="q(x)")
+                        arguments=("a", "c_s", "x"), domain="inside", latex="q(x)", unit="Pa")
     tangential_force = Quantity("Q(a, c_s)", "", "tangential force per unit length mu [P(a) - P(c_s)]",
-                                arguments=("a", "c_s"), latex="Q")
+                                arguments=("a", "c_s"), latex="Q", unit="N/m")
     stick_half_width = Quantity("c_s(Q)", "", "stick half-width at the tangential force Q: the root of "
-                                "P(c_s) = P(a) - |Q|/mu", arguments=("a", "Q"), method=True, latex=r"c_{\mathrm{s}}")
+                                "P(c_s) = P(a) - |Q|/mu", arguments=("a", "Q"), method=True, latex=r"c_{\mathrm{s}}",
+                                unit="m")
     slip = Quantity("s(x; a, c_s)", "", "slip of the surfaces relative to the stick zone, in the direction of Q: "
                     "mu g(x; c_s) for c_s <= |x| <= a, 0 in the stick zone", arguments=("a", "c_s", "x"),
-                    domain="inside", latex="s(x)")
+                    domain="inside", latex="s(x)", unit="m")
     loop_displacement = Quantity("delta(a, c_s)", "", "rigid tangential shift with the reference length a of the "
                                  "Flamant kernel (a convention: 2-D defines it only up to a term proportional to Q)",
-                                 arguments=("a", "c_s"), latex=r"\delta")
+                                 arguments=("a", "c_s"), latex=r"\delta", unit="m")
     dissipated_energy = Quantity("W(a, c_s)", "", "energy dissipated per unit length in one full cycle between "
                                  "+-Q_A, c_s the stick half-width at +-Q_A", arguments=("a", "c_s"),
-                                 aliases=("energy_per_cycle",), latex="W")
+                                 aliases=("energy_per_cycle",), latex="W", unit="J/m")
     unloading_traction = Quantity("q_u(x; a, c_s, c_r)", "", "traction after unloading from the turning point "
                                   "(stick c_s) with the reversal stick half-width c_r: q(x; c_s) - 2 q(x; c_r)",
-                                  arguments=("a", "c_s", "c_r", "x"), domain="inside", latex=r"q_{\mathrm{u}}(x)")
+                                  arguments=("a", "c_s", "c_r", "x"), domain="inside", latex=r"q_{\mathrm{u}}(x)",
+                                  unit="Pa")
     unloading_force = Quantity("Q_u(a, c_s, c_r)", "", "tangential force on the unloading branch "
-                               "Q(c_s) - 2 Q(c_r)", arguments=("a", "c_s", "c_r"), latex=r"Q_{\mathrm{u}}")
+                               "Q(c_s) - 2 Q(c_r)", arguments=("a", "c_s", "c_r"), latex=r"Q_{\mathrm{u}}",
+                               unit="N/m")
     unloading_slip = Quantity("s_u(x; a, c_s, c_r)", "", "slip on the unloading branch s(x; c_s) - 2 s(x; c_r)",
-                              arguments=("a", "c_s", "c_r", "x"), domain="inside", latex=r"s_{\mathrm{u}}(x)")
+                              arguments=("a", "c_s", "c_r", "x"), domain="inside", latex=r"s_{\mathrm{u}}(x)",
+                              unit="m")
 
     def __init__(self, contact, friction=S.mu):
         if isinstance(friction, str):
@@ -254,7 +257,7 @@ class TangentialLineContact(ContactOn):
     def _variables(self, *args):
         return tuple(args) + self.variables
 
-    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, t0, sampler,
+    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, sampler,
                 needs=("pressure",)):
         """Verify a closed form against ``check`` (30 digits at random points);
         a failed check or no closed form leaves a numeric derivation evaluated
@@ -275,12 +278,11 @@ class TangentialLineContact(ContactOn):
                 closed = False
         step = Step("cattaneo_mindlin", expr, conditions, (STEP_NOTES[quantity],)) if closed \
             else fallback_step("the normal solution it is built from has no closed form here")
-        return Derivation(quantity, expr, closed, step, conditions if closed else (), rec,
-                          time.perf_counter() - t0, notes + (states.CONDITIONS,),
-                          check if closed else value, variables)
+        return Derivation(quantity, expr=expr, closed_form=closed, step=step, conditions=conditions if closed else (),
+                          verification=rec, notes=notes + (states.CONDITIONS,), reference=check if closed else value,
+                          variables=variables)
 
     def _combination(self, quantity, what, terms, domain):
-        t0 = time.perf_counter()
         expr = sum(k * self._monotone(what, C) for k, C in terms)
         if what == "force":
             expr = sp.factor_terms(expr)
@@ -293,7 +295,7 @@ class TangentialLineContact(ContactOn):
             conds += (sp.Lt(S.x, S.a),)
         check, value, how = states.references(self, what, terms)
         args = (S.a,) + tuple(C for _, C in terms) + ((S.x,) if domain == "inside" else ())
-        return self._finish(quantity, expr, closed, conds, check, value, how, self._variables(*args), t0,
+        return self._finish(quantity, expr, closed, conds, check, value, how, self._variables(*args),
                             self._sampler("slip" if what == "slip" else domain, len(terms) > 1))
 
     # ----------------------------------------------------------- derivations
@@ -328,13 +330,12 @@ class TangentialLineContact(ContactOn):
         return self._cache["_energy"]
 
     def _derive_dissipated_energy(self):
-        t0 = time.perf_counter()
         W, _, closed = self._energy_parts()
         conds = tuple(self._normal("force").conditions) + (sp.Lt(S.c_s, S.a),) \
             + ((sp.Lt(self.c0, S.c_s),) if self.c0 != 0 else ())
         check, value, how = states.energy_references(self)
         return self._finish("dissipated_energy", W, closed, conds, check, value, how,
-                            self._variables(S.a, S.c_s), t0, self._sampler("any"), ("pressure", "gap"))
+                            self._variables(S.a, S.c_s), self._sampler("any"), ("pressure", "gap"))
 
     # ----------------------------------------------------------- stick zone
     def _stick_half_width(self, force=S.Q, budget=None, **values):
