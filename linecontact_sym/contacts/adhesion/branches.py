@@ -23,7 +23,7 @@ from .jkr import GAMMA_RANGE, flat_punch_force, phat_energy
 from .pull_off import NumericDerivation, sample_points, single_power, solve_load, tidy_checked
 from ...core.precision import workdps
 
-_phi = sp.Symbol("phi", positive=True)
+_phi = sp.Dummy("phi", positive=True)   # an integration variable: never a user's phi
 
 
 def derive_phat(ad) -> Derivation:

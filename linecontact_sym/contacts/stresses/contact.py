@@ -38,7 +38,7 @@ from .kolosov import cauchy_transform, punch_integral, t
 from ...core.precision import workdps
 
 #: the integration variable of a traction given as an expression (real: s < 0 too)
-s_real = sp.Symbol("s", real=True)
+s_real = sp.Dummy("s", real=True)   # an integration variable: never a user's s
 _ARGS = ("a", "x", "z")
 _MAX = {"max_shear": "principal_shear", "max_von_mises": "von_mises", "max_tresca": "tresca"}
 

@@ -101,7 +101,7 @@ from ..base import ContactOn, Quantity
 
 #: range of the friction coefficient at the verification points
 MU_RANGE = (0.1, 1.0)
-_t = sp.Symbol("t", positive=True)
+_t = sp.Dummy("t", positive=True)   # an integration variable: never a user's t
 #: symbols the tangential quantities take besides the profile's
 _OWN = (S.mu, S.Q, S.c_s, S.c_r)
 
