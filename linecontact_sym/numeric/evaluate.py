@@ -169,7 +169,7 @@ class SeriesModel:
 
     def __init__(self, contact, K=MODEL_TERMS):
         prof = contact.profile
-        if prof.is_piecewise:
+        if prof.is_piecewise or prof.cases:
             raise LineContactError("no series model for a piecewise profile")
         fp = prof.pieces[0].derivative
         ser = sp.series(fp, S.x, 0, K + 1).removeO()

@@ -26,6 +26,7 @@ from ..base import Contact, Quantity
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 from .inverse import derive_half_width
+from .cases import derive_by_case
 from ..sampling import point_sampler
 from ...core.precision import workdps
 
@@ -105,6 +106,18 @@ class LineContact(Contact):
     def variables(self):
         """The symbols a number needs besides the arguments: E_star and the profile's parameters."""
         return (S.E_star,) + tuple(self.params)
+
+    def derivation(self, quantity: str) -> Derivation:
+        """See :meth:`~.base.Contact.derivation`; a profile whose Piecewise
+        switches on the parameters alone is derived case by case
+        (:mod:`.cases`): the result is a Piecewise over the cases."""
+        if not self.profile.cases:
+            return super().derivation(quantity)
+        name = self.resolve(quantity)
+        cache = self._caches()
+        if name not in cache:
+            cache[name] = derive_by_case(self, name)
+        return cache[name]
 
     def _sampler(self, domain="any"):
         return point_sampler(self.profile, domain)
