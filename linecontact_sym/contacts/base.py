@@ -32,6 +32,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.precision import checked_dps
+from ..core.ranges import check_values
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
 from ..method.derivation import Derivation
 from ..numeric.special import NUMPY_LOGIC
@@ -99,6 +100,8 @@ class Contact:
     ``variables`` (the symbols a number needs besides the arguments)."""
 
     kind = "contact"
+    #: names of :mod:`~linecontact_sym.core.ranges` that may also be 0 here
+    _zero_ok: tuple = ()
 
     @classmethod
     def from_frictionless(cls, contact):
@@ -194,6 +197,8 @@ class Contact:
         returns the values with x replaced by |x|."""
         name = self.resolve(quantity)
         q = type(self)._registry[name]
+        check_values(values, self._zero_ok)   # before anything is derived: nu = 0.7 is refused at once
+        self._check_normal_point(values)
         known, conds, cond_fn = self._domain_data(name)
         unknown = sorted(set(values) - set(known))
         if unknown and not q.method:
@@ -203,7 +208,7 @@ class Contact:
         for k in q.nonnegative:
             if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
-        self._check_admissible(vals)
+        check_values(vals, self._zero_ok)  # nu, mu, c_s, c_r: the physical ranges (core.ranges)
         if "x" in vals and "a" in vals and q.domain != "any":
             xv, av = _abs(vals["x"]), vals["a"]
             if q.domain == "inside" and np.any(xv > av):
@@ -223,7 +228,31 @@ class Contact:
             if not ok:
                 raise DomainError(f"{name} holds only where {', '.join(map(str, conds))}; "
                                   f"that fails at {values}")
+        self._check_admissible(vals)
         return vals
+
+    def _check_normal_point(self, values):
+        """A contact built on a frictionless one (adhesive, tangential,
+        stresses): the normal solution holds at the point (the exact
+        cylinder's a < R), checked first, before anything is derived or
+        searched; values that are not plain numbers are left to the checks
+        that follow."""
+        base = getattr(self, "contact", None)
+        if base is None or not hasattr(base, "check_point") or "a" not in values:
+            return
+        point = {}
+        for s in (S.a,) + tuple(base.variables):
+            v = values.get(s.name)
+            if v is None or isinstance(v, (list, tuple, np.ndarray, bool, str)):
+                continue
+            try:
+                v = to_sympy(v, where=s.name)
+            except LineContactError:
+                continue
+            if v.is_number and v.is_real:
+                point[s] = v
+        if S.a in point:
+            base.check_point(point)
 
     def _domain_data(self, name):
         """(name -> Symbol of the values the quantity takes, its conditions, a
@@ -348,7 +377,7 @@ def _abs(v):
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
 #: mirrored, f(-x) = f(x)) or 0 (gamma = 0: the non-adhesive limit)
-_ANY_SIGN, _MAY_BE_ZERO = {"x"}, {"gamma"}
+_ANY_SIGN, _MAY_BE_ZERO = {"x"}, {"gamma", "z"}
 
 
 def _positive_required(name, sym):

@@ -22,7 +22,7 @@ from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError, L
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
-from .verification import REQUIRED_DIGITS, VerificationRecord, verify
+from .verification import REQUIRED_DIGITS, VerificationRecord, holds, verify
 from ..core.precision import workdps
 
 #: the rule name of a result without closed form
@@ -94,6 +94,10 @@ class Derivation:
         digits: the closed form where there is one, else the reference
         (high-precision quadrature of the defining integral)."""
         vals = values_by_name(self.variables_all, values)
+        failed = [c for c in self.point_conditions if not holds((c,), vals)]
+        if failed:
+            raise DomainError(f"{self.quantity} holds only where {', '.join(map(str, self.point_conditions))}; "
+                              f"{', '.join(map(str, failed))} fails at {values}")
         if self.closed_form:
             with workdps(dps):
                 v = sp.N(self.expr.xreplace(float_values(vals, dps + 20)), dps + 5)
@@ -102,6 +106,16 @@ class Derivation:
             raise LineContactError(f"this {self.quantity} derivation has no reference quadrature (it was "
                                    f"unpickled, or made without one): evaluate it through its contact")
         return self.reference(vals, dps)
+
+    @property
+    def point_conditions(self) -> tuple:
+        """The conditions a point must meet for ``expr`` to hold (a < R,
+        n < 2, ...): :attr:`conditions` without the relations between x and
+        a alone, which state the quantity's domain (inside, outside the
+        contact) and are decided there, edges included.  Every numeric path
+        checks these: :meth:`evalf` refuses a point where one fails, the
+        exports give NaN there."""
+        return tuple(c for c in self.conditions if c is not sp.true and not c.free_symbols <= {S.x, S.a})
 
     @property
     def variables_all(self):

@@ -549,6 +549,9 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
         check_arguments(names, merged, quantity)
         return [merged[n] for n in names]
 
+    # where the result does not hold (a < R fails, ...) the value is NaN, never the formula's number
+    conds = tuple(getattr(derivation, "point_conditions", ()))
+    holds_at = sp.lambdify(syms, sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
         if stable and _guarded(derivation):
@@ -557,13 +560,22 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
         def fn(**kw):
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
                 vals = [np.asarray(v, dtype=float) for v in collect(kw)]
-                return _chunked(f, vals)
+                out = _chunked(f, vals)
+                if holds_at is not None:
+                    ok = np.asarray(holds_at(*vals), dtype=bool)
+                    if not np.all(ok):
+                        out = np.where(ok, out, np.nan)
+                        out = out[()] if out.ndim == 0 else out
+                return out
     elif derivation.closed_form:
         f = _cached_lambdify(derivation, "mpmath", stable)
 
         def fn(**kw):
             with workdps(dps):
-                return +f(*[mpmath.mpf(v) if not isinstance(v, mpmath.mpf) else v for v in collect(kw)])
+                args = [mpmath.mpf(v) if not isinstance(v, mpmath.mpf) else v for v in collect(kw)]
+                if holds_at is not None and not bool(holds_at(*[float(v) for v in args])):
+                    return mpmath.mpf("nan")
+                return +f(*args)
     else:
         ref = derivation.reference
 

@@ -19,7 +19,7 @@ from ...method.derivation import Derivation, derive, fallback_step
 from ...method.profile import Profile
 from ...numeric.exports import lambdify_numpy
 from ...method.rules import Problem, Step
-from ...method.verification import REQUIRED_DIGITS, verify
+from ...method.verification import REQUIRED_DIGITS, holds, verify
 from ...parsing import to_sympy
 from . import admissibility
 from ..base import Contact, Quantity
@@ -118,6 +118,21 @@ class LineContact(Contact):
         if name not in cache:
             cache[name] = derive_by_case(self, name)
         return cache[name]
+
+    def check_point(self, values: dict) -> None:
+        """The frictionless solution holds at ``values`` (Symbol -> number,
+        with ``a``): the conditions of the force law (the exact cylinder's
+        a < R, ...) hold there.  The contacts built on this one (tangential,
+        stresses) call it before any numeric work, so a point outside is a
+        :class:`~linecontact_sym.core.errors.DomainError` at once, not a
+        foreign exception after a long search."""
+        d = self.derivation("force")
+        failed = [c for c in d.point_conditions if c.free_symbols <= set(values) and not holds((c,), values)]
+        if failed:
+            shown = {k.name if hasattr(k, "name") else k: v for k, v in values.items()}
+            raise DomainError(f"the frictionless solution holds only where "
+                              f"{', '.join(map(str, d.point_conditions))}; {', '.join(map(str, failed))} fails "
+                              f"at {shown}")
 
     def _sampler(self, domain="any"):
         return point_sampler(self.profile, domain)

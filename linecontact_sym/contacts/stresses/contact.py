@@ -27,6 +27,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
+from ...core.ranges import check_stick, check_value
 from ...parsing import user_value
 from ...method.derivation import Derivation, fallback_step, values_by_name
 from ...method.rules import Step
@@ -97,10 +98,17 @@ class StressField(ContactOn):
             raise DomainError("partial slip needs the stick half-width: stick = c")
         self.contact, self.tangential = contact, tangential
         self.mu, self.nu = user_value(mu), user_value(nu)
+        check_value("nu", self.nu)
+        if tangential is not None:
+            check_value("mu", self.mu, zero_ok=tangential == "sliding")
         self.stick = None if stick is None else user_value(stick)
         self.breaks, self.verify, self.points = tuple(breaks), verify, points
         self._cache: dict = {}
         self._fields: dict = {}
+
+    @property
+    def _zero_ok(self):
+        return ("mu",) if self.tangential == "sliding" else ()
 
     @classmethod
     def from_frictionless(cls, contact):
@@ -222,6 +230,13 @@ class StressField(ContactOn):
             raise DomainError(f"{exc} (the stress field of {self.contact.profile.expr})") from None
         if vals[S.a] <= 0:
             raise DomainError(f"the half-width must be positive, got a = {values['a']}")
+        by_name = {k.name: v for k, v in vals.items()}
+        check_value("nu", by_name.get("nu"))
+        if self.tangential is not None:
+            check_value("mu", by_name.get("mu"), zero_ok=self.tangential == "sliding")
+        if self.stick is not None:
+            check_stick(vals[S.a], self.stick.xreplace(vals))
+        self.contact.check_point(vals)              # where the normal solution holds (a < R, ...)
         return vals
 
     def field(self, **values) -> F.FieldEvaluator:
