@@ -82,6 +82,7 @@ says which one the paper prints.
 from __future__ import annotations
 
 import re
+from decimal import Decimal
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -189,6 +190,8 @@ class Form:
     #: moved by half a unit in its last printed digit, each way (the printed
     #: value stands for the interval these span)
     variants: tuple = ()
+    #: how the variants span the interval: "corners" or "sum" (:func:`printed_spread`)
+    spread: str = "corners"
 
 
 @dataclass
@@ -283,7 +286,7 @@ def load_paper(source) -> Paper:
     path = resolve_paper(source)
     text = read_text_file(path)
     try:
-        data = tomllib.loads(text)
+        data = tomllib.loads(text, parse_float=PrintedFloat.from_toml)
     except tomllib.TOMLDecodeError as exc:
         raise ClaimError(f"{path}: not valid TOML: {exc}") from None
     except RecursionError:
@@ -346,28 +349,77 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
                  str(data.get("reference", "")), claims, defs, source, ranges, figures)
 
 
-_DECIMAL = re.compile(r"(?<![\w.])(\d+)\.(\d+)(?![\w.])")
+_DECIMAL = re.compile(r"(?<![\w.])(\d+)\.(\d+)([eE][+-]?\d+)?(?![\w.])")
+#: at most this many printed constants are varied corner by corner (2**6 = 64
+#: evaluations, exact for a formula monotone in each); more are varied one at
+#: a time (see :func:`printed_variants`)
+MAX_CORNERS = 6
 
 
 def printed_variants(text: str) -> list:
-    """The formula text with every decimal constant moved by half a unit in
-    its last printed digit, in every combination (0.300 -> 0.2995 and
-    0.3005): the interval a figure printed with those digits stands for.
+    """The formula text with its decimal constants moved by half a unit in
+    their last printed digit: the interval a figure printed with those digits
+    stands for.  Every constant is varied.  Up to :data:`MAX_CORNERS`
+    constants: every combination (the corners of the box, exact for a formula
+    monotone in each constant); more: the formula as printed followed by each
+    constant moved alone to each end (2k + 1 texts; :func:`printed_spread`
+    says which, and the checker adds the deviations: exact for a formula
+    affine in its constants, first order otherwise).  The digits are the
+    printed ones: ``0.300`` has three, ``-0.08090`` five significant digits
+    (read from the raw text of a TOML float, see :func:`load_paper`), and
+    ``8.090e-2`` four.
 
     >>> printed_variants("0.300*p0")
     ['0.2995*p0', '0.3005*p0']
+    >>> printed_variants("-0.08090*x")
+    ['-0.080895*x', '-0.080905*x']
     """
-    found = list(_DECIMAL.finditer(text))[:6]
-    out = []
-    for signs in range(2 ** len(found)):
+    found = list(_DECIMAL.finditer(text))
+
+    def moved(m, sign):
+        frac = len(m.group(2))
+        val = Decimal(f"{m.group(1)}.{m.group(2)}") + sign * Decimal(5).scaleb(-(frac + 1))
+        return f"{val:f}" + (m.group(3) or "")
+
+    def build(choice):
         pieces, last = [], 0
-        for k, m in enumerate(found):
-            frac = len(m.group(2))
-            val = sp.Rational(m.group(0)) + (1 if signs >> k & 1 else -1) * sp.Rational(1, 2 * 10**frac)
-            pieces += [text[last:m.start()], f"{float(val):.{frac + 1}f}"]
+        for m, sign in zip(found, choice):
+            pieces.append(text[last:m.start()])
+            pieces.append(m.group(0) if sign == 0 else moved(m, sign))
             last = m.end()
-        out.append("".join(pieces) + text[last:])
+        return "".join(pieces) + text[last:]
+    if len(found) <= MAX_CORNERS:
+        return [build([1 if signs >> k & 1 else -1 for k in range(len(found))]) for signs in range(2 ** len(found))]
+    out = [build([0] * len(found))]
+    for k in range(len(found)):
+        for sign in (-1, 1):
+            out.append(build([sign if j == k else 0 for j in range(len(found))]))
     return out
+
+
+def printed_spread(text: str) -> str:
+    """How :func:`printed_variants` varied the constants of ``text``:
+    ``"corners"`` (the variants' range is the interval) or ``"sum"`` (the
+    first variant is the formula as printed; the interval adds each
+    constant's largest deviation)."""
+    return "corners" if len(_DECIMAL.findall(text)) <= MAX_CORNERS else "sum"
+
+
+class PrintedFloat(float):
+    """A TOML float that remembers how it was printed: ``str()`` is its raw
+    text (``-0.08090``, not Python's ``-0.0809``), so a formula given as a
+    bare number keeps its printed digits; everywhere else it is the float."""
+
+    text: str = ""
+
+    @classmethod
+    def from_toml(cls, text: str) -> "PrintedFloat":
+        v = cls(text.replace("_", ""))
+        v.text = text.replace("_", "")
+        return v
+
+    def __str__(self):
+        return self.text or float.__repr__(self)
 
 
 def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_shown=None,
@@ -458,7 +510,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
         expr = parse(text, fld)
         shown_expr = parse_expr(text, symbols=syms, definitions=shown, placeholders=ph, where=W(fld))
         variants = tuple(parse(v, fld) for v in printed_variants(text)) if rounding == "printed" else ()
-        forms.append(Form(text, shown_expr, expr, variants))
+        forms.append(Form(text, shown_expr, expr, variants, printed_spread(text)))
     assumptions = tuple(parse_expr(str(r), symbols=syms, where=W(f"assumptions[{j}]"), allow_relational=True)
                         for j, r in enumerate(cd.get("assumptions", [])))
     table = {}

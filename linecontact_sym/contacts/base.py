@@ -32,6 +32,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.precision import checked_dps
+from ..core.printing import lambdify
 from ..core.ranges import check_values
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
 from ..method.derivation import Derivation
@@ -262,13 +263,12 @@ class Contact:
         if key not in cache:
             d = self.derivation(name)
             known = {s.name: s for s in d.variables_all}
-            # relations between x and a alone are the quantity's domain (inside:
-            # |x| <= a, outside: |x| >= a, edges included), checked above: a
-            # closed form stated for x < a still holds at the edge as a limit
-            xa = {S.x, S.a} if DOMAINS[type(self).quantities()[name].domain] else set()
-            conds = tuple(c for c in d.conditions if c not in (sp.true,)
-                          and not (xa and c.free_symbols <= xa))
-            fn = sp.lambdify(list(known.values()), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
+            # the derivation's point conditions (method.derivation): relations
+            # between x and a are the quantity's domain (inside: |x| <= a,
+            # outside: |x| >= a), checked above; edges included: a closed form
+            # stated for x < a or c_s < a still holds at the edge as a limit
+            conds = d.point_conditions
+            fn = lambdify(list(known.values()), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
             cache[key] = (known, conds, fn)
         return cache[key]
 

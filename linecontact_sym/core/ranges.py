@@ -78,7 +78,8 @@ def check_value(name: str, value, zero_ok: bool = False) -> None:
                 and (hi == sp.oo or bool(np.all(arr <= float(hi) if hi_in else arr < float(hi))))
     if not ok:
         rng = f"{'[' if lo_in else '('}{lo}, {hi}{']' if hi_in else ')'}"
-        raise DomainError(f"{what} {name} = {value} lies outside its physical range {rng}")
+        must = "positive" if (lo, lo_in, hi) == (0, False, sp.oo) else f"in {rng}"
+        raise DomainError(f"{what} must be {must}, got {name} = {value} (its physical range is {rng})")
 
 
 def check_stick(a=None, c_s=None, c_r=None) -> None:

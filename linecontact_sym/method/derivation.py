@@ -111,11 +111,18 @@ class Derivation:
     def point_conditions(self) -> tuple:
         """The conditions a point must meet for ``expr`` to hold (a < R,
         n < 2, ...): :attr:`conditions` without the relations between x and
-        a alone, which state the quantity's domain (inside, outside the
+        a (x < a), which state the quantity's domain (inside, outside the
         contact) and are decided there, edges included.  Every numeric path
         checks these: :meth:`evalf` refuses a point where one fails, the
-        exports give NaN there."""
-        return tuple(c for c in self.conditions if c is not sp.true and not c.free_symbols <= {S.x, S.a})
+        exports give NaN there.  Strict inequalities are taken with their
+        edge (c_s < a as c_s <= a): a closed form stated on an open set holds
+        at its edge as a limit, or is not finite there."""
+        closure = {sp.StrictLessThan: sp.LessThan, sp.StrictGreaterThan: sp.GreaterThan}
+
+        def edge(c):
+            return c.replace(lambda e: type(e) in closure, lambda e: closure[type(e)](*e.args))
+        return tuple(edge(c) for c in self.conditions
+                     if c is not sp.true and not (S.x in c.free_symbols and c.free_symbols <= {S.x, S.a}))
 
     @property
     def variables_all(self):

@@ -19,6 +19,7 @@ from ..core.conversion import exact_number
 from ..core import symbols as S
 from ..core.errors import InadmissibleProfileError, ProfileError, UnknownSymbolError
 from ..core.precision import workdps
+from ..core.printing import lambdify
 
 
 @dataclass(frozen=True)
@@ -148,8 +149,8 @@ def _profile_numeric_fns(self, values):
     if "_near_fns" not in self.__dict__:
         args = [S.x] + list(self.params)
         try:
-            self._near_fns = (sp.lambdify(args, self.expr, "mpmath"),
-                              sp.lambdify(args, sp.diff(self.expr, S.x), "mpmath"))
+            self._near_fns = (lambdify(args, self.expr, "mpmath"),
+                              lambdify(args, sp.diff(self.expr, S.x), "mpmath"))
         except Exception:  # pragma: no cover - lambdify of exotic functions
             self._near_fns = None
     if self._near_fns is None:

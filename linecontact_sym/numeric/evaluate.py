@@ -54,6 +54,7 @@ import sympy as sp
 from ..parsing import to_sympy
 from ..core import symbols as S
 from ..core.errors import DomainError, LineContactError
+from ..core.printing import lambdify
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
@@ -195,7 +196,7 @@ class SeriesModel:
         self.args = (S.a, S.E_star) + tuple(prof.params)
         self.names = [s.name for s in self.args]
         self.terms = [S.E_star * cb * S.a ** (k + 1) for k, cb in coeffs]
-        self._mp = sp.lambdify(self.args, self.terms, "mpmath")
+        self._mp = lambdify(list(self.args), self.terms, "mpmath")
         self._math = None
         self._names: dict = {}
         self.profile_terms = [sp.integrate(sp.Poly(ser, S.x).coeff_monomial(S.x**k) * S.x**k, (S.x, 0, S.x))
@@ -217,7 +218,7 @@ class SeriesModel:
         """The terms in float64 (a few eps each), or None where one under- or
         overflows (then :meth:`term_values` in mpmath)."""
         if self._math is None:
-            self._math = sp.lambdify(self.args, self.terms, "math")
+            self._math = lambdify(list(self.args), self.terms, "math")
         try:
             t = [float(v) for v in self._math(*[_as_float(values[n]) for n in self.names])]
         except (ValueError, OverflowError, ZeroDivisionError):
@@ -451,7 +452,7 @@ def _quad_error(d, point):
         syms = d.variables_all
         quads = [(VectorQuad(I, compile_plain_numpy, conditions=()), I) for I in ints]
         # d(form)/d(I) for the propagation of each integral's error
-        coeffs = [sp.lambdify(syms, sp.diff(form.xreplace({I: sp.Symbol("_I_")}), sp.Symbol("_I_"))
+        coeffs = [lambdify(list(syms), sp.diff(form.xreplace({I: sp.Symbol("_I_")}), sp.Symbol("_I_"))
                               .xreplace({sp.Symbol("_I_"): 0}), "numpy") for I in ints]
         cache[key] = (quads, coeffs, [s.name for s in syms])
     quads, coeffs, names = cache[key]

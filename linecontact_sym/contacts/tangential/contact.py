@@ -338,7 +338,9 @@ class TangentialLineContact(ContactOn):
             return history.stick_half_width_at(self, Qv, values).c
         key = ("stick_half_width", Qv)
         if key not in self._cache:
-            self._cache[key] = states.derive_stick_half_width(self, Qv)
+            # derived once for the package's Q, then written in the user's own symbol
+            self._cache[key] = states.derive_stick_half_width(self, S.Q) if Qv == S.Q else \
+                states.in_terms_of(self, self._stick_half_width(S.Q), Qv)
         return self._cache[key]
 
     def _derive_stick_half_width(self):
