@@ -160,6 +160,13 @@ def test_item3_other_kinds_see_the_right_case(cased):
     with mpmath.workdps(30):
         c_ref = mpmath.findroot(lambda v: force_ref(lambda s: 4 * s, v) - (mpmath.pi - 1), mpmath.mpf("0.8"))
     assert close(st_.c, c_ref, 1e-20)
+    # pull-off (JKR, Eq. 31 of the 2 x^2 profile at R = 1/4): P(a) = pi a^2 - sqrt(2 pi gamma a), gamma = 1/10
+    po = cased.adhesive(sp.Rational(1, 10)).pull_off_at(R=q, E_star=1)
+    with mpmath.workdps(40):
+        P = lambda v: force_ref(lambda s: 4 * s, v, dps=40) - mpmath.sqrt(2 * mpmath.pi * v / 10)   # noqa: E731
+        # by hand: P0 = pi a^2 (Eq. 10* of 2 x^2), dP/da = 0 at a^(3/2) = sqrt(2 pi gamma)/(4 pi)
+        a_ref = (mpmath.sqrt(2 * mpmath.pi / 10) / (4 * mpmath.pi))**(mpmath.mpf(2) / 3)
+        assert close(po.force, P(a_ref), 1e-25) and close(po.half_width, a_ref, 1e-20)
     # stresses: sigma_z on the surface is -p(x)
     sf = cased.stresses()
     p_ref = pressure_ref(lambda s: 4 * s, lambda s: 4, 1, sp.Rational(1, 2))

@@ -428,7 +428,31 @@ def _checked_value(name, v, sym):
 
 class ContactOn(Contact):
     """A contact built on a frictionless one, ``self.contact`` (adhesive,
-    tangential, stresses): its profile and parameters are that contact's."""
+    tangential, stresses): its profile and parameters are that contact's.
+    On a profile that switches on its parameters alone, every quantity is
+    derived case by case (:mod:`.normal.cases`), each case by this kind of
+    contact built on that case's frictionless contact (:meth:`on`)."""
+
+    def on(self, contact):
+        """This contact, with the same settings, built on another
+        frictionless ``contact`` (nothing derived is shared)."""
+        import copy
+        new = copy.copy(self)
+        new.contact = contact
+        for k in tuple(self._transient) + ("_fields",):
+            if k in new.__dict__:
+                new.__dict__[k] = {}
+        return new
+
+    def derivation(self, quantity: str):
+        if not self.contact.profile.cases:
+            return super().derivation(quantity)
+        from .normal.cases import derive_by_case
+        name = self.resolve(quantity)
+        cache = self._caches()
+        if name not in cache:
+            cache[name] = derive_by_case(self, name)
+        return cache[name]
 
     @property
     def profile(self):

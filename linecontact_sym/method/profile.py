@@ -378,66 +378,9 @@ class Profile:
 
     @cached_property
     def cases(self) -> tuple:
-        """The cases of a Piecewise whose conditions hold relations free of x
-        (``Piecewise((x**2/(2*R), R < 1), (x**2, True))``): a tuple of
-        ``(condition, expression)``, one per combination of those relations
-        that SymPy cannot prove impossible, the expression being the profile
-        with the relations decided (the last condition is ``True``); ``()``
-        for a profile without such relations.  :attr:`pieces` are read in one
-        case only (see :meth:`_split`); the contacts derive every case
-        (:meth:`~linecontact_sym.contacts.normal.contact.LineContact.derivation`),
-        so that a result holds for every parameter value, not only in the
-        case the pieces were read in.  More than :data:`MAX_CASE_RELATIONS`
-        such relations raise :class:`ProfileError`."""
-        expr = sp.piecewise_fold(self.expr) if self.expr.has(sp.Piecewise) else self.expr
-        rels = []
-        for pw in expr.atoms(sp.Piecewise):
-            for _, cond in pw.args:
-                for r in cond.atoms(sp.Rel):
-                    if not r.has(S.x) and r.free_symbols:
-                        c = r.canonical
-                        if c not in rels and c.negated.canonical not in rels:
-                            rels.append(c)
-        if not rels:
-            return ()
-        if len(rels) > MAX_CASE_RELATIONS:
-            raise ProfileError(f"profile {self.name!r}: its Piecewise switches on {len(rels)} relations of the "
-                               f"parameters ({', '.join(map(str, rels))}); at most {MAX_CASE_RELATIONS} are "
-                               f"derived case by case: give the cases as separate profiles")
-        out = []
-        for k in range(2**len(rels)):
-            truth = [bool(k >> i & 1) for i in range(len(rels))]
-            cond = sp.And(*[r if t else r.negated for r, t in zip(rels, truth)])
-            try:
-                if sp.simplify(cond) == sp.false:
-                    continue
-            except Exception:
-                pass
-            sub = {}
-            for pw in expr.atoms(sp.Piecewise):
-                for _, c in pw.args:
-                    for r in c.atoms(sp.Rel):
-                        for rel, t in zip(rels, truth):
-                            if r.canonical == rel:
-                                sub[r] = sp.true if t else sp.false
-                            elif r.canonical == rel.negated.canonical:
-                                sub[r] = sp.false if t else sp.true
-            out.append((cond, expr.xreplace(sub)))
-        if not out:
-            return ()
-        # the same expression in two cases: one case
-        merged: list = []
-        for cond, e in out:
-            for i, (c0, e0) in enumerate(merged):
-                if e0 == e:
-                    merged[i] = (sp.Or(c0, cond), e0)
-                    break
-            else:
-                merged.append((cond, e))
-        if len(merged) == 1:
-            return ()
-        merged[-1] = (sp.true, merged[-1][1])
-        return tuple(merged)
+        """The cases of a Piecewise that switches on the parameters alone:
+        see :func:`parameter_cases`."""
+        return parameter_cases(self)
 
     @property
     def is_piecewise(self) -> bool:
@@ -512,6 +455,69 @@ class Profile:
 
     def __repr__(self):
         return f"Profile({self.expr})"
+
+
+def parameter_cases(profile) -> tuple:
+    """The cases of a Piecewise whose conditions hold relations free of x
+    (``Piecewise((x**2/(2*R), R < 1), (x**2, True))``): a tuple of
+    ``(condition, expression)``, one per combination of those relations
+    that SymPy cannot prove impossible, the expression being the profile
+    with the relations decided (the last condition is ``True``); ``()``
+    for a profile without such relations.  :attr:`pieces` are read in one
+    case only (see :meth:`_split`); the contacts derive every case
+    (:meth:`~linecontact_sym.contacts.normal.contact.LineContact.derivation`),
+    so that a result holds for every parameter value, not only in the
+    case the pieces were read in.  More than :data:`MAX_CASE_RELATIONS`
+    such relations raise :class:`ProfileError`."""
+    expr = sp.piecewise_fold(profile.expr) if profile.expr.has(sp.Piecewise) else profile.expr
+    rels = []
+    for pw in expr.atoms(sp.Piecewise):
+        for _, cond in pw.args:
+            for r in cond.atoms(sp.Rel):
+                if not r.has(S.x) and r.free_symbols:
+                    c = r.canonical
+                    if c not in rels and c.negated.canonical not in rels:
+                        rels.append(c)
+    if not rels:
+        return ()
+    if len(rels) > MAX_CASE_RELATIONS:
+        raise ProfileError(f"profile {profile.name!r}: its Piecewise switches on {len(rels)} relations of the "
+                           f"parameters ({', '.join(map(str, rels))}); at most {MAX_CASE_RELATIONS} are "
+                           f"derived case by case: give the cases as separate profiles")
+    out = []
+    for k in range(2**len(rels)):
+        truth = [bool(k >> i & 1) for i in range(len(rels))]
+        cond = sp.And(*[r if t else r.negated for r, t in zip(rels, truth)])
+        try:
+            if sp.simplify(cond) == sp.false:
+                continue
+        except Exception:
+            pass
+        sub = {}
+        for pw in expr.atoms(sp.Piecewise):
+            for _, c in pw.args:
+                for r in c.atoms(sp.Rel):
+                    for rel, t in zip(rels, truth):
+                        if r.canonical == rel:
+                            sub[r] = sp.true if t else sp.false
+                        elif r.canonical == rel.negated.canonical:
+                            sub[r] = sp.false if t else sp.true
+        out.append((cond, expr.xreplace(sub)))
+    if not out:
+        return ()
+    # the same expression in two cases: one case
+    merged: list = []
+    for cond, e in out:
+        for i, (c0, e0) in enumerate(merged):
+            if e0 == e:
+                merged[i] = (sp.Or(c0, cond), e0)
+                break
+        else:
+            merged.append((cond, e))
+    if len(merged) == 1:
+        return ()
+    merged[-1] = (sp.true, merged[-1][1])
+    return tuple(merged)
 
 
 def check_real_and_rising(profile):

@@ -41,6 +41,7 @@ from ...method.verification import verify
 from ...parsing import to_sympy, user_value
 from . import branches
 from . import pull_off
+from ..normal.cases import case_of
 from ..base import ContactOn, Quantity
 from ..normal.equilibria import equilibria
 from ..normal.force_law import PullOff, ForceLaw
@@ -285,6 +286,9 @@ class AdhesiveLineContact(ContactOn):
         independent methods agree.  Raises :class:`NoPullOffError` where no
         finite pull-off exists, :class:`VerificationError` if the methods
         disagree below ``dps`` digits."""
+        case = case_of(self, values)       # a profile switching on its parameters: that case's contact
+        if case is not self:
+            return case.pull_off_at(dps, **values)
         return pull_off.at_values(self, self._numeric_values(values), dps)
 
     def pull_off_force_at(self, dps: int = 30, **values):

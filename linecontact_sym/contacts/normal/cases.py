@@ -51,11 +51,32 @@ def _case_at(parts, vals):
     raise DomainError(f"no case of the profile holds at {vals}")
 
 
+def case_of(contact, values: dict):
+    """The contact of the case that holds at ``values`` (by name), for the
+    numeric methods of a contact built on a frictionless one (pull_off_at,
+    ...); the contact itself when its profile has no cases."""
+    base = getattr(contact, "contact", contact)
+    if not base.profile.cases:
+        return contact
+    vals = {p: values[p.name] for p in base.params if p.name in values}
+    for cond, sub in case_contacts(base):
+        if cond == sp.true or holds((cond,), vals):
+            if isinstance(sub, Exception):
+                raise DomainError(f"the profile is not admissible in this case ({cond}): {sub}")
+            return sub if base is contact else contact.on(sub)
+    raise DomainError(f"no case of the profile holds at {values}")
+
+
 def derive_by_case(contact, name: str) -> Derivation:
-    """The derivation of ``name`` joined over the cases of the profile."""
+    """The derivation of ``name`` joined over the cases of the profile
+    (``contact`` a frictionless contact, or one built on it: each case is
+    the same kind of contact built on that case's frictionless one)."""
     t0 = time.perf_counter()
     parts = []
-    for cond, sub in case_contacts(contact):
+    base = getattr(contact, "contact", contact)
+    for cond, sub in case_contacts(base):
+        if base is not contact and not isinstance(sub, Exception):
+            sub = contact.on(sub)
         if isinstance(sub, Exception):
             parts.append((cond, sub))
         else:
@@ -109,4 +130,4 @@ def derive_by_case(contact, name: str) -> Derivation:
                       notes, reference, tuple(variables), tuple(a for d in ds for a in d.attempts))
 
 
-__all__ = ["case_contacts", "derive_by_case"]
+__all__ = ["case_contacts", "case_of", "derive_by_case"]

@@ -19,7 +19,7 @@ from ...method.derivation import Derivation, derive, fallback_step
 from ...method.profile import Profile
 from ...numeric.exports import lambdify_numpy
 from ...method.rules import Problem, Step
-from ...method.verification import REQUIRED_DIGITS, holds, verify
+from ...method.verification import REQUIRED_DIGITS, verify
 from ...parsing import to_sympy
 from . import admissibility
 from ..base import Contact, Quantity
@@ -108,9 +108,7 @@ class LineContact(Contact):
         return (S.E_star,) + tuple(self.params)
 
     def derivation(self, quantity: str) -> Derivation:
-        """See :meth:`~.base.Contact.derivation`; a profile whose Piecewise
-        switches on the parameters alone is derived case by case
-        (:mod:`.cases`): the result is a Piecewise over the cases."""
+        """See :meth:`~.base.Contact.derivation`; switching on parameters: case by case (:mod:`.cases`)."""
         if not self.profile.cases:
             return super().derivation(quantity)
         name = self.resolve(quantity)
@@ -120,19 +118,8 @@ class LineContact(Contact):
         return cache[name]
 
     def check_point(self, values: dict) -> None:
-        """The frictionless solution holds at ``values`` (Symbol -> number,
-        with ``a``): the conditions of the force law (the exact cylinder's
-        a < R, ...) hold there.  The contacts built on this one (tangential,
-        stresses) call it before any numeric work, so a point outside is a
-        :class:`~linecontact_sym.core.errors.DomainError` at once, not a
-        foreign exception after a long search."""
-        d = self.derivation("force")
-        failed = [c for c in d.point_conditions if c.free_symbols <= set(values) and not holds((c,), values)]
-        if failed:
-            shown = {k.name if hasattr(k, "name") else k: v for k, v in values.items()}
-            raise DomainError(f"the frictionless solution holds only where "
-                              f"{', '.join(map(str, d.point_conditions))}; {', '.join(map(str, failed))} fails "
-                              f"at {shown}")
+        """See :func:`~.admissibility.check_point`."""
+        admissibility.check_point(self, values)
 
     def _sampler(self, domain="any"):
         return point_sampler(self.profile, domain)
