@@ -224,7 +224,7 @@ class Contact:
                 r = cond_fn(*[_as_float_array(vals[k]) for k in known])
                 ok = bool(r) if isinstance(r, (bool, np.bool_)) else bool(np.all(r))
             except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
-                ok = holds(conds, {known[k]: v for k, v in vals.items()}) if not any(
+                ok = holds(self.derivation(name).point_test, {known[k]: v for k, v in vals.items()}) if not any(
                     isinstance(v, np.ndarray) for v in vals.values()) else True
             if not ok:
                 raise DomainError(f"{name} holds only where {', '.join(map(str, conds))}; "
@@ -268,7 +268,7 @@ class Contact:
             # outside: |x| >= a), checked above; edges included: a closed form
             # stated for x < a or c_s < a still holds at the edge as a limit
             conds = d.point_conditions
-            fn = lambdify(list(known.values()), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
+            fn = lambdify(list(known.values()), sp.And(*d.point_test), [NUMPY_LOGIC, "numpy"]) if conds else None
             cache[key] = (known, conds, fn)
         return cache[key]
 

@@ -174,8 +174,15 @@ def lambdify(args, expr, modules=None, **kw):
     ren = {s: sp.Dummy(s.name if s.name.isidentifier() else "v", **s.assumptions0)
            for s in flat if isinstance(s, sp.Symbol)}
     new = [ren.get(s, s) for s in flat]
-    body = expr.xreplace(ren) if isinstance(expr, sp.Basic) else expr
-    return sp.lambdify(new[0] if single else new, body, modules=modules, **kw)
+
+    def renamed(e):
+        if isinstance(e, sp.Basic):
+            with sp.evaluate(False):      # a renaming, not a new expression: nothing re-evaluated
+                return e.xreplace(ren)
+        if isinstance(e, (list, tuple)):
+            return type(e)(renamed(v) for v in e)
+        return e
+    return sp.lambdify(new[0] if single else new, renamed(expr), modules=modules, **kw)
 
 
 __all__ = ["lambdify", "PaperLatexPrinter", "to_latex", "latex_escape", "init_printing", "ELLIPTIC_CONVENTION",

@@ -94,7 +94,7 @@ class Derivation:
         digits: the closed form where there is one, else the reference
         (high-precision quadrature of the defining integral)."""
         vals = values_by_name(self.variables_all, values)
-        failed = [c for c in self.point_conditions if not holds((c,), vals)]
+        failed = [c for c, t in zip(self.point_conditions, self.point_test) if not holds((t,), vals)]
         if failed:
             raise DomainError(f"{self.quantity} holds only where {', '.join(map(str, self.point_conditions))}; "
                               f"{', '.join(map(str, failed))} fails at {values}")
@@ -110,19 +110,24 @@ class Derivation:
     @property
     def point_conditions(self) -> tuple:
         """The conditions a point must meet for ``expr`` to hold (a < R,
-        n < 2, ...): :attr:`conditions` without the relations between x and
-        a (x < a), which state the quantity's domain (inside, outside the
-        contact) and are decided there, edges included.  Every numeric path
-        checks these: :meth:`evalf` refuses a point where one fails, the
-        exports give NaN there.  Strict inequalities are taken with their
-        edge (c_s < a as c_s <= a): a closed form stated on an open set holds
-        at its edge as a limit, or is not finite there."""
+        n < 2, ...), as stated: :attr:`conditions` without the relations
+        between x and a (x < a), which state the quantity's domain (inside,
+        outside the contact) and are decided there, edges included.  Every
+        numeric path checks them (:attr:`point_test`): :meth:`evalf` refuses
+        a point where one fails, the exports give NaN there."""
+        return tuple(c for c in self.conditions
+                     if c is not sp.true and not (S.x in c.free_symbols and c.free_symbols <= {S.x, S.a}))
+
+    @property
+    def point_test(self) -> tuple:
+        """:attr:`point_conditions` with their edges: strict inequalities as
+        non-strict (c_s < a as c_s <= a), since a closed form stated on an
+        open set holds at its edge as a limit, or is not finite there."""
         closure = {sp.StrictLessThan: sp.LessThan, sp.StrictGreaterThan: sp.GreaterThan}
 
         def edge(c):
             return c.replace(lambda e: type(e) in closure, lambda e: closure[type(e)](*e.args))
-        return tuple(edge(c) for c in self.conditions
-                     if c is not sp.true and not (S.x in c.free_symbols and c.free_symbols <= {S.x, S.a}))
+        return tuple(edge(c) for c in self.point_conditions)
 
     @property
     def variables_all(self):

@@ -551,7 +551,7 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
         return [merged[n] for n in names]
 
     # where the result does not hold (a < R fails, ...) the value is NaN, never the formula's number
-    conds = tuple(getattr(derivation, "point_conditions", ()))
+    conds = tuple(getattr(derivation, "point_test", ()))
     holds_at = lambdify(list(syms), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)

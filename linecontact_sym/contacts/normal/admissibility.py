@@ -131,7 +131,8 @@ def check_point(contact, values: dict) -> None:
     work, so a point outside is a :class:`~linecontact_sym.core.errors.DomainError`
     at once, not a foreign exception after a long search."""
     d = contact.derivation("force")
-    failed = [c for c in d.point_conditions if c.free_symbols <= set(values) and not holds((c,), values)]
+    failed = [c for c, t in zip(d.point_conditions, d.point_test)
+              if c.free_symbols <= set(values) and not holds((t,), values)]
     if failed:
         shown = {k.name if hasattr(k, "name") else k: v for k, v in values.items()}
         raise DomainError(f"the frictionless solution holds only where {', '.join(map(str, d.point_conditions))}; "
