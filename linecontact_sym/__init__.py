@@ -17,7 +17,7 @@ from .contacts.base import Contact, Quantity
 from .core.errors import NoPullOffError, NoEquilibriumError, GrossSlidingError
 from .contacts.tangential.contact import TangentialLineContact
 from .contacts import catalogue
-from .contacts.catalogue import parabola, power_law, wedge, worn_cylinder, exact_cylinder
+from .contacts.catalogue import parabola, power_law, wedge, worn_cylinder, rounded_punch, exact_cylinder
 from .core.printing import init_printing, to_latex
 from .parsing import parse_expr
 
@@ -30,5 +30,5 @@ __all__ = [
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
     "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "Contact", "Quantity", "catalogue",
     "TangentialLineContact", "GrossSlidingError", "StressField", "SlidingStressField",
-    "parabola", "power_law", "wedge", "worn_cylinder", "exact_cylinder", "to_latex", "init_printing", "parse_expr",
+    "parabola", "power_law", "wedge", "worn_cylinder", "rounded_punch", "exact_cylinder", "to_latex", "init_printing", "parse_expr",
 ]

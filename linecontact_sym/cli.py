@@ -3,7 +3,7 @@
 Verbs::
 
     linecontact-sym paper popov2017 [--out DIR]        check a paper, write the reports
-    linecontact-sym derive PROFILE [--set R=1 ...] [--adhesion] [--format text|latex|json]
+    linecontact-sym derive PROFILE [--set R=1 ...] [--adhesion [--law jkr]] [--format text|latex|json]
     linecontact-sym eval PROFILE QUANTITY --at a=0.1,0.2 [x=...] --set R=1 E_star=1 [--dps 50]
     linecontact-sym table power-law --n 1,2,3,4,5,6,10 [--latex]
     linecontact-sym check FILE.toml | --profile PROFILE --force FORMULA ...
@@ -37,12 +37,12 @@ import time
 import traceback
 from pathlib import Path
 
-
 from .core.budget import DEFAULT_BUDGET, checked_budget
 from .core.precision import MAX_DPS
 from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK
 from .core import symbols as S
 from .core.errors import LineContactError
+from .core.parallel import add_jobs_argument
 from .core.progress import Progress
 
 #: kept for scripts that imported the old name (1: a claim without a verdict)
@@ -142,7 +142,7 @@ def _output_dir(text) -> Path:
 
 
 def cmd_paper(args):
-    from .claims.check import check_paper
+    from .claims.batch import check_and_draw          # the claims and, beside them, the figures
     from .claims.report import text_table, write_paper_outputs
     from .claims.spec import load_paper
     paper = load_paper(args.name)
@@ -157,10 +157,11 @@ def cmd_paper(args):
     if not args.quiet:
         print(f"checking {n} claims of {paper.title or paper.key}", file=sys.stderr, flush=True)
     bar = Progress(n, "checking", enabled=not args.quiet)
-    result = check_paper(paper, budget=args.budget, only=only, on_start=lambda i, n_, c: bar.start(c.label),
-                         progress=lambda i, n_, r: bar.done(r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
+    result, drawn = check_and_draw(paper, args.jobs, None if args.no_figures else out, args.budget, only=only,
+                                   on_start=lambda i, n_, c: bar.start(c.label), progress=lambda i, n_, r: bar.done(
+                                       r.label, r.status, r.seconds, f"{r.digits:5.1f} digits"))
     bar.close()
-    written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget)
+    written = write_paper_outputs(result, out, figures=not args.no_figures, budget=args.budget, drawn=drawn)
     if args.json:
         d = result.to_dict()
         d["written"] = {k: [str(p) for p in v] if isinstance(v, list) else str(v) for k, v in written.items()}
@@ -184,21 +185,24 @@ def cmd_derive(args):
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof)
-    quantities = [q.strip() for q in args.quantities.split(",") if q.strip()]
-    if not quantities:
+    quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
+    if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
     known = _expression_quantities("frictionless")
-    for q in quantities:
-        if q not in known:
-            raise LineContactError(f"unknown quantity {q!r} for derive; choose from {', '.join(known)}")
+    adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
+    for q in (q for q in quantities if q not in known and not (args.adhesion and q in adhesive)):
+        raise LineContactError(f"unknown quantity {q!r}; choose from {', '.join(known)} (--adhesion: {adhesive})")
     out = {"profile": str(prof), "profile_latex": to_latex(prof),
            "slope_at_origin": str(c.profile.slope_at_origin), "quantities": {}}
-    todo = [(q, c, q) for q in quantities]
+    todo = [(q, c, q) for q in quantities if q in known]
     if args.adhesion:
-        ad = c.adhesive(S.gamma)
+        from .contacts.adhesion import LAWS
+        if args.law not in LAWS:
+            raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
+        ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
-        todo += [((registry[q].aliases or (q,))[0], ad, q)
-                 for q in ("force", "pressure", "adhesion_force", "pull_off_half_width")]
+        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
+                 if q in quantities or (args.quantities is None and q != "pull_off_force")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -308,6 +312,36 @@ def _eval_one(c, q, values, dps):
     return contact.evaluate_at(name, dps=dps, **values)
 
 
+# ------------------------------------------------------------------ model
+def cmd_model(args):
+    """Which adhesion model a tolerance needs: JKR or Maugis-Dugdale."""
+    import mpmath
+    prof = _profile(args.profile, args.symbols)
+    values = {k.name: v for k, v in _settings(args.set, args.symbols).items()}
+    md = _contact(args, prof).maugis_dugdale()
+    missing = [s.name for s in md.variables if s.name not in values]
+    if missing:
+        raise LineContactError(f"model needs values for {', '.join(missing)} (--set NAME=VALUE)")
+    ch, po = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values), md.pull_off_at(args.dps, **values)
+    out = {"profile": str(prof), "set": {k: str(v) for k, v in values.items()}, "model": ch.model,
+           "maugis_parameter": mpmath.nstr(ch.maugis_parameter, args.dps),
+           "pull_off_jkr": mpmath.nstr(ch.jkr, args.dps), "pull_off_md": mpmath.nstr(ch.md, args.dps),
+           "relative_difference": mpmath.nstr(ch.relative_difference, 6), "rtol": args.rtol,
+           "md_pull_off_kind": po.kind, "md_pull_off_half_width": mpmath.nstr(po.half_width, args.dps),
+           "note": po.note, "displacement_control": "not defined for line contacts"}
+    if args.json:
+        _emit_json(out)
+    else:
+        print(f"profile f(x) = {prof}")
+        print(f"model: {ch.model}   (JKR suffices when its pull-off is within rtol = {args.rtol} of MD's)")
+        print(f"Maugis parameter lambda = {out['maugis_parameter']}")
+        print(f"pull-off (load control): JKR {out['pull_off_jkr']}, MD {out['pull_off_md']} "
+              f"(relative difference {out['relative_difference']}); MD minimum: {po.kind} at a = "
+              f"{out['md_pull_off_half_width']}")
+        print("displacement control: not defined for line contacts (the indentation depth of a half-plane is not)")
+    return EXIT_OK
+
+
 # ------------------------------------------------------------------ table
 def cmd_table(args):
     from .parsing import parse_number_list
@@ -366,7 +400,7 @@ def cmd_check(args):
                                          force_law=args.force_law))
         paper = Paper("command-line", "claims from the command line", "", claims, {}, "command line")
     bar = Progress(len(paper.claims), "checking", enabled=not args.quiet, min_total=2)
-    result = check_paper(paper, budget=args.budget, on_start=lambda i, n, c: bar.start(c.label),
+    result = check_paper(paper, budget=args.budget, jobs=args.jobs, on_start=lambda i, n, c: bar.start(c.label),
                          progress=lambda i, n, r: bar.done(r.label, r.status, r.seconds))
     bar.close()
     if args.json:
@@ -415,6 +449,7 @@ def build_parser() -> argparse.ArgumentParser:
     pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
     pp.add_argument("--only", nargs="+", metavar="LABEL", help="check only these claims, e.g. --only 'Eq. (10)'")
     pp.add_argument("--no-figures", action="store_true", help="do not draw the figures")
+    add_jobs_argument(pp)
     common(pp, quiet=True)
     pp.set_defaults(func=cmd_paper)
 
@@ -426,10 +461,11 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("profile", help="the profile f(x) in SymPy syntax, e.g. 'x**2/(2*R)'")
     pd.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fix parameters, e.g. R=1")
     pd.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
-    pd.add_argument("--quantities", default="force,pressure,gap",
-                    help="comma-separated, from: " + ", ".join(_expression_quantities("frictionless"))
-                         + " (default force,pressure,gap)")
-    pd.add_argument("--adhesion", action="store_true", help="also the JKR-adhesive laws (Eqs. 29-36)")
+    pd.add_argument("--quantities", default=None, help="comma-separated, from: " + ", ".join(_expression_quantities(
+        "frictionless")) + " (default force,pressure,gap); --adhesion: also adhesion_force, pull_off_force, ...")
+    pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
+                    "force, pressure, P_adh, a at pull-off, or those of --quantities")
+    pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")
@@ -452,6 +488,21 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
+
+    pm = sub.add_parser("model", help="which adhesion model a tolerance needs: JKR or Maugis-Dugdale",
+                        description="Given the profile, E_star, the work of adhesion gamma, the Dugdale stress "
+                                    "sigma_0 and the profile's parameters, compare the load-control pull-off of "
+                                    "the JKR and the Maugis-Dugdale laws and print the Maugis parameter, e.g. "
+                                    "linecontact-sym model 'x**2/(2*R)' --set R=1 E_star=1 gamma=1 sigma_0=0.5.",
+                        epilog="exit status: 0 done; 2 bad input; 3 internal error.")
+    pm.add_argument("profile", help="the profile f(x) in SymPy syntax")
+    pm.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE",
+                    help="values: E_star, gamma, sigma_0 and the profile's parameters")
+    pm.add_argument("--rtol", default="0.05", help="relative tolerance on the pull-off (default 0.05)")
+    pm.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
+    pm.add_argument("--dps", type=_dps, default=15, help="significant digits (default 15)")
+    common(pm)
+    pm.set_defaults(func=cmd_model)
 
     pt = sub.add_parser("table", help="tables of derived laws (power-law Z_n)",
                         description="Z_n and the force law P(a) = E* c Z_n a^n of the power-law profile c x^n "
@@ -492,6 +543,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="sampling ranges, e.g. n=0.3:6")
     pc.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pc.add_argument("--strict", action="store_true", help="exit 1 unless every claim holds unconditionally")
+    add_jobs_argument(pc)
     common(pc, quiet=True)
     pc.set_defaults(func=cmd_check)
     return p

@@ -20,7 +20,7 @@ def run(capsys, *argv):
     return code, out, err
 
 
-@pytest.mark.parametrize("verb", [None, "paper", "derive", "eval", "table", "check"])
+@pytest.mark.parametrize("verb", [None, "paper", "derive", "eval", "table", "check", "model"])
 def test_help(capsys, verb):
     with pytest.raises(SystemExit) as info:
         cli.main(([verb] if verb else []) + ["--help"])
@@ -148,10 +148,18 @@ def test_derive_formats(capsys):
 
 
 def test_derive_adhesion(capsys):
-    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force", "--adhesion", "--format", "json",
-                       "--budget", "5")
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force,adhesion_force", "--adhesion",
+                       "--format", "json", "--budget", "5")
     d = json.loads(out)
     assert code == 0 and "adhesion_force" in d["quantities"]
+    # only what is asked (issue 22: --quantities force derived all five quantities)
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--quantities", "force", "--adhesion", "--format", "json")
+    d = json.loads(out)
+    assert code == 0 and sorted(d["quantities"]) == ["adhesive_force", "force"]
+    assert d["quantities"]["adhesive_force"]["expr"].replace(" ", "") == \
+        "-sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(a)*sqrt(gamma)+pi*E_star*a**2/(4*R)"
+    code, _, err = run(capsys, "derive", "x**2/(2*R)", "--quantities", "adhesion_force")
+    assert code == 2 and "--adhesion" in err
 
 
 def test_eval_grid_and_precision(capsys):
@@ -319,3 +327,14 @@ def test_profile_starting_with_a_minus(capsys):
     code, out, _ = run(capsys, "derive", "--quantities", "force", "--format", "json", "--",
                        "-x**2/(2*R) + x**2/R")
     assert code == 0 and json.loads(out)["profile"] == "x**2/(2*R)"
+
+
+def test_model_maugis_dugdale(capsys):
+    """JKR or MD for an rtol, with the Maugis parameter (Baney & Hui's for the parabola)."""
+    code, out, _ = run(capsys, "model", "x**2/(2*R)", "--set", "R=1", "E_star=1", "gamma=1", "sigma_0=0.5", "--json")
+    assert code == 0
+    d = json.loads(out)
+    assert d["model"] == "MD" and abs(float(d["maugis_parameter"]) - 0.932388154070823) < 1e-12
+    code, out, _ = run(capsys, "model", "x**2/(2*R)", "--set", "R=1", "E_star=1", "gamma=1", "sigma_0=30",
+                       "--rtol", "0.01", "--json")
+    assert code == 0 and json.loads(out)["model"] == "JKR"

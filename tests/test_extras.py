@@ -1,6 +1,8 @@
-"""Optional dependencies: matplotlib ([plot]) and python-flint ([certified]).
+"""Optional dependencies: matplotlib ([plot]); python-flint is a core
+dependency (issue 19 item 5: an optional package may add a feature, never
+change a result), its old extra [certified] an alias.
 
-The package imports without them; using a feature that needs one raises
+The package imports without matplotlib; plotting without it raises
 MissingExtraError (a LineContactError and an ImportError) whose message says
 which extra to install.  A missing module is simulated by
 ``sys.modules[name] = None`` (then ``import name`` raises ImportError).
@@ -30,17 +32,18 @@ def test_require_names_the_extra(monkeypatch):
     assert isinstance(exc.value, LineContactError) and isinstance(exc.value, ImportError)
 
 
-def test_certified_evaluation_without_python_flint(monkeypatch):
-    from linecontact_sym.numeric.certified import arb_evaluate
-    from linecontact_sym.numeric.evaluate import evaluate
-    monkeypatch.setitem(sys.modules, "flint", None)
-    x = sp.Symbol("x", positive=True)
-    with pytest.raises(MissingExtraError, match=r'pip install "linecontact_sym\[certified\]"'):
-        arb_evaluate(sp.sqrt(x), [x], [2])
-    with pytest.raises(MissingExtraError, match=r"linecontact_sym\[certified\]"):
-        evaluate(lcs.parabola(), "force", certified=True, a=0.5, R=1.0, E_star=1.0)
-    # without certified=True nothing needs python-flint
-    assert evaluate(lcs.parabola(), "force", a=0.5, R=1.0, E_star=1.0).path == "float64"
+def test_certified_evaluation_needs_no_extra():
+    """python-flint is imported with the package: certified evaluation and the
+    ball-arithmetic pull-off landscape are one code path, always there."""
+    import flint
+    from linecontact_sym.numeric import certified
+    from linecontact_sym.contacts.normal import equilibria
+    assert certified.flint is flint and equilibria.flint is flint
+    r = lcs.parabola().evaluate("force", certified=True, a=0.5, R=1.0, E_star=1.0)
+    import mpmath
+    with mpmath.workdps(50):
+        exact = mpmath.pi / 16                      # P = pi E* a^2 / (4 R) at a = 1/2
+        assert r.certified and r.enclosure[0] <= exact <= r.enclosure[1]
 
 
 def test_plotting_without_matplotlib(monkeypatch):
@@ -53,12 +56,11 @@ def test_plotting_without_matplotlib(monkeypatch):
 
 
 def test_the_package_imports_without_the_extras():
-    """A fresh interpreter with flint and matplotlib blocked imports every module
-    of the package (our copy: the worktree first on sys.path)."""
+    """A fresh interpreter with matplotlib blocked imports every module of the
+    package (our copy: the worktree first on sys.path)."""
     code = (
         "import sys, pkgutil, importlib\n"
         f"sys.path.insert(0, {str(ROOT)!r})\n"
-        "sys.modules['flint'] = None\n"
         "sys.modules['matplotlib'] = None\n"
         "import linecontact_sym\n"
         f"assert linecontact_sym.__file__.startswith({str(ROOT)!r}), linecontact_sym.__file__\n"
@@ -79,9 +81,9 @@ def test_pyproject_declares_the_extras():
         import tomli as tomllib
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
     deps = " ".join(meta["dependencies"])
-    assert "matplotlib" not in deps and "flint" not in deps
+    assert "matplotlib" not in deps and "python-flint" in deps     # flint: core (one code path)
     extras = meta["optional-dependencies"]
     assert any(d.startswith("matplotlib") for d in extras["plot"])
-    assert any(d.startswith("python-flint") for d in extras["certified"])
+    assert any(d.startswith("python-flint") for d in extras["certified"])   # the old command still works
     assert extras["all"] == ["linecontact_sym[plot,certified]"]
     assert any(d.startswith("linecontact_sym[all") for d in extras["test"])   # all (+ docs: the site is tested)

@@ -177,8 +177,9 @@ def test_item7_error_estimate_covers_the_error_next_to_a_kink():
 
 # ---------------------------------------------------------------- item 8
 def test_item8_message_says_what_happened():
-    """before: '(dP/da = 0 is transcendental here)'; after: what sympy.solve did."""
-    c = lcs.LineContact(S.c * x**4)
+    """before: '(dP/da = 0 is transcendental here)'; after: what sympy.solve did.
+    (Two power terms: one, c x**4, is now solved without sympy.solve, issue 22.)"""
+    c = lcs.LineContact(S.c * x**4 + x**2 / 2)
     c.derivation("force")
     c.budget = 1e-3
     with pytest.raises(NumericValuesRequired) as exc:

@@ -18,7 +18,6 @@ independently of the engine), and reports per claim one of
 from __future__ import annotations
 
 import time
-from typing import Callable
 
 import mpmath
 import sympy as sp
@@ -29,7 +28,7 @@ from ..core.budget import checked_budget, run_with_budget
 from ..core.conversion import nsimplify_basic, to_mpf
 from ..core.errors import BudgetExceeded, ClaimError, LineContactError
 from ..parsing import t as T_VAR
-from .derive import Context, Derived, derive, placeholder_laws
+from .derive import REQUIRED_DIGITS, Context, Derived, adhesive_entry, derive, evaluate_point, placeholder_laws
 from .diagnosis import diagnose
 from .references import DPS, Comparison, DerivedUndefined, Divergent, Undefined, num_eval
 from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult, PaperResult, PointResult,
@@ -37,37 +36,23 @@ from .results import (FAILS, HOLDS, HOLDS_IF, UNDECIDED, ClaimResult, FormResult
 from .sampling import holds_at, sample_points
 from .spec import X_RANGES, Claim, Form, Paper, load_paper, substitute_placeholders
 from ..core.precision import workdps
-
-#: the digits a claim must reproduce
-REQUIRED_DIGITS = 30
+from .memo import remember, remembered, symbolic_key
 
 
 # =====================================================================  one form
-def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:
-    """Compare at one point; classify what is undefined where."""
-    try:
-        comps = derived.compare(vals, printed_expr, dps, physics=physics)
-    except Divergent as exc:
-        return PointResult(vals, kind, "diverges", reason=str(exc))
-    except DerivedUndefined as exc:
-        try:
-            num_eval(printed_expr, vals, dps)
-        except Undefined:
-            return PointResult(vals, kind, "both_undefined", reason=f"both undefined: {exc}")
-        return PointResult(vals, kind, "derived_undefined", reason=str(exc))
-    except Undefined as exc:
-        return PointResult(vals, kind, "printed_undefined", reason=str(exc))
-    except (LineContactError, ZeroDivisionError, ValueError, TypeError, OverflowError) as exc:
-        return PointResult(vals, kind, "derived_undefined", reason=f"{type(exc).__name__}: {exc}")
-    d = min(c.digits for c in comps)
-    return PointResult(vals, kind, "pass" if d >= REQUIRED_DIGITS else "fail", d, comps)
-
-
-
-
 def _symbolic(printed, derived: Derived, vals, budget) -> str:
+    """SymPy's verdict on printed - derived (remembered like the comparisons)."""
     if derived.expr is None or not derived.closed_form:
         return ""
+    key = symbolic_key(printed, derived.expr, vals, budget)
+    note = remembered(key, str)
+    if note is None:
+        note = _symbolic_work(printed, derived, vals, budget)
+        remember(key, note)
+    return note
+
+
+def _symbolic_work(printed, derived: Derived, vals, budget) -> str:
     dex = derived.expr
     if isinstance(dex, sp.Piecewise) and vals is not None:
         for e, cnd in dex.args:
@@ -119,6 +104,12 @@ def _bisect_boundary(derived, printed, sym, v_fail, v_pass, base_vals, dps, iter
     """Locate the boundary between failing and passing values of one parameter."""
     lo, hi = mpmath.mpf(v_fail), mpmath.mpf(v_pass)
     for _ in range(iters):
+        # the boundary is reported as _nice(b): once both ends of the bracket
+        # round to the same simple rational, every later midpoint does too
+        # (the values rounding to one rational form an interval)
+        n_lo = _nice(lo)
+        if n_lo.is_Rational and n_lo == _nice(hi):
+            break
         mid = (lo + hi) / 2
         vals = dict(base_vals)
         vals[sym] = sp.Rational(str(mpmath.nstr(mid, 20)))
@@ -195,7 +186,8 @@ def check_form(claim: Claim, form: Form, derived: Derived, printed, *, dps=DPS, 
     free |= set(derived.variables)
     if claim.quantity in X_RANGES:
         free |= {S.x, S.a}
-    if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement", "pressure", "adhesive_pressure"):
+    if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement", "pressure") or \
+            (adhesive_entry(claim.quantity) or ("", ""))[1] == "pressure":
         free |= {S.E_star}
     if claim.quantity in ("flat_punch_pressure", "flat_punch_displacement"):
         free |= {S.P}
@@ -324,35 +316,41 @@ def check_claim(claim: Claim, ctx: Context | None = None, *, budget: float = 20.
     t0 = time.perf_counter()
     if claim.values:
         return _check_table(claim, ctx, t0)
-    targets = []
-    profiles = claim.profiles or [(None, None)]
-    for ptxt, prof in profiles:
-        try:
-            derived = derive(claim, prof, ctx)
-        except ImportError as exc:
-            targets.append(TargetResult(ptxt, None, [], UNDECIDED, error=f"engine module missing: {exc}"))
-            continue
-        except (LineContactError, BudgetExceeded) as exc:
-            targets.append(TargetResult(ptxt, None, [], UNDECIDED, error=f"{type(exc).__name__}: {exc}"))
-            continue
-        except Exception as exc:  # noqa: BLE001 -- an engine bug must not stop the other claims
-            targets.append(TargetResult(ptxt, None, [], UNDECIDED,
-                                        error=f"internal error in the engine: {type(exc).__name__}: {exc}"))
-            continue
-        dforce, dpress = placeholder_laws(claim, prof, ctx)
-        frs = []
-        try:
-            for form in claim.forms:
-                printed = substitute_placeholders(form.expr, prof, dforce, dpress)
-                frs.append(check_form(claim, form, derived, printed, dps=dps, budget=_capped(budget, 10.0),
-                                      symbolic=symbolic, force_law=lambda: _force_law(claim, prof, ctx, printed)))
-        except ClaimError as exc:
-            targets.append(TargetResult(ptxt, derived, frs, UNDECIDED, error=str(exc)))
-            continue
-        st, cond = _combine_forms(frs)
-        targets.append(TargetResult(ptxt, derived, frs, st, cond))
+    targets = [check_target(claim, ptxt, prof, ctx, budget=budget, dps=dps, symbolic=symbolic)
+               for ptxt, prof in (claim.profiles or [(None, None)])]
+    return claim_result(claim, targets, time.perf_counter() - t0)
+
+
+def claim_result(claim: Claim, targets: list, seconds: float) -> ClaimResult:
+    """The verdict on a claim from the verdicts for each of its profiles."""
     status, verdict, digits = _combine_targets(claim, targets)
-    return ClaimResult(claim, status, verdict, digits, time.perf_counter() - t0, targets)
+    return ClaimResult(claim, status, verdict, digits, seconds, targets)
+
+
+def check_target(claim: Claim, ptxt, prof, ctx: Context, *, budget, dps: int = DPS,
+                 symbolic: bool = True) -> TargetResult:
+    """Derive and compare one claim for one of its (test) profiles: the part
+    of :func:`check_claim` that is independent of the other profiles."""
+    try:
+        derived = derive(claim, prof, ctx)
+    except ImportError as exc:
+        return TargetResult(ptxt, None, [], UNDECIDED, error=f"engine module missing: {exc}")
+    except (LineContactError, BudgetExceeded) as exc:
+        return TargetResult(ptxt, None, [], UNDECIDED, error=f"{type(exc).__name__}: {exc}")
+    except Exception as exc:  # noqa: BLE001 -- an engine bug must not stop the other claims
+        return TargetResult(ptxt, None, [], UNDECIDED,
+                            error=f"internal error in the engine: {type(exc).__name__}: {exc}")
+    dforce, dpress = placeholder_laws(claim, prof, ctx)
+    frs = []
+    try:
+        for form in claim.forms:
+            printed = substitute_placeholders(form.expr, prof, dforce, dpress)
+            frs.append(check_form(claim, form, derived, printed, dps=dps, budget=_capped(budget, 10.0),
+                                  symbolic=symbolic, force_law=lambda: _force_law(claim, prof, ctx, printed)))
+    except ClaimError as exc:
+        return TargetResult(ptxt, derived, frs, UNDECIDED, error=str(exc))
+    st, cond = _combine_forms(frs)
+    return TargetResult(ptxt, derived, frs, st, cond)
 
 
 def _force_law(claim, prof, ctx, printed):
@@ -361,8 +359,9 @@ def _force_law(claim, prof, ctx, printed):
     if prof is None or S.P not in printed.free_symbols or claim.quantity in ("half_width",):
         return None
     try:
-        if claim.quantity.startswith("adhesive") or claim.quantity.startswith("pull_off"):
-            return ctx.adhesive(prof, claim.range_of).force
+        adhesive = adhesive_entry(claim.quantity)
+        if adhesive is not None:
+            return ctx.adhesive(prof, claim.range_of, adhesive[0]).force
         d = ctx.contact(prof, claim.range_of).derivation("force")
         return d.expr if d.closed_form else None
     except Exception:  # noqa: BLE001 -- only a hint
@@ -539,37 +538,12 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
 
 
 # =====================================================================  papers
-def check_paper(paper, *, budget: float = 20.0, progress: Callable | None = None, only=None,
-                dps: int = DPS, symbolic: bool = True, on_start: Callable | None = None) -> PaperResult:
-    """Check every claim of a paper (a :class:`Paper`, a path, or a shipped name).
-
-    ``on_start(i, n, claim)`` is called before and ``progress(i, n, result)``
-    after each claim (e.g. :class:`~linecontact_sym.core.progress.Progress`);
-    ``only`` limits the run to the given labels."""
-    if not isinstance(paper, Paper):
-        paper = load_paper(paper)
-    budget = checked_budget(budget)
-    ctx = Context(budget)
-    t0 = time.perf_counter()
-    claims = [c for c in paper.claims if only is None or c.label in only]
-    results = []
-    for i, claim in enumerate(claims):
-        if on_start is not None:
-            on_start(i, len(claims), claim)
-        try:
-            r = check_claim(claim, ctx, budget=budget, dps=dps, symbolic=symbolic)
-        except ClaimError as exc:
-            r = ClaimResult(claim, UNDECIDED, f"{UNDECIDED}: {exc}", 0.0, 0.0)
-        except Exception as exc:  # noqa: BLE001 -- report, and go on with the next claim
-            r = ClaimResult(claim, UNDECIDED, f"{UNDECIDED}: internal error {type(exc).__name__}: {exc}", 0.0, 0.0)
-        results.append(r)
-        if progress is not None:
-            progress(i, len(claims), r)
-    return PaperResult(paper, results, time.perf_counter() - t0)
-
-
 def check_file(path, **kw) -> PaperResult:
     return check_paper(load_paper(path), **kw)
 
 
-__all__ = ["REQUIRED_DIGITS", "evaluate_point", "check_form", "check_claim", "check_paper", "check_file"]
+# the paper level (serial, or on an executor) builds on the above
+from .batch import check_claim_portable, check_paper  # noqa: E402
+
+__all__ = ["REQUIRED_DIGITS", "evaluate_point", "check_form", "check_claim", "check_target", "claim_result",
+           "check_claim_portable", "check_paper", "check_file"]

@@ -9,6 +9,7 @@ first-principles references of :mod:`.references`.
 """
 from __future__ import annotations
 
+import dataclasses
 import time
 from dataclasses import dataclass
 from typing import Callable
@@ -20,8 +21,10 @@ from ..core import symbols as S
 from ..core.budget import run_with_budget
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import ClaimError, DomainError, LineContactError
-from .references import (DPS, Comparison, DerivedUndefined, Undefined, flamant_relative_displacement,
-                         flamant_resultant, griffith_punch_force, num_eval, numeric_minimum)
+from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_relative_displacement,
+                         flamant_resultant, griffith_punch_force, num_eval, numeric_minimum, resolution)
+from .memo import point_key, remember, remembered
+from .results import PointResult
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
 from ..core.precision import workdps
 
@@ -81,6 +84,50 @@ class Derived:
         return comps
 
 
+#: the digits a claim must reproduce
+REQUIRED_DIGITS = 30
+
+
+def evaluate_point(derived: Derived, printed_expr, vals, kind="random", dps=DPS, physics=False) -> PointResult:
+    """Compare at one point; classify what is undefined where.
+
+    The comparison (the printed form's value, the derived one, the
+    first-principles references) is remembered in the derivation store
+    (:mod:`.memo`: in this process, and on disk unless the cache is off)
+    under a key of everything it depends on: the derived record (profile,
+    expression, method, conditions), the printed form, the point, the digits,
+    and the source of the computing modules (so a changed reference never
+    meets a value of its predecessor).  A second run reads the numbers its
+    first run computed independently; nothing is skipped."""
+    key = point_key(derived, printed_expr, vals, dps, physics)
+    pr = remembered(key, PointResult)
+    if pr is not None:
+        return dataclasses.replace(pr, values=vals, kind=kind)
+    pr = _evaluate_point(derived, printed_expr, vals, kind, dps, physics)
+    remember(key, pr)
+    return pr
+
+
+def _evaluate_point(derived, printed_expr, vals, kind, dps, physics) -> PointResult:
+    try:
+        comps = derived.compare(vals, printed_expr, dps, physics=physics)
+    except Divergent as exc:
+        return PointResult(vals, kind, "diverges", reason=str(exc))
+    except DerivedUndefined as exc:
+        try:
+            num_eval(printed_expr, vals, dps)
+        except Undefined:
+            return PointResult(vals, kind, "both_undefined", reason=f"both undefined: {exc}")
+        return PointResult(vals, kind, "derived_undefined", reason=str(exc))
+    except Undefined as exc:
+        return PointResult(vals, kind, "printed_undefined", reason=str(exc))
+    except (LineContactError, ZeroDivisionError, ValueError, TypeError, OverflowError) as exc:
+        return PointResult(vals, kind, "derived_undefined", reason=f"{type(exc).__name__}: {exc}")
+    d = min(c.digits for c in comps)
+    ok = all(c.digits >= c.required(REQUIRED_DIGITS) for c in comps)
+    return PointResult(vals, kind, "pass" if ok else "fail", d, comps)
+
+
 class Context:
     """Caches engine objects across the claims (and figures) of one run."""
 
@@ -102,12 +149,15 @@ class Context:
             self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget)
         return self.contacts[key]
 
-    def adhesive(self, profile, ranges: Callable):
-        """The JKR-adhesive form of :meth:`contact` (work of adhesion gamma)."""
+    def adhesive(self, profile, ranges: Callable, kind: str = "adhesive"):
+        """The adhesive form of :meth:`contact` of the given kind (default
+        JKR, work of adhesion gamma), the law's parameters symbolic."""
+        from ..contacts.base import contact_kind
         c = self.contact(profile, ranges)
-        if id(c) not in self.adhesives:
-            self.adhesives[id(c)] = c.adhesive(S.gamma)
-        return self.adhesives[id(c)]
+        key = (id(c), kind)
+        if key not in self.adhesives:
+            self.adhesives[key] = contact_kind(kind).from_frictionless(c)
+        return self.adhesives[key]
 
 
 def figure_contacts(profiles, file_ranges: dict, budget: float) -> list:
@@ -140,20 +190,27 @@ def _ref_eval(d, vals, dps):
         raise DerivedUndefined(f"the derived quantity cannot be evaluated here: {exc}")
 
 
-def _pressure_physics(profile, force_fn):
+def _pressure_physics(profile, force_fn, bps=()):
     """Flamant checks of a pressure: it reproduces the profile under the contact
-    and its resultant is the load."""
+    and its resultant is the load.  The quadratures are split at the
+    profile's breakpoints (the end of a flat); each comparison asks no more
+    digits than its quadrature resolves (mpmath's error estimate), and a
+    profile value of 0 (inside a flat) is compared on the absolute scale of
+    the displacement integral's terms."""
     def physics(vals, printed_expr, dps):
         fixed = {k: v for k, v in vals.items() if k != S.x}
         p = sp.lambdify(S.x, printed_expr.xreplace(fixed), "mpmath")
         E, av, xv = vals[S.E_star], vals[S.a], vals[S.x]
         with workdps(dps + 10):
-            D = flamant_relative_displacement(p, av, xv, E, dps)
+            breaks = [to_mpf(sp.N(b.xreplace(fixed), dps + 20)) for b in bps]
+            D, errD, mag = flamant_relative_displacement(p, av, xv, E, dps, breaks, with_error=True)
             fx = num_eval(profile, {**vals}, dps, what="the profile", exc=DerivedUndefined)
-            res = flamant_resultant(p, av, dps)
+            res, errR = flamant_resultant(p, av, dps, breaks, with_error=True)
             Pa = force_fn(vals, dps)
-        return [Comparison("Flamant: u_z(0) - u_z(x) = f(x) under the contact", D, fx),
-                Comparison("Flamant: resultant = P(a)", res, Pa)]
+            scale = abs(fx) if fx != 0 else mag
+        return [Comparison("Flamant: u_z(0) - u_z(x) = f(x) under the contact", D, fx, scale,
+                           resolution(errD, scale)),
+                Comparison("Flamant: resultant = P(a)", res, Pa, None, resolution(errR, Pa))]
     return physics
 
 
@@ -187,10 +244,12 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
         physics = None
         if q == "pressure":
             fd = c.derivation("force")
-            physics = _pressure_physics(profile, lambda vals, dps: _from_derivation(fd).value(vals, dps))
+            physics = _pressure_physics(profile, lambda vals, dps: _from_derivation(fd).value(vals, dps),
+                                        c.profile.breakpoints)
         return _from_derivation(d, profile, slope, physics)
-    if q in ("adhesive_force", "adhesive_pressure", "pull_off_force", "adhesion_force", "pull_off_half_width"):
-        return _derive_adhesive(claim, profile, ctx)
+    adhesive = adhesive_entry(q)
+    if adhesive is not None:
+        return _derive_adhesive(claim, profile, ctx, *adhesive)
     if q == "inverse_profile":
         from ..contacts.normal.inverse import profile_from_force
         t0 = time.perf_counter()
@@ -264,17 +323,36 @@ def _as_derived(obj, method) -> Derived:
     return Derived(to_basic(obj), method)
 
 
-def _derive_adhesive(claim, profile, ctx) -> Derived:
+#: the quantities of every adhesive contact kind that the checker derives with
+#: its own checks (the pressure's physics, an independent minimum)
+ADHESIVE_QUANTITIES = ("force", "pressure", "pull_off_force", "adhesion_force", "pull_off_half_width")
+
+
+def adhesive_entry(q):
+    """(kind, name) when ``q`` names a generic quantity of an adhesive contact
+    kind (any cohesive law: 'pull_off_force', 'adhesive_force' for JKR,
+    '<kind>.pull_off_force' for another law), else None."""
+    from ..contacts.base import contact_kind, qualified_quantities
+    entry = qualified_quantities().get(q)
+    if entry is None:
+        return None
+    kind, name, _ = entry
+    if name not in ADHESIVE_QUANTITIES or getattr(contact_kind(kind), "law_class", None) is None:
+        return None
+    return kind, name
+
+
+def _derive_adhesive(claim, profile, ctx, kind="adhesive", q=None) -> Derived:
     t0 = time.perf_counter()
-    q = claim.quantity
-    ad = ctx.adhesive(profile, claim.range_of)
+    q = q or claim.quantity
+    ad = ctx.adhesive(profile, claim.range_of, kind)
     slope = ctx.contact(profile, claim.range_of).profile.slope_at_origin
-    force = _as_derived(_adhesion_item(ad, "force"), "adhesive force law (engine, Eq. 33)")
-    if q == "adhesive_force":
+    force = _as_derived(_adhesion_item(ad, "force"), f"adhesive force law (engine, {ad.law.title})")
+    if q == "force":
         out = force
-    elif q == "adhesive_pressure":
-        out = _as_derived(_adhesion_item(ad, "pressure"), "adhesive pressure (engine, Eq. 29)")
-        out.physics = _pressure_physics(profile, force.value)
+    elif q == "pressure":
+        out = _as_derived(_adhesion_item(ad, "pressure"), f"adhesive pressure (engine, {ad.law.title})")
+        out.physics = _pressure_physics(profile, force.value, ad.profile.breakpoints)
     elif q == "pull_off_half_width":
         out = _as_derived(_adhesion_item(ad, "pull_off_half_width"), "half-width at pull-off (engine)")
     else:
@@ -291,6 +369,14 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
     sign = 1 if q == "pull_off_force" else -1      # the claimed value is sign * min_a P(a)
     engine = _as_derived(_adhesion_item(ad, q), f"{q} (engine)")
     Pexpr = force.expr
+    if not force.closed_form:   # P(a) is a system (an inner solve): the contact's method B minimum
+        from ..contacts.adhesion.pull_off import reference as pull_off_reference
+        def minimum(vals, dps):
+            try:
+                return sign * pull_off_reference(ad, vals, dps).force
+            except LineContactError as exc:
+                raise DerivedUndefined(f"P(a) has no minimum over a > 0: {exc}")
+        return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr)
     dPexpr = sp.diff(Pexpr, S.a)
 
     def minimum(vals, dps):
@@ -301,7 +387,10 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
         if m is None:
             raise DerivedUndefined("P(a) of Eq. (33) has no minimum over a > 0: no pull-off force exists")
         return sign * m[1]
+    return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr)
 
+
+def _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr) -> Derived:
     what = "min_a P(a)" if sign == 1 else "-min_a P(a)"
 
     def comparer(vals, printed_expr, dps):
@@ -315,11 +404,12 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
         return comps
 
     note = (f"{q} = {'P_min = min_a P(a) < 0' if sign == 1 else 'P_adh = -min_a P(a) > 0'}; the minimum of "
-            f"the engine's Eq. (33) over a is also located numerically")
-    return Derived(engine.expr, engine.method + "; independent: numeric minimum of Eq. (33)", engine.conditions,
+            f"the engine's P(a) over a is also located numerically")
+    return Derived(engine.expr, engine.method + "; independent: numeric minimum of P(a)", engine.conditions,
                    engine.closed_form, tuple(engine.notes) + (note,), time.perf_counter() - t0,
                    engine.verified_digits, evaluator=minimum, comparer=comparer, profile=profile, slope=slope,
-                   variables=frozenset(Pexpr.free_symbols - {S.a}))
+                   variables=frozenset(ad.variables) if not isinstance(Pexpr, sp.Expr) else
+                   frozenset(Pexpr.free_symbols - {S.a}))
 
 
 # ---------------------------------------------------------------- first principles
@@ -366,4 +456,4 @@ def _punch_adhesion_force(ctx) -> Derived:
                    notes=(note,), seconds=time.perf_counter() - t0)
 
 
-__all__ = ["Derived", "Context", "derive", "placeholder_laws", "figure_contacts", "power_law_force"]
+__all__ = ["Derived", "Context", "derive", "evaluate_point", "REQUIRED_DIGITS", "adhesive_entry", "ADHESIVE_QUANTITIES", "placeholder_laws", "figure_contacts", "power_law_force"]

@@ -32,6 +32,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.precision import workdps
+from .derive import evaluate_point
 
 #: at most this many sample points are used to confirm a candidate
 POINTS = 3
@@ -74,7 +75,6 @@ def _elliptic(expr, modulus=None, swap=False):
 
 
 def _agrees(derived, expr, points, dps) -> bool:
-    from .check import evaluate_point
     if not points:
         return False
     for vals in points:

@@ -5,13 +5,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import sympy as sp
 
 from ..core.conversion import exact_number
 from ..core.errors import ClaimError
 from ..parsing import SYMBOLS, parse_expr
 
-def _w(source, label=None, fld=None):
+def where_text(source, label=None, fld=None):
     out = str(source)
     if label:
         out += f": claim {label!r}"
@@ -20,16 +19,16 @@ def _w(source, label=None, fld=None):
     return out
 
 
-def _parse_range(val, where):
+def parse_range(val, where):
     if not (isinstance(val, (list, tuple)) and len(val) == 2):
         raise ClaimError(f"{where}: a range is [low, high], got {val!r}")
-    lo, hi = (float(_num(v, where)) for v in val)
+    lo, hi = (float(number_field(v, where)) for v in val)
     if not lo <= hi:   # [v, v] fixes the value v
         raise ClaimError(f"{where}: empty range [{lo}, {hi}]")
     return (lo, hi)
 
 
-def _sign_ok(name, value, syms, where):
+def check_sign(name, value, syms, where):
     """A sampling range or special value of a symbol declared positive must be
     > 0 (the work of adhesion gamma: >= 0); x may have any sign."""
     sym = syms.get(name) or SYMBOLS.get(name)
@@ -41,18 +40,18 @@ def _sign_ok(name, value, syms, where):
                          f"check the claim outside its domain)")
 
 
-def _num(v, where):
+def number_field(v, where):
     if isinstance(v, bool):
         raise ClaimError(f"{where}: expected a number, got {v!r}")
-    if isinstance(v, (int, float)):
-        return exact_number(v) if isinstance(v, float) else sp.Integer(v)
-    e = parse_expr(str(v), where=where)
+    if not isinstance(v, str):
+        return exact_number(v)       # the one converter (floats: their shortest decimal)
+    e = parse_expr(v, where=where)
     if e.free_symbols:
         raise ClaimError(f"{where}: expected a number, got {v!r}")
     return e
 
 
-def _text(v, where, required=False):
+def text_field(v, where, required=False):
     if v is None and not required:
         return ""
     if not isinstance(v, str) or (required and not v.strip()):
@@ -82,7 +81,7 @@ def read_text_file(path: Path) -> str:
         raise ClaimError(f"{path}: not UTF-8 text (byte {exc.start}): is it a claims file?") from None
 
 
-def _typed(table, key, types, where, default=None):
+def typed_field(table, key, types, where, default=None):
     """``table[key]`` checked to be of ``types`` (a bool is never an int)."""
     v = table.get(key, default)
     if v is default and key not in table:
@@ -96,9 +95,9 @@ def _typed(table, key, types, where, default=None):
     return v
 
 
-def _names(table, key, where):
+def names_field(table, key, where):
     """A list of symbol names (a single string is refused: it is not a list)."""
-    v = _typed(table, key, list, where, [])
+    v = typed_field(table, key, list, where, [])
     if not all(isinstance(n, str) for n in v):
         raise ClaimError(f"{where}: {key} must be a list of names, got {v!r}")
     return v

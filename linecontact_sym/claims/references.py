@@ -142,7 +142,7 @@ def _numeric_values(expr, vals, dps):
     return out
 
 
-def flamant_relative_displacement(p, a, xv, E, dps=DPS):
+def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=False):
     """u_z(0) - u_z(x) of the half-plane under the even pressure p(s) on |s| < a
     (Flamant/Boussinesq kernel; reference-free)::
 
@@ -151,8 +151,16 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS):
     For a rigid indenter in contact on |x| < a this equals the profile f(x);
     outside it is d - u_z(x), the quantity of Eq. (3).  Evaluated with
     s = a sin(phi) (removes the inverse-square-root edge singularity of
-    flat-punch-like pressures), split at the logarithmic point s = x.
-    ``p`` is an mpmath callable; a, x, E* exact numbers or mpf.
+    flat-punch-like pressures), split at the logarithmic point s = x and at
+    ``breaks`` (the profile's breakpoints: the pressure of a rounded punch
+    has a logarithmic singularity of its slope at the end of the flat,
+    where a quadrature across it keeps 7 digits).  ``p`` is an mpmath
+    callable; a, x, E* exact numbers or mpf.
+
+    ``with_error``: returns ``(value, error, magnitude)``: mpmath's error
+    estimate of the quadrature and (2/(pi E*)) int |p ln|x^2/s^2 - 1|| ds,
+    the size of the terms that cancel to the value (the scale of an
+    absolute comparison where the value is 0, inside a flat).
 
     The flat punch P/(pi sqrt(a^2 - s^2)) leaves the surface flat under it:
 
@@ -168,13 +176,25 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS):
         def h(ph):
             sv = a * mpmath.sin(ph)
             return pr(sv) * mpmath.log(abs(xv**2 / sv**2 - 1)) * a * mpmath.cos(ph)
-        pts = [mpmath.mpf(0), mpmath.asin(xv / a), mpmath.pi / 2] if xv < a else [mpmath.mpf(0), mpmath.pi / 2]
-        val = mpmath.quad(h, pts, maxdegree=10)
-        return +(2 * val / (mpmath.pi * E))
+        pts = _split_points(a, [xv] + [to_mpf(b) for b in breaks])
+        val, err = mpmath.quad(h, pts, maxdegree=10, error=True)
+        if not with_error:
+            return +(2 * val / (mpmath.pi * E))
+        mag = mpmath.quad(lambda ph: abs(h(ph)), pts, maxdegree=8)
+        k = 2 / (mpmath.pi * E)
+        return +(k * val), +(k * err), +(k * mag)
 
 
-def flamant_resultant(p, a, dps=DPS):
-    """The resultant int_{-a}^{a} p(s) ds of an even pressure (s = a sin(phi)).
+def _split_points(a, inner):
+    """0, the angles asin(s/a) of the points s strictly inside (0, a), pi/2."""
+    angles = sorted({mpmath.asin(s / a) for s in inner if 0 < s < a})
+    return [mpmath.mpf(0)] + angles + [mpmath.pi / 2]
+
+
+def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
+    """The resultant int_{-a}^{a} p(s) ds of an even pressure (s = a sin(phi)),
+    split at ``breaks`` (see :func:`flamant_relative_displacement`);
+    ``with_error``: ``(value, error)`` with mpmath's error estimate.
 
     >>> with workdps(30):
     ...     print(mpmath.nstr(flamant_resultant(lambda s: 1 / (mpmath.pi * mpmath.sqrt(4 - s**2)), 2, 20), 15))
@@ -183,8 +203,9 @@ def flamant_resultant(p, a, dps=DPS):
     with workdps(quad_dps(dps)):
         a = to_mpf(a)
         pr = EndpointGuard(p, mpmath.mpf(0), a)
-        return +(2 * mpmath.quad(lambda ph: pr(a * mpmath.sin(ph)) * a * mpmath.cos(ph),
-                                 [0, mpmath.pi / 2], maxdegree=10))
+        val, err = mpmath.quad(lambda ph: pr(a * mpmath.sin(ph)) * a * mpmath.cos(ph),
+                               _split_points(a, [to_mpf(b) for b in breaks]), maxdegree=10, error=True)
+        return (+(2 * val), +(2 * err)) if with_error else +(2 * val)
 
 
 # TODO(registry): use contacts.force_law (the integrator replaces this third copy of a 1-D minimum finder)
@@ -238,6 +259,16 @@ def griffith_punch_force():
     return sol1, sol2, G_energy, K
 
 
+def resolution(err, scale, floor: float = 10.0) -> float:
+    """The digits a numeric check resolves: -log10(err/scale) less one digit of
+    margin, for mpmath's error estimate ``err`` of a value of size ``scale``;
+    at least ``floor`` (a check below it is not a check: it fails)."""
+    with workdps(2 * DPS):
+        if err == 0 or scale == 0:
+            return float(DPS)
+        return max(floor, min(float(DPS), float(-mpmath.log10(abs(err) / abs(scale))) - 1))
+
+
 @dataclass
 class Comparison:
     """A printed value against a target: ``digits`` is the number of agreeing
@@ -252,6 +283,14 @@ class Comparison:
     printed: object          # mpf
     target: object           # mpf
     scale: object = None     # mpf; default |target|
+    resolution: float | None = None   # digits the check itself resolves (None: all of DPS)
+
+    def required(self, digits: float) -> float:
+        """The digits this comparison must show to pass when ``digits`` are
+        asked: no more than the check resolves (a quadrature of a kernel
+        with a logarithmic point is not good to 30 digits everywhere; its
+        own error estimate says how far it is)."""
+        return digits if self.resolution is None else min(digits, self.resolution)
 
     @property
     def digits(self) -> float:
@@ -268,5 +307,5 @@ class Comparison:
 
 
 __all__ = ["DPS", "Undefined", "Divergent", "DerivedUndefined", "finite_real", "quad_integral", "num_eval",
-           "flamant_relative_displacement", "flamant_resultant", "numeric_minimum", "griffith_punch_force",
+           "flamant_relative_displacement", "flamant_resultant", "resolution", "numeric_minimum", "griffith_punch_force",
            "Comparison"]

@@ -12,7 +12,7 @@ from pathlib import Path
 import sympy as sp
 
 from ..core import symbols as S
-from .results import FAILS, HOLDS, HOLDS_IF, UNDECIDED
+from .results import FAILS, HOLDS, HOLDS_IF, SHORT, UNDECIDED, digits_text, markdown_summary, md_escape
 from ..core.conversion import exact_number, nsimplify_basic
 from ..core.errors import DomainError
 from ..method.profile import MAX_EXPONENT
@@ -20,7 +20,6 @@ from ..core.printing import ELLIPTIC_CONVENTION, ELLIPTIC_CONVENTION_TEX
 from ..parsing import to_sympy
 from ..views.latex import booktabs_table, fit_math, latex_escape, longtable, standalone, text_to_latex, to_latex
 
-_SHORT = {HOLDS: "holds", HOLDS_IF: "holds if", FAILS: "DOES NOT HOLD", UNDECIDED: "UNDECIDED"}
 
 
 # ------------------------------------------------------------------ power-law table
@@ -66,10 +65,6 @@ def power_law_latex(rows, caption=None, label="tab:Zn") -> str:
 
 
 # ------------------------------------------------------------------ claims reports
-def _digits(r):
-    return f"{r.digits:.1f}" if r.status in (HOLDS, HOLDS_IF) or r.digits else "-"
-
-
 def text_table(result, width: int = 110, notes: bool = True) -> str:
     """The terminal report: one row per claim, then (``notes``) the
     conditions and counterexamples."""
@@ -78,7 +73,7 @@ def text_table(result, width: int = 110, notes: bool = True) -> str:
     head = f"{'claim':<{lab_w}}  {'status':<24} {'digits':>6}  {'time':>7}  quantity"
     lines = [head, "-" * len(head)]
     for r in res:
-        lines.append(f"{r.label:<{lab_w}}  {r.status:<24} {_digits(r):>6}  {r.seconds:6.1f}s  "
+        lines.append(f"{r.label:<{lab_w}}  {r.status:<24} {digits_text(r):>6}  {r.seconds:6.1f}s  "
                      f"{r.claim.title or r.claim.quantity}")
     counts = {s: sum(r.status == s for r in res) for s in (HOLDS, HOLDS_IF, FAILS, UNDECIDED)}
     lines.append("-" * len(head))
@@ -130,21 +125,6 @@ def _wrap(text, width, indent):
                          break_on_hyphens=False)
 
 
-def _md_escape(text):
-    return str(text).replace("|", "\\|").replace("\n", " ")
-
-
-def markdown_summary(result) -> str:
-    """The claims table alone, in Markdown (notebooks display a PaperResult so)."""
-    res = result.results
-    out = ["| claim | result | status | digits | time | verdict |", "|---|---|---|---:|---:|---|"]
-    for r in res:
-        verdict = r.verdict.split(": ", 1)[1] if ": " in r.verdict and r.status != HOLDS else ""
-        out.append(f"| {r.label} | {_md_escape(r.claim.title)} | {_SHORT[r.status]} | {_digits(r)} | "
-                   f"{r.seconds:.1f} s | {_md_escape(verdict[:300])} |")
-    return "\n".join(out)
-
-
 def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
     """The full report in Markdown: counts, the claims table, each verdict
     with the derived expressions, Table 1 and the figures (``captions``:
@@ -163,7 +143,7 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
             f"{counts[FAILS]} do not hold, {counts[UNDECIDED]} undecided** ({result.seconds:.0f} s).", "",
             "| claim | result | status | digits | time |", "|---|---|---|---:|---:|"]
     for r in res:
-        out.append(f"| {r.label} | {_md_escape(r.claim.title)} | {_SHORT[r.status]} | {_digits(r)} | "
+        out.append(f"| {r.label} | {md_escape(r.claim.title)} | {SHORT[r.status]} | {digits_text(r)} | "
                    f"{r.seconds:.1f} s |")
     out += ["", "## Verdicts", ""]
     for r in res:
@@ -188,7 +168,7 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
                 if f.symbolic:
                     out.append(f"  - `{f.form.text[:60]}`: symbolic: {f.symbolic}")
                 if f.note:
-                    out.append(f"  - {_md_escape(f.note)}")
+                    out.append(f"  - {md_escape(f.note)}")
         for line in r.details:
             out.append(f"- {line}")
         if c.reading:
@@ -203,9 +183,9 @@ def markdown_report(result, figures=(), table_path=None, captions=None) -> str:
         for p in figures:
             if str(p).endswith(".png"):
                 cap = captions.get(Path(p).stem)
-                out.append(f"![{_md_escape(cap or Path(p).stem)}]({Path(p).name})")
+                out.append(f"![{md_escape(cap or Path(p).stem)}]({Path(p).name})")
                 if cap:
-                    out += ["", f"*{_md_escape(cap)}*", ""]
+                    out += ["", f"*{md_escape(cap)}*", ""]
         out.append("")
     return "\n".join(out)
 
@@ -264,7 +244,7 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
         c = r.claim
         formula = (fit_math(to_latex(c.formula.shown)) if c.forms
                    else ", ".join(f"${to_latex(v)}$" for _, v in c.values))
-        rows.append([latex_escape(c.label), formula, _STATUS_TEX[r.status], _digits(r), f"{r.seconds:.1f}"])
+        rows.append([latex_escape(c.label), formula, _STATUS_TEX[r.status], digits_text(r), f"{r.seconds:.1f}"])
     table = longtable(["Claim", "Formula as printed", "Status", "Digits", "Time (s)"], rows,
                       align=r"l>{\raggedright\arraybackslash}p{0.50\linewidth}>{\raggedright\arraybackslash}p{0.15\linewidth}rr",
                       caption=latex_escape(f"The claims of {paper.title or paper.key}, checked against the "
@@ -312,10 +292,11 @@ def latex_report(result, table1: str | None = None, figures=(), captions=None) -
     return standalone(body, title=f"Claims check: {paper.title or paper.key}")
 
 
-def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float = 20.0) -> dict:
+def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float = 20.0, drawn=None) -> dict:
     """Write report.md, report.tex, table1.tex, results.json and the paper's
     figures (its ``[[figures]]``, PNG and PDF) into ``out_dir``; returns
-    {kind: path or [paths]}."""
+    {kind: path or [paths]}.  ``drawn``: the figures' paths where they were
+    already drawn into ``out_dir`` (by a worker, while the claims were checked)."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     written = {}
@@ -330,7 +311,7 @@ def write_paper_outputs(result, out_dir, *, figures: bool = True, budget: float 
     caps = {}
     if figures and result.paper.figures:
         from .figures import captions, draw_figures
-        figs = draw_figures(result.paper, out, budget=budget)
+        figs = list(drawn) if drawn is not None else draw_figures(result.paper, out, budget=budget)
         caps = captions(result.paper)
         written["figures"] = figs
     (out / "report.md").write_text(markdown_report(result, figs, written.get("table1"), caps), encoding="utf-8")

@@ -202,7 +202,6 @@ class PaperResult:
         return EXIT_OK
 
     def _repr_markdown_(self):
-        from .report import markdown_summary
         return markdown_summary(self)
 
     def to_dict(self):
@@ -223,6 +222,32 @@ def verdict_line(status, condition, cex: PointResult | None, extra="") -> str:
     return f"{UNDECIDED}: {extra}"
 
 
+# ---------------------------------------------------------------- the claims table in Markdown
+#: the status as the tables print it
+SHORT = {HOLDS: "holds", HOLDS_IF: "holds if", FAILS: "DOES NOT HOLD", UNDECIDED: "UNDECIDED"}
+
+
+def digits_text(r):
+    """The agreeing digits of a claim result as the tables print them ('-' where none)."""
+    return f"{r.digits:.1f}" if r.status in (HOLDS, HOLDS_IF) or r.digits else "-"
+
+
+def md_escape(text):
+    """Text for a Markdown table cell (pipes escaped, one line)."""
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def markdown_summary(result) -> str:
+    """The claims table alone, in Markdown (notebooks display a PaperResult so)."""
+    res = result.results
+    out = ["| claim | result | status | digits | time | verdict |", "|---|---|---|---:|---:|---|"]
+    for r in res:
+        verdict = r.verdict.split(": ", 1)[1] if ": " in r.verdict and r.status != HOLDS else ""
+        out.append(f"| {r.label} | {md_escape(r.claim.title)} | {SHORT[r.status]} | {digits_text(r)} | "
+                   f"{r.seconds:.1f} s | {md_escape(verdict[:300])} |")
+    return "\n".join(out)
+
+
 __all__ = ["HOLDS", "HOLDS_IF", "FAILS", "UNDECIDED", "STATUSES", "EXIT_CODES", "EXIT_OK", "EXIT_FAILS",
            "EXIT_INPUT", "EXIT_INTERNAL", "EXIT_UNDECIDED", "PointResult", "FormResult", "TargetResult",
-           "ClaimResult", "PaperResult", "verdict_line", "fmt_num", "fmt_mp"]
+           "ClaimResult", "PaperResult", "verdict_line", "fmt_num", "fmt_mp", "SHORT", "digits_text", "md_escape", "markdown_summary"]

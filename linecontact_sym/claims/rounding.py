@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from decimal import Decimal
 
-_DECIMAL = re.compile(r"(?<![\w.])(\d+)\.(\d+)([eE][+-]?\d+)?(?![\w.])")
+DECIMAL = re.compile(r"(?<![\w.])(\d+)\.(\d+)([eE][+-]?\d+)?(?![\w.])")
 #: at most this many printed constants are varied corner by corner (2**6 = 64
 #: evaluations, exact for a formula monotone in each); more are varied one at
 #: a time (see :func:`printed_variants`)
@@ -31,7 +31,7 @@ def printed_variants(text: str) -> list:
     >>> printed_variants("-0.08090*x")
     ['-0.080895*x', '-0.080905*x']
     """
-    found = list(_DECIMAL.finditer(text))
+    found = list(DECIMAL.finditer(text))
 
     def moved(m, sign):
         frac = len(m.group(2))
@@ -59,7 +59,7 @@ def printed_spread(text: str) -> str:
     ``"corners"`` (the variants' range is the interval) or ``"sum"`` (the
     first variant is the formula as printed; the interval adds each
     constant's largest deviation)."""
-    return "corners" if len(_DECIMAL.findall(text)) <= MAX_CORNERS else "sum"
+    return "corners" if len(DECIMAL.findall(text)) <= MAX_CORNERS else "sum"
 
 
 class PrintedFloat(float):
@@ -79,4 +79,4 @@ class PrintedFloat(float):
         return self.text or float.__repr__(self)
 
 
-__all__ = ["MAX_CORNERS", "printed_variants", "printed_spread", "PrintedFloat"]
+__all__ = ["DECIMAL", "MAX_CORNERS", "printed_variants", "printed_spread", "PrintedFloat"]

@@ -92,8 +92,8 @@ from ..core import symbols as S
 from ..contacts.base import qualified_quantities
 from ..core.errors import ClaimError
 from ..parsing import declare_symbols, parse_expr
-from .rounding import _DECIMAL, PrintedFloat, printed_spread, printed_variants  # noqa: F401
-from .fields import _names, _num, _parse_range, _sign_ok, _text, _typed, _w, read_text_file
+from .rounding import DECIMAL, PrintedFloat, printed_spread, printed_variants  # noqa: F401
+from .fields import names_field, number_field, parse_range, check_sign, text_field, typed_field, where_text, read_text_file
 from ..views.plots import VALUE_SYMBOLS
 
 if sys.version_info >= (3, 11):
@@ -317,16 +317,16 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
         raise ClaimError(f"{source}: unknown top-level field(s) {sorted(unknown)}")
     for key, types in (("key", str), ("title", str), ("reference", str), ("definitions", dict), ("ranges", dict),
                        ("claims", list), ("figures", list)):
-        _typed(data, key, types, source)
-    file_syms = declare_symbols(_names(data, "symbols", source), _w(source, fld="symbols"))
+        typed_field(data, key, types, source)
+    file_syms = declare_symbols(names_field(data, "symbols", source), where_text(source, fld="symbols"))
     defs_show, defs = {}, {}
     for name, text in (data.get("definitions") or {}).items():
-        where = _w(source, fld=f"definitions.{name}")
+        where = where_text(source, fld=f"definitions.{name}")
         if not name.isidentifier() or name.startswith("_"):
             raise ClaimError(f"{where}: {name!r} is not a plain name")
         defs[name] = parse_expr(text, symbols=file_syms, definitions=defs, where=where)
         defs_show[name] = sp.Symbol(name, positive=True)
-    ranges = {k: _parse_range(v, _w(source, fld=f"ranges.{k}")) for k, v in (data.get("ranges") or {}).items()}
+    ranges = {k: parse_range(v, where_text(source, fld=f"ranges.{k}")) for k, v in (data.get("ranges") or {}).items()}
     claims_data = data.get("claims")
     if not isinstance(claims_data, list) or not claims_data:
         raise ClaimError(f"{source}: no [[claims]] in the file")
@@ -335,7 +335,7 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
     for i, cd in enumerate(claims_data):
         claim = claim_from_dict(cd, source, defs, defs_show, ranges, file_syms, index=i)
         if claim.label in seen:
-            raise ClaimError(f"{_w(source, claim.label)}: duplicate label")
+            raise ClaimError(f"{where_text(source, claim.label)}: duplicate label")
         seen.add(claim.label)
         claims.append(claim)
     figs_data = data.get("figures", [])
@@ -356,7 +356,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     label = cd.get("label")
     if not isinstance(label, str) or not label.strip():
         raise ClaimError(f"{source}: claim #{index + 1} has no label")
-    W = lambda fld=None: _w(source, label, fld)  # noqa: E731
+    W = lambda fld=None: where_text(source, label, fld)  # noqa: E731
     unknown = set(cd) - _CLAIM_KEYS
     if unknown:
         raise ClaimError(f"{W()}: unknown field(s) {sorted(unknown)}; allowed: {sorted(_CLAIM_KEYS)}")
@@ -364,12 +364,12 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
                        ("formula", (str, int, float)), ("forms", list), ("assumptions", list), ("ranges", dict),
                        ("special", dict), ("force_law", str), ("values", list), ("labels", dict), ("note", str),
                        ("reading", str), ("title", str), ("description", str), ("points", int)):
-        _typed(cd, key, types, W())
+        typed_field(cd, key, types, W())
     quantity = cd.get("quantity")
     if quantity not in QUANTITIES:
         raise ClaimError(f"{W('quantity')}: unknown quantity {quantity!r}; choose one of {sorted(QUANTITIES)}")
     syms = dict(file_symbols or {})
-    syms.update(declare_symbols(_names(cd, "symbols", W()), W("symbols")))
+    syms.update(declare_symbols(names_field(cd, "symbols", W()), W("symbols")))
     defs = dict(definitions or {})
     shown = dict(definitions_shown or {})
     general = "profiles" in cd
@@ -417,7 +417,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
         for k, v in (cd.get("labels") or {}).items():
             if k not in [vt for vt, _ in values]:
                 raise ClaimError(f"{W('labels')}: {k!r} is not one of the values")
-            labels[k] = _num(v, W(f"labels.{k}"))
+            labels[k] = number_field(v, W(f"labels.{k}"))
     else:
         if "formula" not in cd:
             raise ClaimError(f"{W()}: no formula")
@@ -428,7 +428,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     rounding = cd.get("rounding", "exact")
     if rounding not in ("exact", "printed"):
         raise ClaimError(f"{W('rounding')}: 'exact' (30 digits) or 'printed' (to the printed digits), got {rounding!r}")
-    if rounding == "printed" and not any(_DECIMAL.search(t) for t in texts):
+    if rounding == "printed" and not any(DECIMAL.search(t) for t in texts):
         raise ClaimError(f"{W('rounding')}: 'printed' needs a decimal constant such as 0.300 in the formula")
     forms = []
     for j, text in enumerate(texts):
@@ -441,17 +441,17 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
                         for j, r in enumerate(cd.get("assumptions", [])))
     table = {}
     for k, v in (cd.get("ranges") or {}).items():
-        table[k] = _parse_range(v, W(f"ranges.{k}"))
+        table[k] = parse_range(v, W(f"ranges.{k}"))
     special = {}
     for k, vals in (cd.get("special") or {}).items():
         if not isinstance(vals, list):
             vals = [vals]
-        special[k] = [_num(v, W(f"special.{k}")) for v in vals]
+        special[k] = [number_field(v, W(f"special.{k}")) for v in vals]
     for k, (lo, _hi) in table.items():
-        _sign_ok(k, lo, syms, W(f"ranges.{k}"))
+        check_sign(k, lo, syms, W(f"ranges.{k}"))
     for k, vals in special.items():
         for v in vals:
-            _sign_ok(k, v, syms, W(f"special.{k}"))
+            check_sign(k, v, syms, W(f"special.{k}"))
     pts = cd.get("points", 6)
     if isinstance(pts, bool) or not isinstance(pts, int) or not 1 <= pts <= 50:
         raise ClaimError(f"{W('points')}: expected an integer 1..50")
@@ -495,7 +495,7 @@ def figure_from_dict(fd: dict, source="<claims>", file_symbols=None, index=0) ->
     quantity = fd.get("quantity", "force")
     if quantity not in VALUE_SYMBOLS:
         raise ClaimError(f"{W('quantity')}: a figure draws one of {sorted(VALUE_SYMBOLS)}, got {quantity!r}")
-    caption = _text(fd.get("caption"), W("caption"), required=True).strip()
+    caption = text_field(fd.get("caption"), W("caption"), required=True).strip()
     if not caption.endswith("."):
         raise ClaimError(f"{W('caption')}: the caption is a sentence (ending with a full stop)")
     syms = dict(file_symbols or {})
@@ -507,11 +507,11 @@ def figure_from_dict(fd: dict, source="<claims>", file_symbols=None, index=0) ->
     y = parse_expr(fd["y"], symbols=syms, placeholders={value.name: value}, where=W("y"))
     if value not in y.free_symbols:
         raise ClaimError(f"{W('y')}: the ordinate must contain the value {value} of the {quantity}")
-    xr = _parse_range(fd.get("x_range"), W("x_range"))
+    xr = parse_range(fd.get("x_range"), W("x_range"))
     values = {}
     for k, v in (fd.get("values") or {}).items():
         sym = declare_symbols([k], W("values"))[k] if k not in syms else syms[k]
-        values[sym] = _num(v, W(f"values.{k}"))
+        values[sym] = number_field(v, W(f"values.{k}"))
     curves_data = fd.get("curves")
     if not isinstance(curves_data, list) or not curves_data:
         raise ClaimError(f"{W()}: no [[figures.curves]]")
@@ -520,14 +520,14 @@ def figure_from_dict(fd: dict, source="<claims>", file_symbols=None, index=0) ->
         cw = W(f"curves[{j}]")
         if not isinstance(cd, dict) or set(cd) - _CURVE_KEYS or "profile" not in cd:
             raise ClaimError(f"{cw}: a curve is a table with profile and optional {sorted(_CURVE_KEYS - {'profile'})}")
-        prof = parse_expr(_text(cd["profile"], cw, required=True), symbols=syms, where=f"{cw}: profile")
+        prof = parse_expr(text_field(cd["profile"], cw, required=True), symbols=syms, where=f"{cw}: profile")
         if S.x not in prof.free_symbols:
             raise ClaimError(f"{cw}: the profile {cd['profile']!r} does not depend on x")
         width = cd.get("width", 1.5)
         if isinstance(width, bool) or not isinstance(width, (int, float)) or width <= 0:
             raise ClaimError(f"{cw}: width must be a positive number")
-        curves.append(Curve(_text(cd.get("name", f"curve {j + 1}"), cw), cd["profile"], prof,
-                            _text(cd.get("label"), cw), _text(cd.get("style", "-"), cw), float(width)))
+        curves.append(Curve(text_field(cd.get("name", f"curve {j + 1}"), cw), cd["profile"], prof,
+                            text_field(cd.get("label"), cw), text_field(cd.get("style", "-"), cw), float(width)))
     names = [c.name for c in curves]
     ratio = fd.get("ratio")
     if ratio is not None:
@@ -538,7 +538,7 @@ def figure_from_dict(fd: dict, source="<claims>", file_symbols=None, index=0) ->
     for j, m in enumerate(fd.get("marks", [])):
         if not (isinstance(m, dict) and set(m) <= {"x", "text"} and "x" in m):
             raise ClaimError(f"{W(f'marks[{j}]')}: a mark is {{ x = ..., text = \"...\" }}")
-        marks.append((float(_num(m["x"], W(f"marks[{j}].x"))), _text(m.get("text"), W(f"marks[{j}].text"))))
+        marks.append((float(number_field(m["x"], W(f"marks[{j}].x"))), text_field(m.get("text"), W(f"marks[{j}].text"))))
     pts = fd.get("points", 401)
     if not isinstance(pts, int) or not 2 <= pts <= 100000:
         raise ClaimError(f"{W('points')}: expected an integer 2..100000")
@@ -546,11 +546,11 @@ def figure_from_dict(fd: dict, source="<claims>", file_symbols=None, index=0) ->
     if size is not None:
         if not (isinstance(size, list) and len(size) == 2):
             raise ClaimError(f"{W('size')}: expected [width, height] in inches")
-        size = tuple(float(_num(v, W("size"))) for v in size)
-    lims = {k: (float(_num(fd[k], W(k))) if k in fd else None) for k in ("y_min", "y_max")}
-    return Figure(stem, _text(fd.get("title"), W("title")), caption, quantity, x, y, xr, values, curves, pts,
-                  _text(fd.get("xlabel"), W("xlabel")), _text(fd.get("ylabel"), W("ylabel")),
-                  lims["y_min"], lims["y_max"], size, marks, ratio, _text(fd.get("ratio_label"), W("ratio_label")))
+        size = tuple(float(number_field(v, W("size"))) for v in size)
+    lims = {k: (float(number_field(fd[k], W(k))) if k in fd else None) for k in ("y_min", "y_max")}
+    return Figure(stem, text_field(fd.get("title"), W("title")), caption, quantity, x, y, xr, values, curves, pts,
+                  text_field(fd.get("xlabel"), W("xlabel")), text_field(fd.get("ylabel"), W("ylabel")),
+                  lims["y_min"], lims["y_max"], size, marks, ratio, text_field(fd.get("ratio_label"), W("ratio_label")))
 
 
 # =====================================================================  placeholders

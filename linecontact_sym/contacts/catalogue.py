@@ -45,6 +45,13 @@ def worn_cylinder_profile(R=S.R, b=S.b):
     return sp.Piecewise((0, S.x < b), ((S.x**2 - b**2) / (2 * R), True))
 
 
+def rounded_punch_profile(R=S.R, b=S.b):
+    """A flat of half-width b with rounded corners of radius R (parabolic):
+    f = 0 for |x| < b, (|x| - b)**2/(2R) beyond."""
+    R, b = _param(R, "R"), _param(b, "b")
+    return sp.Piecewise((0, S.x < b), ((S.x - b)**2 / (2 * R), True))
+
+
 def exact_cylinder_profile(R=S.R):
     """f = R - sqrt(R**2 - x**2), Eq. (24)."""
     R = _param(R, "R")
@@ -119,6 +126,25 @@ def worn_cylinder(R=S.R, b=S.b, **kw):
     """
     kw.setdefault("params", {R: (4.0, 8.0), b: (0.3, 1.5)})
     return LineContact(worn_cylinder_profile(R, b), name="worn cylinder", **kw)
+
+
+def rounded_punch(R=S.R, b=S.b, **kw):
+    """The rounded punch of Ciavarella, Hills & Monno (1998): a flat of
+    half-width b with corners of radius R, f = 0 for |x| < b and
+    (|x| - b)**2/(2R) beyond.  For a <= b the flat is in full contact at
+    P = 0 (Popov's parametrisation: the force law is 0 up to b); past b the
+    contact grows with the load, P(a) = E* a**2/(4R) (pi - 2 phi0 - sin 2 phi0)
+    with sin(phi0) = b/a, and the pressure is bounded everywhere.
+
+    ``R`` > 0, ``b`` > 0; keywords go to
+    :class:`~linecontact_sym.contacts.normal.contact.LineContact`.
+
+    >>> import linecontact_sym as lcs
+    >>> lcs.rounded_punch().profile.expr
+    Piecewise((0, b > x), ((-b + x)**2/(2*R), True))
+    """
+    kw.setdefault("params", {R: (4.0, 8.0), b: (0.3, 1.5)})
+    return LineContact(rounded_punch_profile(R, b), name="rounded punch", **kw)
 
 
 def exact_cylinder(R=S.R, **kw):

@@ -7,16 +7,112 @@ whitelist and then calls :func:`to_basic`).
 """
 from __future__ import annotations
 
+import re
+from decimal import Decimal
+from fractions import Fraction
+
 import mpmath
+import numpy as np
 import sympy as sp
 
 from .errors import DomainError, LineContactError
+from .precision import workdps
+
+
+_DECIMAL = re.compile(r"[+-]?(\d[\d_]*\.?[\d_]*|\.\d[\d_]*)([eE][+-]?\d+)?")
+
+
+def number(v, floats: str = "binary") -> sp.Basic:
+    """THE converter of the package: any number a user may pass, as an exact
+    SymPy number (every other conversion of a value goes through here).
+
+    ========================  ==============================================
+    int, NumPy integer        Integer
+    float, NumPy floating     its exact binary value (``floats="binary"``,
+                              the number float64, mpmath and Arb all see)
+                              or the Rational of its shortest decimal
+                              (``floats="decimal"``: 0.1 -> 1/10, for
+                              parameters shown in formulas)
+    fractions.Fraction        Rational
+    decimal.Decimal           Rational of its digits (never through float)
+    decimal text ('0.1e-3')   Rational of its digits (other text: parse it
+                              with :func:`linecontact_sym.parse_expr`)
+    mpmath mpf                Rational of its binary value
+    0-d NumPy array           its element, as above
+    SymPy number              as it is (``sqrt(3)/2``, ``pi/4``, ``E``);
+                              a Float becomes the Rational of its binary
+                              value (``"binary"``) or of its printed digits
+                              (``"decimal"``), so that a low-precision
+                              Float never caps the precision of a result
+    ========================  ==============================================
+
+    NaN and infinities raise :class:`~linecontact_sym.core.errors.DomainError`;
+    what is not a number (a bool, None, a list) raises
+    :class:`~linecontact_sym.core.errors.LineContactError`.
+
+    >>> import decimal, fractions
+    >>> number(0.5), number(0.1, "decimal"), number(fractions.Fraction(1, 3))
+    (1/2, 1/10, 1/3)
+    >>> number(decimal.Decimal("0.3333333333333333333333333333333"))
+    3333333333333333333333333333333/10000000000000000000000000000000
+    >>> number(sp.sqrt(3) / 2)
+    sqrt(3)/2
+    """
+    if isinstance(v, sp.Basic):
+        if v.is_Float:
+            return _float_rational(v, floats)
+        if v.has(sp.Float):
+            return v.xreplace({f: _float_rational(f, floats) for f in v.atoms(sp.Float)})
+        return v
+    if isinstance(v, (bool, np.bool_)) or v is None:
+        raise LineContactError(f"{v!r} is not a number")
+    if isinstance(v, (int, np.integer)):
+        return sp.Integer(int(v))
+    if isinstance(v, np.ndarray):
+        if v.ndim != 0:
+            raise LineContactError(f"expected one number, got an array of shape {v.shape}")
+        return number(v[()], floats)
+    if isinstance(v, (float, np.floating)):
+        if not np.isfinite(v):
+            raise DomainError(f"expected a finite number, got {v}")
+        if floats == "decimal":
+            return sp.Rational(repr(float(v)) if type(v) is float or isinstance(v, np.float64)
+                               else str(v))  # NumPy 2 reprs are np.float32(...)
+        return sp.Rational(*v.as_integer_ratio())
+    if isinstance(v, Fraction):
+        return sp.Rational(v.numerator, v.denominator)
+    if isinstance(v, Decimal):
+        if not v.is_finite():
+            raise DomainError(f"expected a finite number, got {v}")
+        return sp.Rational(*v.as_integer_ratio())
+    if isinstance(v, mpmath.mpf):
+        if not mpmath.isfinite(v):
+            raise DomainError(f"expected a finite number, got {v}")
+        sign, man, exp, _ = v._mpf_
+        man = -int(man) if sign else int(man)
+        return sp.Integer(man) * sp.Integer(2)**exp
+    if isinstance(v, str):
+        text = v.strip()
+        if _DECIMAL.fullmatch(text) and len(text) <= 1000:
+            return sp.Rational(text.replace("_", ""))
+        raise LineContactError(f"got the string {v!r} where a number or SymPy expression was expected; "
+                               f"parse text with linecontact_sym.parse_expr (whitelisted)")
+    try:
+        return number(sp.sympify(v, strict=True), floats)  # safe: never a string here
+    except sp.SympifyError:
+        raise LineContactError(f"cannot use {v!r} ({type(v).__name__}) as a number") from None
+
+
+def _float_rational(f, floats):
+    if not f.is_finite:
+        raise DomainError(f"expected a finite number, got {f}")
+    return sp.Rational(str(f)) if floats == "decimal" else sp.Rational(f)
 
 
 def to_basic(value) -> sp.Basic:
-    """A SymPy object for a non-string value: SymPy objects as they are,
-    numbers (int, float, Fraction, mpmath and NumPy scalars) converted by
-    ``sympify(strict=True)``, which never evaluates text.
+    """A SymPy object for a non-string value: SymPy objects as they are, a
+    Python float as a SymPy Float, other numbers (int, Fraction, Decimal,
+    mpmath and NumPy scalars, 0-d arrays) exactly by :func:`number`.
 
     >>> to_basic(3)
     3
@@ -30,31 +126,34 @@ def to_basic(value) -> sp.Basic:
                                f"parse text with linecontact_sym.parse_expr (whitelisted)")
     if isinstance(value, sp.Basic):
         return value
+    if type(value) is float:
+        return sp.Float(value)
     try:
-        return sp.sympify(value, strict=True)  # safe: never a string here
-    except sp.SympifyError:
+        return number(value)
+    except DomainError:
+        raise
+    except LineContactError:
         raise LineContactError(f"cannot use {value!r} ({type(value).__name__}) as a SymPy value") from None
 
 
 def exact_number(v) -> sp.Basic:
     """A value as an exact SymPy object: a float becomes the Rational of its
-    shortest decimal representation (0.1 -> 1/10, as people mean it), other
-    values go through :func:`to_basic` (strings are refused).
+    shortest decimal representation (0.1 -> 1/10, as people mean it):
+    :func:`number` with ``floats="decimal"`` (strings other than decimals
+    are refused).
 
     >>> exact_number(0.1), exact_number(3)
     (1/10, 3)
     """
-    if isinstance(v, float):
-        if v != v or v in (float("inf"), float("-inf")):
-            raise DomainError(f"expected a finite number, got {v}")
-        return sp.Rational(repr(float(v)))  # float(): NumPy 2 scalars print as np.float64(...)
-    return to_basic(v)
+    if isinstance(v, sp.Basic) and not v.is_number:
+        return v
+    return number(v, "decimal")
 
 
 def point_value(v) -> sp.Basic:
     """A value at which a quantity is *evaluated*, as an exact SymPy number:
-    a Python float is its exact binary value (the number the float64, mpmath
-    and Arb paths all see), other values go through :func:`to_basic`.
+    a float is its exact binary value (the number the float64, mpmath and
+    Arb paths all see): :func:`number` with ``floats="binary"``.
     Parameters that appear in *displayed* expressions (a work of adhesion, a
     friction coefficient) and numbers typed as text use
     :func:`exact_number` (the shortest decimal) instead.
@@ -62,11 +161,9 @@ def point_value(v) -> sp.Basic:
     >>> point_value(0.5), point_value(0.1) == sp.Rational(1, 10)
     (1/2, False)
     """
-    if isinstance(v, float):
-        if v != v or v in (float("inf"), float("-inf")):
-            raise DomainError(f"expected a finite number, got {v}")
-        return sp.Rational(float(v))
-    return to_basic(v)
+    if isinstance(v, sp.Basic) and not v.is_number:
+        return v
+    return number(v, "binary")
 
 
 def nsimplify_basic(e, **kw) -> sp.Basic:
@@ -91,23 +188,37 @@ def rational(v, digits: int = 6) -> sp.Rational:
 
 
 def to_mpf(v):
-    """An mpf at the current working precision: exact for int, float and mpf,
-    rationals divided in mpmath (rounded like lambdified code), other SymPy
-    numbers evaluated with 5 guard digits.  Raises ``TypeError`` for a value
-    that is not a real number."""
+    """An mpf at the current working precision, through :func:`number`:
+    exact for int, float, mpf, Fraction, Decimal and decimal text (rationals
+    divided in mpmath, rounded like lambdified code), other SymPy numbers
+    (``sqrt(3)/2``, ``pi/4``) evaluated with 5 guard digits.  Raises
+    ``TypeError`` for a value that is not a real number."""
     if isinstance(v, mpmath.mpf):
         return +v
-    if isinstance(v, bool):
+    if isinstance(v, (bool, np.bool_)):
         raise TypeError("a boolean is not a number")
-    if isinstance(v, (int, float)):
+    if type(v) in (int, float):
         return mpmath.mpf(v)
-    v = to_basic(v)
+    try:
+        v = number(v)
+    except LineContactError as exc:
+        raise TypeError(str(exc)) from None
     if v.is_Rational:
         return mpmath.mpf(int(v.p)) / int(v.q)
-    num = v if v.is_Float else sp.N(v, mpmath.mp.dps + 5)
+    num = evalf(v, mpmath.mp.dps + 5)
     if not num.is_Float:
         raise TypeError(f"{v} is not a real number")
     return mpmath.mpf(num)  # reads the Float's binary value (``_mpf_``), rounds to the context
+
+
+def evalf(expr, n):
+    """``sympy.N(expr, n)`` under the package's precision lock: SymPy
+    evaluates many functions (elliptic_k, hyper, ...) inside
+    ``mpmath.workprec``, which changes mpmath's global precision for a moment;
+    outside the lock another thread's ``workdps`` could restore the wrong one
+    (:mod:`linecontact_sym.core.precision`)."""
+    with workdps(mpmath.mp.dps):
+        return sp.N(expr, n)
 
 
 def real_mpf(v):
@@ -118,22 +229,21 @@ def real_mpf(v):
         if abs(v.imag) > 1e-12 * max(abs(v.real), 1e-300):
             raise DomainError(f"the quantity is complex here: {v}")
         return mpmath.mpf(v.real)
-    if isinstance(v, (mpmath.mpf, int, float)):
-        return to_mpf(v)
     if isinstance(v, mpmath.mpc):
         if abs(v.imag) > abs(v.real) * mpmath.mpf(10)**(-mpmath.mp.dps + 3):
             raise DomainError(f"the quantity is complex here: {v}")
         return +v.real
-    v = to_basic(v)
-    num = v if v.is_Float else sp.N(v, mpmath.mp.dps + 5)
+    if not isinstance(v, sp.Basic) or v.is_Rational:
+        return to_mpf(v)
+    num = v if v.is_Float else evalf(v, mpmath.mp.dps + 5)
     if num.is_Float:
         return mpmath.mpf(num)
-    re, im = num.as_real_imag()
-    if not (re.is_Float or re == 0) or not (im.is_Float or im == 0):
+    re_, im = num.as_real_imag()
+    if not (re_.is_Float or re_ == 0) or not (im.is_Float or im == 0):
         raise DomainError(f"the quantity is not a number here: {v}")
-    if abs(im) > abs(re) * sp.Float(10)**(-mpmath.mp.dps + 3):
+    if abs(im) > abs(re_) * sp.Float(10)**(-mpmath.mp.dps + 3):
         raise DomainError(f"the quantity is complex here: {v}")
-    return mpmath.mpf(re) if re != 0 else mpmath.mpf(0)
+    return mpmath.mpf(re_) if re_ != 0 else mpmath.mpf(0)
 
 
 def float_values(vals: dict, digits: int) -> dict:
@@ -144,10 +254,10 @@ def float_values(vals: dict, digits: int) -> dict:
     out = {}
     for k, v in vals.items():
         if isinstance(v, sp.Basic) and v.is_number and not v.is_Integer and not v.is_Float:
-            out[k] = sp.Float(v, digits)
+            out[k] = sp.Float(v, digits) if v.is_Rational else evalf(v, digits)
         else:
             out[k] = v
     return out
 
 
-__all__ = ["to_basic", "exact_number", "point_value", "nsimplify_basic", "rational", "to_mpf", "real_mpf", "float_values"]
+__all__ = ["number", "evalf", "to_basic", "exact_number", "point_value", "nsimplify_basic", "rational", "to_mpf", "real_mpf", "float_values"]

@@ -1,11 +1,14 @@
 """Optional dependencies, grouped as the package's extras.
 
-matplotlib (plots) and python-flint (certified evaluation) are not needed to
-derive, check or export anything, so they are optional::
+matplotlib (plots) is not needed to derive, check or export anything, so it
+is optional::
 
     pip install "linecontact_sym[plot]"        # matplotlib
-    pip install "linecontact_sym[certified]"   # python-flint
-    pip install "linecontact_sym[all]"         # both
+    pip install "linecontact_sym[all]"         # every extra
+
+python-flint (Arb balls) is a core dependency (an optional package may add a
+feature, never change a result); ``[certified]`` remains as an alias that
+installs it, so that old install commands keep working.
 
 Code that needs one imports it through :func:`require`, at the time of use
 (never at module import), and a missing package becomes a
@@ -30,7 +33,7 @@ __all__ = ["EXTRAS", "require", "install_hint"]
 #: extra -> (distribution names it installs, what it is for)
 EXTRAS = {
     "plot": (("matplotlib",), "plotting"),
-    "certified": (("python-flint",), "certified (Arb ball) evaluation"),
+    "certified": (("python-flint",), "certified (Arb ball) evaluation (a core dependency; alias)"),
     "all": (("matplotlib", "python-flint"), "every optional feature"),
 }
 

@@ -14,6 +14,17 @@ never changed outside such a block, and is the same afterwards.  The lock is
 re-created in a forked child (the time budget forks), where its owner thread
 does not exist.
 
+SymPy changes mpmath's precision too, by itself: ``nsimplify`` sets
+``mp.dps`` (it runs inside ``Expr.equals`` and the simplification of
+conditions), every ``Function._eval_evalf`` runs in ``mpmath.workprec``.
+Outside the lock such a change in one thread captures another thread's raised
+precision and restores it after that thread has left its block: ``mp.dps``
+stays at 30.  So the package's symbolic work also runs under the lock
+(:func:`serialized`: every derivation, :meth:`Contact.derivation
+<linecontact_sym.contacts.base.Contact.derivation>` and
+:func:`~linecontact_sym.method.derivation.derive`), and so does every SymPy
+evaluation to numbers (:func:`linecontact_sym.core.conversion.evalf`).
+
 >>> import mpmath
 >>> before = mpmath.mp.dps
 >>> with workdps(40):
@@ -57,6 +68,16 @@ if hasattr(os, "register_at_fork"):
 
 
 @contextmanager
+def serialized():
+    """Hold the package's precision lock without changing the precision:
+    for symbolic work that may change mpmath's global precision for a moment
+    (SymPy's nsimplify, evalf), so that no other thread is inside a
+    :func:`workdps` block meanwhile."""
+    with _LOCK:
+        yield
+
+
+@contextmanager
 def workdps(dps: int):
     """``mpmath.workdps(dps)`` under the package's precision lock."""
     with _LOCK, mpmath.workdps(dps):
@@ -77,4 +98,4 @@ def extradps(n: int):
         yield
 
 
-__all__ = ["workdps", "workprec", "extradps", "MAX_DPS", "checked_dps"]
+__all__ = ["workdps", "workprec", "extradps", "serialized", "MAX_DPS", "checked_dps"]

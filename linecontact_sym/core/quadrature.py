@@ -21,6 +21,17 @@ SymPy expression).
 * :func:`relational_breakpoints` -- where the conditions of a ``Piecewise``
   switch inside an interval (the points to split the interval at).
 
+and the package's one table of float64 rules (NumPy; the vectorised
+quadratures of :mod:`linecontact_sym.numeric.quadrature` and of the stress
+field, :mod:`linecontact_sym.contacts.stresses.field`, both read it):
+
+* :func:`tanh_sinh_levels` -- nested tanh-sinh node sets on (0, 1).
+* :func:`smoothstep_gauss` -- Gauss-Legendre rules after v = 3u^2 - 2u^3.
+
+(The independent check of the pull-off,
+:mod:`linecontact_sym.contacts.adhesion.brute_force`, keeps a rule of its own
+on purpose: it shares nothing with the method it checks.)
+
 No function here changes mpmath's global precision; callers set it with
 ``mpmath.workdps``.
 """
@@ -29,10 +40,11 @@ from __future__ import annotations
 import math
 
 import mpmath
+import numpy as np
 import sympy as sp
 
 from .conversion import to_mpf
-from .precision import extradps
+from .precision import extradps, workprec
 
 #: tanh-sinh degree used throughout (mpmath's default is 6)
 MAXDEGREE = 10
@@ -146,6 +158,19 @@ def quad_segments(g, pts, alphas=(None, None)):
     return total
 
 
+def _decades_below(r) -> int:
+    """int(-log10(r)) for 0 < r < 1, the logarithm taken at 53 bits (the
+    working precision's logarithm costs a fifth of a quadrature near the
+    ends); recomputed at the working precision in the rare case that the
+    53-bit value lies within 1e-9 of an integer, so the result is exact."""
+    with workprec(53):
+        v = float(-mpmath.log10(r))
+    k = int(v)
+    if min(v - k, k + 1 - v) < 1e-9:
+        return int(-mpmath.log10(r))
+    return k
+
+
 class EndpointGuard:
     """An integrand g on [lo, hi] wrapped for tanh-sinh nodes near the ends.
 
@@ -174,6 +199,7 @@ class EndpointGuard:
         self.span = hi - lo
         self.tol = mpmath.mpf(10) ** (-(mpmath.mp.dps // 2))
         self.cap = mpmath.mp.dps
+        self.near = self.span * mpmath.mpf(10) ** -5
         self.complex_at = None
 
     def near_end(self, tv) -> bool:
@@ -183,8 +209,8 @@ class EndpointGuard:
     def _eval(self, tv):
         dist = min(abs(tv - self.lo), abs(tv - self.hi))
         extra = 0
-        if dist < self.span * mpmath.mpf(10) ** -5:
-            extra = self.cap if dist == 0 else min(self.cap, int(-mpmath.log10(dist / self.span)))
+        if dist < self.near:
+            extra = self.cap if dist == 0 else min(self.cap, _decades_below(dist / self.span))
         if extra:
             with extradps(extra):
                 return self.g(tv)
@@ -247,4 +273,63 @@ def relational_breakpoints(expr, var, lo, hi) -> list:
 
 
 __all__ = ["MAXDEGREE", "quad_substituted", "quad0", "quad_dps", "endpoint_exponent", "quad_segments",
-           "EndpointGuard", "relational_breakpoints"]
+           "EndpointGuard", "relational_breakpoints", "tanh_sinh_levels", "smoothstep_gauss"]
+
+
+# ------------------------------------------------------------ float64 rules
+def tanh_sinh_levels(levels=(8, 16, 32, 64, 128), tmax: float = 6.2):
+    """Nested tanh-sinh node sets on (0, 1) for the step sizes h = 1/levels[0],
+    1/levels[1], ... (each a power-of-two refinement of the one before): per
+    level ``(h, v, w, phi)``, the nodes *new* at that level, v = 1/(1 +
+    exp(-pi sinh t)) and w = 1 - v (both formed to full relative precision,
+    so that distances to either end are exact), and the weights phi(t) =
+    pi/4 cosh t / cosh^2(pi/2 sinh t); the estimate at level j is h_j * the
+    sum of phi f over the nodes of levels 0..j.  Nodes out to |t| = ``tmax``;
+    nodes where v, w or phi underflow are dropped.
+
+    >>> levels = tanh_sinh_levels((2, 4), tmax=3.0)
+    >>> [(h, len(v)) for h, v, w, phi in levels]
+    [(0.5, 13), (0.25, 12)]
+    >>> h = levels[-1][0]; v = np.concatenate([l[1] for l in levels])
+    >>> phi = np.concatenate([l[3] for l in levels])
+    >>> round(float(h * np.sum(phi * 3 * v**2)), 9)     # int_0^1 3 v^2 dv = 1
+    1.0
+    """
+    hmax = levels[-1]
+    kmax = int(tmax * hmax)
+    k = np.arange(-kmax, kmax + 1)
+    t = k / hmax
+    ps = np.pi / 2 * np.sinh(t)
+    with np.errstate(over="ignore"):
+        v = 1 / (1 + np.exp(-2 * ps))
+        w = 1 / (1 + np.exp(2 * ps))
+        phi = np.pi / 4 * np.cosh(t) / np.cosh(ps) ** 2
+    keep = (v > 0) & (w > 0) & (phi > 0)
+    seen = np.zeros(k.size, dtype=bool)
+    out = []
+    for m in levels:
+        sel = (k % (hmax // m) == 0) & keep & ~seen
+        seen |= sel
+        out.append((1.0 / m, v[sel], w[sel], phi[sel]))
+    return out
+
+
+def smoothstep_gauss(sizes=(20, 40)):
+    """Gauss-Legendre rules on u in [0, 1] after v = 3u^2 - 2u^3 (the
+    smoothstep: dv/du = 6u(1 - u) vanishes at both ends, so an end-point
+    singularity (v or 1 - v)^(-1/2) becomes analytic; w = 1 - v = (1 - u)^2
+    (1 + 2u) is formed exactly): ``(v, w, weights)`` of the rules side by side
+    and the index where the second rule starts.
+
+    >>> v, w, wt, k = smoothstep_gauss((20, 40))
+    >>> k, round(float(np.sum(wt[:k] / np.sqrt(v[:k]))), 6)   # int_0^1 v^-1/2 dv = 2
+    (20, 2.0)
+    """
+    out = []
+    for n in sizes:
+        t, wt = np.polynomial.legendre.leggauss(n)
+        u = (t + 1) / 2
+        out.append((u * u * (3 - 2 * u), (1 - u) ** 2 * (1 + 2 * u), wt / 2 * 6 * u * (1 - u)))
+    return (np.concatenate([o[0] for o in out]), np.concatenate([o[1] for o in out]),
+            np.concatenate([o[2] for o in out]), sizes[0])
+

@@ -53,13 +53,44 @@ def bisect(fn, lo, hi, iters: int = 60):
     return lo, hi
 
 
+def root_in_bracket(g, lo, hi, width=None):
+    """The root of ``g`` in the sign-change bracket [lo, hi] at the working
+    precision: bisection down to a bracket of ``width`` (default 1e-3 of
+    max(1, |lo|, |hi|)), then Anderson-Bjorck, checked to be a sign change
+    (else bisection to the working precision).  The one bracketed root finder
+    of the package (:func:`root_in_log` solves in ln a with it; the switch
+    points of a Piecewise profile, :mod:`linecontact_sym.method.transforms`)."""
+    width = width if width is not None else mpmath.mpf("1e-3") * max(1, abs(lo), abs(hi))
+    # shrink the bracket first: Anderson-Bjorck on a bracket spanning many
+    # decades may stop at a point that is not a root (verify=False)
+    glo = g(lo)
+    if glo == 0:
+        return lo
+    while hi - lo > width:
+        um = (lo + hi) / 2
+        gm = g(um)
+        if gm == 0:
+            return um
+        if (gm < 0) == (glo < 0):
+            lo, glo = um, gm
+        else:
+            hi = um
+    try:
+        u = mpmath.findroot(g, (lo, hi), solver="anderson", verify=False)
+    except (ZeroDivisionError, ValueError):
+        u = None
+    if u is None or isinstance(u, mpmath.mpc) or not (lo <= u <= hi) or not _is_root(g, u, lo, hi):
+        lo, hi = bisect(g, lo, hi, iters=int(3.4 * mpmath.mp.dps) + 10)
+        u = (lo + hi) / 2
+    return u
+
+
 def root_in_log(fn, lo, hi, approx=None):
     """The root of ``fn`` in the sign-change bracket [lo, hi] (0 < lo < hi),
-    solved in u = ln a at the working precision: bisection down to a
-    bracket of 1e-3 in u, then Anderson-Bjorck, checked to be a sign change
-    (else bisection to the working precision).  With ``approx`` the bracket is first
-    narrowed around it (a cheap high-precision refinement of a root known
-    to lower precision)."""
+    solved in u = ln a at the working precision by :func:`root_in_bracket`
+    (bisection down to a bracket of 1e-3 in u, then Anderson-Bjorck).  With
+    ``approx`` the bracket is first narrowed around it (a cheap
+    high-precision refinement of a root known to lower precision)."""
     g = lambda u: fn(mpmath.exp(u))  # noqa: E731
     ul, uh = mpmath.log(lo), mpmath.log(hi)
     if approx is not None:
@@ -71,22 +102,7 @@ def root_in_log(fn, lo, hi, approx=None):
                 ul, uh = l2, h2
                 break
             d *= 1000
-    # shrink the bracket first: Anderson-Bjorck on a bracket spanning many
-    # decades may stop at a point that is not a root (verify=False)
-    while uh - ul > mpmath.mpf("1e-3"):
-        um = (ul + uh) / 2
-        if (g(um) < 0) == (g(ul) < 0):
-            ul = um
-        else:
-            uh = um
-    try:
-        u = mpmath.findroot(g, (ul, uh), solver="anderson", verify=False)
-    except (ZeroDivisionError, ValueError):
-        u = None
-    if u is None or isinstance(u, mpmath.mpc) or not (ul <= u <= uh) or not _is_root(g, u, ul, uh):
-        ul, uh = bisect(g, ul, uh, iters=int(3.4 * mpmath.mp.dps) + 10)
-        u = (ul + uh) / 2
-    return mpmath.exp(u)
+    return mpmath.exp(root_in_bracket(g, ul, uh, width=mpmath.mpf("1e-3")))
 
 
 def _is_root(g, u, ul, uh):
@@ -133,4 +149,4 @@ def golden_minimum(fn, lo, hi, tol=None):
     return (lo + hi) / 2
 
 
-__all__ = ["Outside", "UNDEFINED", "real_value", "bisect", "root_in_log", "domain_end", "golden_minimum"]
+__all__ = ["Outside", "UNDEFINED", "real_value", "bisect", "root_in_bracket", "root_in_log", "domain_end", "golden_minimum"]

@@ -38,6 +38,13 @@ Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential.con
   reversal it is the stick half-width at the turning point.
 * ``c_r`` -- half-width of the stick zone of a *reversal* (Mindlin-Deresiewicz
   unloading or reloading), c_s <= c_r <= a.
+
+Maugis-Dugdale adhesion, :mod:`linecontact_sym.contacts.adhesion.maugis`:
+
+* ``sigma_0`` -- the Dugdale (cohesive) tension, constant while the gap is
+  below h0 = gamma/sigma_0.
+* ``c_D``     -- half-width of the Dugdale (cohesive) zone a <= |x| <= c_D
+  (Maugis' and Baney & Hui's ``c``; ``c`` is the power-law coefficient here).
 """
 from __future__ import annotations
 
@@ -62,6 +69,8 @@ mu = sp.Symbol("mu", positive=True)
 Q = sp.Symbol("Q", real=True)
 c_s = sp.Symbol("c_s", positive=True)
 c_r = sp.Symbol("c_r", positive=True)
+sigma_0 = sp.Symbol("sigma_0", positive=True)
+c_D = sp.Symbol("c_D", positive=True)
 
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
@@ -73,10 +82,12 @@ LATEX_NAMES = {
     theta: r"\theta",
     c_s: r"c_{\mathrm{s}}",
     c_r: r"c_{\mathrm{r}}",
+    sigma_0: r"\sigma_0",
+    c_D: r"c_{\mathrm{D}}",
     zeta: r"\zeta",
     nu: r"\nu",
     mu: r"\mu",
 }
 
-__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "zeta", "nu",
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "sigma_0", "c_D", "z", "zeta", "nu",
            "RESERVED", "LATEX_NAMES"]

@@ -9,8 +9,11 @@ when nothing closes or a closed form fails its check.
 """
 from __future__ import annotations
 
+import contextlib
+import contextvars
+import functools
 import time
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 from typing import Callable
 
 import sympy as sp
@@ -18,20 +21,61 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.budget import Deadline, checked_budget, run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
-from ..core.errors import BudgetExceeded, DivergentIntegralError, DomainError, LineContactError
+from ..core.errors import BudgetExceeded, ClaimError, DivergentIntegralError, DomainError, LineContactError
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
 from .verification import REQUIRED_DIGITS, VerificationRecord, holds, verify
-from ..core.precision import workdps
+from ..core.precision import serialized, workdps
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
 
+#: start times of the derivations under way (innermost last), see :func:`timing`
+_CLOCKS: contextvars.ContextVar = contextvars.ContextVar("derivation_clocks", default=())
+
+
+@contextlib.contextmanager
+def timing(new: bool = True):
+    """The one place derivation times are taken: a :class:`Derivation` made
+    without ``seconds`` records the time since the innermost ``timing``
+    began.  :meth:`~linecontact_sym.contacts.base.Contact.derivation` opens
+    one per quantity; ``new=False`` (:func:`timed`) opens one only where none
+    is under way (a derivation function called on its own)."""
+    clocks = _CLOCKS.get()
+    if not new and clocks:
+        yield
+        return
+    token = _CLOCKS.set(clocks + (time.perf_counter(),))
+    try:
+        yield
+    finally:
+        _CLOCKS.reset(token)
+
+
+def elapsed() -> float:
+    """Seconds since the innermost :func:`timing` began (0 outside any)."""
+    clocks = _CLOCKS.get()
+    return time.perf_counter() - clocks[-1] if clocks else 0.0
+
+
+def timed(fn):
+    """Decorator: ``fn`` runs under :func:`timing` ``(new=False)``."""
+    @functools.wraps(fn)
+    def wrapper(*args, **kw):
+        with timing(new=False):
+            return fn(*args, **kw)
+    return wrapper
+
 
 @dataclass
 class Derivation:
-    """One derived quantity.
+    """One derived quantity, built by keywords after the quantity's name::
+
+        Derivation("force", expr=P, closed_form=True, step=step, conditions=conds,
+                   verification=rec, reference=quad, variables=(a,) + params)
+
+    ``seconds`` is taken by :func:`timing` unless given (a stored result's).
 
     Attributes
     ----------
@@ -55,17 +99,22 @@ class Derivation:
     """
 
     quantity: str
+    _: KW_ONLY
     expr: sp.Expr
     closed_form: bool
     step: Step
     conditions: tuple = ()
     verification: VerificationRecord | None = None
-    seconds: float = 0.0
+    seconds: float | None = None
     notes: tuple = ()
     reference: Callable | None = field(default=None, repr=False)
     variables: tuple = ()
     attempts: tuple = ()
     cached: str = ""
+
+    def __post_init__(self):
+        if self.seconds is None:
+            self.seconds = elapsed()
 
     @property
     def rule(self) -> str:
@@ -164,16 +213,23 @@ def fallback_step(why: str = "no closed form found") -> Step:
 
 
 def values_by_name(symbols, values):
-    """Keyword values (by symbol name or Symbol) -> {Symbol: exact SymPy number};
-    a float is its exact binary value (:func:`~linecontact_sym.core.conversion.point_value`),
-    as in every evaluation path of the package."""
+    """THE binding of values: keyword values (by symbol name or Symbol) ->
+    {Symbol: exact SymPy number}; text through the whitelisted parser, every
+    number through the one converter
+    (:func:`~linecontact_sym.core.conversion.point_value`: a float is its
+    exact binary value, as in every evaluation path of the package)."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
-        out[sym] = point_value(v) if isinstance(v, float) else to_sympy(v)
+        try:
+            out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
+        except DomainError:
+            raise
+        except LineContactError as exc:     # not a number (a list, an array): the user's input
+            raise ClaimError(f"{sym.name}: {exc}") from None
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
@@ -270,7 +326,7 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
 
 
 def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.Expr, budget,
-           check: bool = True, points: int = 5, notes=(), variables=(), t0=None) -> Derivation:
+           check: bool = True, points: int = 5, notes=(), variables=()) -> Derivation:
     """One transform carried out: :func:`integrate`, then verification of the
     closed form against ``reference`` at ``points`` points drawn by
     ``sampler`` (fewer than the required digits anywhere: the closed form is
@@ -287,21 +343,62 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     the whole derivation: rules, tidying and verification.  A closed form
     whose verification did not finish in what remained is not returned as
     verified: the unevaluated integral is, with a note."""
-    budget = checked_budget(budget)
+    with timing(new=False):
+        return _derive_remembered(quantity, problem, reference, sampler, fallback, checked_budget(budget), check,
+                           points, notes, variables)
+
+
+def _derive_remembered(quantity, problem, reference, sampler, fallback, budget, check, points, notes, variables):
     deadline = Deadline(budget)
-    t0 = time.perf_counter() if t0 is None else t0
     key = store.make_key("derive", quantity, problem.transform, *_problem_parts(problem), fallback, check,
                          points, REQUIRED_DIGITS, tuple(notes), tuple(variables))
     rec = store.get(key)
     if rec is not None and _usable(rec, budget):
-        return Derivation(quantity, rec["expr"], rec["closed_form"], rec["step"], rec["conditions"],
-                          rec["verification"], rec["seconds"], rec["notes"], reference, tuple(variables),
-                          rec["attempts"], rec["source"])
-    d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0)
+        return Derivation(quantity, expr=rec["expr"], closed_form=rec["closed_form"], step=rec["step"],
+                          conditions=rec["conditions"], verification=rec["verification"], seconds=rec["seconds"],
+                          notes=rec["notes"], reference=reference, variables=tuple(variables), attempts=rec["attempts"],
+                          cached=rec["source"])
+    with serialized():   # SymPy's symbolic work changes mpmath's precision (core.precision)
+        d = _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables)
     store.put(key, {"expr": d.expr, "closed_form": d.closed_form, "step": d.step, "conditions": d.conditions,
                     "verification": d.verification, "seconds": d.seconds, "notes": d.notes,
                     "attempts": d.attempts, "budget": budget})
     return d
+
+
+def remembered(parts, make, budget, reference) -> Derivation:
+    """A derivation made by ``make()`` once per key (:mod:`.store`: in this
+    process and on disk), for quantities derived outside :func:`derive`
+    (the half-width, the tangential stick half-width ...).  ``parts`` name
+    the problem completely (the key adds the code version); ``budget`` is
+    the caller's (a result that ran out of time is made again under a
+    larger one); ``reference(derivation)`` rebuilds the numeric reference
+    of a stored derivation (closures are not stored)."""
+    def rebuild(d):
+        d.reference = reference(d)
+        return d
+    return remembered_many(parts, lambda: (make(),), budget, rebuild)[0]
+
+
+def remembered_many(parts, make, budget, rebuild) -> tuple:
+    """:func:`remembered` for derivations made together (the three pull-off
+    quantities): ``make()`` returns a tuple of them; ``rebuild(d)`` returns
+    a stored one ready for use (its reference set, its class restored)."""
+    key = store.make_key("remembered", *parts)
+    rec = store.get(key)
+    if rec is not None and "derivations" in rec and all(_usable(r, budget) for r in rec["derivations"]):
+        return tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
+                                        conditions=r["conditions"], verification=r["verification"],
+                                        seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
+                                        attempts=r["attempts"], cached=rec["source"]))
+                     for r in rec["derivations"])
+    ds = tuple(make())
+    store.put(key, {"derivations": tuple(
+        {"quantity": d.quantity, "expr": d.expr, "closed_form": d.closed_form, "step": d.step,
+         "conditions": tuple(d.conditions), "verification": d.verification, "seconds": d.seconds,
+         "notes": tuple(d.notes), "variables": tuple(d.variables), "attempts": tuple(d.attempts),
+         "budget": checked_budget(budget)} for d in ds)})
+    return ds
 
 
 def _problem_parts(problem):
@@ -327,7 +424,7 @@ def _usable(rec, budget) -> bool:
     return not (timed_out and (more or (budget is not None and budget > rec["budget"])))
 
 
-def _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables, t0):
+def _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables):
     step, attempts = integrate(problem, None, deadline=deadline)
     rec = None
     extra = []
@@ -350,7 +447,9 @@ def _derive(quantity, problem, reference, sampler, fallback, deadline, check, po
             step = None
     if step is None:
         reasons = tuple(f"{r}: {why}" for r, why in attempts)
-        return Derivation(quantity, fallback, False, fallback_step(), (), rec, time.perf_counter() - t0,
-                          tuple(extra) + reasons + tuple(notes), reference, tuple(variables), tuple(attempts))
-    return Derivation(quantity, step.expr, True, step, step.conditions, rec, time.perf_counter() - t0,
-                      tuple(notes), reference, tuple(variables), tuple(attempts))
+        return Derivation(quantity, expr=fallback, closed_form=False, step=fallback_step(), verification=rec,
+                          notes=tuple(extra) + reasons + tuple(notes), reference=reference, variables=tuple(variables),
+                          attempts=tuple(attempts))
+    return Derivation(quantity, expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
+                      verification=rec, notes=tuple(notes), reference=reference, variables=tuple(variables),
+                      attempts=tuple(attempts))

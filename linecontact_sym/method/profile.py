@@ -15,7 +15,7 @@ from functools import cached_property
 import mpmath
 import sympy as sp
 
-from ..core.conversion import exact_number
+from ..core.conversion import exact_number, to_mpf
 from ..core import symbols as S
 from ..core.errors import InadmissibleProfileError, ProfileError, UnknownSymbolError
 from ..core.precision import workdps
@@ -155,8 +155,8 @@ def _profile_numeric_fns(self, values):
             self._near_fns = None
     if self._near_fns is None:
         return None
-    pv = [mpmath.mpf(values[p]) if isinstance(values[p], (int, float)) else mpmath.mpf(sp.N(values[p], 30))
-          for p in self.params]
+    with workdps(30):
+        pv = [to_mpf(values[p]) for p in self.params]
     return (lambda xv: self._near_fns[0](xv, *pv)), (lambda xv: self._near_fns[1](xv, *pv))
 
 
@@ -264,7 +264,7 @@ class Profile:
             return None
         f, fp = fns
         with workdps(30):
-            A = mpmath.mpf(a) if isinstance(a, (int, float)) else mpmath.mpf(sp.N(a, 30))
+            A = to_mpf(a)
             for k in range(1, n + 1):
                 xv = A * k / n
                 try:
@@ -438,7 +438,8 @@ class Profile:
             e = e.subs(values)
             fns.append(sp.lambdify(S.x, e, "mpmath"))
             if p.hi != sp.oo:
-                breaks.append(mpmath.mpf(sp.N(p.hi.subs(values), 60)))
+                with workdps(max(60, mpmath.mp.dps + 10)):     # kept for any later precision
+                    breaks.append(to_mpf(p.hi.subs(values)))
         return fns, breaks
 
     def mp_callable(self, values: dict, derivative: int = 0):

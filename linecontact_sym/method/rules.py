@@ -53,6 +53,47 @@ def _power_terms(expr, var):
     return [(T.coef, T.mu) for T in terms]
 
 
+def _no_closed_force_law(problem):
+    """The reason a rule that integrates the force law cannot start, or None."""
+    P = problem.force_law
+    if P is None:
+        return "no force law given"
+    if P.has(sp.Integral):
+        return "the force law is an unevaluated integral (no closed form)"
+    return None
+
+
+#: functions whose definite integrals against the kernels of Eqs. (12) and
+#: (3/5) SymPy may find in closed form; any other function of ``a`` in a force
+#: law (Bessel, hypergeometric, elliptic, error functions ...) gives
+#: ``sympy.integrate`` nothing over [x, a] but a long wait (cosh(x) - 1:
+#: 20 s, then the unevaluated integral)
+ELEMENTARY = (sp.exp, sp.log, sp.sin, sp.cos, sp.tan, sp.cot, sp.asin, sp.acos, sp.atan, sp.acot, sp.sinh,
+              sp.cosh, sp.tanh, sp.coth, sp.asinh, sp.acosh, sp.atanh, sp.Abs, sp.sign, sp.Heaviside,
+              sp.Piecewise, sp.Min, sp.Max)
+
+
+def special_of(expr, var):
+    """The first non-elementary function of ``var`` in ``expr`` (see
+    :data:`ELEMENTARY`), or None."""
+    for f in sorted(expr.atoms(sp.Function), key=sp.default_sort_key):
+        if isinstance(f, ELEMENTARY) or isinstance(f, sp.core.function.AppliedUndef):
+            continue
+        if f.has(var):
+            return f
+    return None
+
+
+def _special_law(problem):
+    """Why SymPy's definite integration of a transform of the force law
+    cannot apply (a special function of a in it), or None."""
+    f = special_of(problem.force_law, S.a)
+    if f is None:
+        return None
+    return (f"the force law holds the special function {f.func.__name__} of a: SymPy has no definite "
+            f"integral of it against the kernel over finite symbolic limits")
+
+
 def _has_piecewise(problem):
     return any(e is not None and e.has(sp.Piecewise)
                for e in (problem.force_law, problem.profile.expr if problem.profile is not None else None))
@@ -149,6 +190,9 @@ class PressureSympy(Rule):
 
     name, transform = "pressure_sympy", "pressure"
 
+    def applies(self, problem):
+        return _no_closed_force_law(problem) or _special_law(problem)
+
     def run(self, problem):
         bps = list(problem.profile.breakpoints) if problem.profile is not None else []
         dP_of = sp.diff(problem.force_law, S.a)
@@ -213,7 +257,7 @@ class GapSympy(Rule):
     name, transform = "gap_sympy", "gap"
 
     def applies(self, problem):
-        return "piecewise force law" if problem.force_law.has(sp.Piecewise) else None
+        return "piecewise force law" if problem.force_law.has(sp.Piecewise) else _special_law(problem)
 
     def run(self, problem):
         dP = sp.diff(problem.force_law, S.a).subs(S.a, s)
@@ -249,6 +293,9 @@ class InverseSympy(Rule):
     """Eq. (9) by ``sympy.integrate``."""
 
     name, transform = "inverse_sympy", "profile"
+
+    def applies(self, problem):
+        return _no_closed_force_law(problem)
 
     def run(self, problem):
         Ps = problem.force_law.subs(S.a, s)

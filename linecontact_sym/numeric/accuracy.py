@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 import sympy as sp
+from ..core.conversion import to_mpf
 from ..core.precision import workdps
 
 __all__ = ["EPS", "AccuracyRecord", "condition_number", "condition_number_float", "audit", "expressions_agree"]
@@ -234,6 +235,11 @@ def _sample_point(syms, conditions, rng, tries=200):
 def _mp_value(expr, vals, dps=30):
     with workdps(dps):
         v = sp.N(expr.xreplace(vals), dps)
+        if v.is_Float or v.is_Rational:
+            return to_mpf(v)                       # the one converter
+        re_, im = (sp.N(t, dps) for t in v.as_real_imag())
+        if (re_.is_Float or re_.is_zero) and (im.is_Float or im.is_zero):
+            return mpmath.mpc(to_mpf(re_), to_mpf(im))   # all dps digits, not a Python complex
         v = complex(v) if not v.is_real else v
         if isinstance(v, complex):
             return mpmath.mpc(v.real, v.imag)

@@ -21,31 +21,28 @@ carlson_rd, carlson_rg, carlson_rj, gamma_ratio, hyp2f1c.  Unevaluated integrals
 supported (no certified quadrature here): :class:`CertificationError`.
 
 The global precision of python-flint is never changed (``ctx.workprec``).
-python-flint is an optional dependency (the ``[certified]`` extra): it is
-imported when a certified evaluation is asked for, and its absence is a
-:class:`~linecontact_sym.core.errors.MissingExtraError` naming
-``pip install "linecontact_sym[certified]"``.
+python-flint is a core dependency of the package (one code path for
+numbers: no result depends on whether an optional package is installed).
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from fractions import Fraction
 
+import flint
 import mpmath
 import sympy as sp
 
 from ..parsing import to_sympy
-from ..core.conversion import nsimplify_basic
+from ..core.conversion import number
 from ..core.errors import LineContactError
-from ..core.extras import require
 from .special import carlson_rd, carlson_rf, carlson_rg, carlson_rj, gamma_ratio, hyp2f1c
 from ..core.precision import workprec
 
 
 def _flint():
-    """The python-flint module (imported on first use; the ``[certified]`` extra)."""
-    return require("certified", "flint")
+    """The python-flint module (a core dependency: one code path for numbers)."""
+    return flint
 
 
 class CertificationError(LineContactError):
@@ -53,9 +50,12 @@ class CertificationError(LineContactError):
 
 
 def to_arb(v):
-    """An Arb ball containing the exact value of ``v`` (float: its binary
-    value; int, Fraction, SymPy Rational: exact; str: the decimal number;
-    mpmath mpf: its binary value)."""
+    """An Arb ball containing the exact value of ``v`` at the current
+    python-flint precision: every number goes through the package's one
+    converter (:func:`~linecontact_sym.core.conversion.number`): int, float
+    (its binary value), Fraction, Decimal, decimal text, mpf, NumPy scalars
+    and SymPy Rationals and Floats exactly; other SymPy numbers
+    (``sqrt(3)/2``, ``pi/4``, ``exp(-1)``) as balls evaluated in Arb."""
     flint = _flint()
     arb = flint.arb
     if isinstance(v, arb):
@@ -68,27 +68,15 @@ def to_arb(v):
         if not math.isfinite(v):
             raise CertificationError(f"non-finite input {v}")
         return arb(v)  # a double is exact in Arb
-    if isinstance(v, Fraction):
-        return arb(flint.fmpq(v.numerator, v.denominator))
-    if isinstance(v, mpmath.mpf):
-        if not mpmath.isfinite(v):
-            raise CertificationError(f"non-finite input {v}")
-        sign, man, exp, _ = v._mpf_      # man_exp drops the sign
-        man = -man if sign else man
-        return arb(flint.fmpz(int(man))) * arb(2) ** int(exp) if exp >= 0 else \
-            arb(flint.fmpz(int(man))) / arb(2) ** int(-exp)
-    if isinstance(v, str):
-        try:
-            q = sp.Rational(v)
-            return arb(flint.fmpq(int(q.p), int(q.q)))
-        except (TypeError, ValueError):
-            return arb(v)
-    if isinstance(v, sp.Basic):
-        v = nsimplify_basic(v) if v.is_Float else v
-        if v.is_Rational:
-            return arb(flint.fmpq(int(v.p), int(v.q)))
-        raise CertificationError(f"cannot convert {v} exactly")
-    return arb(v)
+    try:
+        q = number(v)
+    except LineContactError as exc:
+        raise CertificationError(f"cannot convert {v!r} to a ball: {exc}") from None
+    if q.is_Rational:
+        return arb(flint.fmpq(int(q.p), int(q.q)))
+    if q.is_number and not q.free_symbols:
+        return compile_arb(q, [])()
+    raise CertificationError(f"cannot convert {v} to a ball")
 
 
 def _real(z):

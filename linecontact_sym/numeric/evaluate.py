@@ -51,10 +51,11 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..parsing import to_sympy
 from ..core import symbols as S
+from ..core.conversion import to_mpf
 from ..core.errors import DomainError, LineContactError
 from ..core.printing import lambdify
+from ..method.derivation import values_by_name
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
@@ -121,23 +122,10 @@ _CACHE = IdentityCache()
 
 
 def _as_float(v):
-    if isinstance(v, str):
-        return float(mpmath.mpf(v))
-    return float(v)
+    return float(v) if type(v) in (float, int) else float(to_mpf(v))
 
 
-def _as_mpf(v):
-    """Exact for floats/ints/mpf; strings and Rationals at the working precision."""
-    if isinstance(v, mpmath.mpf):
-        return v
-    if isinstance(v, (int, float)):
-        return mpmath.mpf(v)
-    if isinstance(v, str):
-        return mpmath.mpf(v)
-    v = to_sympy(v)
-    if v.is_Rational:
-        return mpmath.mpf(int(v.p)) / int(v.q)
-    return mpmath.mpf(sp.N(v, mpmath.mp.dps + 5))
+_as_mpf = to_mpf      # the one converter (core.conversion), exact where the value is
 
 
 def _float64_fn(d):
@@ -240,13 +228,16 @@ class SeriesModel:
         r = [mags[j + 1] / mags[j] for j in range(len(mags) - 1)]
         jl = len(r) - 1
         r_inf = r[jl] + (r[jl] - r[jl - 1]) * jl
+        # rising[N]: the ratios r[N:] do not decrease (one backward pass, not one scan per N)
+        rising = [True] * (len(r) + 1)
+        for j in range(len(r) - 2, -1, -1):
+            rising[j] = rising[j + 1] and not r[j + 1] < r[j] * (1 - 1e-12)
+        rb = max(r_inf, r[-1]) * (1 + 1e-3)
         partial = 0
         for N in range(1, len(t) - 2):
             partial += t[N - 1]
-            tail_r = r[N:]
-            if any(tail_r[i + 1] < tail_r[i] * (1 - 1e-12) for i in range(len(tail_r) - 1)):
+            if not rising[N]:
                 continue
-            rb = max(r_inf, r[-1]) * (1 + 1e-3)
             if rb >= 1:
                 return None
             bound = mags[N] / (1 - rb)
@@ -299,18 +290,28 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     kit = scalar_kit(d)
     names = kit.names
     check_arguments(names, values, quantity)
+    values = {k: v[()] if isinstance(v, np.ndarray) and v.ndim == 0 else v for k, v in values.items()}
     arrays = {k: np.asarray(v, dtype=float) for k, v in values.items()
               if isinstance(v, (np.ndarray, list, tuple))}
     if arrays:
         if certified:
             raise LineContactError("certified evaluation takes scalars; loop over the points")
         values = {**values, **arrays}
-    values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
+    if not arrays and hasattr(contact, "check_domain_scalar"):
+        values = contact.check_domain_scalar(quantity, values)   # the same check, plain Python for scalars
+    else:
+        values = contact.check_domain(quantity, values)   # the contact's one domain check (its registry)
 
     if certified:
         return _certified(d, quantity, values, rtol, dps, t0)
     if rtol is None:
         rtol = 10.0 ** -dps if dps is not None else 1e-12
+    if not d.closed_form and not d.expr.has(sp.Integral) and d.reference is not None:
+        # an equation with a numeric root (the half-width a(P) of a law that does not
+        # invert, the stick half-width): no expression to compile; the root is the value
+        if arrays:
+            raise LineContactError(f"{quantity} is a numeric root here; evaluate it point by point")
+        return _reference_path(d, quantity, values, rtol, t0)
     if arrays:
         return _evaluate_array(contact, d, quantity, names, values, rtol, model, t0)
 
@@ -349,7 +350,12 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     else:
         notes.append("rtol below float64 resolution")
     # 3. mpmath, precision from rtol and kappa, confirmed at +10 digits
-    return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
+    try:
+        return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
+    except (KeyError, NameError, TypeError) as exc:   # a printer gap in the export of an unevaluated integral
+        if d.closed_form or d.reference is None:
+            raise
+        return _reference_path(d, quantity, values, rtol, t0, f"no mpmath export ({type(exc).__name__}); ")
 
 
 def _float64_value(d, kit, names, vals):
@@ -502,6 +508,26 @@ def _mpmath_path(d, quantity, values, rtol, kappa, t0, notes):
                                   seconds=time.perf_counter() - t0, details={"digits": digits})
         if digits > 5000:
             raise LineContactError(f"mpmath did not reach rtol = {rtol:g} within 5000 digits")
+        digits *= 2
+
+
+def _reference_path(d, quantity, values, rtol, t0, why=""):
+    """The derivation's own numeric reference (a root of an equation) at the
+    digits rtol asks plus 5, confirmed at 10 more."""
+    vals = values_by_name(d.variables_all, values)
+    digits = max(20, int(math.ceil(-math.log10(rtol))) + 5)
+    while True:
+        v1 = d.reference(vals, digits)
+        with workdps(digits + 10):
+            v2 = d.reference(vals, digits + 10)
+            err = abs(v2 - v1)
+            if err <= rtol * abs(v2) / 10 or (v2 == 0 and err == 0):
+                return Evaluation(quantity, +v2, f"mpmath@{digits}", err, rtol,
+                                  note=f"{why}the derivation's reference ({d.step.describe()}), confirmed "
+                                       f"against {digits + 10} digits (difference {mpmath.nstr(err, 3)})",
+                                  seconds=time.perf_counter() - t0, details={"digits": digits})
+        if digits > 1000:
+            raise LineContactError(f"the numeric root did not reach rtol = {rtol:g} within 1000 digits")
         digits *= 2
 
 

@@ -39,6 +39,7 @@ import scipy.special as sc
 import sympy as sp
 
 from ..core import symbols as S
+from ..core.conversion import point_value, to_mpf
 from ..core.errors import DomainError, LineContactError, singular_point
 from ..core.printing import lambdify
 from ..parsing import to_sympy
@@ -57,7 +58,7 @@ _SCIPY_FUNCS = {
 }
 
 
-def _mp_hyper_vec(*args):
+def mp_hyper_vec(*args):
     p = int(args[0])
     ap, bq, z = args[1:1 + p], args[1 + p:-1], args[-1]
 
@@ -67,7 +68,7 @@ def _mp_hyper_vec(*args):
     return np.vectorize(one, otypes=[float])(*ap, *bq, z)
 
 
-def _to_scipy_names(expr):
+def to_scipy_names(expr):
     def hyp(h):
         ap, bq, z = list(h.ap), list(h.bq), h.argument
         if len(ap) == 2 and len(bq) == 1:
@@ -87,7 +88,7 @@ def _to_scipy_names(expr):
     return expr
 
 
-def _fold_constants(expr):
+def fold_constants(expr):
     """Replace constant transcendental subexpressions (gamma(1/4), sqrt(pi) ...)
     by 20-digit Floats: the float64 export then does not recompute them."""
     def want(e):
@@ -143,8 +144,8 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
             quads[name] = q
             return sp.Function(name)(*q.params)
         expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
-    mods = [dict(_SCIPY_FUNCS, _mphyper=_mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
-    f = lambdify(args, _to_scipy_names(_fold_constants(expr)), modules=mods, cse=True)
+    mods = [dict(_SCIPY_FUNCS, _mphyper=mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
+    f = lambdify(args, to_scipy_names(fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):
         if patch is not None and sym not in patch:
@@ -385,7 +386,7 @@ GUARD_RATIO = 16.0
 GUARDED_RULES = ("gap_swap", "pressure_swap")
 
 
-def _guarded(derivation) -> bool:
+def is_guarded(derivation) -> bool:
     """Closed forms that can cancel beyond what the condition number allows:
     those with elliptic integrals of the third kind (Pi(n|m) diverges as
     n -> 1; the exact cylinder's gap cancels terms of size R to O(a^2/R)) and
@@ -473,7 +474,7 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     >>> from linecontact_sym.method.rules import Step
     >>> R = sp.Symbol("R", positive=True)
     >>> P_expr = sp.pi * E_star * a**2 / (4 * R)                                   # Eq. (13)
-    >>> d = Derivation("force", P_expr, True, Step("example", P_expr))
+    >>> d = Derivation("force", expr=P_expr, closed_form=True, step=Step("example", P_expr))
     >>> P = make_callable(d)
     >>> P.arguments
     ('E_star', 'R', 'a')
@@ -507,11 +508,22 @@ class NumericFunction:
         self.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(self.arguments)}.\n"
                         f"Formula: {derivation.expr}\nMethod: {derivation.method}")
         self._fn = compile_callable(derivation, backend, dps, params, stable)
+        self._scalar = None   # the scalar fast path, built on the first call
 
     def __call__(self, *args, **kw):
+        if not args:
+            fast = self._scalar
+            if fast is None:
+                from .fastpath import scalar_plan
+                fast = self._scalar = scalar_plan(self) or False
+            if fast:
+                v = fast(kw)
+                if v is not None:
+                    return v
         if args:
             raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
                               f"fn({', '.join(n + '=...' for n in self.arguments)})")
+        kw = {k: v[()] if isinstance(v, np.ndarray) and v.ndim == 0 else v for k, v in kw.items()}
         if self.backend == "mpmath" and any(isinstance(v, (list, tuple, np.ndarray)) for v in kw.values()):
             raise DomainError(f"the mpmath function of {self.derivation.quantity} takes scalars; use "
                               f"backend='numpy' for arrays (or loop over the points)")
@@ -531,6 +543,7 @@ class NumericFunction:
                                    f"contact and export again")
         state = dict(self.__dict__)
         state["_fn"] = None
+        state["_scalar"] = None
         return state
 
     def __repr__(self):
@@ -555,7 +568,7 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
     holds_at = lambdify(list(syms), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
-        if stable and _guarded(derivation):
+        if stable and is_guarded(derivation):
             f = _guard(f, cancellation_probe(derivation), _cached_lambdify(derivation, "mpmath", True))
 
         def fn(**kw):
@@ -572,7 +585,7 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
 
         def fn(**kw):
             with workdps(dps):
-                args = [mpmath.mpf(v) if not isinstance(v, mpmath.mpf) else v for v in collect(kw)]
+                args = [to_mpf(to_sympy(v) if isinstance(v, str) else v) for v in collect(kw)]
                 if holds_at is not None and not bool(holds_at(*[float(v) for v in args])):
                     return mpmath.mpf("nan")
                 return +f(*args)
@@ -581,8 +594,7 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
 
         def fn(**kw):
             with workdps(dps):
-                vals = dict(zip(syms, (sp.Float(v, dps) if isinstance(v, mpmath.mpf)
-                                       else sp.Float(float(v), 20) if isinstance(v, float)
-                                       else to_sympy(v) for v in collect(kw))))
+                vals = dict(zip(syms, (point_value(to_sympy(v) if isinstance(v, str) else v)
+                                       for v in collect(kw))))
                 return ref(vals, dps)
     return fn

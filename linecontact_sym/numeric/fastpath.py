@@ -32,11 +32,11 @@ import sympy as sp
 
 from ..core.printing import lambdify
 from .cache import IdentityCache
-from .exports import (_fold_constants, _to_scipy_names, cancellation_probe, cancellation_sums,
-                      compile_callable, stable_form)
+from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, cancellation_probe,
+                      cancellation_sums, compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
-__all__ = ["ScalarKit", "scalar_kit", "vector_float64", "STEP"]
+__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "STEP"]
 
 #: relative step of the central differences for kappa
 STEP = 1e-6
@@ -48,6 +48,8 @@ _SCALAR_FUNCS = {
     "gamma_ratio": lambda u, v: float(np_gamma_ratio(u, v)),
     "hyp2f1c": lambda *a: float(np_hyp2f1c(*a)),
     "gamma": math.gamma, "loggamma": math.lgamma, "besseli": sc.iv, "besselj": sc.jv,
+    # pFq beyond SciPy's 2F1/1F1/0F1 (a sin(x) profile's force law): mpmath, as in the NumPy export
+    "_mphyper": lambda *a: float(mp_hyper_vec(*a)),
 }
 
 _CACHE = IdentityCache()
@@ -74,10 +76,10 @@ class ScalarKit:
         if expr.has(sp.Integral):
             return
         try:
-            self.f = lambdify(syms, _to_scipy_names(_fold_constants(expr)), modules=[_SCALAR_FUNCS, "math"])
+            self.f = lambdify(syms, to_scipy_names(fold_constants(expr)), modules=[_SCALAR_FUNCS, "math"])
             pairs = cancellation_sums(d)
             if pairs:
-                tup = _to_scipy_names(_fold_constants(sp.Tuple(*[q for p in pairs for q in p])))
+                tup = to_scipy_names(fold_constants(sp.Tuple(*[q for p in pairs for q in p])))
                 self.probe = lambdify(syms, tup, modules=[_SCALAR_FUNCS, "math"], cse=True)
         except Exception:          # a function the math module does not have
             self.f = self.probe = None
@@ -163,3 +165,40 @@ def vector_float64(d, names, arrays):
         cancel = np.broadcast_to(np.asarray(cancellation_probe(d)(*arrays), dtype=float), shape)
     return v, kappa, cancel
 
+
+def scalar_plan(nf):
+    """The scalar fast path of a float64 export (None where there is none): a
+    call whose values are all Python floats (or ints) evaluates the same
+    stable form compiled for ``math`` and the scalar SciPy special functions
+    (:class:`~.fastpath.ScalarKit`, as :func:`~.evaluate.evaluate` does),
+    after the contact's scalar domain check; it returns None (the call takes
+    the NumPy path) for anything else: an argument 0 (where a removable
+    singularity is patched), a value that is not finite, a guarded export."""
+    d = nf.derivation
+    if nf.backend != "numpy" or not nf.stable or not d.closed_form or is_guarded(d):
+        return None
+    kit = scalar_kit(d)
+    if kit.f is None or any(type(v) not in (float, int) for v in nf.params.values()):
+        return None
+    f, names, params = kit.f, kit.names, dict(nf.params)
+    if any(not n.isidentifier() for n in names):
+        return None
+    wanted = frozenset(names) - frozenset(params)
+    domain = getattr(nf.domain, "scalar", nf.domain)
+    scalar_types = (float, int)
+
+    def fast(kw):
+        if kw.keys() != wanted:
+            return None
+        for v in kw.values():
+            if v.__class__ not in scalar_types or not v:
+                return None
+        merged = {**params, **kw} if params else kw
+        if domain is not None:
+            merged = domain(merged)
+        try:
+            v = float(f(**merged))
+        except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+            return None
+        return np.float64(v) if math.isfinite(v) else None
+    return fast

@@ -25,58 +25,15 @@ import numpy as np
 import sympy as sp
 
 from ..core.printing import lambdify
+from ..core.quadrature import smoothstep_gauss, tanh_sinh_levels
 from .stable import stabilize
 
 __all__ = ["VectorQuad", "piecewise_breakpoints", "TS_ACCEPT", "GAUSS_ACCEPT"]
 
 
-def _ts_levels(levels=(8, 16, 32, 64, 128), tmax=6.2):
-    """Nested tanh-sinh node sets on [0, 1] for h = 1/8, 1/16, ... : for each
-    level the *new* nodes (v, w = 1 - v, both to full relative precision) and
-    their weights phi(t) (the level sum is h * sum phi f)."""
-    out = []
-    hmax = levels[-1]
-    kmax = int(tmax * hmax)
-    k = np.arange(-kmax, kmax + 1)
-    t = k / hmax
-    ps = np.pi / 2 * np.sinh(t)
-    with np.errstate(over="ignore"):
-        v = 1 / (1 + np.exp(-2 * ps))
-        w = 1 / (1 + np.exp(2 * ps))
-        phi = (np.pi / 2) * np.cosh(t) / np.cosh(ps) ** 2 / 2
-    keep = (v > 0) & (w > 0) & (phi > 0)
-    seen = np.zeros(k.size, dtype=bool)
-    for m in levels:
-        step = hmax // m
-        sel = (k % step == 0) & keep & ~seen
-        seen |= sel
-        out.append((1.0 / m, v[sel], w[sel], phi[sel]))
-    return out
-
-
-_TS_LEVELS = _ts_levels()
-
-
-def _gauss_stage(n_small=20, n_large=40):
-    """Two Gauss-Legendre rules on u in [0, 1] after v = 3u^2 - 2u^3 (the
-    smoothstep: dv/du = 6u(1 - u) vanishes at both ends, so an end-point
-    singularity (v or 1 - v)^(-1/2), the kernel of every transform, becomes
-    analytic; w = 1 - v = (1 - u)^2 (1 + 2u) is formed exactly).  Returns
-    (v, w, weights) of the two rules side by side, and the split index."""
-    out = []
-    for n in (n_small, n_large):
-        t, wt = np.polynomial.legendre.leggauss(n)
-        u = (t + 1) / 2
-        v = u * u * (3 - 2 * u)
-        w = (1 - u) ** 2 * (1 + 2 * u)
-        out.append((v, w, wt / 2 * 6 * u * (1 - u)))
-    v = np.concatenate([o[0] for o in out])
-    w = np.concatenate([o[1] for o in out])
-    wt = np.concatenate([o[2] for o in out])
-    return v, w, wt, n_small
-
-
-_GAUSS = _gauss_stage()
+#: the rules: the package's one table (core.quadrature)
+_TS_LEVELS = tanh_sinh_levels((8, 16, 32, 64, 128), tmax=6.2)
+_GAUSS = smoothstep_gauss((20, 40))
 #: relative difference of the 20- and 40-point Gauss rules below which the
 #: 40-point value is accepted, with that difference as its error estimate (an
 #: analytic integrand converges geometrically, far below it; a logarithmic

@@ -50,6 +50,7 @@ import mpmath
 import numpy as np
 import scipy.special as sc
 import sympy as sp
+from ..core.conversion import to_mpf
 from ..core.precision import workdps
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "np_rf", "np_rd", "np_rg",
@@ -65,7 +66,7 @@ class _StableFunction(sp.Function):
         dps = max(int(prec * 0.30103) + 1, 15)
         with workdps(dps + 10):
             try:
-                args = [mpmath.mpf(sp.N(a_, dps + 10)) for a_ in self.args]
+                args = [to_mpf(a_) for a_ in self.args]     # the one converter, at dps + 10
             except TypeError:
                 return None
             val = type(self)._mp(*args)

@@ -35,8 +35,8 @@ import sympy as sp
 
 from .accuracy import expressions_agree
 from .special import gamma_ratio, hyp2f1c
-from .stable_base import (StableRule, _complement, _expand_around, _fix_signs, _has_sqrt, _is_2f1,  # noqa: F401
-                          _n_terms, _nonneg, _stable_sqrt, is_rational_in_symbols)
+from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
+                          n_terms, nonneg, stable_sqrt, is_rational_in_symbols)
 from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
@@ -62,14 +62,14 @@ class Hyp2f1Connection(StableRule):
     def apply(self, expr):
         reps = {}
         for h in expr.atoms(sp.hyper):
-            if not _is_2f1(h):
+            if not is_2f1(h):
                 continue
             p, q = h.ap
             r, = h.bq
             d = sp.simplify(r - p - q)
             if not d.is_number or d.is_integer:
                 continue
-            zc = _complement(h.argument)
+            zc = complement_of(h.argument)
             t1 = sp.gamma(r) * sp.gamma(d) / (sp.gamma(r - p) * sp.gamma(r - q)) \
                 * sp.hyperexpand(sp.hyper([p, q], [1 - d], zc))
             t2 = zc**d * sp.gamma(r) * sp.gamma(-d) / (sp.gamma(p) * sp.gamma(q)) \
@@ -165,7 +165,7 @@ class AtanhToAsinh(StableRule):
     def apply(self, expr):
         def do(e):
             w = e.args[0]
-            s = _stable_sqrt(1 - w**2)
+            s = stable_sqrt(1 - w**2)
             return sp.asinh(w / s) if s is not None else e
         return expr.replace(lambda e: isinstance(e, sp.atanh), do)
 
@@ -179,7 +179,7 @@ class AcoshToAsinh(StableRule):
 
     def apply(self, expr):
         def do(e):
-            s = _stable_sqrt(e.args[0]**2 - 1)
+            s = stable_sqrt(e.args[0]**2 - 1)
             return sp.asinh(s) if s is not None else e
         return expr.replace(lambda e: isinstance(e, sp.acosh), do)
 
@@ -201,7 +201,7 @@ class AsinToAtan(StableRule):
         reps, keys, pkeys = {}, {}, {}
         for e in expr.atoms(sp.asin):
             w = e.args[0]
-            s_ = _stable_sqrt(1 - w**2)
+            s_ = stable_sqrt(1 - w**2)
             if s_ is None or not w.is_positive:
                 continue
             k, pk = sp.Dummy("A"), sp.Dummy("P")
@@ -211,9 +211,9 @@ class AsinToAtan(StableRule):
         if not reps:
             return expr
         plain = expr.xreplace({e: p for e, (p, c) in reps.items()})
-        comp_x = _expand_around(expr.xreplace({e: c for e, (p, c) in reps.items()}), list(keys))
-        plain_x = _expand_around(expr.xreplace(pkeys), list(pkeys.values()))
-        if _n_terms(comp_x) <= _n_terms(plain_x):
+        comp_x = expand_around(expr.xreplace({e: c for e, (p, c) in reps.items()}), list(keys))
+        plain_x = expand_around(expr.xreplace(pkeys), list(pkeys.values()))
+        if n_terms(comp_x) <= n_terms(plain_x):
             return comp_x.xreplace(keys)
         return plain
 
@@ -228,7 +228,7 @@ class AcosToAtan(StableRule):
     def apply(self, expr):
         def do(e):
             w = e.args[0]
-            s = _stable_sqrt(1 - w**2)
+            s = stable_sqrt(1 - w**2)
             if s is None or not w.is_positive:
                 return e
             return sp.atan(s / w)
@@ -246,8 +246,8 @@ class Hyp2f1Complement(StableRule):
     def apply(self, expr):
         def do(e):
             z = e.argument
-            return hyp2f1c(e.ap[0], e.ap[1], e.bq[0], z, _complement(z))
-        return expr.replace(_is_2f1, do)
+            return hyp2f1c(e.ap[0], e.ap[1], e.bq[0], z, complement_of(z))
+        return expr.replace(is_2f1, do)
 
 
 class Conjugate(StableRule):
@@ -260,17 +260,17 @@ class Conjugate(StableRule):
 
     def apply(self, expr):
         def want(e):
-            return e.is_Add and any(_has_sqrt(t) for t in e.args)
+            return e.is_Add and any(has_sqrt(t) for t in e.args)
 
         def pair(u, mv):
             v = -mv
-            if not (_nonneg(u) and _nonneg(v)) or not (_has_sqrt(u) or _has_sqrt(v)):
+            if not (nonneg(u) and nonneg(v)) or not (has_sqrt(u) or has_sqrt(v)):
                 return None
             num = sp.expand(u**2 - v**2)
-            if _has_sqrt(num) or num == 0:
+            if has_sqrt(num) or num == 0:
                 return None
             if sp.count_ops(num) < sp.count_ops(sp.expand(u**2)) + sp.count_ops(sp.expand(v**2)):
-                return _fix_signs(sp.factor(num)) / (u + v)
+                return fix_signs(sp.factor(num)) / (u + v)
             return None
 
         def do(e):
@@ -342,7 +342,7 @@ class FactorDifferences(StableRule):
             return e.is_Add and is_rational_in_symbols(e)
 
         def do(e):
-            f = _fix_signs(sp.factor(e))
+            f = fix_signs(sp.factor(e))
             num, _ = sp.fraction(f)
             if num.is_Mul and any(t.is_Add or (t.is_Pow and t.base.is_Add) for t in num.args) and f != e:
                 return f

@@ -14,7 +14,7 @@ def is_rational_in_symbols(e) -> bool:
     return bool(e.free_symbols) and not e.has(sp.Function) and e.is_rational_function(*e.free_symbols)
 
 
-def _fix_signs(e):
+def fix_signs(e):
     """-(x - a)*(x + a) -> (a - x)*(a + x): absorb a leading -1 into the linear
     factor that has a negative term (so differences read 'large - small')."""
     num, den = sp.fraction(e)
@@ -29,26 +29,26 @@ def _fix_signs(e):
     return num / den
 
 
-def _complement(z):
+def complement_of(z):
     """1 - z simplified symbolically and factored (1 - a**2/R**2 ->
     (R - a)*(R + a)/R**2): small where z is close to 1, and formed exactly."""
-    return _fix_signs(sp.factor(sp.cancel(1 - z)))
+    return fix_signs(sp.factor(sp.cancel(1 - z)))
 
 
-def _stable_sqrt(c):
+def stable_sqrt(c):
     """sqrt(c) with the sum c cancelled and factored, or None if c is not a
     rational function of the symbols (nor a number)."""
     c = sp.cancel(sp.expand(c))
     if not is_rational_in_symbols(c) and not c.is_number:
         return None
-    return sp.sqrt(_fix_signs(sp.factor(c)))
+    return sp.sqrt(fix_signs(sp.factor(c)))
 
 
-def _n_terms(e):
+def n_terms(e):
     return sum(len(n.args) for n in sp.preorder_traversal(e) if n.is_Add)
 
 
-def _expand_around(expr, keys):
+def expand_around(expr, keys):
     """expand_mul only the sums on the paths to ``keys``: every other sum,
     function application and fractional power is masked first, so factored
     forms elsewhere ((a - x)*(a + x), sqrt(a - x) ...) are kept."""
@@ -69,20 +69,20 @@ def _expand_around(expr, keys):
     return sp.expand_mul(mask(expr)).xreplace(masks)
 
 
-def _nonneg(e):
+def nonneg(e):
     """Positive, or a square root (times positive factors): >= 0 wherever real."""
     if e.is_positive:
         return True
     if e.is_Pow and e.exp == sp.S.Half:
         return True
-    return bool(e.is_Mul and all(_nonneg(f) for f in e.args))
+    return bool(e.is_Mul and all(nonneg(f) for f in e.args))
 
 
-def _has_sqrt(e):
+def has_sqrt(e):
     return any(p.is_Pow and p.exp == sp.S.Half for p in sp.preorder_traversal(e))
 
 
-def _is_2f1(e):
+def is_2f1(e):
     return isinstance(e, sp.hyper) and len(e.ap) == 2 and len(e.bq) == 1 and bool(e.argument.free_symbols)
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .special import carlson_rd, carlson_rf, carlson_rg, carlson_rj
-from .stable_base import StableRule, _complement
+from .stable_base import StableRule, complement_of
 
 __all__ = ["EllipticToCarlson", "EllipticPiToCarlson"]
 
@@ -39,7 +39,7 @@ class EllipticToCarlson(StableRule):
             Kd, Ed = sp.Dummy(f"K{i}"), sp.Dummy(f"E{i}")
             subs[sp.elliptic_k(m)] = Kd
             subs[sp.elliptic_e(m)] = Ed
-            info[(Kd, Ed)] = (m, _complement(m))
+            info[(Kd, Ed)] = (m, complement_of(m))
         marks = [d for pair in info for d in pair]
 
         def simp(cf):
@@ -100,17 +100,17 @@ class EllipticPiToCarlson(StableRule):
     def apply(self, expr):
         def incomplete(phi, m):
             s_ = sp.sin(phi)
-            c2, d2 = _complement(s_**2), _complement(m * s_**2)
+            c2, d2 = complement_of(s_**2), complement_of(m * s_**2)
             return s_, c2, d2
 
         def pi_(e):
             if len(e.args) == 2:
                 n, m = e.args
-                mc = _complement(m)
-                return carlson_rf(0, mc, 1) + n / 3 * carlson_rj(0, mc, 1, _complement(n))
+                mc = complement_of(m)
+                return carlson_rf(0, mc, 1) + n / 3 * carlson_rj(0, mc, 1, complement_of(n))
             n, phi, m = e.args
             s_, c2, d2 = incomplete(phi, m)
-            return s_ * carlson_rf(c2, d2, 1) + n / 3 * s_**3 * carlson_rj(c2, d2, 1, _complement(n * s_**2))
+            return s_ * carlson_rf(c2, d2, 1) + n / 3 * s_**3 * carlson_rj(c2, d2, 1, complement_of(n * s_**2))
 
         def f_(e):
             s_, c2, d2 = incomplete(*e.args)

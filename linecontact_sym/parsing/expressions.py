@@ -43,7 +43,7 @@ import sympy as sp
 
 from ..core import symbols as S
 from ..core.conversion import exact_number, to_basic
-from ..core.errors import ClaimError, LineContactError
+from ..core.errors import ClaimError, DomainError, LineContactError
 
 #: integration variables of formulas people write (the paper's a-tilde); the
 #: engine's own are Dummies (:mod:`linecontact_sym.method.transforms`), so a
@@ -53,7 +53,7 @@ s = sp.Symbol("s", positive=True)
 
 #: the standard symbols every formula may use
 SYMBOLS = {sym.name: sym for sym in (S.x, S.a, S.P, S.E_star, S.gamma, S.R, S.b, S.n, S.c, S.theta,
-                                     S.mu, S.Q, S.c_s, S.c_r, t, s)}
+                                     S.mu, S.Q, S.c_s, S.c_r, S.sigma_0, S.c_D, t, s)}
 
 #: constants
 CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "True": sp.true, "False": sp.false}
@@ -91,7 +91,7 @@ _HINTS = {
 
 MAX_LENGTH = 2000
 MAX_NODES = 800
-MAX_DIGITS = 40          # longest numeric literal
+MAX_DIGITS = 100         # longest numeric literal (characters)
 MAX_CONST_EXPONENT = 1000
 MAX_DEPTH = 60           # nesting of the syntax tree
 MAX_EXACT_ARGUMENT = 1000  # |n| of gamma(n), binomial(n, k), beta(...) with constant arguments
@@ -105,7 +105,7 @@ _ALLOWED_CMP = (ast.Lt, ast.LtE, ast.Gt, ast.GtE, ast.Eq, ast.NotEq)
 
 
 
-def _where(where: str) -> str:
+def where_prefix(where: str) -> str:
     return f"{where}: " if where else ""
 
 
@@ -116,10 +116,11 @@ class _Validator(ast.NodeVisitor):
         self.names = names
         self.callables = callables
         self.count = 0
+        self.source = text
 
     def fail(self, problem, node=None):
         pos = f" (at column {node.col_offset + 1})" if node is not None and hasattr(node, "col_offset") else ""
-        raise ClaimError(f"{_where(self.where)}{problem}{pos} in {self.text!r}")
+        raise ClaimError(f"{where_prefix(self.where)}{problem}{pos} in {self.text!r}")
 
     depth = 0
 
@@ -148,7 +149,7 @@ class _Validator(ast.NodeVisitor):
         if isinstance(v, bool):
             return
         if isinstance(v, (int, float)):
-            if len(repr(v)) > MAX_DIGITS:
+            if len(ast.get_source_segment(self.source, node) or repr(v)) > MAX_DIGITS:
                 self.fail(f"numeric literal with more than {MAX_DIGITS} characters", node)
             return
         if isinstance(v, str):
@@ -340,8 +341,8 @@ class _Builder:
     ``gamma(...)`` is Euler's Gamma function while the bare name ``gamma``
     is the work of adhesion."""
 
-    def __init__(self, names, callables):
-        self.names, self.callables = names, callables
+    def __init__(self, names, callables, source=""):
+        self.names, self.callables, self.source = names, callables, source
 
     def build(self, node):
         if isinstance(node, ast.Constant):
@@ -350,7 +351,10 @@ class _Builder:
                 return sp.true if v else sp.false
             if isinstance(v, int):
                 return sp.Integer(v)
-            return sp.Rational(repr(v))  # the literal's shortest decimal, exactly
+            # the literal's own digits, exactly (a 31-digit decimal keeps all 31;
+            # never read through a Python float)
+            lit = ast.get_source_segment(self.source, node) if self.source else None
+            return sp.Rational(lit.replace("_", "")) if lit else sp.Rational(repr(v))
         if isinstance(node, ast.Name):
             return {"True": sp.true, "False": sp.false}.get(node.id) or self.names[node.id]
         if isinstance(node, ast.Tuple):
@@ -401,9 +405,9 @@ def declare_symbols(names, where: str = "") -> dict:
     out = {}
     for name in names or ():
         if not isinstance(name, str) or not name.isidentifier() or name.startswith("_"):
-            raise ClaimError(f"{_where(where)}symbol name {name!r} is not a plain identifier")
+            raise ClaimError(f"{where_prefix(where)}symbol name {name!r} is not a plain identifier")
         if name in FUNCTIONS or name in CONSTANTS:
-            raise ClaimError(f"{_where(where)}symbol name {name!r} clashes with a function or constant")
+            raise ClaimError(f"{where_prefix(where)}symbol name {name!r} clashes with a function or constant")
         out[name] = SYMBOLS.get(name) or sp.Symbol(name, positive=True)
     return out
 
@@ -450,18 +454,19 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
         if isinstance(text, (int, float)) and not isinstance(text, bool):
             text = repr(text)
         else:
-            raise ClaimError(f"{_where(where)}expected a formula string, got {type(text).__name__}: {text!r}")
+            raise ClaimError(f"{where_prefix(where)}expected a formula string, got {type(text).__name__}: {text!r}")
     if not text.strip():
-        raise ClaimError(f"{_where(where)}empty formula")
+        raise ClaimError(f"{where_prefix(where)}empty formula")
     if len(text) > MAX_LENGTH:
-        raise ClaimError(f"{_where(where)}formula longer than {MAX_LENGTH} characters")
+        raise ClaimError(f"{where_prefix(where)}formula longer than {MAX_LENGTH} characters")
     try:
         # "^" means power with the precedence of "**" (token level, like SymPy's convert_xor)
-        tree = ast.parse(text.strip().replace("^", "**"), mode="eval")
+        source = text.strip().replace("^", "**")
+        tree = ast.parse(source, mode="eval")
     except SyntaxError as exc:
-        raise ClaimError(f"{_where(where)}not a valid formula ({exc.msg}) in {text!r}") from None
+        raise ClaimError(f"{where_prefix(where)}not a valid formula ({exc.msg}) in {text!r}") from None
     except (RecursionError, MemoryError, ValueError):
-        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+        raise ClaimError(f"{where_prefix(where)}formula nested too deeply: {text[:60]!r}...") from None
 
     sym_table = dict(SYMBOLS)
     if isinstance(symbols, dict):
@@ -478,32 +483,34 @@ def parse_expr(text, *, symbols=None, definitions=None, placeholders=None, where
         else:
             names[k] = v
     try:
-        _Validator(text, where, names, callables).visit(tree)
+        checker = _Validator(text, where, names, callables)
+        checker.source = source
+        checker.visit(tree)
     except RecursionError:
-        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+        raise ClaimError(f"{where_prefix(where)}formula nested too deeply: {text[:60]!r}...") from None
 
     local = dict(names)
     local.pop("True", None)
     local.pop("False", None)
     try:
-        expr = _Builder(local, callables).build(tree.body)
+        expr = _Builder(local, callables, source).build(tree.body)
     except ClaimError:
         raise
     except RecursionError:
-        raise ClaimError(f"{_where(where)}formula nested too deeply: {text[:60]!r}...") from None
+        raise ClaimError(f"{where_prefix(where)}formula nested too deeply: {text[:60]!r}...") from None
     except Exception as exc:
-        raise ClaimError(f"{_where(where)}cannot build the formula {text!r}: {type(exc).__name__}: {exc}") from None
+        raise ClaimError(f"{where_prefix(where)}cannot build the formula {text!r}: {type(exc).__name__}: {exc}") from None
     if isinstance(expr, tuple):
-        raise ClaimError(f"{_where(where)}expected one expression, got a tuple: {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected one expression, got a tuple: {text!r}")
     if not isinstance(expr, sp.Basic):
         expr = sp.sympify(expr, strict=True)  # safe: parser output, never a string
     is_relation = isinstance(expr, (sp.logic.boolalg.Boolean, sp.Rel)) and not isinstance(expr, sp.Expr)
     if is_relation and not allow_relational:
-        raise ClaimError(f"{_where(where)}expected an expression, got the relation {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected an expression, got the relation {text!r}")
     if allow_relational and not is_relation:
-        raise ClaimError(f"{_where(where)}expected a relation such as 'a < R', got {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected a relation such as 'a < R', got {text!r}")
     if expr.has(sp.zoo, sp.nan) and not expr.is_Relational:
-        raise ClaimError(f"{_where(where)}the formula {text!r} is undefined (division by zero?)")
+        raise ClaimError(f"{where_prefix(where)}the formula {text!r} is undefined (division by zero?)")
     return expr
 
 
@@ -528,7 +535,12 @@ def user_value(value, where: str = ""):
     half-width): a float means its shortest decimal (0.3 -> 3/10), text goes
     through the whitelisted :func:`parse_expr`, anything else through
     :func:`to_sympy`'s strict conversion."""
-    if isinstance(value, float):        # NaN and inf: DomainError
-        return exact_number(value)
-    return to_sympy(value, where)
+    if isinstance(value, str):
+        return to_sympy(value, where)
+    try:                                # NaN and inf: DomainError
+        return exact_number(value)      # the one converter, floats as their shortest decimal
+    except DomainError:
+        raise
+    except LineContactError as exc:
+        raise ClaimError(f"{where + ': ' if where else ''}{exc}") from None
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..core.errors import ClaimError
-from .expressions import MAX_DIGITS, SYMBOLS, _where, declare_symbols, parse_expr
+from .expressions import MAX_DIGITS, SYMBOLS, where_prefix, declare_symbols, parse_expr
 
 
 def parse_assignments(items, *, where: str = "", symbols=None) -> dict:
@@ -22,11 +22,11 @@ def parse_assignments(items, *, where: str = "", symbols=None) -> dict:
     for item in items or ():
         for part in _split_top(item):
             if "=" not in part:
-                raise ClaimError(f"{_where(where)}expected NAME=VALUE, got {part!r}")
+                raise ClaimError(f"{where_prefix(where)}expected NAME=VALUE, got {part!r}")
             name, val = (p.strip() for p in part.split("=", 1))
             if name not in sym_table:
                 if not name.isidentifier() or name.startswith("_"):
-                    raise ClaimError(f"{_where(where)}{name!r} is not a symbol name")
+                    raise ClaimError(f"{where_prefix(where)}{name!r} is not a symbol name")
                 sym_table[name] = sp.Symbol(name, positive=True)
             out[sym_table[name]] = parse_number(val, where=f"{where} {name}".strip())
     return out
@@ -50,15 +50,15 @@ def parse_number_list(text, where: str = "") -> list:
         try:
             k = int(k)
         except ValueError:
-            raise ClaimError(f"{_where(where)}number of points {k!r} is not an integer (lo:hi:count)") from None
+            raise ClaimError(f"{where_prefix(where)}number of points {k!r} is not an integer (lo:hi:count)") from None
         if k < 1 or k > 10000:
-            raise ClaimError(f"{_where(where)}number of points {k} out of range 1..10000")
+            raise ClaimError(f"{where_prefix(where)}number of points {k} out of range 1..10000")
         if k == 1:
             return [lo]
         return [lo + (hi - lo) * sp.Rational(i, k - 1) for i in range(k)]
     out = [parse_number(p, where) for p in _split_top(text) if p.strip()]
     if not out:
-        raise ClaimError(f"{_where(where)}no value given (a list such as 0.1,0.2 or lo:hi:count)")
+        raise ClaimError(f"{where_prefix(where)}no value given (a list such as 0.1,0.2 or lo:hi:count)")
     return out
 
 
@@ -72,9 +72,9 @@ def _is_decimal(text):
 
 def _numeric(expr, text, where):
     if expr.free_symbols:
-        raise ClaimError(f"{_where(where)}expected a number, got {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected a number, got {text!r}")
     if expr.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or expr.is_real is False:
-        raise ClaimError(f"{_where(where)}expected a finite real number, got {text!r}")
+        raise ClaimError(f"{where_prefix(where)}expected a finite real number, got {text!r}")
     return expr
 
 

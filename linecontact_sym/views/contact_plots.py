@@ -7,7 +7,8 @@ literature (``contact.plot(what, ...)`` calls :func:`plot_contact`):
                 half-circle; a flat punch is singular at the edges x = -a, a);
 ``"force"``     the force law P/(E* L) against a/L, L the length scale of
                 the profile (R, else b, else 1; ``scale=`` chooses);
-``"adhesive"``  the JKR force law P/P_adh against a/a_po (a_po the pull-off
+``"adhesive"``  the force law of an adhesive contact (any cohesive law)
+                P/P_adh against a/a_po (a_po the pull-off
                 half-width): the stable branch (dP/da > 0, load control)
                 solid, the unstable one dashed, the pull-off (1, -1) and the
                 jump-in at P = 0 marked;
@@ -15,7 +16,7 @@ literature (``contact.plot(what, ...)`` calls :func:`plot_contact`):
                 (f(a): the profile's height at the edge).
 
 The contact is used by duck typing (``to_numeric``, ``half_width``,
-``profile``, and for adhesion ``pull_off_at``); no contact class is
+``profile``, and for adhesion ``law`` and ``pull_off_at``); no contact class is
 imported.  The ``*_data`` functions return NumPy arrays (no matplotlib);
 the plots need the ``[plot]`` extra and return a matplotlib ``Figure``
 (written to ``path`` when given).  Parameter values come as ``values``
@@ -41,8 +42,9 @@ def _values(contact, values) -> dict:
     vals.update({str(getattr(k, "name", k)): float(v) for k, v in (values or {}).items()})
     prof = getattr(contact, "contact", contact).profile      # an adhesive contact wraps a frictionless one
     missing = sorted(s.name for s in prof.expr.free_symbols if s.name != "x" and s.name not in vals)
-    if getattr(contact, "kind", "") == "adhesive":
-        missing += sorted(s.name for s in getattr(contact.gamma, "free_symbols", ()) if s.name not in vals)
+    law = getattr(contact, "law", None)      # an adhesive contact: the symbols of its cohesive law's parameters
+    if law is not None:
+        missing += sorted(s.name for s in law.symbols if s.name not in vals and s.name not in missing)
     if missing:
         raise DomainError(f"plotting needs numbers for the parameters {missing}: pass values={{...}}, "
                           f"e.g. values={{{', '.join(repr(m) + ': 1' for m in missing)}}}")
@@ -111,7 +113,7 @@ def force_data(contact, values=None, a_max=None, points: int = 401, scale=None):
 
 
 def adhesive_data(contact, values=None, points: int = 601, a_max: float = 4.0):
-    """Normalised JKR force law: ``dict(X=a/a_po, Y=P/P_adh, stable=bool mask,
+    """Normalised force law of an adhesive contact: ``dict(X=a/a_po, Y=P/P_adh, stable=bool mask,
     pull_off=(1, -1), jump_in=(a_in/a_po, 0), a_po, P_adh)``."""
     vals = _values(contact, values)
     po = contact.pull_off_at(**vals)
@@ -213,7 +215,8 @@ def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=
         ax.set_xlabel(r"$a/a_{\mathrm{po}}$")
         ax.set_ylabel(r"$P/P_{\mathrm{adh}}$")
         ax.set_xlim(0, X[-1])
-        default = f"JKR force law{' of the ' + name if name else ''}"
+        law = getattr(getattr(contact, "law", None), "label", "")
+        default = f"{law + ' f' if law else 'F'}orce law{' of the ' + name if name else ''}"
     else:
         X, Ys, As = gap_data(contact, loads, values, points=points or 201, **kw)
         fig, ax = _figure()

@@ -1,89 +1,27 @@
-"""Derivations of the JKR-adhesive contact beyond the force law: the
-flat-punch force (Eq. 31), the pressure (Eq. 29), the jump-in half-width and
-the equilibrium branches a(P), each verified by a route that shares nothing
-with the one that produced it."""
+"""Derivations of an adhesive contact beyond the law's force and pressure,
+for every cohesive law (:mod:`.law`): the jump-in half-width and the
+equilibrium branches a(P), each verified by a route that shares nothing with
+the one that produced it; the equilibrium check of a pressure."""
 from __future__ import annotations
 
 import random
-import time
 
 import mpmath
 import sympy as sp
 
 from ...core import symbols as S
 from ...core.budget import run_with_budget
-from ...core.conversion import float_values, rational, real_mpf, to_mpf
+from ...core.conversion import rational, real_mpf, to_mpf
 from ...core.errors import BudgetExceeded, DomainError, NoEquilibriumError, NoPullOffError
-from ...method.derivation import Derivation
+from ...method.derivation import Derivation, timed
 from ...method.transforms import mean_quad
 from ...method.rules import Step
 from ...method.verification import VERIFY_DPS, VerificationRecord, digits_agreeing, verify
 from ..normal.equilibria import equilibria, landscape, minimum
-from .jkr import GAMMA_RANGE, flat_punch_force, phat_energy
-from .pull_off import NumericDerivation, sample_points, single_power, solve_load, tidy_checked
+from .pull_off import NumericDerivation, sample_points, solve_load, statement, tidy_checked
 from ...core.precision import workdps
 
 _phi = sp.Dummy("phi", positive=True)   # an integration variable: never a user's phi
-
-
-def derive_phat(ad) -> Derivation:
-    """Eq. (31), verified against the energy balance G = gamma computed from
-    the flat-punch compliance by quadrature (Eq. 3), numerical
-    differentiation and root finding."""
-    t0 = time.perf_counter()
-    expr = flat_punch_force(ad.gamma)
-    gsyms, gexpr = ad._gsyms, ad.gamma
-
-    def sampler(rng):
-        vals = {S.a: rational(rng.uniform(0.05, 2.0)), S.E_star: rational(rng.uniform(0.5, 3.0))}
-        for gs in gsyms:
-            vals[gs] = rational(rng.uniform(*GAMMA_RANGE))
-        return float_values(vals, 80)
-
-    def reference(vals, dps):
-        return phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=True)
-    rec = None
-    if ad.contact.verify and ad.gamma != 0:
-        rec = verify(expr, reference, sampler, (), n_points=ad.contact.points,
-                     reference_name="energy release rate G = (Phat^2/2)|dC/d(2a)| = gamma of the flat punch, "
-                                    "compliance C by quadrature of Eq. (3), mpmath.diff + findroot")
-        ad._require(rec, "flat_punch_force")
-    step = Step("griffith", expr, (), ("Eq. (31): Griffith balance K_I^2/(2 E*) = gamma at the edge, "
-                                       "K_I = Phat/sqrt(pi a) (Eq. 30)",))
-    return Derivation("flat_punch_force", expr, True, step, (), rec, time.perf_counter() - t0,
-                      ("K_I = Phat/sqrt(pi*a) = sqrt(2*gamma*E_star); G = K_I^2/(2 E*) = Phat^2/(2 pi a E*)",),
-                      lambda vals, dps: phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps),
-                      (S.a, S.E_star) + tuple(sorted(gexpr.free_symbols, key=lambda s: s.name)))
-
-
-def derive_pressure(ad) -> Derivation:
-    """Eq. (29): p(x) = p0(x) - Phat/(pi sqrt(a^2 - x^2)), verified against
-    the quadrature of Eq. (12) minus the punch with Phat from the energy
-    balance, and by equilibrium: 2 int_0^a p dx = P(a) of Eq. (33)."""
-    t0 = time.perf_counter()
-    pd = ad.contact.derivation("pressure")
-    expr = pd.expr - flat_punch_force(ad.gamma) / (sp.pi * sp.sqrt(S.a**2 - S.x**2))
-    gexpr = ad.gamma
-
-    def reference(vals, dps):
-        with workdps(dps + 10):
-            A, X = to_mpf(vals[S.a]), to_mpf(vals[S.x])
-            ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
-            return pd.reference(vals, dps) - ph / (mpmath.pi * mpmath.sqrt(A**2 - X**2))
-    rec, notes = None, list(pd.notes)
-    if pd.closed_form and ad.contact.verify:
-        rec = verify(expr, reference, ad._sampler("inside"), pd.conditions, n_points=ad.contact.points,
-                     reference_name="Eq. (12) quadrature of p0 minus the flat punch (Eq. 1) with Phat "
-                                    "from the energy balance (mpmath.diff + findroot)")
-        ad._require(rec, "pressure")
-        eq = equilibrium_digits(ad, expr)
-        notes.append(f"equilibrium: 2 int_0^a p dx (quadrature of Eq. 29) = P(a) of Eq. (33) to "
-                     f">= {eq:.1f} digits at {ad.contact.points} random points")
-    step = Step("jkr_superposition", expr, pd.conditions,
-                ("Eq. (29): p0 of the engine (" + pd.method + ") minus the pulled flat punch" if pd.closed_form
-                 else "numeric fallback: unevaluated Eq. (12) minus the flat punch",))
-    return Derivation("pressure", expr, pd.closed_form, step, pd.conditions, rec, time.perf_counter() - t0,
-                      tuple(notes), reference, (S.a, S.x) + ad.variables)
 
 
 def equilibrium_digits(ad, pexpr) -> float:
@@ -113,17 +51,18 @@ def equilibrium_digits(ad, pexpr) -> float:
     return worst
 
 
+@timed
 def derive_jump_in(ad) -> Derivation:
     """Stable root of P(a) = 0: the half-width the contact snaps to at zero
     load; verified against the stable root of the quadrature law."""
-    t0 = time.perf_counter()
     fd = ad.contact.derivation("force")
-    P = ad.derivation("force").expr
+    force = ad.derivation("force")
+    P = force.expr
     expr, notes = None, []
     conds = list(fd.conditions)
-    single = single_power(fd.expr) if fd.closed_form else None
-    if single is not None and not single[1].is_number:
-        conds.append(sp.Gt(single[1], sp.S.Half))
+    closed = ad.law.jump_in_candidates(ad, fd) if force.closed_form else None
+    if closed is not None:
+        conds += closed[2]
     method = "sympy.solve of P(a) = 0, stable root"
 
     def reference(vals, dps):
@@ -133,11 +72,9 @@ def derive_jump_in(ad) -> Derivation:
         if not roots:
             raise NoEquilibriumError("no stable equilibrium at zero load")
         return roots[0]
-    if fd.closed_form and not P.has(sp.Piecewise) and ad.gamma != 0:
-        if single is not None:
-            C, m = single
-            cands = [(2 * sp.pi * ad.gamma * S.E_star / C**2)**(1 / (2 * m - 1))]
-            method = "P(a) = 0 for the single power term P0 = C a**m: a_in = (2 pi gamma E*/C**2)**(1/(2m-1))"
+    if force.closed_form and not P.has(sp.Piecewise) and not ad.law.inactive:
+        if closed is not None:
+            cands, method = closed[0], closed[1]
         else:
             cands = []
             try:
@@ -155,19 +92,21 @@ def derive_jump_in(ad) -> Derivation:
             except TypeError:
                 good = False
             if good:
-                expr = tidy_checked(ad, cand, conds, simplify=single is None)
+                expr = tidy_checked(ad, cand, conds, simplify=closed is None)
                 break
     if expr is None:
-        step = Step("numeric_root", sp.Eq(P, 0), (), ("numeric: stable root of P(a) = 0",))
-        return NumericDerivation("jump_in_half_width", sp.Eq(P, 0), False, step, (), None,
-                                 time.perf_counter() - t0, tuple(notes), reference, ad.variables)
+        stmt = statement(P, "load", 0)
+        step = Step("numeric_root", stmt, (), ("numeric: stable root of P(a) = 0",))
+        return NumericDerivation("jump_in_half_width", expr=stmt, closed_form=False, step=step, notes=tuple(notes),
+                                 reference=reference, variables=ad.variables)
     rec = None
     if ad.contact.verify:
         rec = verify(expr, reference, ad._sampler(), conds, n_points=ad.contact.points,
                      reference_name="stable root of the quadrature force law P(a) = 0")
         ad._require(rec, "jump_in_half_width")
-    return Derivation("jump_in_half_width", expr, True, Step("solve_load", expr, tuple(conds), (method,)),
-                      tuple(conds), rec, time.perf_counter() - t0, tuple(notes), reference, ad.variables)
+    return Derivation("jump_in_half_width", expr=expr, closed_form=True,
+                      step=Step("solve_load", expr, tuple(conds), (method,)), conditions=tuple(conds), verification=rec,
+                      notes=tuple(notes), reference=reference, variables=ad.variables)
 
 
 def why_no_equilibrium(law, load) -> str:
@@ -189,15 +128,15 @@ def why_no_equilibrium(law, load) -> str:
         return f"above the loads reached on the search range a <= {mpmath.nstr(land.hi, 6)}"
 
 
+@timed
 def derive_half_widths(ad, load):
     """(stable, unstable) Derivations of a(P): closed forms from sympy.solve
     (under the budget), each identified with its branch at random points,
     else the unevaluated P(a) = P with a numeric evalf."""
-    t0 = time.perf_counter()
-    fd = ad.contact.derivation("force")
-    P = ad.derivation("force").expr
+    force = ad.derivation("force")
+    P = force.expr
     notes, cands = [], []
-    if fd.closed_form and not P.has(sp.Piecewise) and ad.gamma != 0:
+    if force.closed_form and not P.has(sp.Piecewise) and not ad.law.inactive:
         try:
             cands = run_with_budget(solve_load, P, load, seconds=ad.contact.budget)
         except BudgetExceeded:
@@ -240,14 +179,15 @@ def derive_half_widths(ad, load):
             expr = tidy_checked(ad, chosen, []) if sp.count_ops(chosen) < 80 else chosen
             step = Step("solve_load", expr, tuple(cond), ("sympy.solve of P(a) = P, branch identified at random "
                                                           "points",))
-            out.append(Derivation(q, expr, True, step, tuple(cond), rec, time.perf_counter() - t0, tuple(notes),
-                                  ref(stable), variables))
+            out.append(Derivation(q, expr=expr, closed_form=True, step=step, conditions=tuple(cond), verification=rec,
+                                  notes=tuple(notes), reference=ref(stable), variables=variables))
         else:
-            step = Step("numeric_root", sp.Eq(P, load), (), (f"numeric root of P(a) = P on the "
+            step = Step("numeric_root", statement(P, "load", load), (), (f"numeric root of P(a) = P on the "
                                                              f"{'stable' if stable else 'unstable'} branch "
                                                              f"(no closed form)",))
-            out.append(Derivation(q, sp.Eq(P, load), False, step, tuple(cond), None, time.perf_counter() - t0,
-                                  tuple(notes), ref(stable), variables))
+            out.append(Derivation(q, expr=statement(P, "load", load), closed_form=False, step=step,
+                                  conditions=tuple(cond), notes=tuple(notes), reference=ref(stable),
+                                  variables=variables))
     return tuple(out)
 
 
@@ -272,10 +212,11 @@ def branch_samples(ad, load, stable):
                 continue
             v = {k: w for k, w in v.items() if k != S.a}
             av = sp.Float(av, 80)
-            Lv = sp.N(ad.derivation("force").expr.xreplace({**v, S.a: av}), VERIFY_DPS + 20)
+        with workdps(VERIFY_DPS + 20):
+            Lv = sp.Float(ad._law(v, "closed").P(to_mpf(av)), VERIFY_DPS + 20)
         out.append(({**v, load: Lv}, av))
     return out
 
 
-__all__ = ["derive_phat", "derive_pressure", "derive_jump_in", "derive_half_widths", "why_no_equilibrium",
+__all__ = ["derive_jump_in", "derive_half_widths", "why_no_equilibrium",
            "equilibrium_digits", "branch_samples"]

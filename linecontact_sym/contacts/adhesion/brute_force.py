@@ -52,6 +52,21 @@ def _float_P0(quad):
     return P0
 
 
+def _float_P(quad, P0f):
+    """P(a) in float64: the cohesive law's own float form on top of P0f
+    (``quad.float_P``, JKR: P0 - sqrt(2 pi a gamma E*)), else the law's
+    mpmath P at 17 digits (a law with an inner solve), else P0 itself."""
+    if quad.float_P is not None:
+        return quad.float_P(P0f)
+    if quad.base is quad:
+        return P0f
+
+    def Pf(A):
+        with workdps(17):
+            return float(quad.P(mpmath.mpf(A)))
+    return Pf
+
+
 def _parabolic_polish(P, A, h, steps: int = 5):
     """Successive parabolic interpolation of a smooth minimum from a location
     ``A`` known to about ``h``: each step fits P at A - h, A, A + h and moves
@@ -72,7 +87,7 @@ def _parabolic_polish(P, A, h, steps: int = 5):
 def minimum_by_grid(law, dps: int) -> PullOff:
     """The second, independent pull-off: shares nothing with :func:`minimum`
     (no dP/da, no closed form, no subdivision, no breakpoints of the engine).
-    On the quadrature force law (10*) minus Phat: P on a dense grid
+    On the quadrature force law (10*) with the cohesive law on top: P on a dense grid
     (:data:`GRID_POINTS` log-spaced points, 1e-8 .. 1e8 times the scale, in
     float64), cut where P0 stops increasing or stops being real (its own
     admissible range); golden-section search around the lowest grid point;
@@ -82,10 +97,7 @@ def minimum_by_grid(law, dps: int) -> PullOff:
     interpolation (a stationary minimum)."""
     quad = law.quadrature_law
     P0f = _float_P0(quad)
-    B1 = float(quad.B1()) if quad.B1 is not None else 0.0
-
-    def Pf(A):
-        return P0f(A) - B1 * math.sqrt(float(A))
+    Pf = _float_P(quad, P0f)
     s = float(quad.scale)
     grid = [s * 10.0**(-8 + 16 * k / (GRID_POINTS - 1)) for k in range(GRID_POINTS)]
     pts, last0, cut = [], None, False
@@ -95,11 +107,16 @@ def minimum_by_grid(law, dps: int) -> PullOff:
         except (Outside, ValueError, ZeroDivisionError):
             cut = True
             break
-        if not math.isfinite(p0) or (last0 is not None and p0 < last0):
+        # falling beyond float64 rounding (relative to P0 and to the adhesive term it is
+        # weighed against): on a flat P0 = 0, and the 97-node rule over the sliver of
+        # a grid point just past the flat's end may give -1e-17 (a false cut there)
+        pa = Pf(A) if math.isfinite(p0) else math.nan
+        noise = 1e-12 * max(abs(p0), abs(last0 or 0.0), abs(pa - p0)) if math.isfinite(pa) else 0.0
+        if not math.isfinite(p0) or (last0 is not None and p0 < last0 - noise):
             cut = True
             break
         last0 = p0
-        pts.append((A, p0 - B1 * math.sqrt(A)))
+        pts.append((A, pa))
     if len(pts) < 3:
         raise NoPullOffError("the quadrature force law is real and rising at fewer than 3 grid points")
     k = min(range(len(pts)), key=lambda i: pts[i][1])

@@ -1,5 +1,12 @@
-"""The pulled flat punch of JKR adhesion (Popov 2017, Eqs. 30-31) and an
-energy route to it that shares nothing with the stress-intensity route.
+"""The JKR cohesive law (Popov 2017, Eqs. 29-36): the pulled flat punch
+(Eqs. 30-31) superposed on the non-adhesive contact, and an energy route to
+the punch force that shares nothing with the stress-intensity route.
+
+:class:`JKR` is the law (:class:`~.law.CohesiveLaw`): one parameter, the work
+of adhesion gamma >= 0; the balance K_I**2/(2 E*) = gamma fixes the
+equilibrium at each half-width, P(a) = P0(a) - Phat(a) (Eq. 33),
+p(x; a) = p0(x; a) - Phat/(pi sqrt(a**2 - x**2)) (Eq. 29); closed forms of
+the pull-off and the jump-in for a single power term P0 = C a**m.
 
 Near x = a the tensile stress of a flat punch pulled by Phat is
 ``sigma(x) ~ K_I / sqrt(2 pi (a - x))`` with K_I = Phat/sqrt(pi a) (Eq. 30);
@@ -18,9 +25,20 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
+import math
+
 from ...core import symbols as S
-from ...core.conversion import to_mpf
+from ...core.conversion import float_values, rational, to_mpf
+from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
+from ...method.derivation import Derivation
+from ...method.rules import Step
+from ...method.transforms import force_quad
+from ...method.verification import verify
+from ..base import Quantity
+from . import branches
+from .law import CohesiveLaw, Parameter, on_base
+from .pull_off import same_at_points, single_power
 
 #: range of the work of adhesion at the random verification points
 GAMMA_RANGE = (0.005, 0.5)
@@ -77,5 +95,235 @@ def phat_energy(A, gamma, E, dps, quadrature=True):
         return mpmath.findroot(G, (guess * mpmath.mpf("0.5"), guess * 2), solver="anderson")
 
 
-__all__ = ["flat_punch_force", "stress_intensity", "energy_release_rate", "compliance_quad", "phat_energy",
-           "GAMMA_RANGE"]
+#: Eq. (31) derivations, shared by all contacts (the flat punch has no profile)
+_PHAT_CACHE: dict = {}
+
+
+class JKR(CohesiveLaw):
+    """The JKR law of a line contact (Popov 2017, Eqs. 29-36): the
+    stress-intensity balance K_I**2/(2 E*) = gamma at the edges x = +-a,
+    K_I = Phat/sqrt(pi a), gives the pulled flat punch Phat = sqrt(2 pi a gamma E*)
+    superposed on the normal contact.
+
+    >>> JKR().balance
+    Eq(Phat**2/(2*pi*E_star*a), gamma)
+    >>> JKR(0).inactive
+    'no adhesion (gamma = 0)'
+    """
+
+    name = "jkr"
+    kind = "adhesive"
+    title = "JKR (Popov 2017, Eqs. 29-36)"
+    label = "JKR"
+    parameters = (Parameter("work_of_adhesion", S.gamma, "nonnegative", "the work of adhesion", GAMMA_RANGE),)
+    quantities = {"flat_punch_force": Quantity("Phat(a)", "Eq. (31)", "force of the pulled flat punch "
+                                               "sqrt(2 pi a gamma E*)", aliases=("Phat",), latex=r"\hat{P}(a)")}
+
+    @property
+    def gamma(self):
+        return self.values["work_of_adhesion"]
+
+    @property
+    def inactive(self):
+        return "no adhesion (gamma = 0)" if self.gamma == 0 else False
+
+    inactive_reason = "no adhesion (gamma = 0)"
+
+    @property
+    def balance(self) -> sp.Eq:
+        """Eq. (30)-(31): the energy release rate of the pulled punch equals gamma."""
+        Phat = sp.Symbol("Phat", positive=True)
+        return sp.Eq(energy_release_rate(stress_intensity(Phat)), self.gamma)
+
+    def flat_punch_force(self):
+        """Phat(a), Eq. (31)."""
+        return flat_punch_force(self.gamma)
+
+    # ----------------------------------------------------------- Eqs. (29), (31), (33)
+    def derive_flat_punch_force(self, ad) -> Derivation:
+        """Eq. (31), verified against the energy balance of the flat-punch
+        compliance (quadrature of Eq. 3, mpmath.diff, findroot); shared by all
+        contacts with the same work of adhesion."""
+        key = (self.gamma, ad.contact.points, ad.contact.verify)
+        if key not in _PHAT_CACHE:
+            _PHAT_CACHE[key] = _derive_phat(ad, self.gamma)
+        return _PHAT_CACHE[key]
+
+    def derive_force(self, ad) -> Derivation:
+        """Eq. (33): P(a) = P0(a) - Phat, verified against the quadrature of
+        Eq. (10*) minus Phat from the energy balance."""
+        fd = ad.contact.derivation("force")
+        expr = fd.expr - flat_punch_force(self.gamma)
+        prof, gexpr = ad.profile, self.gamma
+
+        def reference(vals, dps):
+            with workdps(dps + 10):
+                return force_quad(prof, vals, dps) - phat_energy(
+                    vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
+        rec = None
+        if fd.closed_form and ad.contact.verify:
+            rec = verify(expr, reference, ad._sampler(), fd.conditions, n_points=ad.contact.points,
+                         reference_name="quadrature of Eq. (10*) minus Phat from the energy balance of "
+                                        "the flat-punch compliance (Eq. 3, mpmath.diff + findroot)")
+            ad._require(rec, "force")
+        step = Step("jkr_superposition", expr, fd.conditions,
+                    (f"Eq. (33): P0(a) of the engine ({fd.method}) minus Phat, Eq. (31)" if fd.closed_form
+                     else "numeric fallback: unevaluated Eq. (10*) minus Phat",))
+        return Derivation("force", expr=expr, closed_form=fd.closed_form, step=step, conditions=fd.conditions,
+                          verification=rec, notes=fd.notes, reference=reference, variables=(S.a,) + ad.variables)
+
+    def derive_pressure(self, ad) -> Derivation:
+        """Eq. (29): p(x) = p0(x) - Phat/(pi sqrt(a^2 - x^2)), verified against
+        the quadrature of Eq. (12) minus the punch with Phat from the energy
+        balance, and by equilibrium: 2 int_0^a p dx = P(a) of Eq. (33)."""
+        pd = ad.contact.derivation("pressure")
+        expr = pd.expr - flat_punch_force(self.gamma) / (sp.pi * sp.sqrt(S.a**2 - S.x**2))
+        gexpr = self.gamma
+
+        def reference(vals, dps):
+            with workdps(dps + 10):
+                A, X = to_mpf(vals[S.a]), to_mpf(vals[S.x])
+                ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
+                return pd.reference(vals, dps) - ph / (mpmath.pi * mpmath.sqrt(A**2 - X**2))
+        rec, notes = None, list(pd.notes)
+        if pd.closed_form and ad.contact.verify:
+            rec = verify(expr, reference, ad._sampler("inside"), pd.conditions, n_points=ad.contact.points,
+                         reference_name="Eq. (12) quadrature of p0 minus the flat punch (Eq. 1) with Phat "
+                                        "from the energy balance (mpmath.diff + findroot)")
+            ad._require(rec, "pressure")
+            eq = branches.equilibrium_digits(ad, expr)
+            notes.append(f"equilibrium: 2 int_0^a p dx (quadrature of Eq. 29) = P(a) of Eq. (33) to "
+                         f">= {eq:.1f} digits at {ad.contact.points} random points")
+        step = Step("jkr_superposition", expr, pd.conditions,
+                    ("Eq. (29): p0 of the engine (" + pd.method + ") minus the pulled flat punch" if pd.closed_form
+                     else "numeric fallback: unevaluated Eq. (12) minus the flat punch",))
+        return Derivation("pressure", expr=expr, closed_form=pd.closed_form, step=step, conditions=pd.conditions,
+                          verification=rec, notes=tuple(notes), reference=reference,
+                          variables=(S.a, S.x) + ad.variables)
+
+    # ----------------------------------------------------------- numbers
+    def numeric(self, base, values):
+        """P(a) = P0(a) - B1 sqrt(a), B1 = sqrt(2 pi gamma E*), on ``base``."""
+        g = self.numbers(values)["work_of_adhesion"]
+        E = sp.sympify(values[S.E_star], strict=True)
+        if g < 0:
+            raise DomainError(f"the work of adhesion must be >= 0, got {g}")
+
+        def build(b):
+            P0, dP0 = b.P, b.dP
+
+            def B1():
+                return mpmath.sqrt(2 * mpmath.pi * to_mpf(g) * to_mpf(E))
+            expr = None if b.expr is None else b.expr - sp.sqrt(2 * sp.pi * g * E * S.a)
+            b1f = math.sqrt(2 * math.pi * float(g) * float(E))
+            return b.on_top(lambda A: P0(A) - B1() * mpmath.sqrt(A), lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
+                            expr=expr, float_P=lambda P0f: (lambda A: P0f(A) - b1f * math.sqrt(float(A))),
+                            inactive=self.inactive, monotone_term=True)
+        return on_base(base, build)
+
+    # ----------------------------------------------------------- closed forms
+    def pull_off_conditions(self, ad, force0, values=None):
+        """A single power term P0 = C a**m has a finite pull-off iff m > 1/2."""
+        single = single_power(force0.expr) if force0.closed_form else None
+        if single is None:
+            return []
+        C, m = single
+        check_existence(ad, C, m, values)
+        return [] if m.is_number else [sp.Gt(m, sp.S.Half)]
+
+    def pull_off_compact(self, ad, force0, Pmin, a_star, conds):
+        """For P0 = C a**m: P_adh = (2m-1)/(2m) ((2 pi gamma E*)**m/(2 m C))**(1/(2m-1)),
+        a_po = (2 pi gamma E*/(4 m**2 C**2))**(1/(2m-1)) -- kept where they equal
+        the solve result at random points (the single stationary point is
+        the global minimum)."""
+        single = single_power(force0.expr) if force0.closed_form else None
+        if single is None:
+            return None
+        C, m = single
+        gE = 2 * sp.pi * self.gamma * S.E_star
+        adh = (2 * m - 1) / (2 * m) * (gE**m / (2 * m * C))**(1 / (2 * m - 1))
+        a_po = (gE / (4 * m**2 * C**2))**(1 / (2 * m - 1))
+        if same_at_points(ad, -adh, Pmin, conds) and same_at_points(ad, a_po, a_star, conds):
+            return -adh, a_po, adh, ("single power term P0 = C a**m: P_min = -(2m-1)/(2m) "
+                                     "((2 pi gamma E*)**m/(2 m C))**(1/(2m-1)) (equal to the solve "
+                                     "result at 5 points to 40 digits)")
+        return None
+
+    def stationary_candidates(self, ad, force0):
+        """For P0 = C a**m: m C a**(m-1) = B1/(2 sqrt(a)) solved by hand,
+        a**(m - 1/2) = B1/(2 m C); sympy.solve of the same equation with
+        symbolic C and m spent its whole budget (K x**4: 20 s)."""
+        single = single_power(force0.expr) if force0.closed_form else None
+        if single is None:
+            return None
+        C, m = single
+        a_po = (2 * sp.pi * self.gamma * S.E_star / (4 * m**2 * C**2))**(1 / (2 * m - 1))
+        return [a_po], ("dP/da = 0 of P = C a**m - sqrt(2 pi a gamma E*) solved as a**(m - 1/2) = "
+                        "sqrt(2 pi gamma E*)/(2 m C)")
+
+    def jump_in_candidates(self, ad, force0):
+        single = single_power(force0.expr) if force0.closed_form else None
+        if single is None:
+            return None
+        C, m = single
+        return ([(2 * sp.pi * self.gamma * S.E_star / C**2)**(1 / (2 * m - 1))],
+                "P(a) = 0 for the single power term P0 = C a**m: a_in = (2 pi gamma E*/C**2)**(1/(2m-1))",
+                [] if m.is_number else [sp.Gt(m, sp.S.Half)])
+
+
+def check_existence(ad, C, m, vals=None):
+    """Raise NoPullOffError for a single power law P0 = C a**m, m <= 1/2."""
+    mv = m.xreplace(vals) if vals else m
+    if not mv.is_number:
+        return
+    gamma = ad.law.gamma
+    if gamma.xreplace(vals or {}) == 0:
+        raise NoPullOffError(f"{ad.profile.name!r}: no adhesion (gamma = 0), no tensile pull-off")
+    if mv > sp.S.Half:
+        return
+    name = ad.profile.name
+    if mv < sp.S.Half:
+        raise NoPullOffError(
+            f"{name!r}: P0 ~ a**({mv}) grows slower than the adhesive term sqrt(2 pi a gamma E*) "
+            f"(exponent {mv} < 1/2): P(a) has a maximum, not a minimum; tensile equilibria are "
+            f"all unstable and P -> -oo as a -> oo, loads above the maximum have no equilibrium. "
+            f"No finite pull-off exists for n < 1/2 (it needs n > 1/2).")
+    gc = sp.simplify(C**2 / (2 * sp.pi * S.E_star))
+    raise NoPullOffError(
+        f"{name!r}: exponent n = 1/2 is the borderline: P = (C - sqrt(2 pi gamma E*)) sqrt(a) with "
+        f"C = {C} is monotone. For gamma < gamma_c = {gc} no tensile load is sustained (zero "
+        f"pull-off, reached only as a -> 0); for gamma > gamma_c P -> -oo, every equilibrium "
+        f"is unstable and the contact spreads without bound. No finite pull-off (needs n > 1/2).")
+
+
+def _derive_phat(ad, gamma) -> Derivation:
+    """Eq. (31), verified against the energy balance G = gamma computed from
+    the flat-punch compliance by quadrature (Eq. 3), numerical
+    differentiation and root finding."""
+    expr = flat_punch_force(gamma)
+    gsyms = tuple(sorted(gamma.free_symbols, key=lambda s: s.name))
+
+    def sampler(rng):
+        vals = {S.a: rational(rng.uniform(0.05, 2.0)), S.E_star: rational(rng.uniform(0.5, 3.0))}
+        for gs in gsyms:
+            vals[gs] = rational(rng.uniform(*GAMMA_RANGE))
+        return float_values(vals, 80)
+
+    def reference(vals, dps):
+        return phat_energy(vals[S.a], gamma.xreplace(vals), vals[S.E_star], dps, quadrature=True)
+    rec = None
+    if ad.contact.verify and gamma != 0:
+        rec = verify(expr, reference, sampler, (), n_points=ad.contact.points,
+                     reference_name="energy release rate G = (Phat^2/2)|dC/d(2a)| = gamma of the flat punch, "
+                                    "compliance C by quadrature of Eq. (3), mpmath.diff + findroot")
+        ad._require(rec, "flat_punch_force")
+    step = Step("griffith", expr, (), ("Eq. (31): Griffith balance K_I^2/(2 E*) = gamma at the edge, "
+                                       "K_I = Phat/sqrt(pi a) (Eq. 30)",))
+    return Derivation("flat_punch_force", expr=expr, closed_form=True, step=step, verification=rec,
+                      notes=("K_I = Phat/sqrt(pi*a) = sqrt(2*gamma*E_star); G = K_I^2/(2 E*) = Phat^2/(2 pi a E*)",),
+                      reference=lambda vals, dps: phat_energy(vals[S.a], gamma.xreplace(vals), vals[S.E_star], dps),
+                      variables=(S.a, S.E_star) + gsyms)
+
+
+__all__ = ["JKR", "check_existence", "flat_punch_force", "stress_intensity", "energy_release_rate",
+           "compliance_quad", "phat_energy", "GAMMA_RANGE"]

@@ -1,6 +1,8 @@
-"""Pull-off of a JKR-adhesive line contact (Popov 2017, Eqs. 34-36): the
-symbolic attempt (dP/da = 0 by ``sympy.solve``) and the numeric minimum, each
-verified by a route that shares nothing with it.
+"""Pull-off of an adhesive line contact, for every cohesive law (:mod:`.law`):
+the symbolic attempt (dP/da = 0 by ``sympy.solve``, where the law's P(a) is
+one expression) and the numeric minimum, each verified by a route that
+shares nothing with it.  What is specific to a law comes from its hooks
+(``pull_off_conditions``, ``pull_off_compact``); the JKR example follows.
 
 Under load control the contact separates at the minimum of P(a) (see
 :mod:`.equilibria`): ``pull_off_force`` is that minimum P_min < 0 and
@@ -21,7 +23,6 @@ sqrt(2 pi gamma E*) at large a; for a power law both hold **iff n > 1/2**.
 from __future__ import annotations
 
 import random
-import time
 
 import mpmath
 import sympy as sp
@@ -30,7 +31,8 @@ from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.conversion import float_values, real_mpf
 from ...core.errors import BudgetExceeded, NoPullOffError, VerificationError
-from ...method.derivation import Derivation, tidy
+from ...method import store
+from ...method.derivation import Derivation, remembered_many, tidy
 from ...method.hyperseries import NotDecomposable, decompose
 from ...method.rules import Step
 from ...method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
@@ -54,28 +56,14 @@ def single_power(P0):
     return terms[0].coef, terms[0].mu
 
 
-def check_existence(ad, C, m, vals=None):
-    """Raise NoPullOffError for a single power law P0 = C a**m, m <= 1/2."""
-    mv = m.xreplace(vals) if vals else m
-    if not mv.is_number:
-        return
-    if ad.gamma.xreplace(vals or {}) == 0:
-        raise NoPullOffError(f"{ad.profile.name!r}: no adhesion (gamma = 0), no tensile pull-off")
-    if mv > sp.S.Half:
-        return
-    name = ad.profile.name
-    if mv < sp.S.Half:
-        raise NoPullOffError(
-            f"{name!r}: P0 ~ a**({mv}) grows slower than the adhesive term sqrt(2 pi a gamma E*) "
-            f"(exponent {mv} < 1/2): P(a) has a maximum, not a minimum; tensile equilibria are "
-            f"all unstable and P -> -oo as a -> oo, loads above the maximum have no equilibrium. "
-            f"No finite pull-off exists for n < 1/2 (it needs n > 1/2).")
-    gc = sp.simplify(C**2 / (2 * sp.pi * S.E_star))
-    raise NoPullOffError(
-        f"{name!r}: exponent n = 1/2 is the borderline: P = (C - sqrt(2 pi gamma E*)) sqrt(a) with "
-        f"C = {C} is monotone. For gamma < gamma_c = {gc} no tensile load is sustained (zero "
-        f"pull-off, reached only as a -> 0); for gamma > gamma_c P -> -oo, every equilibrium "
-        f"is unstable and the contact spreads without bound. No finite pull-off (needs n > 1/2).")
+def statement(P, what, load=0):
+    """What a numeric Derivation states: ``dP/da = 0`` (``what='stationary'``)
+    or ``P(a) = load``; for a law whose P(a) is a system (a Tuple of
+    equations in a and inner unknowns) the system with that condition added."""
+    if isinstance(P, sp.Expr) and not isinstance(P, sp.Tuple):
+        return sp.Eq(sp.diff(P, S.a), 0) if what == "stationary" else sp.Eq(P, load)
+    Pa = sp.Function("P")(S.a)
+    return sp.Tuple(*P, sp.Eq(sp.Derivative(Pa, S.a), 0) if what == "stationary" else sp.Eq(Pa, load))
 
 
 def solve_stationary(P):
@@ -157,54 +145,54 @@ def pick_minimum(ad, cands, P, conds):
 # ---------------------------------------------------------------- symbolic attempt
 def closed_attempt(ad):
     """The symbolic pull-off: a dict with Pmin, a_star, adh, conds, notes,
-    method, t0 -- Pmin None when there is no closed form."""
-    t0 = time.perf_counter()
+    method, unique (the law's compact form says the stationary point is the
+    global minimum) -- Pmin None when there is no closed form."""
+    law = ad.law
     fd = ad.contact.derivation("force")
-    P = ad.derivation("force").expr
+    force = ad.derivation("force")
     notes, conds = [], list(fd.conditions)
-    single = single_power(fd.expr) if fd.closed_form else None
-    if ad.gamma == 0:
-        raise NoPullOffError(f"{ad.profile.name!r}: no adhesion (gamma = 0): P(a) = P0(a) >= 0, "
+    if law.inactive:
+        raise NoPullOffError(f"{ad.profile.name!r}: {law.inactive}: P(a) = P0(a) >= 0, "
                              f"no tensile pull-off")
     a_star = Pmin = adh = method = None
+    unique = False
     if not fd.closed_form:
         notes.append("the force law P0(a) has no closed form")
-    if fd.closed_form:
-        if single is not None:
-            C, m = single
-            check_existence(ad, C, m)
-            if not m.is_number:
-                conds.append(sp.Gt(m, sp.S.Half))
+    elif not force.closed_form:
+        notes.append(f"the {law.name} force law P(a) has no closed form")
+    else:
+        P = force.expr
+        conds += law.pull_off_conditions(ad, fd)
         cands = []
-        try:
-            cands = run_with_budget(solve_stationary, P, seconds=ad.contact.budget)
-            notes.append(f"sympy.solve(dP/da = 0) gave {len(cands)} candidate(s)")
-        except BudgetExceeded:
-            notes.append(f"sympy.solve(dP/da = 0) found nothing within {ad.contact.budget:g} s")
-        except (NotImplementedError, ValueError, TypeError) as exc:
-            notes.append(f"sympy.solve(dP/da = 0) gave up: {type(exc).__name__}")
-        a_star = pick_minimum(ad, cands, P, conds)
+        by_law = law.stationary_candidates(ad, fd)
+        if by_law is not None:   # closed-form candidates of the law, checked like any (dP/da = 0, P'' > 0)
+            a_star = pick_minimum(ad, by_law[0], P, conds)
+            if a_star is not None:
+                notes.append(by_law[1])
+        if a_star is None:
+            try:
+                cands = run_with_budget(solve_stationary, P, seconds=ad.contact.budget)
+                notes.append(f"sympy.solve(dP/da = 0) gave {len(cands)} candidate(s)")
+            except BudgetExceeded:
+                notes.append(f"sympy.solve(dP/da = 0) found nothing within {ad.contact.budget:g} s")
+            except (NotImplementedError, ValueError, TypeError) as exc:
+                notes.append(f"sympy.solve(dP/da = 0) gave up: {type(exc).__name__}")
+            a_star = pick_minimum(ad, cands, P, conds)
         if a_star is None and cands:
             notes.append("none of them is a real positive minimum at every admissible sample point")
         if a_star is not None:
             method = "sympy.solve of dP/da = 0, minimum checked numerically (P'' > 0)"
-            compact = False
             Pmin = P.xreplace({S.a: a_star})
-            if single is not None:
-                C, m = single
-                gE = 2 * sp.pi * ad.gamma * S.E_star
-                compact_adh = (2 * m - 1) / (2 * m) * (gE**m / (2 * m * C))**(1 / (2 * m - 1))
-                compact_a = (gE / (4 * m**2 * C**2))**(1 / (2 * m - 1))
-                if same_at_points(ad, -compact_adh, Pmin, conds) and same_at_points(ad, compact_a, a_star, conds):
-                    Pmin, a_star, adh, compact = -compact_adh, compact_a, compact_adh, True
-                    notes.append("single power term P0 = C a**m: P_min = -(2m-1)/(2m) "
-                                 "((2 pi gamma E*)**m/(2 m C))**(1/(2m-1)) (equal to the solve "
-                                 "result at 5 points to 40 digits)")
-            Pmin = tidy_checked(ad, Pmin, conds, simplify=not compact)
-            a_star = tidy_checked(ad, a_star, conds, simplify=not compact)
+            compact = law.pull_off_compact(ad, fd, Pmin, a_star, conds)
+            if compact is not None:
+                Pmin, a_star, adh, note = compact
+                notes.append(note)
+                unique = True
+            Pmin = tidy_checked(ad, Pmin, conds, simplify=not unique)
+            a_star = tidy_checked(ad, a_star, conds, simplify=not unique)
             if adh is None:
                 adh = tidy_checked(ad, -Pmin, conds)
-    return dict(Pmin=Pmin, a_star=a_star, adh=adh, conds=conds, notes=notes, method=method, t0=t0)
+    return dict(Pmin=Pmin, a_star=a_star, adh=adh, conds=conds, notes=notes, method=method, unique=unique)
 
 
 def derivations(ad):
@@ -213,9 +201,9 @@ def derivations(ad):
     numeric ones verified by two independent methods."""
     r = ad._pull_off_closed()
     Pmin, a_star, adh, conds = r["Pmin"], r["a_star"], r["adh"], r["conds"]
-    notes, method, t0 = list(r["notes"]), r["method"], r["t0"]
+    notes, method = list(r["notes"]), r["method"]
     if Pmin is None:
-        return numeric_derivations(ad, ad.derivation("force").expr, notes, t0)
+        return numeric_derivations(ad, ad.derivation("force").expr, notes)
     recs = {"P": None, "adh": None, "a": None}
     if ad.contact.verify:
         def reference(v, d):
@@ -223,19 +211,18 @@ def derivations(ad):
             return {"P": po.force, "adh": po.adhesion_force, "a": po.half_width}
         recs = verify_many(
             {"P": Pmin, "adh": adh, "a": a_star}, reference, ad._sampler(), conds, ad.contact.points,
-            reference_name={"P": "global minimum of the quadrature force law (10*) minus Phat over its "
-                                  "admissible range: dense grid + golden section + parabolic polish",
+            reference_name={"P": "global minimum of the quadrature force law (10*) with the cohesive law on top, "
+                                  "over its admissible range: dense grid + golden section + parabolic polish",
                             "adh": "minus the quadrature-based global minimum of P(a)",
                             "a": "half-width of the quadrature-based global minimum of P(a)"})
         for k, what in (("P", "pull_off_force"), ("a", "pull_off_half_width"), ("adh", "adhesion_force")):
             ad._require(recs[k], what)
-    dt = time.perf_counter() - t0
     note = tuple(notes) + ("load control; pull_off_force = P_min < 0, adhesion_force = -P_min (the paper's P_adh)",)
     ref_f = lambda v, d: ad._pull_off_reference(v, d).force  # noqa: E731
 
     def mk(q, expr, rec, ref):
-        return Derivation(q, expr, True, Step("solve_stationary", expr, tuple(conds), (method,)), tuple(conds),
-                          rec, dt, note, ref, ad.variables)
+        return Derivation(q, expr=expr, closed_form=True, step=Step("solve_stationary", expr, tuple(conds), (method,)),
+                          conditions=tuple(conds), verification=rec, notes=note, reference=ref, variables=ad.variables)
     return (mk("pull_off_force", Pmin, recs["P"], ref_f),
             mk("adhesion_force", adh, recs["adh"], lambda v, d: mpmath.fneg(ref_f(v, d), exact=True)),
             mk("pull_off_half_width", a_star, recs["a"], lambda v, d: ad._pull_off_reference(v, d).half_width))
@@ -250,16 +237,16 @@ class NumericDerivation(Derivation):
         return tuple(sorted(set(self.variables), key=lambda s: s.name))
 
 
-def numeric_derivations(ad, P, notes, t0):
+def numeric_derivations(ad, P, notes):
     """No closed form: Derivations whose evalf is the numeric minimum,
     verified at random points by two independent methods."""
     notes = list(notes) + [
         "no closed form: method A = every sign change of dP/da over the admissible range by ball "
         "arithmetic on the engine's closed force law (adaptive subdivision for a quadrature law), "
         "kinks and the range's end included, then the global minimum; method B = dense grid + "
-        "golden section + parabolic polish on the quadrature force law (10*) minus Phat"]
+        "golden section + parabolic polish on the quadrature force law (10*) with the cohesive law on top"]
     rec = None
-    if ad.contact.verify and ad.gamma != 0:
+    if ad.contact.verify and not ad.law.inactive:
         sample, n_points = ad._sampler(), ad.contact.points
 
         def work():  # in a budgeted child, like the engine's verify
@@ -286,15 +273,57 @@ def numeric_derivations(ad, P, notes, t0):
             pts, digs, name = [], [], name + f" (did not finish in {VERIFY_BUDGET:g} s)"
         rec = VerificationRecord(tuple(pts), tuple(digs), VERIFY_DPS, name)
         ad._require(rec, "pull_off_force")
-    stat = sp.Eq(sp.diff(P, S.a), 0)
-    dt = time.perf_counter() - t0
+    stat = statement(P, "stationary")
     step = Step("numeric_minimum", stat, (), ("numeric: global minimum of P(a) (no closed form)",))
 
     def mk(q, attr, sign=1):
-        return NumericDerivation(q, stat, False, step, (), rec, dt, tuple(notes),
-                                 lambda v, d: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, d), attr), exact=True),
-                                 ad.variables)
+        def reference(v, d):
+            return mpmath.fmul(sign, getattr(ad._pull_off_checked(v, d), attr), exact=True)
+        return NumericDerivation(q, expr=stat, closed_form=False, step=step, verification=rec, notes=tuple(notes),
+                                 reference=reference, variables=ad.variables)
     return mk("pull_off_force", "force"), mk("adhesion_force", "force", -1), mk("pull_off_half_width", "half_width")
+
+
+def _parts(ad, what):
+    """What names a pull-off problem for the store: the profile with its
+    parameter ranges, the force law, the work of adhesion, the checks."""
+    fd = ad.contact.derivation("force")
+    return (what, ad.profile.expr, dict(ad.profile.ranges), fd.expr, ad.law.name, dict(ad.law.values),
+            ad.contact.points,
+            ad.contact.verify)
+
+
+def remembered_closed_attempt(ad):
+    """:func:`closed_attempt`, remembered (:mod:`~linecontact_sym.method.store`,
+    get/put by key): sympy.solve is not run again in a new process."""
+    key = store.make_key(*_parts(ad, "pull_off_closed_attempt"))
+    rec = store.get(key)
+    if rec is not None and "Pmin" in rec:
+        return {k: v for k, v in rec.items() if k not in ("key", "version", "source")}
+    r = closed_attempt(ad)
+    store.put(key, {k: (tuple(v) if isinstance(v, list) else v) for k, v in r.items()})
+    return r
+
+
+def remembered_derivations(ad):
+    """:func:`derivations`, remembered with their verification
+    (:func:`~linecontact_sym.method.derivation.remembered_many`)."""
+    def rebuild(d):
+        if d.closed_form:
+            if d.quantity == "pull_off_half_width":
+                d.reference = lambda v, dd: ad._pull_off_reference(v, dd).half_width
+            else:
+                sign = 1 if d.quantity == "pull_off_force" else -1
+                d.reference = lambda v, dd: mpmath.fmul(sign, ad._pull_off_reference(v, dd).force, exact=True)
+            return d
+        attr, sign = ("half_width", 1) if d.quantity == "pull_off_half_width" else \
+            ("force", 1 if d.quantity == "pull_off_force" else -1)
+        return NumericDerivation(d.quantity, expr=d.expr, closed_form=False, step=d.step, conditions=d.conditions,
+                                 verification=d.verification, seconds=d.seconds, notes=d.notes,
+                                 reference=lambda v, dd: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, dd), attr),
+                                                                    exact=True), variables=d.variables,
+                                 attempts=d.attempts, cached=d.cached)
+    return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild)
 
 
 def _key(ad, vals):
@@ -342,9 +371,7 @@ def at_values(ad, vals, dps) -> PullOff:
     (conditions and existence checked), else the checked numeric minimum."""
     if ad._pull_off_closed()["Pmin"] is not None:
         fd = ad.derivation("pull_off_force")
-        single = single_power(ad.contact.derivation("force").expr)
-        if single is not None:
-            check_existence(ad, single[0], single[1], vals)
+        ad.law.pull_off_conditions(ad, ad.contact.derivation("force"), vals)
         if not holds(fd.conditions, vals):
             raise NoPullOffError(f"{ad.profile.name!r}: the pull-off conditions "
                                  f"{fd.conditions} fail at {vals}: no finite pull-off")
@@ -353,7 +380,7 @@ def at_values(ad, vals, dps) -> PullOff:
             Pm = real_mpf(sp.N(fd.expr.xreplace(fv), dps + 10))
             A = real_mpf(sp.N(ad.derivation("pull_off_half_width").expr.xreplace(fv), dps + 10))
             adh = -Pm
-        if single is not None:   # one power term: one stationary point, the global minimum
+        if ad._pull_off_closed()["unique"]:   # the law's compact form: one stationary point, the global minimum
             return PullOff(Pm, adh, A, "stationary", None, (), "closed form (single power term)")
         # the closed form is one stationary point: is it the global minimum here?
         land = landscape(ad._law(vals, "closed"))
@@ -374,6 +401,7 @@ def checked_or_fail(ad, vals, dps) -> PullOff:
     return po
 
 
-__all__ = ["reference", "checked", "at_values", "single_power", "check_existence", "closed_attempt", "derivations", "numeric_derivations",
+__all__ = ["reference", "checked", "at_values", "remembered_derivations", "remembered_closed_attempt", "single_power",
+           "closed_attempt", "derivations", "numeric_derivations",
            "NumericDerivation", "pick_minimum", "tidy_checked", "sample_points", "same_at_points",
-           "solve_stationary", "solve_load"]
+           "solve_stationary", "solve_load", "statement"]

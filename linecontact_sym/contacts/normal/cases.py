@@ -28,14 +28,13 @@ def case_contacts(contact):
     """``[(condition, LineContact of that case)]``, built once per contact."""
     cache = contact._caches()
     if "_case_contacts" not in cache:
-        from .contact import LineContact
         prof = contact.profile
         out = []
         for cond, expr in prof.cases:
             syms = expr.free_symbols - {S.x}
             params = {p: prof.declared_ranges.get(p) for p in syms}
             try:
-                sub = LineContact(expr, params=params, name=f"{prof.name} where {cond}", budget=contact.budget,
+                sub = type(contact)(expr, params=params, name=f"{prof.name} where {cond}", budget=contact.budget,
                                   verify=contact.verify, points=contact.points, digits=contact.digits)
             except LineContactError as exc:   # this case is no admissible profile: refused at its points
                 sub = exc

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import dataclasses
 import numbers
-import time
 
 import mpmath
 import sympy as sp
@@ -23,7 +22,7 @@ from ...method.verification import REQUIRED_DIGITS, verify
 from ...parsing import to_sympy
 from . import admissibility
 from ..base import Contact, Quantity
-from .equilibria import half_width_at
+from .equilibria import SEARCH_BUDGET, half_width_at, searching_until
 from .force_law import ForceLaw
 from .inverse import derive_half_width
 from .cases import derive_by_case
@@ -117,6 +116,10 @@ class LineContact(Contact):
             cache[name] = derive_by_case(self, name)
         return cache[name]
 
+    def derive_by_case(self, on, name: str) -> Derivation:
+        """``on.derivation(name)`` (a contact built on this one) case by case."""
+        return derive_by_case(on, name)
+
     def check_point(self, values: dict) -> None:
         """See :func:`~.admissibility.check_point`."""
         admissibility.check_point(self, values)
@@ -124,10 +127,10 @@ class LineContact(Contact):
     def _sampler(self, domain="any"):
         return point_sampler(self.profile, domain)
 
-    def _derive(self, quantity, problem, reference, fallback, domain, notes=(), t0=None):
+    def _derive(self, quantity, problem, reference, fallback, domain, notes=()):
         d = derive(quantity, problem, reference=reference, sampler=self._sampler(domain), fallback=fallback,
                    budget=self.budget, check=self.verify, points=self.points, notes=notes,
-                   variables=(S.a,) + (() if domain == "any" else (S.x,)) + self.variables, t0=t0)
+                   variables=(S.a,) + (() if domain == "any" else (S.x,)) + self.variables)
         return self._restricted(d)
 
     def _restricted(self, d: Derivation) -> Derivation:
@@ -168,14 +171,15 @@ class LineContact(Contact):
             xp = sp.Dummy("x", positive=True)
             # a test that SymPy's assumptions decide for every admissible value
             # is not sampled at every call (x**2/(2R): f' = x/R >= 0 always)
+            # patched at x = 0 (a = 0) only: parameters are > 0 (a limit in w cost the first Gaussian 10 s)
             fprime = None if d1.xreplace({S.x: xp}).is_nonnegative else \
-                lambdify_numpy(d1, [S.x] + params, stable=False)
+                lambdify_numpy(d1, [S.x] + params, stable=False, patch=(S.x,))
             fd = self.derivation("force")
             slope = None
             if fd.closed_form and not fd.expr.has(sp.Integral):
                 dP = sp.diff(fd.expr, S.a)
                 if not dP.is_nonnegative:
-                    slope = lambdify_numpy(dP, [S.a, S.E_star] + params, stable=False)
+                    slope = lambdify_numpy(dP, [S.a, S.E_star] + params, stable=False, patch=(S.a,))
             cache["_adm_fns"] = (fprime, slope, [p.name for p in params])
         return cache["_adm_fns"]
 
@@ -197,7 +201,6 @@ class LineContact(Contact):
         return law.dP, law.breaks()
 
     def _derive_pressure(self) -> Derivation:
-        t0 = time.perf_counter()
         fd = self.derivation("force")
 
         def reference(vals, dps):
@@ -207,13 +210,16 @@ class LineContact(Contact):
                 return T.pressure_quad(dP, breaks, vals, dps)
         fallback = T.pressure_integral(fd.expr)
         if not fd.closed_form:
-            return Derivation("pressure", fallback, False, fallback_step("force law has no closed form"), (),
-                              None, time.perf_counter() - t0, (), reference, (S.a, S.x) + self.variables)
+            notes = ()
+            if not self.profile.is_piecewise:   # one quadrature instead of Eq. (12) over a quadrature law
+                reference, notes = _direct_pressure(self.profile)
+            return Derivation("pressure", expr=fallback, closed_form=False,
+                              step=fallback_step("force law has no closed form"), notes=notes, reference=reference,
+                              variables=(S.a, S.x) + self.variables)
         return self._derive("pressure", Problem("pressure", self.profile, fd.expr), reference, fallback,
-                            "inside", t0=t0)
+                            "inside")
 
     def _derive_gap(self) -> Derivation:
-        t0 = time.perf_counter()
         fd = self.derivation("force")
 
         def reference(vals, dps):
@@ -224,44 +230,45 @@ class LineContact(Contact):
                 return T.gap_quad(f, dP, breaks, vals, dps)
         fallback = T.gap_integral(self.profile.expr, fd.expr)
         if not fd.closed_form:
-            return Derivation("gap", fallback, False, fallback_step("force law has no closed form"), (), None,
-                              time.perf_counter() - t0, (), reference, (S.a, S.x) + self.variables)
-        return self._derive("gap", Problem("gap", self.profile, fd.expr), reference, fallback, "outside", t0=t0)
+            return Derivation("gap", expr=fallback, closed_form=False,
+                              step=fallback_step("force law has no closed form"), reference=reference,
+                              variables=(S.a, S.x) + self.variables)
+        return self._derive("gap", Problem("gap", self.profile, fd.expr), reference, fallback, "outside")
 
-    def _derive_from_force(self, quantity, make, reference, what, t0):
+    def _derive_from_force(self, quantity, make, reference, what):
         """A quantity built from the force law by ``make(P)`` (an identity),
         verified against an independent ``reference``."""
         fd = self.derivation("force")
         if not fd.closed_form:
-            return Derivation(quantity, make(fd.expr), False, fallback_step("force law has no closed form"),
-                              (), None, time.perf_counter() - t0, (), reference, (S.a,) + self.variables)
+            return Derivation(quantity, expr=make(fd.expr), closed_form=False,
+                              step=fallback_step("force law has no closed form"), reference=reference,
+                              variables=(S.a,) + self.variables)
         expr = sp.simplify(make(fd.expr))
         rec = verify(expr, reference, self._sampler(), fd.conditions, n_points=self.points,
                      reference_name=what) if self.verify else None
         if rec is not None and not rec.passed:
             note = f"closed form FAILED verification ({rec.min_digits:.1f} digits); returned unevaluated: {expr}"
-            return Derivation(quantity, make(T.force_integral(self.profile)), False, fallback_step(), (), rec,
-                              time.perf_counter() - t0, (note,), reference, (S.a,) + self.variables)
+            return Derivation(quantity, expr=make(T.force_integral(self.profile)), closed_form=False,
+                              step=fallback_step(), verification=rec, notes=(note,), reference=reference,
+                              variables=(S.a,) + self.variables)
         step = Step(quantity, expr, fd.conditions, (what,))
-        return Derivation(quantity, expr, True, step, fd.conditions, rec, time.perf_counter() - t0, (),
-                          reference, (S.a,) + self.variables)
+        return Derivation(quantity, expr=expr, closed_form=True, step=step, conditions=fd.conditions, verification=rec,
+                          reference=reference, variables=(S.a,) + self.variables)
 
     def _derive_mean_pressure(self) -> Derivation:
         """P(a)/(2a) of the closed force law, checked against the quadrature of
         Eq. (10*) divided by 2a."""
-        t0 = time.perf_counter()
         prof = self.profile
 
         def reference(vals, dps):
             with workdps(dps + 10):
                 return T.force_quad(prof, vals, dps) / (2 * to_mpf(vals[S.a]))
         return self._derive_from_force("mean_pressure", lambda P: P / (2 * S.a), reference,
-                                       "P(a)/(2a) against the quadrature of Eq. (10*) over 2a", t0)
+                                       "P(a)/(2a) against the quadrature of Eq. (10*) over 2a")
 
     def _derive_stiffness(self) -> Derivation:
         """dP/da of the closed force law, checked against numerical
         differentiation of the quadrature of Eq. (10*)."""
-        t0 = time.perf_counter()
         prof = self.profile
 
         def reference(vals, dps):
@@ -271,27 +278,23 @@ class LineContact(Contact):
                 # the quadrature runs above diff's own (raised) working precision
                 return mpmath.diff(lambda u: T.force_quad(prof, {**fixed, S.a: u}, mpmath.mp.dps), A)
         return self._derive_from_force("stiffness", lambda P: sp.diff(P, S.a), reference,
-                                       "dP/da against mpmath.diff of the quadrature of Eq. (10*)", t0)
+                                       "dP/da against mpmath.diff of the quadrature of Eq. (10*)")
 
     # --------------------------------------------------------------- half-width
-    def _half_width(self, load=S.P, **values):
-        """Contact half-width a at load P.
-
-        With a symbolic load: the closed-form inverse of the force law where
-        SymPy finds one (a :class:`Derivation`, verified: P(a(P)) = P to 30
-        digits at random points), else a Derivation with ``closed_form=False``
-        whose ``evalf`` solves P(a) = load numerically.  With a numeric load and
-        numeric parameters (keywords): the number (mpmath, 30 digits).
-        """
+    def _half_width(self, load=S.P, budget=None, **values):
+        """Contact half-width a at load P.  Symbolic load: the closed inverse of the force law (P(a(P)) = P checked at random points) or the
+        unevaluated P(a) = load, the inversion under ``budget`` (s, default the contact's).  Numeric load and
+        parameters: the number (30 digits), searched under ``budget`` (default :data:`~.equilibria.SEARCH_BUDGET`)."""
         load = to_sympy(load)
         if load.is_number:
             if load <= 0:
                 raise DomainError(f"the load must be positive for a non-adhesive contact, got {load}")
-            return half_width_at(self.force_law(**values), load)
+            with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
+                return half_width_at(self.force_law(**values), load)
         cache = self._caches()
         key = ("half_width", load)
-        if key not in cache:
-            cache[key] = self._derive_half_width(load)
+        if key not in cache or (not cache[key].closed_form and cache[key].attempts):
+            cache[key] = derive_half_width(self, load, budget)
         return cache[key]
 
     def _derive_half_width(self, load=S.P) -> Derivation:
@@ -304,6 +307,18 @@ class LineContact(Contact):
         :mod:`linecontact_sym.contacts.adhesion.contact`."""
         from ..adhesion.contact import AdhesiveLineContact
         return AdhesiveLineContact(self, work_of_adhesion)
+
+    def maugis_dugdale(self, w=S.gamma, sigma0=S.sigma_0):
+        """The Maugis-Dugdale contact (tension sigma0 over h0 = w/sigma0), see :mod:`..adhesion.maugis`."""
+        return self.adhesion("maugis_dugdale", w, sigma0)
+
+    def adhesion(self, law: str = "jkr", *args, **params):
+        """The adhesive form of this contact under a registered cohesive law
+        (by name: ``"jkr"``, ...) with the law's parameters (positional in
+        its order or by name; unset ones symbolic), see
+        :mod:`linecontact_sym.contacts.adhesion`."""
+        from ..adhesion.contact import adhesive_contact
+        return adhesive_contact(self, law, *args, **params)
 
     def tangential(self, friction=S.mu):
         """The partial-slip tangential form of this contact under Coulomb
@@ -330,3 +345,14 @@ class LineContact(Contact):
 
     def report(self, quantities=("force", "pressure", "gap")) -> str:
         return super().report(quantities)
+
+
+def _direct_pressure(prof):
+    """(reference, notes) of the pressure of a smooth profile without closed
+    force law: one quadrature of the profile (:func:`~linecontact_sym.method.transforms.pressure_direct_quad`)."""
+    def reference(vals, dps):
+        fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x)}
+        with workdps(dps + 10):
+            return T.pressure_direct_quad(T.NumericProfile(prof, fixed).f1, vals, dps)
+    return reference, ("numbers by one quadrature from the profile (the bounded inversion of the punch equation, "
+                       "transforms.pressure_direct_quad), not Eq. (12) over the quadrature force law",)

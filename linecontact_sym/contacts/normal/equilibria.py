@@ -27,13 +27,12 @@ either, the search runs up to 4**40 times the law's length scale.
 [4**-20 s, a*] (s the length scale, :data:`SPAN`) is found by subdivision in ln a, split
 at the profile's breakpoints:
 
-* closed-form law with python-flint: dP/da (and d2P/da2) evaluated in ball
+* closed-form law (python-flint, a core dependency): dP/da (and d2P/da2) evaluated in ball
   arithmetic on each interval; an interval whose ball excludes 0 holds no
   stationary point, one with dP/da of opposite signs at its ends and a ball
   of d2P/da2 that excludes 0 holds exactly one.  This is a proof, up to the
   widths below.
-* quadrature law (or no python-flint, or a function without a ball
-  translation; the landscape's ``method`` and ``notes`` say which): an
+* quadrature law (or a function without a ball translation; the landscape's ``method`` and ``notes`` say which): an
   interval is excluded when the values of dP/da at its ends and log-midpoint
   have one sign and each is more than twice the largest change between them
   (the error bound assumes dP/da varies by at most twice its sampled change
@@ -51,13 +50,16 @@ stable where P increases.
 """
 from __future__ import annotations
 
+import contextlib
+import contextvars
 from dataclasses import dataclass
 
+import flint
 import mpmath
 
+from ...core.budget import Deadline
 from ...core.conversion import to_mpf
-from ...core.extras import require
-from ...core.errors import DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
+from ...core.errors import BudgetExceeded, DomainError, InadmissibleProfileError, NoPullOffError, VerificationError
 from ...core.roots import UNDEFINED, domain_end, root_in_log
 from .force_law import GUARD, PullOff
 from ...core.precision import workdps
@@ -77,6 +79,35 @@ BALL_GIVEUP = mpmath.mpf("1e-3")
 MAX_INTERVALS = 20000
 #: bits of the ball arithmetic
 BALL_PREC = 192
+
+
+#: the default wall-clock budget (seconds) of one numeric search at numbers
+#: (a pull-off, a half-width): generous, since a search is correct however long
+#: it takes; a budget passed by the caller is the deadline
+SEARCH_BUDGET = 120.0
+
+#: the deadline of the numeric searches running in this context (None: none)
+_DEADLINE = contextvars.ContextVar("linecontact_sym_search_deadline", default=None)
+
+
+@contextlib.contextmanager
+def searching_until(budget):
+    """Run the numeric searches of this module (scans, subdivisions, roots)
+    under a wall-clock ``budget`` (seconds, None: no limit): they check it
+    between evaluations and raise :class:`BudgetExceeded` when it is spent.
+    In-process and cheap (no fork): a search is a loop of mpmath or ball
+    evaluations, each short, so the check between them is a deadline."""
+    token = _DEADLINE.set(Deadline(budget) if budget is not None else None)
+    try:
+        yield
+    finally:
+        _DEADLINE.reset(token)
+
+
+def _check_deadline(what):
+    d = _DEADLINE.get()
+    if d is not None and d.expired():
+        raise BudgetExceeded(f"{what} did not finish within its budget of {d.budget:g} s")
 
 
 @dataclass(frozen=True)
@@ -113,7 +144,8 @@ class Landscape:
     def describe(self) -> str:
         end = {"admissible": "the end of the admissible range (dP0/da turns negative there)",
                "domain": "the end of the law's real domain", "search": "the search limit"}[self.end]
-        how = {"ball": "ball arithmetic on dP/da (python-flint): no stationary point missed",
+        how = {"convex": "the convexity of P0 (dP/da increasing: one sign change at most)",
+               "ball": "ball arithmetic on dP/da (python-flint): no stationary point missed",
                "ball+adaptive": "ball arithmetic on dP/da, with the sampled bound where the balls were "
                                 "inconclusive"}.get(self.method, "adaptive subdivision of dP/da with a sampled "
                                                                  "error bound")
@@ -143,8 +175,8 @@ class _Balls:
             d1 = sp.diff(expr, S.a)
             self.f = compile_arb(d1, [S.a])
             self.df = compile_arb(sp.diff(d1, S.a), [S.a])
-            self.flint = require("certified", "flint")
-        except Exception as exc:  # MissingExtraError, CertificationError: the numeric method
+            self.flint = flint
+        except Exception as exc:  # CertificationError (no ball translation): the numeric method
             self.reason = f"{type(exc).__name__}: {str(exc).splitlines()[0]}"
             self.f = None
         self.ok = None
@@ -212,6 +244,7 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
     while stack:
         l, r = stack.pop()
         count += 1
+        _check_deadline("the search for stationary points of P(a)")
         if count > MAX_INTERVALS:
             raise VerificationError(f"the search for stationary points of P(a) on [{mpmath.nstr(lo, 6)}, "
                                     f"{mpmath.nstr(hi, 6)}] needed more than {MAX_INTERVALS} intervals")
@@ -251,8 +284,23 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
     return sorted(out)
 
 
+def _on_flat(law, r) -> bool:
+    """Does the segment ending at ``r`` lie on the profile's flat (P0 = 0
+    there, :func:`~.force_law.flat_end`)?  dP/da has no sign change on it
+    (0, or -B1/(2 sqrt(a)) with adhesion), and the sampled bound, which
+    cannot exclude an interval where the slope is 0, need not look."""
+    flat = getattr(law.base, "flat", None)
+    if flat is None or not (law is law.base or law.monotone_term):
+        return False
+    return r <= flat * (1 + KINK_GAP / 2)   # the segment [., b(1 - KINK_GAP)]
+
+
 def _segments(law, lo, hi):
     """[lo, hi] cut at the breakpoints (KINK_GAP around each)."""
+    return _segments_raw(law, lo, hi)
+
+
+def _segments_raw(law, lo, hi):
     edges, kinks = [lo], []
     for b in law.breaks():
         if lo < b * (1 - KINK_GAP) and b * (1 + KINK_GAP) < hi:
@@ -271,13 +319,15 @@ def real_range(law):
         grid = [law.scale * mpmath.mpf(4)**j for j in range(-20, 41)]
         first = good = None
         for A in grid:
+            _check_deadline("the scan for the real domain of P(a)")
             try:
                 law.P(A)
                 law.dP(A)
             except UNDEFINED:
                 if good is None:
                     continue
-                return first, domain_end(lambda v: (law.P(v), law.dP(v)), good, A), "domain"
+                return first, domain_end(lambda v: (_check_deadline("the search for the end of the law's domain"),
+                                                    law.P(v), law.dP(v)), good, A), "domain"
             first = A if first is None else first
             good = A
         if good is None:
@@ -315,16 +365,21 @@ def admissible_range(law):
         notes = []
         first_neg = None
         segs, kinks = _segments(base, lo, hi)
-        if (reliable(base.dP) if base.expr is not None else base.dP)(lo) < 0:
+        # a closed form cancels next to a breakpoint (the rounded punch's
+        # P0 ~ (a - b)**(3/2) from terms of size a**2): its slope is read at
+        # the precision that resolves it, as everywhere in the scan
+        dP0 = reliable(base.dP) if base.expr is not None else base.dP
+        if dP0(lo) < 0:
             raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(lo, 6)}: no admissible "
                                            f"half-width (tensile edge pressure)")
-        for (l, r), b in zip(segs, kinks + [None]):
-            for cl, cr in _falling(base, l, r, balls, notes):
+        for (l, r), b in zip(segs, kinks + [None]) if not base.convex else ():
+            # (a convex P0 has dP0/da nondecreasing: >= 0 at lo, >= 0 everywhere)
+            for cl, cr in (_falling(base, l, r, balls, notes) if not _on_flat(base, r) else ()):
                 first_neg = root_in_log(base.dP, cl, cr)
                 break
             if first_neg is not None:
                 break
-            if b is not None and base.dP(b * (1 + KINK_GAP)) < 0:
+            if b is not None and dP0(b * (1 + KINK_GAP)) < 0:
                 first_neg = b
                 break
         note = ""
@@ -345,6 +400,9 @@ def landscape(law) -> Landscape:
         return law._landscape
     lo, hi, end, note = admissible_range(law)
     notes = [note] if note else []
+    if law.base.convex and (law is law.base or law.monotone_term):
+        law._landscape = _convex_landscape(law, lo, hi, end, notes)
+        return law._landscape
     with workdps(20):
         balls = _Balls(law)
         method = "ball" if balls.f is not None else "adaptive"
@@ -355,11 +413,11 @@ def landscape(law) -> Landscape:
         ext = []
         g = reliable(law.dP) if law.expr is not None else law.dP
         for (l, r), b in zip(segs, kinks + [None]):
-            for cl, cr in crossings(g, l, r, balls, notes):
+            for cl, cr in (crossings(g, l, r, balls, notes) if not _on_flat(law, r) else ()):
                 A = root_in_log(g, cl, cr)
                 ext.append(Extremum(A, law.P(A), "stationary", g(cl) < 0, (cl, cr)))
             if b is not None:
-                left, right = law.dP(b * (1 - KINK_GAP)), law.dP(b * (1 + KINK_GAP))
+                left, right = g(b * (1 - KINK_GAP)), g(b * (1 + KINK_GAP))
                 if (left < 0) != (right < 0):
                     ext.append(Extremum(b, law.P(b), "kink", left < 0, (b * (1 - KINK_GAP), b * (1 + KINK_GAP))))
         rising = g(hi_eval) >= 0
@@ -371,6 +429,37 @@ def landscape(law) -> Landscape:
                          f"problem); the sampled bound decided there")
     law._landscape = Landscape(lo, hi_eval, end, tuple(ext), method, tuple(notes), rising)
     return law._landscape
+
+
+def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
+    """The landscape where P0 is proven convex (:func:`~.force_law.convex_profile`):
+    dP/da = dP0/da - B1/(2 sqrt(a)) is then increasing on (0, oo), so it
+    changes sign at most once, from - to + (a minimum): found by walking a
+    factor-4 grid up from lo to the first a with dP/da >= 0, then the root.
+    No subdivision of the whole range (an exponentially growing P0 such as
+    that of cosh(x) - 1 left the subdivision no interval it could exclude)."""
+    with workdps(20):
+        g = reliable(law.dP) if law.expr is not None else law.dP
+        hi_eval = hi * (1 - KINK_GAP) if end != "search" else hi
+        ext = []
+        A_prev, A = None, lo
+        while True:
+            _check_deadline("the search for the stationary point of P(a)")
+            if g(A) >= 0:
+                break
+            if A >= hi_eval:
+                A = None
+                break
+            A_prev, A = A, min(4 * A, hi_eval)
+        rising = A is not None
+        if A is not None and A_prev is not None:
+            r = root_in_log(g, A_prev, A)
+            ext.append(Extremum(r, law.P(r), "stationary", True, (A_prev, A)))
+        if not rising and end != "search":
+            ext.append(Extremum(hi_eval, law.P(hi_eval), "end", True, (hi_eval, hi_eval)))
+        how = ("P0 convex on (0, oo) (h2 = 2 f2 + t f3 >= 0 for t > 0, proven by the assumptions of SymPy): "
+               "dP/da increasing, one sign change at most, bracketed on a factor-4 grid")
+    return Landscape(lo, hi_eval, end, tuple(ext), "convex", tuple(notes) + (how,), rising)
 
 
 # ---------------------------------------------------------------- minimum (method A)
@@ -392,14 +481,15 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
     listed; the extrema are located on ``scan_law`` (default ``law``).
     Raises :class:`NoPullOffError` where P has no finite negative minimum."""
     scan_law = scan_law or law
-    if getattr(law, "gamma", None) == 0:
-        raise NoPullOffError("no adhesion (gamma = 0): P(a) = P0(a) >= 0, no tensile pull-off")
+    if law.inactive:
+        raise NoPullOffError(f"{law.inactive if isinstance(law.inactive, str) else 'no adhesion'}: "
+                             f"P(a) = P0(a) >= 0, no tensile pull-off")
     land = landscape(scan_law)
     if not land.rising_at_end and land.end == "search":
         raise NoPullOffError(
             f"P(a) is still decreasing at a = {mpmath.nstr(land.hi, 6)} (the end of the search range): P(a) "
             f"has no finite minimum, no finite pull-off (the profile grows no faster than sqrt(x) there, "
-            f"so the adhesive term sqrt(2 pi a gamma E*) dominates)")
+            f"so the adhesive term dominates)")
     with workdps(dps + GUARD):
         mins = [_refine(law, e, dps) for e in land.minima]
         neg = [e for e in mins if e.force < 0]
@@ -411,7 +501,7 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
         note = land.describe()
         if best.kind == "end":
             note += ("; the global minimum is at the end of the admissible range: the lowest load the "
-                     "frictionless JKR solution describes, not a proven separation load")
+                     "frictionless adhesive solution describes, not a proven separation load")
         return PullOff(+best.force, -best.force, +best.half_width, best.kind, None, tuple(mins), note)
 
 
@@ -483,6 +573,6 @@ def half_width_at(law, load, dps: int = 30):
     return roots[0]
 
 
-__all__ = ["Extremum", "Landscape", "Equilibrium", "crossings", "real_range", "admissible_range", "landscape",
+__all__ = ["Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings", "real_range", "admissible_range", "landscape",
            "minimum", "equilibria", "equilibria_at", "half_width_at",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]

@@ -20,8 +20,10 @@ Two routes to the same law, which share nothing but the profile:
 
             J_b = f'(b+) - f'(b-) the slope jump at a kink b < a.
 
-The JKR-adhesive law (Eq. 33) is P(a) = P0(a) - B1 sqrt(a) with
-B1 = sqrt(2 pi gamma E*) (:meth:`ForceLaw.with_adhesion`).
+An adhesive law is a ForceLaw built on the non-adhesive one (its ``base``)
+by a cohesive law (:mod:`linecontact_sym.contacts.adhesion.law`): JKR's
+P(a) = P0(a) - sqrt(2 pi a gamma E*) (Eq. 33), or one whose P(a) needs an
+inner solve at each a.
 """
 from __future__ import annotations
 
@@ -76,16 +78,20 @@ class ForceLaw:
     where the law is not real.  ``breaks`` are the profile's breakpoints
     (kinks of P), ``scale`` a length scale for the scans."""
 
-    def __init__(self, P, dP, breaks=(), mode: str = "closed", fallback=None, B1=None, expr=None,
-                 conditions=()):
+    def __init__(self, P, dP, breaks=(), mode: str = "closed", fallback=None, expr=None,
+                 conditions=(), float_P=None, inactive=False):
         self._P, self._dP = P, dP
         self.breaks_exact = tuple(sorted(breaks))
         self.mode = mode
         self.fallback = fallback   # a quadrature law used where the closed form does not hold
-        self.B1 = B1               # adhesive term sqrt(2 pi gamma E*) (None: non-adhesive)
+        self.float_P = float_P     # float_P(P0f) -> P(a) in float64 from P0 in float64 (adhesive laws; optional)
+        self.inactive = inactive   # an adhesive law that exerts no adhesion (JKR with gamma = 0)
         self.expr = expr           # P(a) as a SymPy expression in a (closed form), else None
         self.conditions = tuple(conditions)   # where ``expr`` holds (relations in a)
         self.base = self           # the non-adhesive law P0 (admissibility is read from it)
+        self.convex = False        # P0 proven convex on (0, oo) (:func:`convex_profile`)
+        self.flat = None           # the profile is 0 on [0, flat]: P0 = 0 for a <= flat (:func:`flat_end`)
+        self.monotone_term = False  # (a law on top of P0) see :meth:`on_top`
         self._landscape = None
         self._balls = None
 
@@ -182,31 +188,34 @@ class ForceLaw:
         ``values``: the closed form where the engine found one (``mode='closed'``,
         with the quadrature as fallback off its domain), else the quadrature."""
         quad = cls.from_profile(contact.profile, values)
+        cache = contact._caches()
+        if "_convex" not in cache:
+            cache["_convex"] = convex_profile(contact.profile)
+        quad.convex = cache["_convex"]
+        quad.flat = flat_end(contact.profile, values)
         fd = contact.derivation("force")
         if mode == "quad" or not fd.closed_form:
             return quad
         pf = {k: v for k, v in values.items() if k not in (S.a, S.x)}
         breaks = [sp.N(bp.xreplace(pf), 80) for bp in contact.profile.breakpoints]
-        return cls.from_closed_form(fd.expr, values, fd.conditions, [bp for bp in breaks if bp > 0], fallback=quad)
+        law = cls.from_closed_form(fd.expr, values, fd.conditions, [bp for bp in breaks if bp > 0], fallback=quad)
+        law.convex, law.flat = quad.convex, quad.flat
+        return law
 
-    def with_adhesion(self, gamma, E_star) -> "ForceLaw":
-        """The JKR law P(a) = P0(a) - sqrt(2 pi a gamma E*) (Eq. 33)."""
-        g, E = to_basic_number(gamma), to_basic_number(E_star)
-        if g < 0:
-            raise DomainError(f"the work of adhesion must be >= 0, got {g}")
-
-        def B1():
-            return mpmath.sqrt(2 * mpmath.pi * to_mpf(g) * to_mpf(E))
-        P0, dP0 = self._P, self._dP
-        expr = None if self.expr is None else self.expr - sp.sqrt(2 * sp.pi * g * E * S.a)
-        law = ForceLaw(lambda A: P0(A) - B1() * mpmath.sqrt(A), lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
-                       self.breaks_exact, self.mode, B1=B1, expr=expr, conditions=self.conditions)
-        law.gamma = g
+    def on_top(self, P, dP, expr=None, float_P=None, inactive=False, monotone_term=False) -> "ForceLaw":
+        """A law built on this one (an adhesive law on the non-adhesive
+        ``self``, its ``base``): P, dP callables of a (mpf), ``expr`` the
+        closed form in ``a`` if any, ``float_P`` see the constructor;
+        ``monotone_term``: the slope of P - P0 is < 0 and increasing in a
+        (JKR's -B1 sqrt(a)), which the searches of :mod:`.equilibria` use
+        (a convex P0, a flat)."""
+        law = ForceLaw(P, dP, self.breaks_exact, self.mode, expr=expr, conditions=self.conditions,
+                       float_P=float_P, inactive=inactive)
         law.base = self
-        if self.fallback is not None:
-            law.quad = self.fallback.with_adhesion(g, E)
-        elif self.mode == "quad":
-            law.quad = law
+        # what the searches may assume of P - P0 (equilibria): only a term whose slope is
+        # < 0 and increasing (JKR's -B1 sqrt(a)) keeps dP/da increasing where P0 is convex
+        # and leaves no stationary point on a flat
+        law.monotone_term = monotone_term
         return law
 
     # ----------------------------------------------------------- values
@@ -237,6 +246,41 @@ class ForceLaw:
 FALLBACK_DPS = 40
 
 
+def flat_end(profile, values):
+    """b (mpf, at the working precision) where the profile is 0 on 0 <= x < b
+    (a flat in full contact: the worn cylinder, the rounded punch), else None.
+    There f' = 0, so P0(a) = 0 and dP0/da = 0 for a <= b exactly: no sign
+    change of dP0/da (nor of dP/da = -B1/(2 sqrt(a)) with adhesion) is there
+    to find, and a search that cannot exclude an interval where the slope is
+    0 (the sampled bound) need not look."""
+    if not profile.is_piecewise or profile.pieces[0].expr != 0:
+        return None
+    pf = {k: v for k, v in values.items() if k not in (S.a, S.x)}
+    b = profile.pieces[0].hi.xreplace(pf)
+    if not b.is_number:
+        return None
+    return to_mpf(sp.N(b, mpmath.mp.dps + 20))
+
+
+def convex_profile(profile) -> bool:
+    """Is P0(a) convex on (0, oo), proven from the profile?  With h(t) = t f'(t),
+    P0''(a) = E* int_0^{pi/2} sin(phi)**2 h''(a sin phi) dphi, so P0 is convex
+    where h'' = 2 f2 + t f3 >= 0 for every t > 0 (f2, f3 the second and third
+    derivatives of f); SymPy's assumptions decide it (t and the parameters
+    positive) for a profile of one analytic piece (x**2/(2R), c x**n with
+    n >= 1, cosh(x) - 1 ...).  A kink adds J b**2/sqrt(a**2 - b**2) to P0',
+    which falls: piecewise profiles are not taken.  False when undecided."""
+    if profile.is_piecewise:
+        return False
+    tp = sp.Dummy("t", positive=True)
+    f = profile.expr
+    try:
+        h2 = (2 * sp.diff(f, S.x, 2) + S.x * sp.diff(f, S.x, 3)).xreplace({S.x: tp})
+        return bool(h2.is_nonnegative)
+    except Exception:   # an assumption query SymPy cannot answer
+        return False
+
+
 def to_basic_number(v):
     """A SymPy number for a value (exact where given exactly)."""
     v = to_basic(v)
@@ -245,4 +289,4 @@ def to_basic_number(v):
     return v
 
 
-__all__ = ["ForceLaw", "PullOff", "GUARD"]
+__all__ = ["ForceLaw", "PullOff", "GUARD", "convex_profile", "flat_end"]

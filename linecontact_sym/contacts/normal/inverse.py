@@ -3,21 +3,21 @@ force law."""
 from __future__ import annotations
 
 import random
-import time
 
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.budget import DEFAULT_BUDGET, run_with_budget
+from ...core.budget import DEFAULT_BUDGET, checked_budget, run_with_budget
 from ...core.conversion import rational
 from ...core.errors import BudgetExceeded, ProfileError
 from ...method import transforms as T
-from ...method.derivation import Derivation, derive, fallback_step
+from ...method.derivation import Derivation, derive, fallback_step, remembered, timed
 from ...method.rules import Problem, Step
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 
 
+@timed
 def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
                        verify_points: int = 5) -> Derivation:
     """Eq. (9): the profile f(x) whose contact has the force law ``force_law``
@@ -32,7 +32,6 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
     """
     if isinstance(force_law, str) or not isinstance(force_law, sp.Basic):
         raise ProfileError(f"the force law must be a SymPy expression in a, got {force_law!r}")
-    t0 = time.perf_counter()
     free = force_law.free_symbols - {S.a, S.E_star}
     declared = set(params or ())
     for s in free:
@@ -58,32 +57,53 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
         return reference({**vals, S.a: vals[S.x]}, dps)
     d = derive("profile", Problem("profile", force_law=force_law), reference=reference, sampler=sampler,
                fallback=T.profile_integral(force_law), budget=budget, points=verify_points,
-               variables=(S.a, S.E_star) + psyms, t0=t0)
+               variables=(S.a, S.E_star) + psyms)
     variables = (S.x, S.E_star) + psyms
     if not d.closed_form:
-        return Derivation("profile", d.expr.subs(S.a, S.x), False, d.step, (), d.verification, d.seconds,
-                          d.notes, reference_in_x, variables, d.attempts, d.cached)
+        return Derivation("profile", expr=d.expr.subs(S.a, S.x), closed_form=False, step=d.step,
+                          verification=d.verification, seconds=d.seconds, notes=d.notes, reference=reference_in_x,
+                          variables=variables, attempts=d.attempts, cached=d.cached)
     sub = {S.a: S.x}  # the profile is reported in x
     step = Step(d.step.rule, d.expr.xreplace(sub), tuple(c.xreplace(sub) for c in d.conditions), d.step.notes)
-    return Derivation("profile", step.expr, True, step, step.conditions, d.verification, d.seconds, d.notes,
-                      reference_in_x, variables, d.attempts, d.cached)
+    return Derivation("profile", expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
+                      verification=d.verification, seconds=d.seconds, notes=d.notes, reference=reference_in_x,
+                      variables=variables, attempts=d.attempts, cached=d.cached)
 
 
-def derive_half_width(contact, load=S.P) -> Derivation:
+@timed
+def derive_half_width(contact, load=S.P, budget=None) -> Derivation:
     """The half-width a(P) of a frictionless contact: the closed-form inverse of
-    the force law where ``sympy.solve`` finds one (under the contact's budget),
-    each candidate checked by substitution at random points (P(a(P)) = P to the
-    contact's digits), else the unevaluated P(a) = P with a numeric root as
-    reference."""
-    t0 = time.perf_counter()
+    the force law where ``sympy.solve`` finds one (under ``budget`` seconds,
+    default the contact's), each candidate checked by substitution at random
+    points (P(a(P)) = P to the contact's digits), else the unevaluated
+    P(a) = P with a numeric root as reference.  Remembered in memory and on
+    disk (:func:`~linecontact_sym.method.derivation.remembered`)."""
+    budget = contact.budget if budget is None else checked_budget(budget)
     fd = contact.derivation("force")
-    expr, notes = None, []
+    parts = ("half_width", contact.profile.expr, dict(contact.profile.ranges), fd.expr, load, contact.points,
+             contact.digits)
+    return remembered(parts, lambda: _derive_half_width(contact, load, fd, budget), budget,
+                      lambda d: _half_width_reference(contact, load))
+
+
+def _half_width_reference(contact, load):
+    def reference(vals, dps):
+        fixed = {k: v for k, v in vals.items() if k != load}
+        law = ForceLaw.from_contact(contact, fixed)
+        return half_width_at(law, vals[load], dps)
+    return reference
+
+
+def _derive_half_width(contact, load, fd, budget) -> Derivation:
+    expr, notes, attempts = None, [], []
     if fd.closed_form and not fd.expr.has(sp.Piecewise):
         try:
-            sols = run_with_budget(_solve_for_a, fd.expr, load, seconds=contact.budget)
+            sols = run_with_budget(_solve_for_a, fd.expr, load, seconds=budget)
         except BudgetExceeded:
             sols = []
-            notes.append(f"sympy.solve found nothing within {contact.budget:g} s")
+            shown = "no limit" if budget is None else f"{budget:g} s"
+            notes.append(f"sympy.solve found nothing within {shown}")
+            attempts.append(("solve_force_law", f"no result within {shown}"))
         except (NotImplementedError, ValueError, TypeError) as exc:
             sols = []
             notes.append(f"sympy.solve: {exc}".splitlines()[0])
@@ -102,20 +122,16 @@ def derive_half_width(contact, load=S.P) -> Derivation:
             if good == contact.points:
                 expr = cand
                 break
-
-    def reference(vals, dps):
-        fixed = {k: v for k, v in vals.items() if k != load}
-        law = ForceLaw.from_contact(contact, fixed)
-        return half_width_at(law, vals[load], dps)
+    reference = _half_width_reference(contact, load)
     variables = (load,) + contact.variables
     if expr is not None:
         step = Step("solve_force_law", expr, (), ("sympy.solve of P(a) = P, root checked by substitution "
                                                   "at random points",))
-        return Derivation("half_width", expr, True, step, (), None, time.perf_counter() - t0,
-                          tuple(notes), reference, variables)
-    return Derivation("half_width", sp.Eq(fd.expr, load), False,
-                      fallback_step("numeric root of P(a) = P (no closed-form inverse)"), (), None,
-                      time.perf_counter() - t0, tuple(notes), reference, variables)
+        return Derivation("half_width", expr=expr, closed_form=True, step=step, notes=tuple(notes), reference=reference,
+                          variables=variables)
+    return Derivation("half_width", expr=sp.Eq(fd.expr, load), closed_form=False,
+                      step=fallback_step("numeric root of P(a) = P (no closed-form inverse)"), notes=tuple(notes),
+                      reference=reference, variables=variables, attempts=tuple(attempts))
 
 
 def _solve_for_a(Pexpr, load):

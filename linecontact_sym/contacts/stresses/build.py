@@ -5,15 +5,14 @@ potentials where they are elementary, Popov's punch superposition or the
 Cauchy quadrature otherwise).  Functions of the field object ``sf``."""
 from __future__ import annotations
 
-import time
 
 import mpmath
 import numpy as np
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.conversion import nsimplify_basic, rational
-from ...method.derivation import Derivation, fallback_step
+from ...core.conversion import nsimplify_basic, rational, real_mpf, to_mpf
+from ...method.derivation import Derivation, fallback_step, remembered_many, timed
 from ...method.rules import Step
 from ...method.verification import verify_many
 from . import field as F
@@ -54,7 +53,7 @@ def _mp_pressure(contact, vals, a_value, dps):
     """p(s) on [-a, a] as an mpmath callable (even, 0 outside), a = ``a_value``."""
     d = contact.derivation("pressure")
     fixed = {k: v for k, v in vals.items() if k not in (S.a, S.x, S.z)}
-    A = mpmath.mpf(sp.N(a_value, dps + 20)) if not isinstance(a_value, mpmath.mpf) else a_value
+    A = to_mpf(a_value)
     if d.closed_form:
         fn = sp.lambdify(S.x, d.expr.xreplace({**fixed, S.a: a_value}), "mpmath")
     else:
@@ -84,10 +83,10 @@ def _mp_tractions(sf, vals, dps):
     breaks += list(sf.breaks)
     q = None
     if sf.tangential == "sliding":
-        m = mpmath.mpf(sp.N(sf.mu.xreplace(vals), dps + 20))
+        m = real_mpf(sf.mu.xreplace(vals))
         q = lambda sv: m * p(sv)  # noqa: E731
     elif sf.tangential == "partial_slip":
-        m = mpmath.mpf(sp.N(sf.mu.xreplace(vals), dps + 20))
+        m = real_mpf(sf.mu.xreplace(vals))
         cv = sf.stick.xreplace(vals)
         pc = _mp_pressure(sf.contact, vals, cv, dps)
         q = lambda sv: m * (p(sv) - pc(sv))  # noqa: E731
@@ -111,7 +110,7 @@ def flamant_reference(sf):
     def reference(vals, dps):
         with workdps(dps + 10):
             p, q, breaks = _mp_tractions(sf, vals, dps)
-            num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
+            num = [to_mpf(vals[k]) for k in (S.a, S.x, S.z)]
             sx, sz, txz = flamant_stresses(p, q, *num, breaks=breaks, dps=dps)
         return {"sigma_x": sx, "sigma_z": sz, "tau_xz": txz}
     return reference
@@ -125,14 +124,14 @@ def _punch_reference(sf):
         with workdps(dps + 10):
             fixed = {k: v for k, v in vals.items() if k in (S.E_star,) + tuple(sf.contact.params)}
             law = ForceLaw.from_contact(sf.contact, fixed)
-            num = [mpmath.mpf(sp.N(vals[k], dps + 20)) for k in (S.a, S.x, S.z)]
+            num = [to_mpf(vals[k]) for k in (S.a, S.x, S.z)]
             G, dG = punch_potentials(law.dP, *num, breaks=law.breaks(), dps=dps)
             H = dH = 0
             if sf.tangential is not None:
-                m = mpmath.mpf(sp.N(sf.mu.xreplace(vals), dps + 20))
+                m = real_mpf(sf.mu.xreplace(vals))
                 H, dH = m * G, m * dG
                 if sf.tangential == "partial_slip":
-                    cv = mpmath.mpf(sp.N(sf.stick.xreplace(vals), dps + 20))
+                    cv = real_mpf(sf.stick.xreplace(vals))
                     Gc, dGc = punch_potentials(law.dP, cv, num[1], num[2], law.breaks(), dps)
                     H, dH = H - m * Gc, dH - m * dGc
             sx, sz, txz = kolosov_stresses(G, dG, H, dH, num[2], mpmath.re, mpmath.im, mpmath.pi)
@@ -150,12 +149,12 @@ def combine_reference(ref, make):
         c = full(vals, dps)
         with workdps(dps + 10):
             sx, sz, txz = (sp.Float(c[k], dps + 10) for k in ("sigma_x", "sigma_z", "tau_xz"))
-            return mpmath.mpf(sp.N(make(sx, sz, txz).xreplace(vals), dps + 10))
+            return real_mpf(make(sx, sz, txz).xreplace(vals))
     return reference
 
 
+@timed
 def derive_components(sf) -> dict:
-    t0 = time.perf_counter()
     G = sf.derivation("cauchy_transform").expr
     H = sf.tangential_transform()
     exprs = dict(zip(("sigma_x", "sigma_z", "tau_xz"), symbolic_stresses(G, H)))
@@ -174,14 +173,53 @@ def derive_components(sf) -> dict:
     G_rule = sf.derivation("cauchy_transform").rule
     out = {}
     for k, e in exprs.items():
-        def ref(vals, dps, k=k):
-            return full(vals, dps)[k]
-        ref.full = full
+        ref = component_reference(full, k)
         step = Step(f"kolosov({G_rule})", e, (), ("Kolosov-Muskhelishvili formulas from G and H",)) if closed \
             else fallback_step("no closed form of the potentials: Flamant quadrature")
-        out[k] = Derivation(k, e, closed, step, (), recs.get(k), time.perf_counter() - t0, tuple(notes), ref,
-                            (S.a, S.x, S.z) + sf.variables)
+        out[k] = Derivation(k, expr=e, closed_form=closed, step=step, verification=recs.get(k), notes=tuple(notes),
+                            reference=ref, variables=(S.a, S.x, S.z) + sf.variables)
     return out
+
+
+def _store_parts(sf, what):
+    """What names a field's problem for the on-disk store (None: a callable
+    traction, which is code, not data: not stored)."""
+    if callable(sf.tangential) and not isinstance(sf.tangential, sp.Basic):
+        return None
+    c = sf.contact
+    return (what, c.profile.expr, dict(c.profile.ranges), c.derivation("force").expr, sf.tangential, sf.mu,
+            sf.nu, sf.stick, tuple(sf.breaks), sf.verify, sf.points, c.budget)
+
+
+def remembered(sf, what, make, rebuild):
+    """``make()`` (a tuple of derivations) remembered in memory and on disk
+    (:func:`~linecontact_sym.method.derivation.remembered_many`, the store's
+    get/put by key), unless the traction is a callable."""
+    parts = _store_parts(sf, what)
+    return make() if parts is None else remembered_many(parts, make, sf.contact.budget, rebuild)
+
+
+def remembered_components(sf) -> dict:
+    """:func:`derive_components`, remembered with their verification; the
+    Flamant reference of stored ones is rebuilt (closures are not stored)."""
+    full = []
+
+    def rebuild(d):
+        if not full:
+            sf.contact.derivation("pressure")
+            full.append(flamant_reference(sf))
+        d.reference = component_reference(full[0], d.quantity)
+        return d
+    ds = remembered(sf, "stress_components", lambda: tuple(derive_components(sf).values()), rebuild)
+    return {d.quantity: d for d in ds}
+
+
+def component_reference(full, k):
+    """The reference of one stress component from the shared Flamant reference."""
+    def ref(vals, dps):
+        return full(vals, dps)[k]
+    ref.full = full
+    return ref
 
 
 _ELEMENTARY = (sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Number, sp.NumberSymbol, sp.core.numbers.ImaginaryUnit, sp.log,
@@ -245,4 +283,4 @@ def build_field(sf, vals) -> F.FieldEvaluator:
     return F.FieldEvaluator(normal, tangential, nu, friction=mu, mean_pressure=force / (2 * float(vals[S.a])))
 
 
-__all__ = ["derive_components", "build_field", "flamant_reference", "sampler"]
+__all__ = ["derive_components", "remembered_components", "remembered", "component_reference", "build_field", "flamant_reference", "sampler"]

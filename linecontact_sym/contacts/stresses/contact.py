@@ -20,7 +20,6 @@ quadrature of the Flamant integrals of p and q (:mod:`.reference`).
 """
 from __future__ import annotations
 
-import time
 
 import numpy as np
 import sympy as sp
@@ -29,13 +28,14 @@ from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
 from ...core.ranges import check_stick, check_value
 from ...parsing import user_value
-from ...method.derivation import Derivation, fallback_step, values_by_name
+from ...method.derivation import Derivation, fallback_step, values_by_name, timed
 from ...method.rules import Step
 from . import build as B
 from . import extrema as X
 from . import field as F
 from ..base import ContactOn, Quantity
 from .kolosov import cauchy_transform, punch_integral, t
+from ...core.conversion import real_mpf, to_mpf
 from ...core.precision import workdps
 
 #: the integration variable of a traction given as an expression (real: s < 0 too)
@@ -87,6 +87,9 @@ class StressField(ContactOn):
     max_von_mises_depth = _mx("z(max sigma_vM)", "depth of the largest von Mises stress", r"z_{\mathrm{vM}}")
     max_tresca = _mx("max sigma_T", "largest Tresca stress", r"\sigma_{\mathrm{T},\max}")
     max_tresca_depth = _mx("z(max sigma_T)", "depth of the largest Tresca stress", r"z_{\mathrm{T}}")
+
+    # the numeric fields built per parameter point are rebuilt, not pickled
+    _transient = ("_cache", "_laws", "_fields")
 
     def __init__(self, contact, tangential=None, mu=S.mu, nu=S.nu, stick=None, breaks=(), verify=True,
                  points: int = 4):
@@ -143,16 +146,18 @@ class StressField(ContactOn):
         return sp.diff(self.contact.derivation("force").expr, S.a)
 
     def _derive_cauchy_transform(self) -> Derivation:
-        t0 = time.perf_counter()
+        return B.remembered(self, "cauchy_transform", lambda: (self._cauchy_transform(),), lambda d: d)[0]
+
+    def _cauchy_transform(self) -> Derivation:
         D = self._density()
         step, attempts = cauchy_transform(D, self.contact.budget)
         if step is None:
             expr = punch_integral(D.subs(S.a, t))
-            return Derivation("cauchy_transform", expr, False, fallback_step(), (), None, time.perf_counter() - t0,
-                              tuple(f"{r}: {w}" for r, w in attempts), None, (S.a, S.zeta) + self.variables,
-                              tuple(attempts))
-        return Derivation("cauchy_transform", step.expr, True, step, step.conditions, None,
-                          time.perf_counter() - t0, (), None, (S.a, S.zeta) + self.variables, tuple(attempts))
+            return Derivation("cauchy_transform", expr=expr, closed_form=False, step=fallback_step(),
+                              notes=tuple(f"{r}: {w}" for r, w in attempts), variables=(S.a, S.zeta) + self.variables,
+                              attempts=tuple(attempts))
+        return Derivation("cauchy_transform", expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
+                          variables=(S.a, S.zeta) + self.variables, attempts=tuple(attempts))
 
     def tangential_transform(self):
         """H(zeta) = int q(s)/(zeta - s) ds of the tangential traction (an
@@ -175,7 +180,7 @@ class StressField(ContactOn):
     def _components(self):
         cache = self._caches()
         if "_components" not in cache:
-            cache["_components"] = B.derive_components(self)
+            cache["_components"] = B.remembered_components(self)
         return cache["_components"]
 
     def _derive_sigma_x(self):
@@ -193,8 +198,9 @@ class StressField(ContactOn):
         d0 = c["sigma_x"]
         step = Step(name, expr, d0.conditions, (note,)) if d0.closed_form else fallback_step(note)
         extra = self.nu_symbols if name in ("sigma_y", "von_mises", "tresca") else ()
-        return Derivation(name, expr, d0.closed_form, step, d0.conditions, d0.verification, d0.seconds, (note,),
-                          B.combine_reference(d0.reference, make), d0.variables + extra)
+        return Derivation(name, expr=expr, closed_form=d0.closed_form, step=step, conditions=d0.conditions,
+                          verification=d0.verification, seconds=d0.seconds, notes=(note,),
+                          reference=B.combine_reference(d0.reference, make), variables=d0.variables + extra)
 
     def _derive_sigma_y(self):
         return self._from_components("sigma_y", lambda sx, sz, txz: self.nu * (sx + sz), "plane strain")
@@ -221,9 +227,7 @@ class StressField(ContactOn):
         given, is NaN (sigma_y, von Mises and Tresca are then NaN)."""
         syms = tuple(S.__dict__[n] for n in need) + self.variables + \
             tuple(q for q in self.nu_symbols if q.name in values)
-        # NumPy scalars as Python floats (core.conversion.exact_number parses repr(), which is
-        # 'np.float64(...)' under NumPy 2)
-        given = {k: (float(v) if isinstance(v, np.floating) else v) for k, v in values.items() if k not in ("x", "z")}
+        given = {k: v for k, v in values.items() if k not in ("x", "z")}
         try:
             vals = values_by_name(syms, given)
         except DomainError as exc:
@@ -263,11 +267,7 @@ class StressField(ContactOn):
             return lambda **kw: float(self.evaluate_at(name, dps=15, **{**params, **kw}))
         if name == "cauchy_transform":
             raise DomainError("the Cauchy transform is complex: use fn = sf.field(...).normal")
-
-        def fn(**kw):
-            kw = {**params, **kw}
-            return self.field(**kw)(kw["x"], kw["z"], name)
-        return fn
+        return FieldFunction(self, name, params)
 
     def maximum(self, criterion: str = "principal_shear", **values) -> X.StressMaximum:
         """The verified maximum of an equivalent stress ('principal_shear',
@@ -404,7 +404,8 @@ def _mp_criterion(sf, criterion, vals):
     H = sf.tangential_transform().xreplace(at)
     fns = [sp.lambdify(S.zeta, e, "mpmath") for e in (G, sp.diff(G, S.zeta), H, sp.diff(H, S.zeta))]
     nuv = sf.nu.xreplace(vals)
-    nu = mpmath.mpf(sp.N(nuv, 40)) if nuv.is_number else mpmath.nan
+    with workdps(40):
+        nu = to_mpf(nuv) if nuv.is_number else mpmath.nan
 
     def f(xv, zv):
         from .kolosov import kolosov_stresses
@@ -482,8 +483,8 @@ def _axis_closed_form(sf):
     return cache["_axis"]
 
 
+@timed
 def _derive_maximum(sf, name):
-    t0 = time.perf_counter()
     depth = name.endswith("_depth")
     criterion = _MAX[name.replace("_depth", "")]
     variables = (S.a,) + sf.variables + (sf.nu_symbols if criterion != "principal_shear" else ())
@@ -498,11 +499,11 @@ def _derive_maximum(sf, name):
             rec = _check_maximum(sf, expr, reference, variables)
             if rec.passed:
                 step = Step("axis_stationary_point", expr, (), ("root of d tau_1/dz on the axis x = 0 (sympy.solve)",))
-                return Derivation(name, expr, True, step, (), rec, time.perf_counter() - t0, (), reference,
-                                  variables)
+                return Derivation(name, expr=expr, closed_form=True, step=step, verification=rec, reference=reference,
+                                  variables=variables)
     expr = sp.Function(name)(*variables)
     step = fallback_step("verified numeric maximum: grid, Nelder-Mead, checked by a root of the gradient")
-    return Derivation(name, expr, False, step, (), None, time.perf_counter() - t0, (), reference, variables)
+    return Derivation(name, expr=expr, closed_form=False, step=step, reference=reference, variables=variables)
 
 
 def _check_maximum(sf, expr, reference, variables):
@@ -518,15 +519,15 @@ def _check_maximum(sf, expr, reference, variables):
             continue
         vals = {k: v for k, v in vals.items() if k in variables}
         with workdps(30):
-            val = mpmath.mpf(sp.N(expr.xreplace(vals), 40))
+            val = real_mpf(expr.xreplace(vals))
             digits.append(digits_agreeing(val, reference(vals, 30), 30))
         pts.append(vals)
     return VerificationRecord(tuple(pts), tuple(digits), 30, "2-D Nelder-Mead search of the field refined by an "
                               "mpmath root of the gradient", required=12)
 
 
+@timed
 def _derive_critical(sf, name, criterion):
-    t0 = time.perf_counter()
     variables = (S.a,) + tuple(v for v in sf.variables if v != S.mu) + \
         (sf.nu_symbols if criterion != "principal_shear" else ())
 
@@ -537,5 +538,23 @@ def _derive_critical(sf, name, criterion):
         raise LineContactError(f"{name} is defined for a sliding contact (tangential='sliding')")
     step = fallback_step("Brent root of (surface max - interior max) in mu, checked by bisection on "
                          "'the maximum is on the surface'")
-    return Derivation(name, sp.Function(name)(*variables), False, step, (), None, time.perf_counter() - t0, (),
-                      reference, variables)
+    return Derivation(name, expr=sp.Function(name)(*variables), closed_form=False, step=step, reference=reference,
+                      variables=variables)
+
+class FieldFunction:
+    """What :meth:`StressContact.to_numeric` returns for a field component:
+    ``fn(x=..., z=..., a=..., E_star=..., ...)`` (arrays of x and z).  Pickles
+    (the contact, the quantity and the fixed values; the field is built again
+    in the process that calls it), so a 500x500 grid can be cut into blocks
+    for worker processes or a Dask cluster
+    (:func:`~linecontact_sym.core.parallel.map_chunks`)."""
+
+    def __init__(self, contact, quantity, params):
+        self.contact, self.quantity, self.params = contact, quantity, dict(params)
+
+    def __call__(self, **kw):
+        kw = {**self.params, **kw}
+        return self.contact.field(**kw)(kw["x"], kw["z"], self.quantity)
+
+    def __repr__(self):
+        return f"<{self.quantity} of the stress field of {self.contact.contact.profile.expr}>"

@@ -33,6 +33,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...core.errors import DomainError
+from ...core.quadrature import tanh_sinh_levels
 from .kolosov import kolosov_stresses
 
 #: two successive tanh-sinh levels agreeing to this (relative to the integral of the absolute
@@ -45,25 +46,15 @@ _CHUNK = 2048
 
 
 def _ts_levels(hs=(4, 8, 16, 32, 64), tmax=4.0):
-    """Nested tanh-sinh node sets on (0, 1): per level the new nodes v, w = 1 - v
-    (ascending; both to full relative precision), weights (the level value is
-    h * sum weight * f), the number of nodes below 1/2 and the weights
-    arranged for interleaved real/imaginary parts (a (2n, 2) matrix)."""
-    hmax = hs[-1]
-    k = np.arange(-int(tmax * hmax), int(tmax * hmax) + 1)
-    tt = k / hmax
-    ps = np.pi / 2 * np.sinh(tt)
-    v = 1 / (1 + np.exp(-2 * ps))
-    w = 1 / (1 + np.exp(2 * ps))
-    phi = np.pi / 4 * np.cosh(tt) / np.cosh(ps)**2
-    seen = np.zeros(k.size, dtype=bool)
+    """The package's nested tanh-sinh node sets on (0, 1)
+    (:func:`~linecontact_sym.core.quadrature.tanh_sinh_levels`), per level
+    with the number of nodes below 1/2 and the weights arranged for
+    interleaved real/imaginary parts (a (2n, 2) matrix)."""
     out = []
-    for m in hs:
-        sel = (k % (hmax // m) == 0) & ~seen
-        seen |= sel
-        W = np.zeros((2 * int(sel.sum()), 2))
-        W[0::2, 0], W[1::2, 1] = phi[sel], phi[sel]
-        out.append((1.0 / m, v[sel], w[sel], phi[sel], int(np.count_nonzero(v[sel] < 0.5)), W))
+    for h, v, w, phi in tanh_sinh_levels(hs, tmax):
+        W = np.zeros((2 * v.size, 2))
+        W[0::2, 0], W[1::2, 1] = phi, phi
+        out.append((h, v, w, phi, int(np.count_nonzero(v < 0.5)), W))
     return out
 
 

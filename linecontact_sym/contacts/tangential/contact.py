@@ -85,7 +85,6 @@ direct boundary-element solution with a Coulomb active set).
 """
 from __future__ import annotations
 
-import time
 
 import sympy as sp
 
@@ -241,7 +240,7 @@ class TangentialLineContact(ContactOn):
     def _variables(self, *args):
         return tuple(args) + self.variables
 
-    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, t0, sampler,
+    def _finish(self, quantity, expr, closed, conditions, check, value, how, variables, sampler,
                 needs=("pressure",)):
         """Verify a closed form against ``check`` (30 digits at random points);
         a failed check or no closed form leaves a numeric derivation evaluated
@@ -262,12 +261,11 @@ class TangentialLineContact(ContactOn):
                 closed = False
         step = Step("cattaneo_mindlin", expr, conditions, (STEP_NOTES[quantity],)) if closed \
             else fallback_step("the normal solution it is built from has no closed form here")
-        return Derivation(quantity, expr, closed, step, conditions if closed else (), rec,
-                          time.perf_counter() - t0, notes + (states.CONDITIONS,),
-                          check if closed else value, variables)
+        return Derivation(quantity, expr=expr, closed_form=closed, step=step, conditions=conditions if closed else (),
+                          verification=rec, notes=notes + (states.CONDITIONS,), reference=check if closed else value,
+                          variables=variables)
 
     def _combination(self, quantity, what, terms, domain):
-        t0 = time.perf_counter()
         expr = sum(k * self._monotone(what, C) for k, C in terms)
         if what == "force":
             expr = sp.factor_terms(expr)
@@ -280,7 +278,7 @@ class TangentialLineContact(ContactOn):
             conds += (sp.Lt(S.x, S.a),)
         check, value, how = states.references(self, what, terms)
         args = (S.a,) + tuple(C for _, C in terms) + ((S.x,) if domain == "inside" else ())
-        return self._finish(quantity, expr, closed, conds, check, value, how, self._variables(*args), t0,
+        return self._finish(quantity, expr, closed, conds, check, value, how, self._variables(*args),
                             self._sampler("slip" if what == "slip" else domain, len(terms) > 1))
 
     # ----------------------------------------------------------- derivations
@@ -315,21 +313,22 @@ class TangentialLineContact(ContactOn):
         return self._cache["_energy"]
 
     def _derive_dissipated_energy(self):
-        t0 = time.perf_counter()
         W, _, closed = self._energy_parts()
         conds = tuple(self._normal("force").conditions) + (sp.Lt(S.c_s, S.a),) \
             + ((sp.Lt(self.c0, S.c_s),) if self.c0 != 0 else ())
         check, value, how = states.energy_references(self)
         return self._finish("dissipated_energy", W, closed, conds, check, value, how,
-                            self._variables(S.a, S.c_s), t0, self._sampler("any"), ("pressure", "gap"))
+                            self._variables(S.a, S.c_s), self._sampler("any"), ("pressure", "gap"))
 
     # ----------------------------------------------------------- stick zone
-    def _stick_half_width(self, force=S.Q, **values):
+    def _stick_half_width(self, force=S.Q, budget=None, **values):
         """Stick half-width at the tangential force Q (|Q| <= mu P).
 
         Symbolic Q: a :class:`Derivation` of c_s(a, Q) -- closed where the force
         law inverts (Hertz: sqrt(a^2 - 4 R |Q|/(pi E* mu)), i.e. c_s/a =
-        sqrt(1 - |Q|/(mu P))), else P(c_s) = P(a) - |Q|/mu solved numerically.
+        sqrt(1 - |Q|/(mu P))), else P(c_s) = P(a) - |Q|/mu solved numerically;
+        ``budget`` (seconds, default the contact's) is a deadline for the
+        inversion and its verification together; remembered on disk.
         Numeric Q with numbers for the parameters, and ``a`` or the normal load
         ``P``: the number (30 digits).  |Q| > mu P raises
         :class:`~linecontact_sym.core.errors.GrossSlidingError`."""
@@ -337,10 +336,10 @@ class TangentialLineContact(ContactOn):
         if Qv.is_number:
             return history.stick_half_width_at(self, Qv, values).c
         key = ("stick_half_width", Qv)
-        if key not in self._cache:
-            # derived once for the package's Q, then written in the user's own symbol
-            self._cache[key] = states.derive_stick_half_width(self, S.Q) if Qv == S.Q else \
-                states.in_terms_of(self, self._stick_half_width(S.Q), Qv)
+        if key not in self._cache or (not self._cache[key].closed_form and self._cache[key].attempts):
+            # derived for the package's Q, then written in the user's own symbol
+            self._cache[key] = states.derive_stick_half_width(self, S.Q, budget) if Qv == S.Q else \
+                states.in_terms_of(self, self._stick_half_width(S.Q, budget), Qv)
         return self._cache[key]
 
     def _derive_stick_half_width(self):

@@ -12,15 +12,15 @@ import numpy as np
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.conversion import exact_number, to_mpf
+from ...core.conversion import to_mpf
 from ...core.errors import DomainError, GrossSlidingError, LineContactError
 from ...core.ranges import check_values
 from ...core.roots import root_in_log
 from ...numeric.exports import lambdify_numpy, make_callable
-from ...parsing import to_sympy
+from ...parsing import user_value
 from . import reference as ref
 from ..normal.equilibria import half_width_at
-from .states import _law, _mu
+from .states import force_law_at, friction_at
 from ...core.precision import workdps
 
 #: |Q| within this relative distance of mu P is the onset of gross sliding (float64 inputs)
@@ -54,7 +54,7 @@ class FloatNormal:
             total = 0.0
             for t0, t1 in self._pieces(xv, A):
                 w0, w1 = np.sqrt(t0**2 - xv**2), np.sqrt(t1**2 - xv**2)
-                total += float(ref._gauss(lambda w: self.dP(np.sqrt(xv**2 + w**2)) / np.sqrt(xv**2 + w**2),
+                total += float(ref.gauss_root_end(lambda w: self.dP(np.sqrt(xv**2 + w**2)) / np.sqrt(xv**2 + w**2),
                                           w0, w1, 48))
             out[i] = total / np.pi
         return out
@@ -65,14 +65,14 @@ class FloatNormal:
         for i, xv in np.ndenumerate(np.abs(np.asarray(x, float))):
             if xv <= A:
                 continue
-            total = sum(float(ref._gauss(lambda sv: np.arccosh(xv / sv) * self.dP(sv), s0, s1, 48))
+            total = sum(float(ref.gauss_root_end(lambda sv: np.arccosh(xv / sv) * self.dP(sv), s0, s1, 48))
                         for s0, s1 in self._pieces(0.0, A))
             out[i] = float(self.f(xv)) - 2 * total / (np.pi * self.E)
         return out
 
     def integral(self, lo, hi, power):
         """int_lo^hi P(t)**power / t dt."""
-        return sum(float(ref._gauss(lambda tv: self.P(tv)**power / tv, t0, t1, 48)) for t0, t1 in self._pieces(lo, hi))
+        return sum(float(ref.gauss_root_end(lambda tv: self.P(tv)**power / tv, t0, t1, 48)) for t0, t1 in self._pieces(lo, hi))
 
     def energy(self, a, c, mu):
         """W(a, c) from the force law (see :mod:`.tangential`)."""
@@ -198,7 +198,7 @@ def _numbers(t, values):
     if "a" in values:                                           # where the normal solution holds (a < R, ...)
         t.contact.check_point({**vals, S.a: to_sympy_number(values["a"])})
     with workdps(30):
-        law = _law(t, vals)
+        law = force_law_at(t, vals)
         if "a" in values:
             A = to_mpf(to_sympy_number(values["a"]))
             c0 = to_mpf(sp.N(t.c0.xreplace(vals), 30))
@@ -240,7 +240,7 @@ def stick_half_width_at(t, Qv, values) -> TangentialState:
     """The monotonic-loading state at the tangential force Q (numbers)."""
     with workdps(30):
         vals, law, A = _numbers(t, values)
-        Pa, mu = law.P(A), _mu(t, vals)
+        Pa, mu = law.P(A), friction_at(t, vals)
         Qm = to_mpf(sp.N(Qv, 40))
         load = Pa - abs(Qm) / mu
         tol = Pa * ONSET_RTOL   # |Q| = mu P to float64 rounding is the onset
@@ -269,8 +269,9 @@ def reversal(t, Q_max, Q, values, branch) -> TangentialState:
 
 def to_sympy_number(v):
     """An exact SymPy number for a value (floats as the rational of their
-    shortest decimal, like the rest of the package)."""
-    return exact_number(v) if isinstance(v, float) else to_sympy(v)
+    shortest decimal): :func:`~linecontact_sym.parsing.user_value`, the one
+    reading of a parameter value."""
+    return user_value(v)
 
 
 @dataclass
@@ -333,7 +334,7 @@ def bem(t, n, values):
     fixed = {s.name: float(v) for s, v in vals.items() if s in set(t.contact.variables)}
     brs = [float(b) for b in law.breaks()]
     with workdps(30):
-        mu = float(_mu(t, vals))
+        mu = float(friction_at(t, vals))
     return ref.CoulombBEM(float(A), fixed["E_star"], mu, _float_fn(t.contact, "stiffness", fixed), n, brs)
 
 

@@ -194,7 +194,7 @@ def _F(u):
     return np.where(au > 0, u * np.log(np.where(au > 0, au, 1.0)) - u, 0.0)
 
 
-def _gauss(fn, lo, hi, n=24):
+def gauss_root_end(fn, lo, hi, n=24):
     """Gauss-Legendre on [lo, hi] after t = lo + (hi - lo) v^2 (removes a
     square-root endpoint behaviour at lo); vectorised over arrays lo, hi."""
     v, wts = np.polynomial.legendre.leggauss(n)
@@ -233,7 +233,7 @@ def element_pressures(dP, edges, a, breaks=()):
             if not ok.any():
                 continue
             lo, hi = np.where(ok, k0, 0.0), np.where(ok, k1, 1.0)
-            val = _gauss(lambda t: kernel(t, x1, x2), lo, hi)
+            val = gauss_root_end(lambda t: kernel(t, x1, x2), lo, hi)
             total += np.where(ok, val, 0.0)
     return total / (np.pi * (x2 - x1))
 

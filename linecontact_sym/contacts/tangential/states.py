@@ -5,16 +5,15 @@ loop-displacement forms from the force law, and the stick half-width.  The
 load histories at numbers are in :mod:`.history`."""
 from __future__ import annotations
 
-import time
 import mpmath
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.budget import run_with_budget
+from ...core.budget import Deadline, checked_budget, run_with_budget
 from ...core.conversion import float_values, rational, to_mpf
 from ...core.errors import BudgetExceeded, DomainError
 from ...method import transforms as T
-from ...method.derivation import Derivation, fallback_step
+from ...method.derivation import Derivation, fallback_step, remembered, timed
 from ...method.rules import Step
 from ...method.verification import verify
 from ...numeric.exports import make_callable
@@ -23,6 +22,7 @@ from ..normal.equilibria import half_width_at
 from ..normal.force_law import ForceLaw
 from ..sampling import point_sampler
 from ...core.precision import workdps
+from ...core.roots import root_in_log
 
 #: the conditions of validity, attached to every tangential derivation
 CONDITIONS = ("valid for: plane strain; elastically similar bodies or Dundurs' beta neglected; Coulomb friction "
@@ -37,7 +37,7 @@ def _fixed(t, vals) -> dict:
     return {k: v for k, v in vals.items() if k in keep}
 
 
-def _mu(t, vals):
+def friction_at(t, vals):
     return to_mpf(sp.N(t.mu.xreplace(float_values(vals, mpmath.mp.dps + 10)), mpmath.mp.dps + 5))
 
 
@@ -45,10 +45,10 @@ def _breaks(t, vals):
     return [to_mpf(sp.N(bp.xreplace(vals), mpmath.mp.dps + 5)) for bp in t.profile.breakpoints]
 
 
-def _law(t, vals) -> ForceLaw:
+def force_law_at(t, vals) -> ForceLaw:
     """The numeric force law at the values (cached on the contact per values and precision)."""
     fixed = _fixed(t, vals)
-    key = ("_law", mpmath.mp.dps, tuple(sorted((k.name, str(v)) for k, v in fixed.items())))
+    key = ("force_law_at", mpmath.mp.dps, tuple(sorted((k.name, str(v)) for k, v in fixed.items())))
     if key not in t._cache:
         t._cache[key] = ForceLaw.from_contact(t.contact, float_values(fixed, mpmath.mp.dps + 20))
     return t._cache[key]
@@ -65,7 +65,7 @@ def normal_fn(t, name, vals, A):
         fn = make_callable(d, "mpmath", dps, {k.name: to_mpf(sp.N(v, dps + 5)) for k, v in fixed.items()})
         A = to_mpf(A)
         return lambda X: mpmath.re(fn(a=A, x=X))
-    law = _law(t, vals)
+    law = force_law_at(t, vals)
     brs = law.breaks()
     if name == "pressure":   # zero on and beyond the edge (rounding may put X a hair past A)
         return lambda X: T.pressure_quad(law.dP, brs, {S.a: A, S.x: X}, mpmath.mp.dps) if abs(X) < A \
@@ -122,7 +122,7 @@ def references(t, what, terms):
         A = num(vals, S.a)
         pa = normal_fn(t, "pressure", vals, A)
         parts = [(k, num(vals, C), normal_fn(t, "pressure", vals, num(vals, C))) for k, C in terms]
-        mu = _mu(t, vals)
+        mu = friction_at(t, vals)
 
         def q(xi):
             xi = abs(xi)
@@ -131,7 +131,7 @@ def references(t, what, terms):
 
     def check(vals, dps):
         with workdps(dps + 10):
-            A, mu = num(vals, S.a), _mu(t, vals)
+            A, mu = num(vals, S.a), friction_at(t, vals)
             brs = _breaks(t, vals)
             if what == "traction":
                 X = num(vals, S.x)
@@ -149,12 +149,12 @@ def references(t, what, terms):
 
     def value(vals, dps):
         with workdps(dps + 10):
-            A, mu = num(vals, S.a), _mu(t, vals)
+            A, mu = num(vals, S.a), friction_at(t, vals)
             if what == "traction":
                 q, _, _ = q_superposed(vals)
                 return +q(num(vals, S.x))
             if what == "force":
-                law = _law(t, vals)
+                law = force_law_at(t, vals)
                 return +sum(k * mu * (law.P(A) - law.P(num(vals, C))) for k, C in terms)
             if what == "slip":
                 X = num(vals, S.x)
@@ -221,7 +221,7 @@ def _I(law, lo, hi, power, brs):
 
 
 def _delta_numeric(t, vals, C):
-    law, A, mu = _law(t, vals), to_mpf(sp.N(vals[S.a], mpmath.mp.dps + 5)), _mu(t, vals)
+    law, A, mu = force_law_at(t, vals), to_mpf(sp.N(vals[S.a], mpmath.mp.dps + 5)), friction_at(t, vals)
     E = to_mpf(sp.N(vals[S.E_star], mpmath.mp.dps + 5))
     I1 = _I(law, C, A, 1, law.breaks())
     return 2 * mu / (mpmath.pi * E) * (law.P(A) * mpmath.log(2) - law.P(C) * mpmath.log(2 * A / C) + I1)
@@ -241,12 +241,12 @@ def energy_references(t):
         with workdps(dps + 10):
             A, C, _ = nums(vals)
             pa, gc = normal_fn(t, "pressure", vals, A), normal_fn(t, "gap", vals, C)
-            return ref.friction_work(pa, gc, A, C, _mu(t, vals), _breaks(t, vals))
+            return ref.friction_work(pa, gc, A, C, friction_at(t, vals), _breaks(t, vals))
 
     def value(vals, dps):
         with workdps(dps + 10):
             A, C, E = nums(vals)
-            law, mu = _law(t, vals), _mu(t, vals)
+            law, mu = force_law_at(t, vals), friction_at(t, vals)
             brs = law.breaks()
             Pa, Pc = law.P(A), law.P(C)
             W = (Pa + Pc) * _I(law, C, A, 1, brs) - _I(law, C, A, 2, brs) - Pa * Pc * mpmath.log(A / C)
@@ -256,15 +256,32 @@ def energy_references(t):
 
 
 # =====================================================================  stick zone
-def derive_stick_half_width(t, Qv) -> Derivation:
+@timed
+def derive_stick_half_width(t, Qv, budget=None) -> Derivation:
     """c_s(a, Q): the force law's inverse at P(a) - |Q|/mu (closed where the
     engine inverts the force law), verified against the root of the quadrature
-    force law (Eq. 10*)."""
-    t0 = time.perf_counter()
+    force law (Eq. 10*).
+
+    ``budget`` (seconds, default the contact's) is a deadline for the whole
+    derivation: the inversion and the verification share it; a closed form
+    not verified in time is returned unevaluated (P(c_s) = P(a) - |Q|/mu
+    with its numeric root), with a note.  Remembered in memory and on disk
+    (:func:`~linecontact_sym.method.derivation.remembered`)."""
+    budget = t.contact.budget if budget is None else checked_budget(budget)
+    deadline = Deadline(budget)        # the force law's derivation (cached) counts too
     fd = t.contact.derivation("force")
-    load = fd.expr - sp.Abs(Qv) / t.mu
-    inv = t.contact.half_width(S.P)
-    conds = tuple(fd.conditions) + (sp.Lt(sp.Abs(Qv), t.mu * fd.expr),)
+    variables = (S.a, Qv) + t.variables
+    parts = ("stick_half_width", t.profile.expr, dict(t.profile.ranges), fd.expr, t.mu, Qv, t.contact.points,
+             t.contact.verify)
+    return remembered(parts, lambda: _derive_stick(t, Qv, fd, deadline), budget,
+                      lambda d: (_check_ref if d.closed_form else _value_ref)(t, Qv))
+
+
+def _check_ref(t, Qv):
+    """The independent reference of c_s: the root of P(c) = P(a) - |Q|/mu with
+    the quadrature force law of the profile (Eq. 10*), bracketed on (0, a]
+    (the law is non-decreasing on [c_s, a], :data:`CONDITIONS`): located at
+    17 digits, refined at the working precision."""
     prof = t.profile
 
     def check(vals, dps):
@@ -272,28 +289,70 @@ def derive_stick_half_width(t, Qv) -> Derivation:
             fixed = float_values(_fixed(t, vals), dps + 20)
             law = ForceLaw.from_profile(prof, fixed)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
-            L = law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / _mu(t, vals)
-            return half_width_at(law, L, dps)
+            L = law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / friction_at(t, vals)
+            return root_below(law.P, L, A)
+    return check
 
+
+def _value_ref(t, Qv):
     def value(vals, dps):
         with workdps(dps + 10):
-            law = _law(t, vals)
+            law = force_law_at(t, vals)
             A = to_mpf(sp.N(vals[S.a], dps + 15))
-            return half_width_at(law, law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / _mu(t, vals), dps)
+            return half_width_at(law, law.P(A) - abs(to_mpf(sp.N(vals[Qv], dps + 15))) / friction_at(t, vals), dps)
+    return value
+
+
+def root_below(P, load, A):
+    """The largest c in (0, A] with P(c) = load, for P(0+) = 0 <= load <= P(A)
+    and P non-decreasing on [c, A]: bisection in ln c at 17 digits, then the
+    root refined at the working precision around it (a few evaluations)."""
+    if load <= 0:
+        raise ValueError("no positive load below P(a)")
+    dps = mpmath.mp.dps
+    with workdps(17):
+        lo, k = A / 2, 0
+        while P(lo) >= load:
+            lo, k = lo / 4, k + 1
+            if k > 200:
+                raise ValueError("P(c) does not fall below the load as c -> 0")
+        approx = root_in_log(lambda c: P(c) - load, lo, A)
+    with workdps(dps):
+        return root_in_log(lambda c: P(c) - load, lo, A, approx=approx)
+
+
+def _derive_stick(t, Qv, fd, deadline) -> Derivation:
+    load = fd.expr - sp.Abs(Qv) / t.mu
+    left = deadline.left()
+    inv = t.contact._half_width(S.P, budget=None if left is None else max(left, 0.05))
+    conds = tuple(fd.conditions) + (sp.Lt(sp.Abs(Qv), t.mu * fd.expr),)
+    check = _check_ref(t, Qv)
     variables = (S.a, Qv) + t.variables
+    notes = (CONDITIONS,)
     if inv.closed_form and Qv == S.Q:
         expr = _tidy_root(sp.simplify(inv.expr.xreplace({S.P: load})))
-        rec = verify(expr, check, t._sampler("any", load=True), conds, n_points=t.contact.points,
-                     reference_name="root of P(c) = P(a) - |Q|/mu with the quadrature force law (Eq. 10*)") \
-            if t.contact.verify else None
+        rec = None
+        if t.contact.verify:
+            left = deadline.left()
+            rec = verify(expr, check, t._sampler("any", load=True), conds, n_points=t.contact.points,
+                         reference_name="root of P(c) = P(a) - |Q|/mu with the quadrature force law (Eq. 10*)",
+                         budget=max(left, 0.05) if left is not None else None)
         if rec is None or rec.passed:
             step = Step("invert_force_law", expr, conds, ("c_s = a(P(a) - |Q|/mu), the inverse of the force law",
                                                           CONDITIONS))
-            return Derivation("stick_half_width", expr, True, step, conds, rec, time.perf_counter() - t0,
-                              (CONDITIONS,), check, variables)
-    return Derivation("stick_half_width", sp.Eq(fd.expr.xreplace({S.a: S.c_s}), load), False,
-                      fallback_step("numeric root of P(c_s) = P(a) - |Q|/mu"), (), None, time.perf_counter() - t0,
-                      (CONDITIONS,), value, variables)
+            return Derivation("stick_half_width", expr=expr, closed_form=True, step=step, conditions=conds,
+                              verification=rec, notes=notes, reference=check, variables=variables)
+        why = ("not verified within the budget's remaining time" if not rec.points else
+               f"FAILED verification ({rec.min_digits:.1f} digits)")
+        notes = (f"closed form {expr} {why}; returned unevaluated",) + notes
+        attempts = (("invert_force_law", f"closed form {why}" + (" (no result within the budget)"
+                                                                 if not rec.points else "")),)
+        return Derivation("stick_half_width", expr=sp.Eq(fd.expr.xreplace({S.a: S.c_s}), load), closed_form=False,
+                          step=fallback_step("numeric root of P(c_s) = P(a) - |Q|/mu"), verification=rec, notes=notes,
+                          reference=_value_ref(t, Qv), variables=variables, attempts=attempts)
+    return Derivation("stick_half_width", expr=sp.Eq(fd.expr.xreplace({S.a: S.c_s}), load), closed_form=False,
+                      step=fallback_step("numeric root of P(c_s) = P(a) - |Q|/mu"), notes=notes,
+                      reference=_value_ref(t, Qv), variables=variables, attempts=inv.attempts)
 
 
 def in_terms_of(t, d: Derivation, Qv) -> Derivation:

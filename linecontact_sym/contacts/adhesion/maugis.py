@@ -1,0 +1,444 @@
+"""Maugis-Dugdale adhesion of line contacts of any profile: the JKR-to-rigid
+transition (Baney & Hui 1997 for the parabola; here for any profile through
+Popov's 2017 flat-punch superposition, see :mod:`.maugis_derive`).
+
+    md = contact.maugis_dugdale(w, sigma0)
+    md.conditions            # (bounded pressure, gap at c_D = h0) as SymPy equations
+    md.state(a, **values)    # c_D, P, pressure and gap profiles at a half-width
+    md.pull_off_at(**values) # load-control pull-off (global minimum or infimum P(0+))
+    md.model_choice(rtol, **values)   # JKR or MD, with the Maugis parameter
+
+The two conditions (derived per profile from the engine's force law P0(a)
+and adhesionless gap g0(x; a)):
+
+    P(a, c_D)  = P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2)                      (bounded pressure, K_I = 0)
+    h0 = w/sigma_0 = g0(c_D; a) + (4 sigma_0/(pi E*)) (sqrt(c_D^2 - a^2) acosh(c_D/a) - c_D log(c_D/a))
+
+JKR limit: sigma_0 -> oo gives c_D - a -> pi E* w/(4 sigma_0^2) and
+2 sigma_0 sqrt(c_D^2 - a^2) -> sqrt(2 pi a w E*), Popov's Eq. (31).
+
+Displacement control is not defined for line contacts: the indentation
+depth of a half-plane is not (Popov 2017, Eqs. 2-3: only differences of
+displacements are); there is no fixed-grips pull-off here.
+
+The Maugis parameter of any profile (``maugis_parameter``): Baney & Hui's
+lambda = 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3) equals, for the parabola,
+sqrt(2^(5/3) a_JKR/delta) with a_JKR the JKR pull-off half-width and
+delta = pi E* w/(4 sigma_0^2) the cohesive-zone length of the JKR limit
+(shown in the tests); the latter form defines lambda for every profile.
+"""
+from __future__ import annotations
+
+import time
+
+import mpmath
+import sympy as sp
+
+from ...core import symbols as S
+from ...core.conversion import float_values, point_value, rational
+from ...core.errors import DomainError, NumericValuesRequired
+from ...core.precision import workdps
+from ...method.derivation import Derivation, values_by_name
+from ...method.rules import Step
+from ...method.verification import verify
+from ...parsing import to_sympy
+from ..base import ContactOn, Quantity
+from .law import CohesiveLaw, Parameter, on_base
+from ..sampling import point_sampler
+from . import maugis_choice
+from .maugis_choice import ModelChoice
+from .maugis_derive import dugdale_parts
+from .maugis_law import MDLaw, MDPullOff, MDState
+
+#: ranges of sigma_0 and of c_D/a - 1 at the verification points
+SIGMA0_RANGE = (0.05, 3.0)
+ZONE_RANGE = (0.01, 2.0)
+#: Baney & Hui's normalisation, here (parabola of radius R)
+DISPLACEMENT_CONTROL = ("displacement control is not defined for line contacts: the indentation depth of a "
+                        "half-plane is not (Popov 2017, Eqs. 2-3, only displacement differences are); "
+                        "the pull-off here is the load-control one")
+
+
+class MaugisDugdale(CohesiveLaw):
+    """The Maugis-Dugdale (cohesive-zone) law of a line contact: constant
+    tension sigma_0 on a < |x| < c_D while the gap is below h0 = w/sigma_0.
+    Its balance is a system in (a, c_D, P): bounded pressure at x = +-a and
+    gap(c_D) = h0 (:attr:`conditions` of the contact); P(a) needs the inner
+    solve for c_D(a) (:mod:`.maugis_law`).
+
+    >>> MaugisDugdale().balance
+    'bounded pressure at x = +-a (K_I = 0) and gap(c_D) = gamma/sigma_0'
+    """
+
+    name = "maugis_dugdale"
+    kind = "maugis_dugdale"
+    title = "Maugis-Dugdale (cohesive zone; Baney & Hui 1997 for the parabola, any profile here)"
+    label = "Maugis-Dugdale"
+    parameters = (Parameter("work_of_adhesion", S.gamma, "positive", "the work of adhesion w", (0.05, 1.0)),
+                  Parameter("sigma0", S.sigma_0, "positive", "the cohesive stress sigma_0", SIGMA0_RANGE))
+
+    @property
+    def balance(self):
+        return f"bounded pressure at x = +-a (K_I = 0) and gap(c_D) = {self['work_of_adhesion'] / self['sigma0']}"
+
+    def derive_force(self, ad) -> Derivation:
+        """P(a): the two conditions as equations (no closed P(a): c_D(a) is an inner solve)."""
+        return _numeric(ad, "force", sp.Tuple(*ad.conditions), lambda v, d: ad.state(v.pop("a"), d, **v).force,
+                        "P(a) by the inner solve of the gap condition for c_D (maugis_law)", (S.a,))
+
+    def derive_pressure(self, ad) -> Derivation:
+        return _numeric(ad, "pressure", sp.Tuple(sp.Eq(sp.Symbol("p"), ad.derivation("pressure").expr),
+                                                 ad.conditions[1]),
+                        lambda v, d: ad.state(v.pop("a"), d, **v).pressure(v.pop("x", 0)),
+                        "p(x; a) at c_D(a) from the inner solve", (S.a, S.x))
+
+    def numeric(self, base, values):
+        """P(a), dP/da at numbers on ``base``: base.P(a) - 2 sigma_0 sqrt(c_D^2 - a^2) with c_D(a) from
+        the gap condition (the quadrature twin uses the quadrature P0)."""
+        md = getattr(self, "on_contact", None)      # set by the contact that holds this law
+        if md is None:
+            raise NotImplementedError("the Maugis-Dugdale law needs its contact's closed forms: build it with "
+                                      "contact.adhesion('maugis_dugdale', ...) or contact.maugis_dugdale(...)")
+        law = md.numeric_law(**{k.name: v for k, v in values.items() if k in set(md.variables)})
+
+        def build(b):
+            def P(A):
+                if A <= 0:            # the limit a -> 0+: the Dugdale force of the zone c0
+                    return law.force_zero_width(mpmath.mp.dps)
+                C, _ = law.c_of(A, mpmath.mp.dps)
+                return b.P(A) + law._P(A, C) - law._P0(A)
+
+            def dP(A):
+                if A <= 0:
+                    return mpmath.mpf(0)
+                Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
+                return b.dP(A) + dPv - law._dP0(A)
+            return b.on_top(P, dP)
+        return on_base(base, build)
+
+
+def _numeric(ad, name, expr, fn, what, args):
+    from .pull_off import NumericDerivation
+    step = Step("numeric", expr, (), (what,))
+    return NumericDerivation(name, expr=expr, closed_form=False, step=step, seconds=0.0, notes=(what,),
+                             reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
+                             variables=args + ad.variables)
+
+
+class MaugisDugdaleContact(ContactOn):
+    """Maugis-Dugdale adhesive form of a frictionless line contact; see the
+    module docstring.
+
+    >>> import linecontact_sym as lcs
+    >>> md = lcs.parabola().maugis_dugdale()
+    >>> md.zone_force
+    pi*E_star*a**2/(4*R) - 2*sigma_0*sqrt(-a**2 + c_D**2)
+    """
+
+    kind = "maugis_dugdale"
+
+    force = Quantity("P(a)", "", "load per unit length at the half-width a, c_D(a) solved from the gap "
+                     "condition (negative = tensile); numeric: its expression is the two conditions",
+                     aliases=("md_force",), latex=r"P_{\mathrm{MD}}(a)")
+    zone_force = Quantity("P(a, c_D)", "bounded pressure", "load per unit length P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2) "
+                          "at the half-widths a and c_D (negative = tensile)", arguments=("a", "c_D"),
+                          aliases=("md_zone_force",), latex=r"P_{\mathrm{MD}}(a, c_{\mathrm{D}})")
+    cohesive_gap = Quantity("g(c_D; a)", "Dugdale gap", "surface separation at the end of the cohesive zone; "
+                            "equals h0 = w/sigma_0 at equilibrium", arguments=("a", "c_D"),
+                            aliases=("gap_at_c",), latex=r"g(c_{\mathrm{D}})")
+    pressure = Quantity("p(x; a, c_D)", "Eq. (12) + Dugdale", "pressure in the contact |x| < a (compressive "
+                        "positive; -sigma_0 at the edges, bounded)", arguments=("a", "c_D", "x"), domain="inside",
+                        aliases=("md_pressure",), latex=r"p_{\mathrm{MD}}(x)")
+    dugdale_force = Quantity("P_D(a, c_D)", "", "force of the Dugdale punches, -2 sigma_0 sqrt(c_D^2 - a^2)",
+                             arguments=("a", "c_D"), latex=r"P_{\mathrm{D}}")
+
+    pull_off_force = Quantity("P_min", "", "load-control pull-off: the global minimum of P(a) (or its infimum "
+                              "P(0+) as a -> 0+), negative (tensile); numeric", arguments=(),
+                              aliases=("md_pull_off_force",), latex=r"P_{\min}^{\mathrm{MD}}")
+    adhesion_force = Quantity("P_adh", "", "adhesion force -P_min > 0; numeric", arguments=(),
+                              aliases=("md_adhesion_force",), latex=r"P_{\mathrm{adh}}^{\mathrm{MD}}")
+    pull_off_half_width = Quantity("a_po", "", "half-width at pull-off (0 where the pull-off is the infimum "
+                                   "P(0+)); numeric", arguments=(), latex=r"a_{\mathrm{po}}^{\mathrm{MD}}")
+    maugis_lambda = Quantity("lambda", "", "Maugis parameter sqrt(2^(5/3) a_JKR/delta), delta = pi E* w/(4 sigma_0^2) "
+                             "(Baney & Hui's 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3) for the parabola); numeric",
+                             arguments=(), aliases=("maugis_parameter",), latex=r"\lambda")
+
+    law_class = MaugisDugdale
+
+    def __init__(self, contact, w=S.gamma, sigma0=S.sigma_0, values=None):
+        self.contact = contact
+        self.law = MaugisDugdale(w, sigma0)     # the parameters checked against their domains
+        self.law.on_contact = self
+        self.w, self.sigma0 = self.law["work_of_adhesion"], self.law["sigma0"]
+        self._esyms = tuple(sorted((self.w.free_symbols | self.sigma0.free_symbols) - set(contact.params)
+                                   - {S.E_star}, key=lambda s: s.name))
+        self._cache: dict = {}
+        self._laws: dict = {}
+        self.values = values_by_name(self.variables, dict(values)) if values else {}
+
+    @classmethod
+    def from_frictionless(cls, contact):
+        return cls(contact)
+
+    @classmethod
+    def with_law(cls, contact, law, values=None):
+        """The contact of the law object ``law`` (the generic layer's constructor)."""
+        return cls(contact, law["work_of_adhesion"], law["sigma0"], values)
+
+    def __repr__(self):
+        return f"MaugisDugdaleContact({self.contact.profile.expr}, w={self.w}, sigma0={self.sigma0})"
+
+    @property
+    def variables(self):
+        return (S.E_star,) + tuple(self.params) + self._esyms
+
+    @property
+    def h0(self):
+        """The range of the Dugdale law, h0 = w/sigma_0 (w = sigma_0 h0)."""
+        return self.w / self.sigma0
+
+    def at(self, **values):
+        new = MaugisDugdaleContact(self.contact, self.w, self.sigma0,
+                                   {**{k.name: v for k, v in self.values.items()}, **values})
+        new._cache, new._laws = self._cache, self._laws
+        return new
+
+    def _value(self, name):
+        e = self.derivation(name).expr
+        return e.xreplace(self.values) if self.values else e
+
+    # ------------------------------------------------------------ the derivation
+    @property
+    def dugdale(self):
+        return dugdale_parts(self.sigma0)
+
+    @property
+    def force_expr(self):
+        return self.derivation("zone_force").expr
+
+    @property
+    def gap_c_expr(self):
+        return self.derivation("cohesive_gap").expr
+
+    @property
+    def pressure_expr(self):
+        return self.derivation("pressure").expr
+
+    @property
+    def zero_width_expr(self):
+        """The gap condition's left side as a -> 0+ (P0 -> 0, g0(c; a) -> f(c)): f(c_D) + 4 ln2 sigma_0 c_D/(pi E*)."""
+        return self.profile.expr.subs(S.x, S.c_D) + self.dugdale.zero_width
+
+    @property
+    def force_zero_width_expr(self):
+        """lim_{a->0+} P(a, c_D) = -2 sigma_0 c_D (the Dugdale force; P0(0) = 0)."""
+        return sp.limit(self.dugdale.force, S.a, 0, "+")
+
+    @property
+    def conditions(self):
+        """The two Maugis-Dugdale conditions as SymPy equations: bounded
+        pressure at x = +-a (solved for P) and the gap at c_D equal to h0."""
+        return (sp.Eq(S.P, self.zone_force), sp.Eq(self.cohesive_gap, self.h0))
+
+    def _sampler(self, domain="any"):
+        base = point_sampler(self.profile, domain, {s: SIGMA0_RANGE for s in self._esyms})
+
+        def sample(rng):
+            v = base(rng)
+            if v is None:
+                return None
+            v[S.c_D] = v[S.a] * rational(1 + rng.uniform(*ZONE_RANGE))
+            return float_values(v, 80)
+        return sample
+
+    def _record(self, name, expr, closed, steps, reference, t0, conditions=()):
+        rec = None
+        if closed and self.contact.verify and reference is not None:
+            rec = verify(expr, reference, self._sampler("inside" if name == "pressure" else "any"), conditions,
+                         n_points=self.contact.points, reference_name=_REFERENCE_NAMES[name])
+            if not rec.passed:
+                from ...core.errors import VerificationError
+                raise VerificationError(f"{name} of the Maugis-Dugdale contact of {self.profile.name!r}: {rec}")
+        step = Step("maugis_dugdale", expr, tuple(conditions), tuple(steps))
+        return Derivation(name, expr=expr, closed_form=closed, step=step, conditions=tuple(conditions),
+                          verification=rec, notes=tuple(steps), reference=reference,
+                          variables=(S.a, S.c_D) + self.variables)
+
+    def _derive_force(self):
+        return self.law.derive_force(self)
+
+    def _law(self, vals: dict, mode: str):
+        """The numeric force law P(a) of the generic layer ('closed' or 'quad' P0 underneath)."""
+        from ..normal.force_law import ForceLaw
+        fixed = float_values({k: to_sympy(v) for k, v in vals.items() if k in set(self.variables)}, 80)
+        key = (mode, tuple(sorted((k.name, v) for k, v in fixed.items())))
+        if key not in self._laws:
+            self._laws[key] = self.law.numeric(ForceLaw.from_contact(self.contact, fixed, mode), fixed)
+        return self._laws[key]
+
+    def _derive_zone_force(self):
+        from . import maugis_check as chk
+        t0 = time.perf_counter()
+        fd = self.contact.derivation("force")
+        d = self.dugdale
+        expr = fd.expr + d.force
+        steps = (f"P0(a) of the engine ({fd.method})",) + d.steps[:1] + d.steps[-2:] + (
+            "P = P0(a) + (force of the Dugdale punches); the punch of width a carries no force (K_I = 0)",)
+        return self._record("zone_force", expr, fd.closed_form, steps, chk.force_reference(self), t0, fd.conditions)
+
+    def _derive_dugdale_force(self):
+        t0 = time.perf_counter()
+        d = self.dugdale
+        return self._record("dugdale_force", d.force, True, d.steps[:1], None, t0)
+
+    def _derive_cohesive_gap(self):
+        from . import maugis_check as chk
+        t0 = time.perf_counter()
+        gd = self.contact.derivation("gap")
+        d = self.dugdale
+        expr = gd.expr.subs(S.x, S.c_D) + d.gap_at_c
+        conds = tuple(c.subs(S.x, S.c_D) for c in gd.conditions)
+        steps = (f"g0(c_D; a) of the engine ({gd.method})",) + d.steps[:1] + d.steps[2:3]
+        return self._record("cohesive_gap", expr, gd.closed_form, steps, chk.gap_reference(self), t0, conds)
+
+    def _derive_pressure(self):
+        from . import maugis_check as chk
+        t0 = time.perf_counter()
+        pd = self.contact.derivation("pressure")
+        d = self.dugdale
+        expr = pd.expr + d.pressure
+        steps = (f"p0(x; a) of the engine ({pd.method})",) + d.steps[:2] + d.steps[-1:]
+        return self._record("pressure", expr, pd.closed_form, steps, chk.pressure_reference(self), t0,
+                            pd.conditions)
+
+    def _numeric_derivation(self, name, fn, what):
+        """A Derivation without closed form whose evalf is ``fn(values, dps)``."""
+        from .pull_off import NumericDerivation
+        stat = sp.Function(name)(*self.variables)     # a number of the variables, no closed form
+        step = Step("numeric", stat, (), (what,))
+        return NumericDerivation(name, expr=stat, closed_form=False, step=step, seconds=0.0,
+                                 notes=(what, DISPLACEMENT_CONTROL),
+                                 reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
+                                 variables=self.variables)
+
+    def _derive_pull_off_force(self):
+        return self._numeric_derivation("pull_off_force", lambda v, d: self.pull_off_at(d, **v).force,
+                                        "numeric: global minimum of P(a) over every stationary point and kink, "
+                                        "or the infimum P(0+) (maugis_law.MDLaw.pull_off)")
+
+    def _derive_adhesion_force(self):
+        return self._numeric_derivation("adhesion_force", lambda v, d: self.pull_off_at(d, **v).adhesion_force,
+                                        "numeric: minus the load-control pull-off")
+
+    def _derive_pull_off_half_width(self):
+        return self._numeric_derivation("pull_off_half_width", lambda v, d: self.pull_off_at(d, **v).half_width,
+                                        "numeric: the half-width of the pull-off")
+
+    def _derive_maugis_lambda(self):
+        return self._numeric_derivation("maugis_lambda", lambda v, d: self.maugis_parameter(d, **v),
+                                        "numeric: from the JKR pull-off half-width of the profile")
+
+    # ------------------------------------------------------------ numbers
+    def _numeric_values(self, values):
+        vals = dict(self.values)
+        for s in self.variables:
+            if s.name in values:
+                vals[s] = to_sympy(values[s.name]) if not isinstance(values[s.name], float) \
+                    else point_value(values[s.name])
+        unknown = set(values) - {s.name for s in self.variables}
+        if unknown:
+            raise DomainError(f"unknown value(s) {sorted(unknown)}; the Maugis-Dugdale contact takes "
+                              f"{', '.join(s.name for s in self.variables)}")
+        missing = [s.name for s in self.variables if s not in vals]
+        if missing:
+            raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
+        for s in self.variables:
+            if not to_sympy(vals[s]).is_number or not to_sympy(vals[s]) > 0:
+                raise DomainError(f"{s.name} = {vals[s]} must be a positive number")
+        return vals
+
+    def numeric_law(self, **values) -> MDLaw:
+        """The numeric law (c_D(a), P(a), dP/da, states, pull-off) at values."""
+        vals = self._numeric_values(values)
+        key = tuple(sorted((k.name, str(v)) for k, v in vals.items()))
+        if key not in self._laws:
+            self._laws[key] = MDLaw(self, vals)
+        return self._laws[key]
+
+    def state(self, a, dps: int = 30, **values) -> MDState:
+        """The contact at the half-width a: c_D (unique root of the gap
+        condition, bracketed), P, dP/da, h0 and the pressure and gap
+        profiles (callables of x), to ``dps`` digits."""
+        law = self.numeric_law(**values)
+        with workdps(dps + 10):
+            A = mpmath.mpf(sp.N(to_sympy(a), dps + 20)) if not isinstance(a, mpmath.mpf) else a
+        if not A > 0:
+            raise DomainError(f"the half-width must be positive, got a = {a}")
+        return law.state(A, dps)
+
+    def pull_off_at(self, dps: int = 30, **values) -> MDPullOff:
+        """The load-control pull-off: the global minimum of P(a) over every
+        stationary point and kink, or, where P(a) decreases to its limit as
+        a -> 0+, the infimum P(0+) (kind 'infimum').  Displacement control
+        is not defined for line contacts (:data:`DISPLACEMENT_CONTROL`)."""
+        law = self.numeric_law(**values)
+        key = ("po", dps, id(law))
+        if key not in self._cache:
+            self._cache[key] = law.pull_off(dps)
+        return self._cache[key]
+
+    def displacement_control(self):
+        """Not defined for line contacts: raises with the reason."""
+        raise DomainError(DISPLACEMENT_CONTROL)
+
+    @property
+    def jkr(self):
+        """The JKR contact of the same work of adhesion (this package's law)."""
+        return self.contact.adhesive(self.w)
+
+    def _jkr_values(self, values):
+        vals = self._numeric_values(values)
+        keep = {s.name: v for s, v in vals.items() if s in set(self.jkr.variables)}
+        return keep
+
+    def maugis_parameter(self, dps: int = 20, **values):
+        """lambda at values, see :func:`.maugis_choice.maugis_parameter`."""
+        return maugis_choice.maugis_parameter(self, dps, **values)
+
+    def sigma0_for(self, lam, dps: int = 20, **values):
+        """sigma_0 giving the Maugis parameter ``lam``, see :func:`.maugis_choice.sigma0_for`."""
+        return maugis_choice.sigma0_for(self, lam, dps, **values)
+
+    def model_choice(self, rtol=0.05, dps: int = 15, **values):
+        """'JKR' or 'MD' for a tolerance, see :func:`.maugis_choice.model_choice`."""
+        return maugis_choice.model_choice(self, rtol, dps, **values)
+
+    def adhesion_map(self, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), path=None, **kw):
+        """The adhesion map (needs the ``[plot]`` extra): P(a) for several
+        Maugis parameters with the JKR law, and the pull-off against lambda
+        with its JKR and rigid limits; see :mod:`~linecontact_sym.views.adhesion_map`.
+        ``values``: E_star, the work of adhesion, the profile's parameters."""
+        from ...views.adhesion_map import adhesion_map_data, plot_adhesion_map
+        from .maugis_check import rigid_limit
+        rigid = lambda s0: rigid_limit(self, 15, **values, **{self.sigma0.name: s0})  # noqa: E731
+        data = adhesion_map_data(self, values, lambdas, rigid=rigid, **kw)
+        return plot_adhesion_map(data, path, title=f"Maugis-Dugdale line contact, f(x) = {self.profile.expr}")
+
+    def report(self, quantities=("zone_force", "cohesive_gap", "pressure")) -> str:
+        return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
+
+
+_REFERENCE_NAMES = {
+    "zone_force": "Johnson's bounded-solution condition P = (E*/2) int_-a^a s phi'(s)/sqrt(a^2-s^2) ds on the effective "
+             "profile phi = f + u_D (u_D' of the Dugdale strip from the Flamant log kernel), minus 2 sigma_0 (c_D - a), "
+             "mpmath quadrature",
+    "cohesive_gap": "the engine's quadrature of the adhesionless gap plus the Flamant (log-kernel) displacement "
+                    "difference u(c_D) - u(0) of the Dugdale sub-problem, its pressure first checked to make the "
+                    "contact displacement uniform (mpmath quadrature)",
+    "pressure": "the engine's Eq. (12) quadrature of p0 plus a direct quadrature of the Dugdale punches "
+                "(1/pi) int_a^c_D g_D(t)/sqrt(t^2 - x^2) dt (t = c_D sin(phi)); the Flamant substitution check of "
+                "this pressure is part of the cohesive_gap reference",
+}
+
+
+__all__ = ["MaugisDugdale", "MaugisDugdaleContact", "ModelChoice", "MDState", "MDPullOff", "DISPLACEMENT_CONTROL"]

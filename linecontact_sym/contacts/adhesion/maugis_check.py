@@ -1,0 +1,167 @@
+"""Independent checks of the Maugis-Dugdale line contact, sharing nothing
+with the flat-punch derivation of :mod:`.maugis_derive`:
+
+* force: Johnson's condition for a pressure bounded at both edges of a 2-D
+  rigid punch (Contact Mechanics 1985, Sec. 2.8), P_c = (E*/2) int_-a^a
+  s phi'(s)/sqrt(a^2 - s^2) ds, applied to the effective profile
+  phi = f + u_D, where u_D' = (2 sigma_0/(pi E*)) log((a-s)(c+s)/((c-s)(a+s)))
+  is the surface slope the Dugdale strip causes by the Flamant (logarithmic)
+  kernel; plus the strip's own force -2 sigma_0 (c_D - a);
+* gap at c_D: the engine's quadrature of the adhesionless gap plus
+  u_D(c_D) - u_D(0) of the Dugdale sub-problem by the Flamant kernel
+  u(x) - u(0) = -(2/(pi E*)) int p(s) log|(x - s)/s| ds; its contact pressure is
+  first checked by substitution (u uniform on |x| < a);
+* pressure: the engine's Eq. (12) quadrature plus a direct quadrature of the
+  Dugdale punches;
+* Baney & Hui's normalisation (lambda, A, F) and the rigid limit
+  (a rigid profile with a Dugdale law: P = -2 sigma_0 c_r, f(c_r) = h0).
+"""
+from __future__ import annotations
+
+import mpmath
+import sympy as sp
+
+from ...core import symbols as S
+from ...core.conversion import to_mpf
+from ...core.errors import VerificationError
+from ...core.precision import workdps
+from ...method import transforms as T
+
+
+def _mp(v):
+    return to_mpf(v) if not isinstance(v, mpmath.mpf) else v
+
+
+def _values(md, vals):
+    sig = _mp(sp.N(md.sigma0.xreplace(vals), mpmath.mp.dps + 10))
+    w = _mp(sp.N(md.w.xreplace(vals), mpmath.mp.dps + 10))
+    return _mp(vals[S.a]), _mp(vals[S.c_D]), sig, w, _mp(vals[S.E_star])
+
+
+def strip_slope(s, A, C, sig, E, a_minus_s=None):
+    """u_D'(s) on |s| < a of the Dugdale strip (traction -sigma_0 on a < |s| < c), Flamant kernel;
+    ``a_minus_s`` (a - s computed without cancellation) where s is near a."""
+    ams = A - s if a_minus_s is None else a_minus_s
+    return 2 * sig / (mpmath.pi * E) * mpmath.log(ams * (C + s) / ((C - A + ams) * (A + s)))
+
+
+def force_johnson(md, vals, dps):
+    """P(a, c_D) by Johnson's bounded-solution condition (see the module docstring)."""
+    with workdps(dps + 15):
+        A, C, sig, E, = _values(md, vals)[:3] + (_values(md, vals)[4],)
+        P0 = T.force_quad(md.profile, vals, dps + 5)
+        # (E*/2) int_-a^a s u_D'(s)/sqrt(a^2 - s^2) ds, s = a cos(psi), even integrand
+        I = mpmath.quad(lambda ps: A * mpmath.cos(ps) * strip_slope(A * mpmath.cos(ps), A, C, sig, E,
+                                                                    2 * A * mpmath.sin(ps / 2)**2),
+                        [0, mpmath.pi / 4, mpmath.pi / 2])
+        return P0 + E * I - 2 * sig * (C - A)
+
+
+def force_reference(md):
+    return lambda vals, dps: force_johnson(md, vals, dps)
+
+
+def _flamant_difference(p_in, A, C, sig, E, X):
+    """u(X) - u(0) of the pressure p_in on |s| < a and -sigma_0 on a < |s| < c (Flamant kernel)."""
+    def ker(s):
+        return mpmath.log(abs(X - s)) + mpmath.log(X + s) - 2 * mpmath.log(s)
+    pts_in = sorted({mpmath.mpf(0), A} | ({X} if 0 < X < A else set()))
+    pts_out = sorted({A, C} | ({X} if A < X < C else set()))
+    I = mpmath.quad(lambda s: p_in(s) * ker(s), pts_in) + mpmath.quad(lambda s: -sig * ker(s), pts_out)
+    return -2 / (mpmath.pi * E) * mpmath.re(I)
+
+
+def dugdale_subproblem_gap(md, vals, dps):
+    """u_D(c_D) - u_D(0) of the Dugdale sub-problem (strip traction and the
+    contact pressure that keeps |x| < a flat), by the Flamant kernel; the
+    contact pressure (the derived one) is first checked by substitution."""
+    with workdps(dps + 15):
+        A, C, sig, w, E = _values(md, vals)
+        pD = sp.lambdify(S.x, md.dugdale.pressure.xreplace({S.a: A, S.c_D: C, S.sigma_0: sig})
+                         .xreplace({md.sigma0: sig}), "mpmath")
+        scale = sig * (C - A) / E
+        for frac in ("0.3", "0.8"):
+            r = _flamant_difference(pD, A, C, sig, E, A * mpmath.mpf(frac))
+            if abs(r) > abs(scale) * mpmath.mpf(10)**-(dps + 3):
+                raise VerificationError(f"the Dugdale sub-problem's contact pressure does not keep the contact flat: "
+                                        f"u(x) - u(0) = {mpmath.nstr(r, 5)} at x = {frac} a")
+        return mpmath.re(_flamant_difference(pD, A, C, sig, E, C))
+
+
+def gap_reference(md):
+    gd = md.contact.derivation("gap")
+
+    def ref(vals, dps):
+        with workdps(dps + 15):
+            g0 = gd.reference({**vals, S.x: vals[S.c_D]}, dps + 5)
+            return g0 + dugdale_subproblem_gap(md, vals, dps)
+    return ref
+
+
+def pressure_reference(md):
+    pd = md.contact.derivation("pressure")
+
+    def ref(vals, dps):
+        with workdps(dps + 15):
+            A, C, sig, w, E = _values(md, vals)
+            X = _mp(vals[S.x])
+            I = mpmath.quad(lambda ph: -2 * sig * C * mpmath.sin(ph) / mpmath.sqrt((C * mpmath.sin(ph))**2 - X**2),
+                            [mpmath.asin(A / C), mpmath.pi / 2])
+            return pd.reference(vals, dps + 5) + I / mpmath.pi
+    return ref
+
+
+# ---------------------------------------------------------------- Baney & Hui (1997)
+def baney_hui_units(E_star, w, R, sigma0):
+    """(lambda, A, F) of Baney & Hui (1997): lambda = 4 sigma_0 (R/(pi^2 E*^2 w))^(1/3),
+    A = 2 (w R^2/(pi E*))^(1/3), F = (pi E* w^2 R)^(1/3); SymPy or mpmath numbers."""
+    if all(isinstance(v, (sp.Basic, int)) for v in (E_star, w, R, sigma0)):
+        cbrt = lambda v: v**sp.Rational(1, 3)  # noqa: E731
+        pi = sp.pi
+    else:
+        cbrt = mpmath.cbrt
+        pi = mpmath.pi
+    lam = 4 * sigma0 * cbrt(R / (pi**2 * E_star**2 * w))
+    A = 2 * cbrt(w * R**2 / (pi * E_star))
+    F = cbrt(pi * E_star * w**2 * R)
+    return lam, A, F
+
+
+LAM, ABAR, MBAR, PBAR = sp.symbols("lambda abar m Pbar", positive=True)
+
+
+def baney_hui_equations(md):
+    """The parabola's two conditions in Baney & Hui's normalisation, derived
+    from ``md`` (a Maugis-Dugdale contact of the parabola): (Pbar(abar, m),
+    the gap condition as an expression equal to 1); a = A abar, c_D = m a,
+    P = F Pbar, sigma_0 from lambda."""
+    lam, A, F = baney_hui_units(S.E_star, md.w, S.R, md.sigma0)
+    sig_of_lam = sp.solve(sp.Eq(lam, LAM), md.sigma0)[0] if md.sigma0.is_Symbol else None
+    if sig_of_lam is None:
+        raise ValueError("Baney & Hui's form needs sigma_0 as a symbol")
+    sub = {S.a: A * ABAR, S.c_D: A * ABAR * MBAR}
+    P = sp.simplify(sp.expand_power_base((md.zone_force.xreplace(sub) / F).subs(md.sigma0, sig_of_lam), force=True))
+    g = md.cohesive_gap.xreplace(sub).subs(md.sigma0, sig_of_lam)
+    h = (md.h0).subs(md.sigma0, sig_of_lam)
+    G = sp.simplify(sp.expand_power_base(sp.expand(g / h), force=True))
+    return sp.simplify(P), sp.expand(G)
+
+
+def rigid_limit(md, dps=30, **values):
+    """Pull-off of the rigid profile with the Dugdale law (E* -> oo): the
+    gap is the profile itself, P = -2 sigma_0 c_r with f(c_r) = h0.
+    Independent of the elastic solution (a root of the profile)."""
+    vals = md._numeric_values(values)
+    with workdps(dps + 10):
+        sig = _mp(sp.N(md.sigma0.xreplace(vals), dps + 20))
+        h0 = _mp(sp.N(md.h0.xreplace(vals), dps + 20))
+        f = sp.lambdify(S.x, md.profile.expr.xreplace({k: v for k, v in vals.items() if k != S.E_star}), "mpmath")
+        lo, hi = mpmath.mpf(0), mpmath.mpf(1)
+        while f(hi) < h0:
+            hi *= 2
+        cr = mpmath.findroot(lambda x: f(x) - h0, (lo if f(lo) < h0 else hi / 2, hi), solver="anderson")
+        return -2 * sig * cr
+
+
+__all__ = ["force_johnson", "force_reference", "gap_reference", "pressure_reference", "dugdale_subproblem_gap",
+           "baney_hui_units", "baney_hui_equations", "rigid_limit", "strip_slope"]

@@ -1,0 +1,383 @@
+"""Numbers of a Maugis-Dugdale line contact at given parameter values: the
+cohesive-zone half-width c_D(a) (unique, bracketed), the load P(a), its
+total derivative dP/da, the state (pressure, gap) and the load-control
+pull-off (global minimum of P(a) over every stationary point, every kink and
+the limit a -> 0+).
+
+Uniqueness of c_D(a): the Dugdale part of the gap at c_D,
+(4 sigma_0/(pi E*)) (sqrt(c^2 - a^2) acosh(c/a) - c log(c/a)), has the
+c-derivative (4 sigma_0/(pi E*)) (c acosh(c/a)/sqrt(c^2 - a^2) - log(c/a)) > 0
+(acosh(c/a) >= log(c/a), c > sqrt(c^2 - a^2)), rising from 0 at c = a to oo;
+the adhesionless gap g0(c; a) rises from 0 wherever the profile is admissible
+(f rising): one root, found from a bracket [a + s_lo, a + s_hi] with
+gap(s_lo) < h0 < gap(s_hi) by safeguarded Newton in s = c_D - a (never leaves
+the bracket, so never a wrong branch).
+
+The pull-off: dP/da at log-spaced half-widths (8 per decade) from where
+P > 0 and rising down to the zero-width cohesive zone c0; a sign change
+- -> + is a minimum, refined by a bracketed root of dP/da; the profile's
+kinks are candidates; below the grid, dP/da is followed down decade by
+decade while it stays positive until P(a) equals its limit P(0+) = G at
+a = 0 (-2 sigma_0 c0) to the working precision: then P(a) has no minimum
+there and the infimum P(0+) is reported (kind 'infimum', half-width 0).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import mpmath
+import sympy as sp
+
+from ...core import symbols as S
+from ...core.conversion import float_values, number
+from ...core.errors import DomainError, NoPullOffError
+from ...core.precision import workdps
+
+#: grid points per decade of a in the pull-off scan
+PER_DECADE = 8
+#: decades followed below the grid before the limit a -> 0+ is declared (at most)
+MAX_DECADES = 400
+
+
+@dataclass
+class MDState:
+    """The Maugis-Dugdale contact at one half-width a.
+
+    a, c_D     contact and cohesive-zone half-widths (c_D > a)
+    force      P(a) per unit length (negative = tensile)
+    dP_da      the total derivative along c_D(a)
+    h0         the range of the Dugdale law, w/sigma_0
+    m          c_D/a (Baney & Hui's m)
+    pressure   x -> p(x) (compressive positive; -sigma_0 in the Dugdale zone, 0 beyond)
+    gap        x -> surface separation (0 in the contact, h0 at x = c_D)
+    """
+
+    a: mpmath.mpf
+    c_D: mpmath.mpf
+    force: mpmath.mpf
+    dP_da: mpmath.mpf
+    h0: mpmath.mpf
+    pressure: object = field(repr=False, default=None)
+    gap: object = field(repr=False, default=None)
+
+    @property
+    def m(self):
+        return self.c_D / self.a
+
+
+@dataclass
+class MDPullOff:
+    """Load-control pull-off of a Maugis-Dugdale line contact.
+
+    force          P_min < 0 (or the infimum P(0+) where P has no minimum)
+    adhesion_force -force
+    half_width     a at the minimum (0 for the infimum)
+    c_D            cohesive-zone half-width there
+    kind           'stationary', 'kink' or 'infimum' (P(a) decreases to its limit as a -> 0+)
+    minima         every local minimum found, (a, P, kind)
+    note           what the search covered
+    """
+
+    force: mpmath.mpf
+    adhesion_force: mpmath.mpf
+    half_width: mpmath.mpf
+    c_D: mpmath.mpf
+    kind: str
+    minima: tuple = ()
+    note: str = ""
+
+
+def fixed_values(vals, digits=80):
+    """{Symbol: Float} of numeric values given exactly, as expressions (pi**(2/3)/4 ...) or as
+    Python/mpmath numbers: the package's converter, then Floats for substitution."""
+    return float_values({k: v if isinstance(v, sp.Basic) else number(v) for k, v in vals.items()}, digits)
+
+
+def profile_kinks(profile, fixed):
+    """The profile's breakpoints (kinks of P(a)) at numeric parameters, ascending."""
+    out = []
+    for pc in profile.pieces:
+        if pc.lo != 0:
+            v = sp.N(pc.lo.xreplace(fixed), 40)
+            if v.is_number and v > 0:
+                out.append(mpmath.mpf(str(v)))
+    return sorted(set(out))
+
+
+def _lam(expr, args):
+    return sp.lambdify(args, expr, "mpmath")
+
+
+class MDLaw:
+    """P(a, c_D) and the gap condition at numeric values (closed forms
+    lambdified for mpmath; their partial derivatives by SymPy)."""
+
+    def __init__(self, md, vals: dict):
+        fixed = fixed_values(vals)
+        self.md = md
+        a, c, x = S.a, S.c_D, S.x
+        sig = md.sigma0.xreplace(fixed)
+        w = md.w.xreplace(fixed)
+        if not (sig.is_number and w.is_number):
+            raise DomainError("sigma_0 and the work of adhesion need values")
+        if not sig > 0:
+            raise DomainError(f"sigma_0 must be positive, got {sig}")
+        if not w > 0:
+            raise NoPullOffError("no adhesion (w = 0): no Dugdale zone, no tensile pull-off")
+        self.fixed = fixed
+        self.sigma0 = sig
+        self.h0expr = w / sig
+        E = fixed[S.E_star]
+        self.E = E
+        P = md.force_expr.xreplace(fixed)
+        G = md.gap_c_expr.xreplace(fixed) - self.h0expr
+        self.closed = not (P.has(sp.Integral) or G.has(sp.Integral))
+        if not self.closed:
+            raise NotImplementedError("numeric Maugis-Dugdale law without closed forms")
+        self._P = _lam(P, (a, c))
+        P0 = md.contact.derivation("force").expr.xreplace(fixed)
+        self._P0, self._dP0 = _lam(P0, (a,)), _lam(sp.diff(P0, a), (a,))
+        self._Pa = _lam(sp.diff(P, a), (a, c))
+        self._Pc = _lam(sp.diff(P, c), (a, c))
+        self._G = _lam(G, (a, c))
+        self._Ga = _lam(sp.diff(G, a), (a, c))
+        self._Gc = _lam(sp.diff(G, c), (a, c))
+        z0 = md.zero_width_expr.xreplace(fixed) - self.h0expr   # gap condition of a vanishing contact, in c_D
+        self._Z0, self._Z0c = _lam(z0, (c,)), _lam(sp.diff(z0, c), (c,))
+        self._P0lim = _lam(md.force_zero_width_expr.xreplace(fixed), (c,))
+        self._p_in = _lam(md.pressure_expr.xreplace(fixed), (x, a, c))
+        self._g0 = _lam(md.contact.derivation("gap").expr.xreplace(fixed), (x, a))
+        self._gD_density = _lam(md.dugdale.density.xreplace(fixed), (S.a, c))  # not used in closed paths
+        self._f = _lam(md.profile.expr.xreplace(fixed), (x,))
+        self.kinks = profile_kinks(md.profile, fixed)
+        self._warm = None
+
+    # ------------------------------------------------------------ c_D(a)
+    def h0(self):
+        return mpmath.mpf(sp.N(self.h0expr, mpmath.mp.dps + 5))
+
+    def _solve_s(self, F, dF, s0, tol):
+        """Root of the increasing F on s > 0 from the guess s0: bracket by
+        doubling / halving, then Newton kept inside the bracket."""
+        lo = hi = s0
+        n = 0
+        if F(s0) <= 0:
+            lo = s0
+            hi = s0 * 2
+            while F(hi) <= 0:
+                lo, hi = hi, hi * 4
+                n += 1
+                if n > 2000:
+                    raise DomainError("no cohesive-zone half-width found: the gap never reaches h0")
+        else:
+            hi = s0
+            lo = s0 / 2
+            while F(lo) >= 0:
+                lo, hi = lo / 4, lo
+                n += 1
+                if n > 4000:
+                    raise DomainError("no cohesive-zone half-width found: the gap exceeds h0 at c_D -> a")
+        s = s0 if lo <= s0 <= hi else (lo + hi) / 2   # a good guess stays the start
+        for _ in range(200):
+            f = F(s)
+            if f > 0:
+                hi = s
+            else:
+                lo = s
+            d = dF(s)
+            s_new = s - f / d if d > 0 else None
+            if s_new is None or not lo < s_new < hi:
+                s_new = mpmath.sqrt(lo * hi) if hi / lo > 4 else (lo + hi) / 2
+            if abs(s_new - s) <= tol * s:
+                return s_new
+            s = s_new
+            if (hi - lo) <= tol * lo:
+                return s
+        return s
+
+    def c_of(self, A, dps: int):
+        """c_D at the half-width A (mpf), to dps digits."""
+        with workdps(15):   # c_D - a is at least of the order of the JKR-limit zone: digits to resolve it
+            extra = max(0, int(mpmath.log10(mpmath.mpf(A) / self._s_guess(A))))
+        with workdps(25 + extra):
+            A25 = mpmath.mpf(A)
+            guess = self._s_guess(A25)
+            if self._warm is not None and self._warm[1] > A25:     # the last solution: scans move smoothly
+                guess = self._warm[1] - A25
+            s_est = self._solve_s(lambda s: self._G(A25, A25 + s), lambda s: self._Gc(A25, A25 + s),
+                                  guess, mpmath.mpf(10)**-12)
+            self._warm = (A25, A25 + s_est)
+            # acosh(c/a) near c = a loses log10(a/s) digits; at small a, terms of size c/a cancel in
+            # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
+            r = mpmath.log10(A25 / s_est)
+            guard = 14 + (int(r) if r > 0 else 2 * int(-r))
+        with workdps(dps + guard):
+            A = mpmath.mpf(A)
+            s = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
+                              mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4))
+            return A + s, guard
+
+    def _s_guess(self, A):
+        # the Dugdale gap is ~ 4 sigma0 s/(pi E*) for s << a: s ~ pi E* h0/(4 sigma0)
+        return mpmath.pi * mpmath.mpf(sp.N(self.E, 30)) * self.h0() / (4 * mpmath.mpf(sp.N(self.sigma0, 30)))
+
+    def c0(self, dps: int):
+        """The cohesive-zone half-width of a vanishing contact (a -> 0+)."""
+        with workdps(dps + 15):
+            return self._solve_s(self._Z0, self._Z0c, self._s_guess(1), mpmath.mpf(10)**-(dps + 4))
+
+    def force_zero_width(self, dps: int):
+        """P(0+), the limit of P(a) as a -> 0+ (the Dugdale force of the zone c0)."""
+        with workdps(dps + 15):
+            return +self._P0lim(self.c0(dps))
+
+    def P_and_slope(self, A, dps: int):
+        """(P, dP/da, c_D) at A, each to about dps digits."""
+        C, guard = self.c_of(A, dps)
+        with workdps(dps + guard):
+            A = mpmath.mpf(A)
+            dc = -self._Ga(A, C) / self._Gc(A, C)
+            P = self._P(A, C)
+            dP = self._Pa(A, C) + self._Pc(A, C) * dc
+            return +P, +dP, +C
+
+    def state(self, A, dps: int) -> MDState:
+        P, dP, C = self.P_and_slope(A, dps)
+        with workdps(dps + 10):
+            A = mpmath.mpf(A)
+            h0 = self.h0()
+        law, sig = self, mpmath.mpf(sp.N(self.sigma0, dps + 20))
+
+        def pressure(x):
+            with workdps(dps + 10):
+                x = abs(mpmath.mpf(x))
+                if x < A:
+                    return +law._p_in(x, A, C)
+                return -sig if x <= C else mpmath.mpf(0)
+
+        def gap(x):
+            with workdps(dps + 10):
+                x = abs(mpmath.mpf(x))
+                if x <= A:
+                    return mpmath.mpf(0)
+                top = min(x, C)
+                # Dugdale punches of width t in (a, min(x, c_D)): -(2/(pi E*)) int acosh(x/t) g_D(t) dt,
+                # t = c_D sin(phi) removes the endpoint singularity of g_D at c_D
+                E = mpmath.mpf(sp.N(law.E, dps + 20))
+                lo, hi = mpmath.asin(A / C), mpmath.asin(top / C)
+                I = mpmath.quad(lambda ph: mpmath.acosh(x / (C * mpmath.sin(ph))) * (-2 * sig * C * mpmath.sin(ph)),
+                                [lo, hi])
+                return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
+        return MDState(A, C, P, dP, h0, pressure, gap)
+
+    # ------------------------------------------------------------ pull-off
+    def pull_off(self, dps: int) -> MDPullOff:
+        notes = []
+        with workdps(20):
+            c0 = self.c0(15)
+            P0lim = self.force_zero_width(15)
+            slope = lambda A: self.P_and_slope(A, 15)  # noqa: E731
+            # upper end: double from c0 until P > 0 and rising
+            top = c0
+            for _ in range(200):
+                P, dP, _c = slope(top)
+                if P > 0 and dP > 0:
+                    break
+                top *= 10
+            else:
+                raise NoPullOffError("P(a) stays negative or falling up to a = 1e200 c0: no pull-off found")
+            bottom = c0 * mpmath.mpf(10)**-3
+            n = int(PER_DECADE * mpmath.log10(top / bottom)) + 1
+            grid = [bottom * (top / bottom)**(mpmath.mpf(k) / n) for k in range(n + 1)]
+            ks = [k for k in self.kinks if bottom < k < top]
+            grid = sorted(set(grid) | {k * (1 - mpmath.mpf(10)**-12) for k in ks} |
+                          {k * (1 + mpmath.mpf(10)**-12) for k in ks})
+            vals = [(A,) + slope(A) for A in grid]
+            brackets = []
+            for (A0, P0_, d0, _), (A1, P1_, d1, _) in zip(vals, vals[1:]):
+                if d0 < 0 < d1 and not any(A0 < k < A1 for k in ks):
+                    brackets.append((A0, A1))
+            # follow dP/da down, 4 points per decade, below the grid until P(a) has reached its
+            # limit P(0+); every sign change of dP/da on the way brackets a minimum or a maximum
+            A_low = vals[0][0]
+            infimum = False
+            decades = 0
+            prev = vals[0]
+            step = mpmath.mpf(10)**(-mpmath.mpf(1) / 4)
+            while decades < 4 * MAX_DECADES:
+                A_new = prev[0] * step
+                P_new, d_new, _c = slope(A_new)
+                decades += 1
+                if d_new < 0 < prev[2]:
+                    brackets.append((A_new, prev[0]))
+                prev = (A_new, P_new, d_new, _c)
+                # what P(a) can still change below A_new is of the order A |dP/da|
+                if A_new * abs(d_new) <= abs(P0lim) * mpmath.mpf(10)**-(dps + 6):
+                    infimum = d_new > 0      # approached from above: P(0+) is an infimum
+                    break
+            notes.append(f"dP/da followed down {decades / 4:g} decade(s) below a = {mpmath.nstr(A_low, 5)}, "
+                         f"to a = {mpmath.nstr(prev[0], 3)} where a |dP/da| < 1e-{dps + 6} |P(0+)| (a minimum below would differ "
+                         f"from P(0+) by less than that)")
+        cands = []
+        for A0, A1 in brackets:
+            with workdps(dps + 10):
+                f = lambda A: self.P_and_slope(A, dps + 5)[1]  # noqa: E731
+                A = _bracketed_root(f, mpmath.mpf(A0), mpmath.mpf(A1), dps + 3)
+                P, dP, C = self.P_and_slope(A, dps)
+            cands.append((A, P, C, "stationary"))
+        for k in ks:   # a kink is a minimum where P falls to its left and rises to its right
+            with workdps(20):
+                eps = mpmath.mpf(10)**-12
+                left = self.P_and_slope(k * (1 - eps), 15)[1]
+                right = self.P_and_slope(k * (1 + eps), 15)[1]
+            if left < 0 < right:
+                with workdps(dps + 10):
+                    P, dP, C = self.P_and_slope(mpmath.mpf(k), dps)
+                cands.append((mpmath.mpf(k), P, C, "kink"))
+        note = (f"scan of dP/da at {len(grid)} half-widths from {mpmath.nstr(bottom, 5)} to {mpmath.nstr(top, 5)} "
+                f"(8 per decade), kinks {[mpmath.nstr(k, 8) for k in ks]}; " + "; ".join(notes))
+        minima = tuple((A, P, kind) for A, P, C, kind in cands)
+        with workdps(dps + 10):
+            P0lim = self.force_zero_width(dps)
+            c0 = self.c0(dps)
+        best = min(cands, key=lambda r: r[1], default=None)
+        if best is None or (infimum and P0lim < best[1]):
+            if not infimum:
+                raise NoPullOffError("P(a) has no minimum in the scanned range and does not fall to its "
+                                     "limit as a -> 0+")
+            note += ("; P(a) has no minimum below that: it decreases to its limit P(0+) = -2 sigma_0 c0 as "
+                     "a -> 0+, the pull-off is this infimum (approached, not attained)")
+            return MDPullOff(P0lim, -P0lim, mpmath.mpf(0), c0, "infimum", minima, note)
+        A, P, C, kind = best
+        if infimum:
+            note += f"; P(0+) = {mpmath.nstr(P0lim, 10)} lies above the minimum"
+        return MDPullOff(P, -P, A, C, kind, minima, note)
+
+
+def _bracketed_root(f, lo, hi, dps):
+    """Root of f on [lo, hi] with f(lo) < 0 < f(hi): Illinois (regula falsi) on log a."""
+    with workdps(dps + 5):
+        u0, u1 = mpmath.log(lo), mpmath.log(hi)
+        f0, f1 = f(lo), f(hi)
+        side = 0
+        for _ in range(300):
+            u = (u0 * f1 - u1 * f0) / (f1 - f0)
+            fu = f(mpmath.exp(u))
+            if fu == 0:
+                return mpmath.exp(u)
+            if (fu > 0) == (f1 > 0):
+                u1, f1 = u, fu
+                if side == -1:
+                    f0 /= 2
+                side = -1
+            else:
+                u0, f0 = u, fu
+                if side == 1:
+                    f1 /= 2
+                side = 1
+            if abs(u1 - u0) < mpmath.mpf(10)**-(dps + 1) * max(1, abs(u)):
+                break
+        return mpmath.exp(u)
+
+
+__all__ = ["MDLaw", "MDState", "MDPullOff"]

@@ -1,0 +1,36 @@
+"""The adhesion map of a Maugis-Dugdale line contact: its data (limits shown
+against the JKR law and the rigid profile) and the figure."""
+import mpmath
+import pytest
+
+import linecontact_sym as lcs
+from linecontact_sym.views.adhesion_map import adhesion_map_data, plot_adhesion_map
+from linecontact_sym.contacts.adhesion.maugis_check import rigid_limit
+
+
+@pytest.fixture(scope="module")
+def data():
+    md = lcs.parabola().maugis_dugdale()
+    vals = dict(E_star=1, R=1, gamma=1)
+    return adhesion_map_data(md, vals, lambdas=(0.1, 10), points=12, lambda_grid=(0.02, 30),
+                             rigid=lambda s0: rigid_limit(md, 15, **vals, sigma_0=s0))
+
+
+def test_adhesion_map_limits(data):
+    po = data["pull_off"]
+    assert abs(po[1] + 1) < 1e-3                      # lambda = 30: the JKR pull-off
+    assert abs(po[0] / data["rigid"][0] - 1) < 2e-2   # lambda = 0.02: the rigid cylinder with a Dugdale law
+    assert -0.3 < po[0] < 0
+    # at lambda = 10 the force law is close to JKR's away from a -> 0 (where MD stays finite and
+    # JKR's tends to 0); at lambda = 0.1 it is not
+    far = data["abar"] > 0.3
+    assert max(abs(data["curves"][10] - data["jkr"])[far]) < 0.05
+    assert max(abs(data["curves"][0.1] - data["jkr"])) > 0.3
+    assert abs(data["a_jkr"] - float(mpmath.cbrt(2 / mpmath.pi))) < 1e-12   # (2 w R^2/(pi E*))^(1/3)
+
+
+def test_adhesion_map_figure(data, tmp_path):
+    pytest.importorskip("matplotlib")
+    fig = plot_adhesion_map(data, tmp_path / "map.png")
+    assert (tmp_path / "map.png").stat().st_size > 10000
+    assert len(fig.axes) == 2
