@@ -125,8 +125,10 @@ def derive_by_case(contact, name: str) -> Derivation:
         if v not in variables:
             variables.append(v)
     step = Step("cases", expr, conditions, notes[:1])
-    return Derivation(name, expr, closed, step, conditions, rec, time.perf_counter() - t0 + sum(d.seconds for d in ds),
-                      notes, reference, tuple(variables), tuple(a for d in ds for a in d.attempts))
+    return Derivation(name, expr=expr, closed_form=closed, step=step, conditions=conditions, verification=rec,
+                      seconds=time.perf_counter() - t0 + sum(d.seconds or 0 for d in ds), notes=notes,
+                      reference=reference, variables=tuple(variables),
+                      attempts=tuple(a for d in ds for a in d.attempts))
 
 
 __all__ = ["case_contacts", "case_of", "derive_by_case"]

@@ -395,8 +395,9 @@ def in_terms_of(t, d: Derivation, Qv) -> Derivation:
             if w not in variables:
                 variables.append(w)
     step = Step(d.step.rule, expr, conds, d.step.notes)
-    return Derivation("stick_half_width", expr, d.closed_form, step, conds, d.verification, d.seconds, notes,
-                      translated(d.reference), tuple(variables), d.attempts, d.cached)
+    return Derivation("stick_half_width", expr=expr, closed_form=d.closed_form, step=step, conditions=conds,
+                      verification=d.verification, seconds=d.seconds, notes=notes, reference=translated(d.reference),
+                      variables=tuple(variables), attempts=d.attempts, cached=d.cached)
 
 
 def _tidy_root(e):
