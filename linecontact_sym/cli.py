@@ -119,12 +119,34 @@ def _derivation_dict(d, values=None):
 
 
 # ------------------------------------------------------------------ paper
+def _output_dir(text) -> Path:
+    """The output directory of ``paper --out``, checked before any work: no
+    part of the path may be a file (``--out report.txt``, ``--out file/sub``),
+    and the directory must be creatable and writable; a clear error
+    otherwise (exit 2), not a failure after the claims were checked."""
+    out = Path(text)
+    for part in [out] + list(out.parents):
+        if part.exists() or part.is_symlink():
+            if not part.is_dir():
+                where = "is" if part == out else f"({part}) is"
+                raise LineContactError(f"--out {text}: {'it' if part == out else 'a part of the path'} {where} "
+                                       f"a file, not a directory; name a directory")
+            break
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise LineContactError(f"--out {text}: the directory cannot be created ({exc.strerror})") from None
+    if not os.access(out, os.W_OK | os.X_OK):
+        raise LineContactError(f"--out {text}: the directory is not writable")
+    return out
+
+
 def cmd_paper(args):
     from .claims.batch import check_and_draw          # the claims and, beside them, the figures
     from .claims.report import text_table, write_paper_outputs
     from .claims.spec import load_paper
     paper = load_paper(args.name)
-    out = Path(args.out or f"{paper.key}-report")
+    out = _output_dir(args.out or f"{paper.key}-report")
     only = set(args.only) if args.only else None
     if only:
         unknown = only - {c.label for c in paper.claims}

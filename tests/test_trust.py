@@ -118,17 +118,22 @@ def test_item4_wedge_typed_by_hand_keeps_its_closed_form():
 
 # ---------------------------------------------------------------- item 5
 def test_item5_parameter_case_of_a_piecewise_is_a_condition():
-    """before: P = 2 E* a^3 for every R, verified to 45 digits; after: the
-    closed form carries R >= 1, its points satisfy it, and the reference
-    (which reads the profile at the point) gives the x^2 law for R < 1."""
+    """before: P = 2 E* a^3 for every R, verified to 45 digits; round 2: the
+    closed form carried R >= 1 and R < 1 was refused; after (issue 19, item
+    3): every case is derived, P = 2 E* a^3 where R >= 1 and pi E* a^2/2
+    where R < 1, each verified at points of its own case, and the reference
+    (which reads the profile at the point) agrees with both."""
     c = lcs.LineContact(sp.Piecewise((x**2, R < 1), (x**3, True)))
     d = c.derivation("force")
-    assert sp.simplify(d.expr - 2 * E * a**3) == 0
-    assert sp.Ge(R, 1) in d.conditions
-    assert d.verification.passed and all(v[R] >= 1 for v in d.verification.points)
+    assert isinstance(d.expr, sp.Piecewise) and d.closed_form
+    assert sp.simplify(d.expr.subs(R, 2) - 2 * E * a**3) == 0
+    assert sp.simplify(d.expr.subs(R, sp.Rational(1, 2)) - sp.pi * E * a**2 / 2) == 0
+    assert d.verification.passed
     with mpmath.workdps(40):
-        ref = T.force_quad(c.profile, {a: sp.Rational(1, 2), R: sp.Rational(1, 2), E: 1}, 30)
-        assert abs(ref - mpmath.pi / 8) < mpmath.mpf(10)**-28      # pi E* a^2 / 2 of f = x^2
+        for Rv, want in ((sp.Rational(1, 2), mpmath.pi / 8), (2, mpmath.mpf(1) / 4)):   # pi a^2/2, 2 a^3 at a = 1/2
+            ref = T.force_quad(c.profile, {a: sp.Rational(1, 2), R: Rv, E: 1}, 30)
+            assert abs(ref - want) < mpmath.mpf(10)**-28
+            assert abs(c.evaluate_at("force", a=sp.Rational(1, 2), R=Rv, E_star=1) - want) < mpmath.mpf(10)**-28
 
 
 # ---------------------------------------------------------------- item 6

@@ -259,7 +259,12 @@ def _judge_printed(pr: PointResult, form: Form, derived: Derived, vals, dps) -> 
         ends = [num_eval(v, vals, dps) for v in form.variants]
     except (Undefined, LineContactError, ValueError, ZeroDivisionError) as exc:
         return PointResult(vals, pr.kind, "printed_undefined", reason=str(exc))
-    lo, hi = min(ends), max(ends)
+    if form.spread == "sum":      # many constants: each one's largest deviation, added
+        mid = ends[0]
+        dev = sum(max(abs(ends[1 + 2 * k] - mid), abs(ends[2 + 2 * k] - mid)) for k in range((len(ends) - 1) // 2))
+        lo, hi = mid - dev, mid + dev
+    else:
+        lo, hi = min(ends), max(ends)
     inside = lo <= target <= hi
     with workdps(dps):
         scale = max(abs(target), mpmath.mpf(10) ** -dps)

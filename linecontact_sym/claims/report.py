@@ -15,6 +15,7 @@ from ..core import symbols as S
 from .results import FAILS, HOLDS, HOLDS_IF, SHORT, UNDECIDED, digits_text, markdown_summary, md_escape
 from ..core.conversion import exact_number, nsimplify_basic
 from ..core.errors import DomainError
+from ..method.profile import MAX_EXPONENT
 from ..core.printing import ELLIPTIC_CONVENTION, ELLIPTIC_CONVENTION_TEX
 from ..parsing import to_sympy
 from ..views.latex import (booktabs_table, fit_math, latex_escape, longtable, standalone, text_to_latex, to_latex,
@@ -36,8 +37,11 @@ def power_law_rows(ns, budget: float = 20.0):
     rows = []
     for nv in ns:
         nv = exact_number(nv) if isinstance(nv, float) else to_sympy(nv, where="exponent n")
-        if not (nv.is_number and nv > 0):
+        if not (nv.is_number and nv.is_real and nv > 0):
             raise DomainError(f"the exponent of the power law must be a positive number, got {nv}")
+        if not sp.Rational(1, MAX_EXPONENT) <= nv <= MAX_EXPONENT:
+            raise DomainError(f"the exponent n = {sp.N(nv, 6)} lies outside 1/{MAX_EXPONENT} .. {MAX_EXPONENT}, the "
+                              f"exponents of profiles the package accepts (no physical power law needs more)")
         Z = nsimplify_basic(sp.gammasimp(sp.expand_func(Zsym.subs(S.n, nv))))
         rows.append({"n": nv, "Z": Z, "Z_float": float(sp.N(Z, 20)),
                      "force": S.E_star * S.c * Z * S.a**nv})

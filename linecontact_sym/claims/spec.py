@@ -81,7 +81,6 @@ says which one the paper prints.
 """
 from __future__ import annotations
 
-import re
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -93,6 +92,7 @@ from ..core import symbols as S
 from ..contacts.base import qualified_quantities
 from ..core.errors import ClaimError
 from ..parsing import declare_symbols, parse_expr
+from .rounding import DECIMAL, PrintedFloat, printed_spread, printed_variants  # noqa: F401
 from .fields import names_field, number_field, parse_range, check_sign, text_field, typed_field, where_text, read_text_file
 from ..views.plots import VALUE_SYMBOLS
 
@@ -189,6 +189,8 @@ class Form:
     #: moved by half a unit in its last printed digit, each way (the printed
     #: value stands for the interval these span)
     variants: tuple = ()
+    #: how the variants span the interval: "corners" or "sum" (:func:`printed_spread`)
+    spread: str = "corners"
 
 
 @dataclass
@@ -283,7 +285,7 @@ def load_paper(source) -> Paper:
     path = resolve_paper(source)
     text = read_text_file(path)
     try:
-        data = tomllib.loads(text)
+        data = tomllib.loads(text, parse_float=PrintedFloat.from_toml)
     except tomllib.TOMLDecodeError as exc:
         raise ClaimError(f"{path}: not valid TOML: {exc}") from None
     except RecursionError:
@@ -344,30 +346,6 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
         raise ClaimError(f"{source}: two [[figures]] write the same file")
     return Paper(str(data.get("key", Path(source).stem)), str(data.get("title", "")),
                  str(data.get("reference", "")), claims, defs, source, ranges, figures)
-
-
-_DECIMAL = re.compile(r"(?<![\w.])(\d+)\.(\d+)(?![\w.])")
-
-
-def printed_variants(text: str) -> list:
-    """The formula text with every decimal constant moved by half a unit in
-    its last printed digit, in every combination (0.300 -> 0.2995 and
-    0.3005): the interval a figure printed with those digits stands for.
-
-    >>> printed_variants("0.300*p0")
-    ['0.2995*p0', '0.3005*p0']
-    """
-    found = list(_DECIMAL.finditer(text))[:6]
-    out = []
-    for signs in range(2 ** len(found)):
-        pieces, last = [], 0
-        for k, m in enumerate(found):
-            frac = len(m.group(2))
-            val = sp.Rational(m.group(0)) + (1 if signs >> k & 1 else -1) * sp.Rational(1, 2 * 10**frac)
-            pieces += [text[last:m.start()], f"{float(val):.{frac + 1}f}"]
-            last = m.end()
-        out.append("".join(pieces) + text[last:])
-    return out
 
 
 def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_shown=None,
@@ -450,7 +428,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     rounding = cd.get("rounding", "exact")
     if rounding not in ("exact", "printed"):
         raise ClaimError(f"{W('rounding')}: 'exact' (30 digits) or 'printed' (to the printed digits), got {rounding!r}")
-    if rounding == "printed" and not any(_DECIMAL.search(t) for t in texts):
+    if rounding == "printed" and not any(DECIMAL.search(t) for t in texts):
         raise ClaimError(f"{W('rounding')}: 'printed' needs a decimal constant such as 0.300 in the formula")
     forms = []
     for j, text in enumerate(texts):
@@ -458,7 +436,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
         expr = parse(text, fld)
         shown_expr = parse_expr(text, symbols=syms, definitions=shown, placeholders=ph, where=W(fld))
         variants = tuple(parse(v, fld) for v in printed_variants(text)) if rounding == "printed" else ()
-        forms.append(Form(text, shown_expr, expr, variants))
+        forms.append(Form(text, shown_expr, expr, variants, printed_spread(text)))
     assumptions = tuple(parse_expr(str(r), symbols=syms, where=W(f"assumptions[{j}]"), allow_relational=True)
                         for j, r in enumerate(cd.get("assumptions", [])))
     table = {}

@@ -32,6 +32,8 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.conversion import point_value
 from ..core.precision import checked_dps, serialized
+from ..core.printing import lambdify
+from ..core.ranges import check_values
 from ..core.errors import DomainError, InadmissibleProfileError, LineContactError, singular_point
 from ..method.derivation import Derivation, timing
 from ..numeric.special import NUMPY_LOGIC
@@ -105,6 +107,8 @@ class Contact:
     ``variables`` (the symbols a number needs besides the arguments)."""
 
     kind = "contact"
+    #: names of :mod:`~linecontact_sym.core.ranges` that may also be 0 here
+    _zero_ok: tuple = ()
 
     @classmethod
     def from_frictionless(cls, contact):
@@ -208,6 +212,8 @@ class Contact:
         positive symbol <= 0) raise for arrays too."""
         name = self.resolve(quantity)
         q = type(self)._registry[name]
+        check_values(values, self._zero_ok)   # before anything is derived: nu = 0.7 is refused at once
+        self._check_normal_point(values)
         known, conds, cond_fn = self._domain_data(name)
         unknown = sorted(set(values) - set(known))
         if unknown and not q.method:
@@ -217,6 +223,7 @@ class Contact:
         for k in q.nonnegative:
             if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
+        check_values(vals, self._zero_ok)  # nu, mu, c_s, c_r: the physical ranges (core.ranges)
         self._check_admissible(vals)
         out = DomainValues(vals)
         out.mark(*x_domain(name, q.domain, vals, values))
@@ -227,13 +234,36 @@ class Contact:
                 if is_array(r):
                     out.mark(~np.asarray(r, dtype=bool), f"{', '.join(map(str, conds))} fails")
             except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
-                ok = holds(conds, {known[k]: v for k, v in vals.items()}) if not any(
+                ok = holds(self.derivation(name).point_test, {known[k]: v for k, v in vals.items()}) if not any(
                     isinstance(v, np.ndarray) for v in vals.values()) else True
             if not ok:
                 raise DomainError(f"{name} holds only where {', '.join(map(str, conds))}; "
                                   f"that fails at {values}")
         out.warn(name)
         return out
+
+    def _check_normal_point(self, values):
+        """A contact built on a frictionless one (adhesive, tangential,
+        stresses): the normal solution holds at the point (the exact
+        cylinder's a < R), checked first, before anything is derived or
+        searched; values that are not plain numbers are left to the checks
+        that follow."""
+        base = getattr(self, "contact", None)
+        if base is None or not hasattr(base, "check_point") or "a" not in values:
+            return
+        point = {}
+        for s in (S.a,) + tuple(base.variables):
+            v = values.get(s.name)
+            if v is None or isinstance(v, (list, tuple, np.ndarray, bool, str)):
+                continue
+            try:
+                v = to_sympy(v, where=s.name)
+            except LineContactError:
+                continue
+            if v.is_number and v.is_real:
+                point[s] = v
+        if S.a in point:
+            base.check_point(point)
 
     def check_domain_scalar(self, quantity: str, values: dict) -> dict:
         """:meth:`check_domain` for a point of plain Python numbers, in
@@ -248,13 +278,12 @@ class Contact:
         if key not in cache:
             d = self.derivation(name)
             known = {s.name: s for s in d.variables_all}
-            # relations between x and a alone are the quantity's domain (inside:
-            # |x| <= a, outside: |x| >= a, edges included), checked above: a
-            # closed form stated for x < a still holds at the edge as a limit
-            xa = {S.x, S.a} if DOMAINS[type(self).quantities()[name].domain] else set()
-            conds = tuple(c for c in d.conditions if c not in (sp.true,)
-                          and not (xa and c.free_symbols <= xa))
-            fn = sp.lambdify(list(known.values()), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
+            # the derivation's point conditions (method.derivation): relations
+            # between x and a are the quantity's domain (inside: |x| <= a,
+            # outside: |x| >= a), checked above; edges included: a closed form
+            # stated for x < a or c_s < a still holds at the edge as a limit
+            conds = d.point_conditions
+            fn = lambdify(list(known.values()), sp.And(*d.point_test), [NUMPY_LOGIC, "numpy"]) if conds else None
             cache[key] = (known, conds, fn)
         return cache[key]
 
@@ -395,7 +424,10 @@ _ANY_SIGN = {"x"}
 def may_be_zero(name: str) -> bool:
     """Is ``name`` (a symbol declared positive) allowed the value 0?  The
     symbols of a registered cohesive law's parameters of domain
-    'nonnegative' are (JKR's gamma = 0: the non-adhesive limit)."""
+    'nonnegative' are (JKR's gamma = 0: the non-adhesive limit), and the
+    depth z (z = 0 is the surface)."""
+    if name == "z":          # the surface, where surface stresses live
+        return True
     for cls in CONTACT_KINDS.values():
         for p in getattr(getattr(cls, "law_class", None), "parameters", ()):
             if p.domain == "nonnegative" and p.symbol.name == name:
@@ -542,7 +574,30 @@ class DomainCheck:
 
 class ContactOn(Contact):
     """A contact built on a frictionless one, ``self.contact`` (adhesive,
-    tangential, stresses): its profile and parameters are that contact's."""
+    tangential, stresses): its profile and parameters are that contact's.
+    On a profile that switches on its parameters alone, every quantity is
+    derived case by case (:mod:`.normal.cases`), each case by this kind of
+    contact built on that case's frictionless contact (:meth:`on`)."""
+
+    def on(self, contact):
+        """This contact, with the same settings, built on another
+        frictionless ``contact`` (nothing derived is shared)."""
+        import copy
+        new = copy.copy(self)
+        new.contact = contact
+        for k in tuple(self._transient) + ("_fields",):
+            if k in new.__dict__:
+                new.__dict__[k] = {}
+        return new
+
+    def derivation(self, quantity: str):
+        if not self.contact.profile.cases:
+            return super().derivation(quantity)
+        name = self.resolve(quantity)
+        cache = self._caches()
+        if name not in cache:
+            cache[name] = self.contact.derive_by_case(self, name)
+        return cache[name]
 
     @property
     def profile(self):

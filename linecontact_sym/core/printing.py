@@ -156,5 +156,34 @@ def latex_escape(text) -> str:
     return out
 
 
-__all__ = ["PaperLatexPrinter", "to_latex", "latex_escape", "init_printing", "ELLIPTIC_CONVENTION",
+def lambdify(args, expr, modules=None, **kw):
+    """``sympy.lambdify`` with every argument renamed to a Dummy of the same
+    assumptions first: the generated code names no user symbol, so a
+    parameter called ``pi``, ``E``, ``I``, ``lambda``, ``numpy`` or ``sqrt``
+    never shadows a constant, a keyword or a module (before: a profile
+    parameter named pi made the export of pi*a**2/(4*pi) return a**2/4).
+    Every code-generating call of the package with the user's symbols as
+    arguments goes through here.
+
+    >>> p, a = sp.Symbol("pi", positive=True), sp.Symbol("a")
+    >>> round(lambdify([p, a], sp.pi * a / p, "math")(2.0, 1.0), 12)
+    1.570796326795
+    """
+    single = not isinstance(args, (list, tuple))
+    flat = [args] if single else list(args)
+    ren = {s: sp.Dummy(s.name if s.name.isidentifier() else "v", **s.assumptions0)
+           for s in flat if isinstance(s, sp.Symbol)}
+    new = [ren.get(s, s) for s in flat]
+
+    def renamed(e):
+        if isinstance(e, sp.Basic):
+            with sp.evaluate(False):      # a renaming, not a new expression: nothing re-evaluated
+                return e.xreplace(ren)
+        if isinstance(e, (list, tuple)):
+            return type(e)(renamed(v) for v in e)
+        return e
+    return sp.lambdify(new[0] if single else new, renamed(expr), modules=modules, **kw)
+
+
+__all__ = ["lambdify", "PaperLatexPrinter", "to_latex", "latex_escape", "init_printing", "ELLIPTIC_CONVENTION",
            "ELLIPTIC_CONVENTION_TEX"]

@@ -24,7 +24,8 @@ Conventions (Popov 2017):
   subsurface stresses.
 * ``zeta``   -- the complex coordinate x + i z of the complex potentials
   (no assumptions: complex).
-* ``nu``     -- Poisson's ratio (plane strain: sigma_y = nu (sigma_x + sigma_z)).
+* ``nu``     -- Poisson's ratio (plane strain: sigma_y = nu (sigma_x + sigma_z)); real,
+  -1 < nu <= 1/2 (checked in one place, :mod:`linecontact_sym.core.ranges`).
 
 Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential.contact`:
 
@@ -63,7 +64,7 @@ theta = sp.Symbol("theta", positive=True)
 
 z = sp.Symbol("z", positive=True)
 zeta = sp.Symbol("zeta")
-nu = sp.Symbol("nu", positive=True)
+nu = sp.Symbol("nu", real=True)   # -1 < nu <= 1/2: checked by core.ranges (0 and negative are valid)
 mu = sp.Symbol("mu", positive=True)
 Q = sp.Symbol("Q", real=True)
 c_s = sp.Symbol("c_s", positive=True)

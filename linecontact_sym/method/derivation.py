@@ -25,7 +25,7 @@ from ..core.errors import BudgetExceeded, ClaimError, DivergentIntegralError, Do
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
-from .verification import REQUIRED_DIGITS, VerificationRecord, verify
+from .verification import REQUIRED_DIGITS, VerificationRecord, holds, verify
 from ..core.precision import held, serialized, workdps
 
 #: the rule name of a result without closed form
@@ -144,6 +144,10 @@ class Derivation:
         (high-precision quadrature of the defining integral).  The mpf
         returned prints its ``dps`` digits (:class:`~linecontact_sym.core.precision.HeldDigits`)."""
         vals = values_by_name(self.variables_all, values)
+        failed = [c for c, t in zip(self.point_conditions, self.point_test) if not holds((t,), vals)]
+        if failed:
+            raise DomainError(f"{self.quantity} holds only where {', '.join(map(str, self.point_conditions))}; "
+                              f"{', '.join(map(str, failed))} fails at {values}")
         if self.closed_form:
             with workdps(dps):
                 v = sp.N(self.expr.xreplace(float_values(vals, dps + 20)), dps + 5)
@@ -152,6 +156,28 @@ class Derivation:
             raise LineContactError(f"this {self.quantity} derivation has no reference quadrature (it was "
                                    f"unpickled, or made without one): evaluate it through its contact")
         return held(self.reference(vals, dps), dps)
+
+    @property
+    def point_conditions(self) -> tuple:
+        """The conditions a point must meet for ``expr`` to hold (a < R,
+        n < 2, ...), as stated: :attr:`conditions` without the relations
+        between x and a (x < a), which state the quantity's domain (inside,
+        outside the contact) and are decided there, edges included.  Every
+        numeric path checks them (:attr:`point_test`): :meth:`evalf` refuses
+        a point where one fails, the exports give NaN there."""
+        return tuple(c for c in self.conditions
+                     if c is not sp.true and not (S.x in c.free_symbols and c.free_symbols <= {S.x, S.a}))
+
+    @property
+    def point_test(self) -> tuple:
+        """:attr:`point_conditions` with their edges: strict inequalities as
+        non-strict (c_s < a as c_s <= a), since a closed form stated on an
+        open set holds at its edge as a limit, or is not finite there."""
+        closure = {sp.StrictLessThan: sp.LessThan, sp.StrictGreaterThan: sp.GreaterThan}
+
+        def edge(c):
+            return c.replace(lambda e: type(e) in closure, lambda e: closure[type(e)](*e.args))
+        return tuple(edge(c) for c in self.point_conditions)
 
     @property
     def variables_all(self):

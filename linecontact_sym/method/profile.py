@@ -19,6 +19,7 @@ from ..core.conversion import exact_number, to_mpf
 from ..core import symbols as S
 from ..core.errors import InadmissibleProfileError, ProfileError, UnknownSymbolError
 from ..core.precision import workdps
+from ..core.printing import lambdify
 
 
 @dataclass(frozen=True)
@@ -38,6 +39,9 @@ class Piece:
 #: is still a power law people study; x**(10**10) is not, and would not end)
 MAX_EXPONENT = 10**4
 MAX_DERIVATIVE_ORDER = 20
+#: relations of the parameters alone a Piecewise profile may switch on (each
+#: combination is derived separately: 2**3 cases at most)
+MAX_CASE_RELATIONS = 3
 
 
 def _default_range(sym: sp.Symbol) -> tuple[float, float]:
@@ -145,8 +149,8 @@ def _profile_numeric_fns(self, values):
     if "_near_fns" not in self.__dict__:
         args = [S.x] + list(self.params)
         try:
-            self._near_fns = (sp.lambdify(args, self.expr, "mpmath"),
-                              sp.lambdify(args, sp.diff(self.expr, S.x), "mpmath"))
+            self._near_fns = (lambdify(args, self.expr, "mpmath"),
+                              lambdify(args, sp.diff(self.expr, S.x), "mpmath"))
         except Exception:  # pragma: no cover - lambdify of exotic functions
             self._near_fns = None
     if self._near_fns is None:
@@ -372,6 +376,12 @@ class Profile:
         self.assumptions = tuple(assumed)
         return tuple(pieces)
 
+    @cached_property
+    def cases(self) -> tuple:
+        """The cases of a Piecewise that switches on the parameters alone:
+        see :func:`parameter_cases`."""
+        return parameter_cases(self)
+
     @property
     def is_piecewise(self) -> bool:
         return len(self.pieces) > 1
@@ -446,6 +456,69 @@ class Profile:
 
     def __repr__(self):
         return f"Profile({self.expr})"
+
+
+def parameter_cases(profile) -> tuple:
+    """The cases of a Piecewise whose conditions hold relations free of x
+    (``Piecewise((x**2/(2*R), R < 1), (x**2, True))``): a tuple of
+    ``(condition, expression)``, one per combination of those relations
+    that SymPy cannot prove impossible, the expression being the profile
+    with the relations decided (the last condition is ``True``); ``()``
+    for a profile without such relations.  :attr:`pieces` are read in one
+    case only (see :meth:`_split`); the contacts derive every case
+    (:meth:`~linecontact_sym.contacts.normal.contact.LineContact.derivation`),
+    so that a result holds for every parameter value, not only in the
+    case the pieces were read in.  More than :data:`MAX_CASE_RELATIONS`
+    such relations raise :class:`ProfileError`."""
+    expr = sp.piecewise_fold(profile.expr) if profile.expr.has(sp.Piecewise) else profile.expr
+    rels = []
+    for pw in expr.atoms(sp.Piecewise):
+        for _, cond in pw.args:
+            for r in cond.atoms(sp.Rel):
+                if not r.has(S.x) and r.free_symbols:
+                    c = r.canonical
+                    if c not in rels and c.negated.canonical not in rels:
+                        rels.append(c)
+    if not rels:
+        return ()
+    if len(rels) > MAX_CASE_RELATIONS:
+        raise ProfileError(f"profile {profile.name!r}: its Piecewise switches on {len(rels)} relations of the "
+                           f"parameters ({', '.join(map(str, rels))}); at most {MAX_CASE_RELATIONS} are "
+                           f"derived case by case: give the cases as separate profiles")
+    out = []
+    for k in range(2**len(rels)):
+        truth = [bool(k >> i & 1) for i in range(len(rels))]
+        cond = sp.And(*[r if t else r.negated for r, t in zip(rels, truth)])
+        try:
+            if sp.simplify(cond) == sp.false:
+                continue
+        except Exception:
+            pass
+        sub = {}
+        for pw in expr.atoms(sp.Piecewise):
+            for _, c in pw.args:
+                for r in c.atoms(sp.Rel):
+                    for rel, t in zip(rels, truth):
+                        if r.canonical == rel:
+                            sub[r] = sp.true if t else sp.false
+                        elif r.canonical == rel.negated.canonical:
+                            sub[r] = sp.false if t else sp.true
+        out.append((cond, expr.xreplace(sub)))
+    if not out:
+        return ()
+    # the same expression in two cases: one case
+    merged: list = []
+    for cond, e in out:
+        for i, (c0, e0) in enumerate(merged):
+            if e0 == e:
+                merged[i] = (sp.Or(c0, cond), e0)
+                break
+        else:
+            merged.append((cond, e))
+    if len(merged) == 1:
+        return ()
+    merged[-1] = (sp.true, merged[-1][1])
+    return tuple(merged)
 
 
 def check_real_and_rising(profile):

@@ -12,37 +12,54 @@ Two levels, one key:
   :func:`set_enabled`) switches the disk off for the process.
 
 The key is a SHA-256 of the profile and force law (``srepr``, so the symbols'
-assumptions are part of it), the quantity, the verification settings and
-the *code version*: the package version and a hash of the source of this
-layer (the rules, the reduction, the dispatcher, the transforms), so a
-changed rule never meets an entry written by its predecessor.  A file holds
-a magic line, the SHA-256 of its payload and the payload (a pickle of plain
-records: SymPy expressions, the :class:`~.rulebase.Step`, the
-:class:`~.verification.VerificationRecord`, the attempts); an entry whose
-checksum, format, code version or key does not match is ignored (and
-replaced by the fresh derivation): it is never trusted.  Files are written
-atomically (a temporary file renamed) with owner-only permissions: the cache
-is the user's own, written only by this package (pickles are not a format to
-accept from others).  The reference quadrature of a derivation is a closure
-and is not stored: the caller rebuilds it.
+assumptions are part of it; the engine's Dummy integration variables by
+their order of appearance, not their per-process index), the quantity, the
+verification settings and the *code version*: the package version, the
+versions of SymPy, mpmath and python-flint, and a hash of **every** source
+file of the package (a rule, a reference quadrature, a sampler or a contact
+that builds a problem can all shape a derivation), so a changed package never
+meets an entry written by its predecessor.
+
+**The cache is data, never code.**  A file holds a magic line, the SHA-256
+of its payload and the payload, JSON: plain values, and SymPy objects as
+their ``srepr`` text, which is read back by :func:`from_srepr`, a parser
+that accepts only calls of SymPy's own classes with literal arguments
+(nothing is evaluated, no attribute is looked up, no other name is
+callable).  An entry whose checksum, format, code version or key does not
+match, or that holds anything else, is ignored (and replaced by the fresh
+derivation).  A checksum only detects damage: it does not say who wrote the
+file, so the directory must be the user's own -- a cache directory (or file)
+owned by another user, or writable by group or others (``/tmp``), is not
+used: a warning says so once and the process runs without the disk cache.
+Files are written atomically (a temporary file renamed) with owner-only
+permissions.  The reference quadrature of a derivation is a closure and is
+not stored: the caller rebuilds it.
 """
 from __future__ import annotations
 
+import ast
 import hashlib
+import json
 import os
-import pickle
 import re
+import stat
 import tempfile
+import warnings
 from pathlib import Path
 
 __all__ = ["cache_dir", "set_enabled", "enabled", "code_version", "make_key", "get", "put", "clear_memory",
-           "CACHE_ENV"]
+           "CACHE_ENV", "from_srepr", "encode", "decode", "UntrustedCacheWarning"]
 
 #: environment variable: a cache directory, or ``off``
 CACHE_ENV = "LINECONTACT_SYM_CACHE"
-_MAGIC = b"linecontact_sym-derivation-cache 1\n"
+_MAGIC = b"linecontact_sym-derivation-cache 2 json\n"
+_SUFFIX = ".json"
 _memory: dict = {}
-_state = {"enabled": True, "version": None}
+_state = {"enabled": True, "version": None, "refused": set()}
+
+
+class UntrustedCacheWarning(UserWarning):
+    """The cache directory is not the user's own: it is not used."""
 
 
 def set_enabled(on: bool) -> None:
@@ -66,25 +83,78 @@ def cache_dir() -> Path | None:
     return Path(base) / "linecontact_sym"
 
 
+# ------------------------------------------------------------------ who may have written it
+def _foreign(st) -> str | None:
+    """Why a file or directory with this ``lstat`` is not the user's own, or None."""
+    if not hasattr(os, "getuid"):          # pragma: no cover - no POSIX owners (Windows)
+        return None
+    if st.st_uid != os.getuid():
+        return f"owned by uid {st.st_uid}, not by this user (uid {os.getuid()})"
+    if st.st_mode & (stat.S_IWGRP | stat.S_IWOTH):
+        return "writable by group or others"
+    return None
+
+
+def _trusted_dir(d: Path, create: bool) -> bool:
+    """Is ``d`` a directory only this user can write (created owner-only
+    when missing and ``create``)?  A refusal warns once per directory."""
+    try:
+        st = os.lstat(d)
+    except FileNotFoundError:
+        if not create:
+            return False
+        try:
+            d.mkdir(parents=True, exist_ok=True, mode=0o700)
+            st = os.lstat(d)
+        except OSError:
+            return False
+    except OSError:
+        return False
+    why = "not a directory (a link or a file)" if not stat.S_ISDIR(st.st_mode) else _foreign(st)
+    if why is None:
+        return True
+    if str(d) not in _state["refused"]:
+        _state["refused"].add(str(d))
+        warnings.warn(f"linecontact_sym: the derivation cache {d} is {why}; anyone who can write there could "
+                      f"plant results, so it is not used (derivations are computed afresh). Use a directory "
+                      f"of your own ({CACHE_ENV}=/path) or {CACHE_ENV}=off", UntrustedCacheWarning, stacklevel=3)
+    return False
+
+
+# ------------------------------------------------------------------ the key
 def code_version() -> str:
-    """The package version and a hash of this layer's source files."""
+    """The package version, the versions of the libraries results depend
+    on, and a hash of every source file of the package."""
     if _state["version"] is None:
-        here = Path(__file__).resolve().parent
-        init = (here.parent / "__init__.py").read_text(encoding="utf-8")
+        import mpmath
+        import sympy
+        try:
+            import flint
+            flint_version = getattr(flint, "__version__", "present")
+        except ImportError:   # pragma: no cover - a core dependency
+            flint_version = "absent"
+        pkg = Path(__file__).resolve().parent.parent
+        init = (pkg / "__init__.py").read_text(encoding="utf-8")
         found = re.search(r"__version__\s*=\s*[\"']([^\"']+)[\"']", init)
         version = found.group(1) if found else "unknown"
-        h = hashlib.sha256(version.encode())
-        for path in sorted(here.glob("*.py")) + sorted((here.parent / "core").glob("*.py")):
-            h.update(path.name.encode())
+        h = hashlib.sha256(f"{version}|sympy {sympy.__version__}|mpmath {mpmath.__version__}|"
+                           f"flint {flint_version}".encode())
+        for path in sorted(pkg.rglob("*.py")):
+            h.update(path.relative_to(pkg).as_posix().encode())
             h.update(path.read_bytes())
         _state["version"] = f"{version}+{h.hexdigest()[:16]}"
     return _state["version"]
 
 
+_DUMMY_INDEX = re.compile(r"dummy_index=\d+")
+
+
 def _part(p):
     import sympy as sp
     if isinstance(p, sp.Basic):
-        return sp.srepr(p)
+        text, seen = sp.srepr(p), {}
+        # a Dummy's index differs between processes: number them by appearance
+        return _DUMMY_INDEX.sub(lambda m: f"dummy_index=#{seen.setdefault(m.group(0), len(seen))}", text)
     if isinstance(p, (list, tuple)):
         return "(" + ",".join(_part(q) for q in p) + ")"
     if isinstance(p, dict):
@@ -98,9 +168,169 @@ def make_key(*parts) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
+# ------------------------------------------------------------------ data, never code
+_CLASSES: dict = {}
+
+
+def _sympy_names():
+    """name -> SymPy class (a subclass of Basic defined in SymPy) or SymPy
+    singleton (pi, E, oo, true, ...): everything :func:`from_srepr` accepts."""
+    if not _CLASSES:
+        import sympy as sp
+        stack = [sp.Basic]
+        while stack:
+            k = stack.pop()
+            stack.extend(type.__subclasses__(k))
+            if (getattr(k, "__module__", None) or "").startswith("sympy.") and not k.__name__.startswith("_"):
+                _CLASSES.setdefault(k.__name__, k)
+        for name in dir(sp):
+            v = getattr(sp, name)
+            if isinstance(v, type) and issubclass(v, sp.Basic):
+                _CLASSES[name] = v           # the public class wins a name clash
+            elif isinstance(v, sp.Basic) and not name.startswith("_"):
+                _CLASSES[name] = v           # pi, E, I, oo, zoo, nan, true, false, EulerGamma, ...
+        for name in ("Function", "Lambda", "Subs"):
+            _CLASSES.pop(name, None)         # would create new functions: not in a derivation record
+    return _CLASSES
+
+
+class UntrustedRecord(ValueError):
+    """A stored record holds something that is not plain data."""
+
+
+def from_srepr(text: str):
+    """The SymPy object of an ``srepr`` text, read by a whitelist: only calls
+    of SymPy classes (subclasses of ``Basic`` defined in SymPy) and SymPy's
+    singletons, with literal arguments (numbers, strings, True/False/None,
+    tuples, nested calls) and literal keywords, and unary minus.  Anything
+    else (a name that is not SymPy's, an attribute, a subscript, a lambda,
+    an operator) raises :class:`UntrustedRecord`; nothing is evaluated by
+    Python's ``eval``.  Dummies keep their name and assumptions; the
+    engine's integration variables (``_t``, ``_s`` of
+    :mod:`~linecontact_sym.method.transforms`) come back as themselves.
+
+    >>> import sympy as sp
+    >>> R = sp.Symbol("R", positive=True)
+    >>> from_srepr(sp.srepr(sp.pi * R / 4)) == sp.pi * R / 4
+    True
+    >>> from_srepr("__import__('os').system('true')")
+    Traceback (most recent call last):
+    ...
+    linecontact_sym.method.store.UntrustedRecord: not SymPy data: a call of __import__('os').system
+    """
+    names = _sympy_names()
+    try:
+        tree = ast.parse(text, mode="eval")
+    except (SyntaxError, ValueError, RecursionError) as exc:
+        raise UntrustedRecord(f"not an srepr text: {exc}") from None
+    dummies: dict = {}
+    from . import transforms as T
+    engine = {(d.name, tuple(sorted(d.assumptions0.items()))): d for d in (T.t, T.s)}
+
+    def literal(node):
+        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float, str, bool, type(None))):
+            return node.value
+        if isinstance(node, ast.Tuple):
+            return tuple(conv(e) for e in node.elts)
+        return conv(node)
+
+    def conv(node):
+        if isinstance(node, ast.Constant):
+            return literal(node)
+        if isinstance(node, ast.Tuple):
+            return literal(node)
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            return -conv(node.operand)
+        if isinstance(node, ast.Name):
+            v = names.get(node.id)
+            if v is None or isinstance(v, type):
+                raise UntrustedRecord(f"not SymPy data: {node.id}")
+            return v
+        if isinstance(node, ast.Call):
+            if not isinstance(node.func, ast.Name):
+                raise UntrustedRecord(f"not SymPy data: a call of {ast.unparse(node.func)}")
+            cls = names.get(node.func.id)
+            if not isinstance(cls, type):
+                raise UntrustedRecord(f"not SymPy data: {node.func.id}")
+            args = [literal(a) for a in node.args]
+            kw = {}
+            for k in node.keywords:
+                if k.arg is None or not isinstance(k.value, ast.Constant):
+                    raise UntrustedRecord("a keyword argument that is not a literal")
+                kw[k.arg] = k.value.value
+            if node.func.id == "Dummy":
+                index = kw.pop("dummy_index", None)
+                key = (args[0] if args else "", tuple(sorted(kw.items())))
+                if index not in dummies:
+                    import sympy as sp
+                    same = engine.get((key[0], tuple(sorted(sp.Dummy(key[0], **kw).assumptions0.items()))))
+                    dummies[index] = same if same is not None else sp.Dummy(*args, **kw)
+                return dummies[index]
+            return cls(*args, **kw)
+        raise UntrustedRecord(f"not SymPy data: {type(node).__name__}")
+    try:
+        return conv(tree.body)
+    except UntrustedRecord:
+        raise
+    except Exception as exc:              # a SymPy class refusing its arguments
+        raise UntrustedRecord(f"could not rebuild {text[:80]!r}: {type(exc).__name__}: {exc}") from None
+
+
+def encode(obj):
+    """A record as JSON-able plain data (SymPy objects by ``srepr``); a type
+    this store does not know raises TypeError (the record stays in memory)."""
+    import sympy as sp
+    from .rulebase import Step
+    from .verification import VerificationRecord
+    if obj is None or isinstance(obj, (bool, int, float, str)):
+        return obj
+    if isinstance(obj, sp.Basic):
+        return {"sympy": sp.srepr(obj)}
+    if isinstance(obj, tuple):
+        return {"tuple": [encode(v) for v in obj]}
+    if isinstance(obj, list):
+        return {"list": [encode(v) for v in obj]}
+    if isinstance(obj, dict):
+        return {"dict": [[encode(k), encode(v)] for k, v in obj.items()]}
+    if isinstance(obj, Step):
+        return {"Step": [encode(obj.rule), encode(obj.expr), encode(tuple(obj.conditions)), encode(tuple(obj.notes))]}
+    if isinstance(obj, VerificationRecord):
+        return {"VerificationRecord": [encode(obj.points), encode(obj.digits), obj.dps, obj.reference, obj.required]}
+    raise TypeError(f"the derivation store does not keep {type(obj).__name__}")
+
+
+def decode(data):
+    """The inverse of :func:`encode`, through :func:`from_srepr` for SymPy
+    objects; anything unexpected raises :class:`UntrustedRecord`."""
+    from .rulebase import Step
+    from .verification import VerificationRecord
+    if data is None or isinstance(data, (bool, int, float, str)):
+        return data
+    if isinstance(data, dict) and len(data) == 1:
+        (tag, val), = data.items()
+        if tag == "sympy" and isinstance(val, str):
+            return from_srepr(val)
+        if tag in ("tuple", "list") and isinstance(val, list):
+            out = [decode(v) for v in val]
+            return tuple(out) if tag == "tuple" else out
+        if tag == "dict" and isinstance(val, list) and all(isinstance(p, list) and len(p) == 2 for p in val):
+            return {decode(k): decode(v) for k, v in val}
+        if tag == "Step" and isinstance(val, list) and len(val) == 4:
+            rule, expr, conds, notes = (decode(v) for v in val)
+            if isinstance(rule, str) and isinstance(conds, tuple) and isinstance(notes, tuple):
+                return Step(rule, expr, conds, notes)
+        if tag == "VerificationRecord" and isinstance(val, list) and len(val) == 5:
+            points, digits = decode(val[0]), decode(val[1])
+            if isinstance(points, tuple) and isinstance(digits, tuple) and isinstance(val[2], int) \
+                    and isinstance(val[3], str) and isinstance(val[4], int):
+                return VerificationRecord(points, digits, val[2], val[3], val[4])
+    raise UntrustedRecord(f"not a record of this store: {str(data)[:80]}")
+
+
+# ------------------------------------------------------------------ files
 def _path(key):
     d = cache_dir()
-    return None if d is None else d / key[:2] / f"{key}.pickle"
+    return None if d is None else d / key[:2] / f"{key}{_SUFFIX}"
 
 
 def get(key: str):
@@ -111,10 +341,24 @@ def get(key: str):
     if not enabled():
         return None
     path = _path(key)
+    if not (_trusted_dir(path.parent.parent, create=False) and _trusted_dir(path.parent, create=False)):
+        return None
     try:
-        data = path.read_bytes()
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
     except OSError:
         return None
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode) or _foreign(st) is not None:
+            return None
+        with os.fdopen(fd, "rb") as fh:
+            fd = None
+            data = fh.read()
+    except OSError:
+        return None
+    finally:
+        if fd is not None:
+            os.close(fd)
     rec = _decode(data, key)
     if rec is None:
         return None
@@ -130,8 +374,8 @@ def _decode(data: bytes, key: str):
     if hashlib.sha256(payload).hexdigest().encode() != digest:
         return None                                    # corrupt: recomputed, never trusted
     try:
-        rec = pickle.loads(payload)
-    except Exception:
+        rec = decode(json.loads(payload.decode("utf-8")))
+    except Exception:   # noqa: BLE001 -- whatever is wrong with a file, it is derived afresh
         return None
     if not isinstance(rec, dict) or rec.get("key") != key or rec.get("version") != code_version():
         return None                                    # stale or misplaced
@@ -140,19 +384,21 @@ def _decode(data: bytes, key: str):
 
 def put(key: str, record: dict) -> None:
     """Remember ``record`` under ``key``: in memory, and on disk if enabled
-    (silently skipped when the directory cannot be written)."""
+    (silently skipped when the directory cannot be written or is not the
+    user's own)."""
     record = dict(record, key=key, version=code_version())
     _memory[key] = record
     if not enabled():
         return
     path = _path(key)
     try:
-        payload = pickle.dumps(record, protocol=pickle.HIGHEST_PROTOCOL)
-    except Exception:
-        return                                         # not picklable: memory only
+        payload = json.dumps(encode(record), separators=(",", ":")).encode("utf-8")
+    except (TypeError, ValueError):
+        return                                         # not plain data: memory only
     data = _MAGIC + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload
+    if not (_trusted_dir(path.parent.parent, create=True) and _trusted_dir(path.parent, create=True)):
+        return
     try:
-        path.parent.mkdir(parents=True, exist_ok=True, mode=0o700)
         fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-")
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)

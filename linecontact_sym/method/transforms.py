@@ -45,9 +45,10 @@ from ..core.conversion import to_mpf
 from ..core.roots import root_in_bracket
 from ..core.precision import workdps
 
-# dummy integration variables: the defining Integrals print with these
-t = sp.Symbol("t", positive=True)
-s = sp.Symbol("s", positive=True)
+# the integration variables: Dummies (they print as _t, _s), so that a user's
+# parameter named t or s is never captured by an integral of the engine
+t = sp.Dummy("t", positive=True)
+s = sp.Dummy("s", positive=True)
 
 
 def force_integrand(fprime: sp.Expr) -> sp.Expr:

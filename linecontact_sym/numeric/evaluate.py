@@ -54,6 +54,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.conversion import to_mpf
 from ..core.errors import DomainError, LineContactError
+from ..core.printing import lambdify
 from ..method.derivation import values_by_name
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
@@ -193,7 +194,7 @@ class SeriesModel:
 
     def __init__(self, contact, K=MODEL_TERMS):
         prof = contact.profile
-        if prof.is_piecewise:
+        if prof.is_piecewise or prof.cases:
             raise LineContactError("no series model for a piecewise profile")
         fp = prof.pieces[0].derivative
         ser = sp.series(fp, S.x, 0, K + 1).removeO()
@@ -219,7 +220,7 @@ class SeriesModel:
         self.args = (S.a, S.E_star) + tuple(prof.params)
         self.names = [s.name for s in self.args]
         self.terms = [S.E_star * cb * S.a ** (k + 1) for k, cb in coeffs]
-        self._mp = sp.lambdify(self.args, self.terms, "mpmath")
+        self._mp = lambdify(list(self.args), self.terms, "mpmath")
         self._math = None
         self._names: dict = {}
         self.profile_terms = [sp.integrate(sp.Poly(ser, S.x).coeff_monomial(S.x**k) * S.x**k, (S.x, 0, S.x))
@@ -241,7 +242,7 @@ class SeriesModel:
         """The terms in float64 (a few eps each), or None where one under- or
         overflows (then :meth:`term_values` in mpmath)."""
         if self._math is None:
-            self._math = sp.lambdify(self.args, self.terms, "math")
+            self._math = lambdify(list(self.args), self.terms, "math")
         try:
             t = [float(v) for v in self._math(*[_as_float(values[n]) for n in self.names])]
         except (ValueError, OverflowError, ZeroDivisionError):
@@ -506,7 +507,7 @@ def _quad_error(d, point):
         syms = d.variables_all
         quads = [(VectorQuad(I, compile_plain_numpy, conditions=()), I) for I in ints]
         # d(form)/d(I) for the propagation of each integral's error
-        coeffs = [sp.lambdify(syms, sp.diff(form.xreplace({I: sp.Symbol("_I_")}), sp.Symbol("_I_"))
+        coeffs = [lambdify(list(syms), sp.diff(form.xreplace({I: sp.Symbol("_I_")}), sp.Symbol("_I_"))
                               .xreplace({sp.Symbol("_I_"): 0}), "numpy") for I in ints]
         cache[key] = (quads, coeffs, [s.name for s in syms])
     quads, coeffs, names = cache[key]

@@ -41,6 +41,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.conversion import point_value, to_mpf
 from ..core.errors import DomainError, LineContactError, singular_point
+from ..core.printing import lambdify
 from ..parsing import to_sympy
 from .cache import IdentityCache
 from .quadrature import VectorQuad, piecewise_breakpoints
@@ -144,7 +145,7 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
             return sp.Function(name)(*q.params)
         expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
     mods = [dict(_SCIPY_FUNCS, _mphyper=mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
-    f = sp.lambdify(args, to_scipy_names(fold_constants(expr)), modules=mods, cse=True)
+    f = lambdify(args, to_scipy_names(fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):
         if patch is not None and sym not in patch:
@@ -223,7 +224,7 @@ def lambdify_mpmath(expr, args, stable: bool = True, conditions=()):
     """
     if stable:
         expr = stabilize(expr, conditions).expr
-    return sp.lambdify(args, expr, modules=[_MP_MODULE, "mpmath"])
+    return lambdify(args, expr, modules=[_MP_MODULE, "mpmath"])
 
 
 def lambdify_mpmath_quad(expr, args, stable: bool = False):
@@ -238,10 +239,10 @@ def lambdify_mpmath_quad(expr, args, stable: bool = False):
     def to_quad(I):
         (s_, lo, hi) = I.limits[0]
         params = sorted(I.free_symbols, key=lambda q: q.name)
-        fI = sp.lambdify([s_] + params, I.function, modules=[dict(MPMATH_FUNCS), "mpmath"])
-        lo_f = sp.lambdify(params, lo, "mpmath")
-        hi_f = sp.lambdify(params, hi, "mpmath")
-        bp_fs = [sp.lambdify(params, b, "mpmath") for b in piecewise_breakpoints(I.function, s_)
+        fI = lambdify([s_] + params, I.function, modules=[dict(MPMATH_FUNCS), "mpmath"])
+        lo_f = lambdify(params, lo, "mpmath")
+        hi_f = lambdify(params, hi, "mpmath")
+        bp_fs = [lambdify(params, b, "mpmath") for b in piecewise_breakpoints(I.function, s_)
                  if b.free_symbols <= set(params)]
 
         def q(*vals):
@@ -268,7 +269,7 @@ def lambdify_mpmath_quad(expr, args, stable: bool = False):
         quads[name] = q
         return sp.Function(name)(*params)
     expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
-    return sp.lambdify(args, expr, modules=[dict(MPMATH_FUNCS, **quads), "mpmath"])
+    return lambdify(args, expr, modules=[dict(MPMATH_FUNCS, **quads), "mpmath"])
 
 
 #: stable forms and compiled functions per Derivation, kept here, not in the
@@ -567,6 +568,9 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
         check_arguments(names, merged, quantity)
         return [merged[n] for n in names]
 
+    # where the result does not hold (a < R fails, ...) the value is NaN, never the formula's number
+    conds = tuple(getattr(derivation, "point_test", ()))
+    holds_at = lambdify(list(syms), sp.And(*conds), [NUMPY_LOGIC, "numpy"]) if conds else None
     if backend == "numpy":
         f = _cached_lambdify(derivation, "numpy", stable)
         if stable and is_guarded(derivation):
@@ -575,13 +579,21 @@ def compile_callable(derivation, backend="numpy", dps=30, params=None, stable=Tr
         def fn(**kw):
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
                 vals = [np.asarray(v, dtype=float) for v in collect(kw)]
-                return _chunked(f, vals)
+                out = _chunked(f, vals)
+                if holds_at is not None:
+                    ok = np.asarray(holds_at(*vals), dtype=bool)
+                    if not np.all(ok):
+                        out = np.where(ok, out, np.nan)
+                return out[()] if isinstance(out, np.ndarray) and out.ndim == 0 else out
     elif derivation.closed_form:
         f = _cached_lambdify(derivation, "mpmath", stable)
 
         def fn(**kw):
             with workdps(dps):
-                return +f(*[to_mpf(to_sympy(v) if isinstance(v, str) else v) for v in collect(kw)])
+                args = [to_mpf(to_sympy(v) if isinstance(v, str) else v) for v in collect(kw)]
+                if holds_at is not None and not bool(holds_at(*[float(v) for v in args])):
+                    return mpmath.mpf("nan")
+                return +f(*args)
     else:
         ref = derivation.reference
 

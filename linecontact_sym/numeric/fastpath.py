@@ -30,6 +30,7 @@ import numpy as np
 import scipy.special as sc
 import sympy as sp
 
+from ..core.printing import lambdify
 from .cache import IdentityCache
 from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, cancellation_probe,
                       cancellation_sums, compile_callable, stable_form)
@@ -75,11 +76,11 @@ class ScalarKit:
         if expr.has(sp.Integral):
             return
         try:
-            self.f = sp.lambdify(syms, to_scipy_names(fold_constants(expr)), modules=[_SCALAR_FUNCS, "math"])
+            self.f = lambdify(syms, to_scipy_names(fold_constants(expr)), modules=[_SCALAR_FUNCS, "math"])
             pairs = cancellation_sums(d)
             if pairs:
                 tup = to_scipy_names(fold_constants(sp.Tuple(*[q for p in pairs for q in p])))
-                self.probe = sp.lambdify(syms, tup, modules=[_SCALAR_FUNCS, "math"], cse=True)
+                self.probe = lambdify(syms, tup, modules=[_SCALAR_FUNCS, "math"], cse=True)
         except Exception:          # a function the math module does not have
             self.f = self.probe = None
 

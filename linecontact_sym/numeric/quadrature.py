@@ -24,6 +24,7 @@ import random
 import numpy as np
 import sympy as sp
 
+from ..core.printing import lambdify
 from ..core.quadrature import smoothstep_gauss, tanh_sinh_levels
 from .stable import stabilize
 
@@ -88,10 +89,10 @@ class VectorQuad:
         self.conditions = conditions
         v, w = sp.Dummy("v", positive=True), sp.Dummy("w", positive=True)
         self.v, self.w = v, w
-        bp_fns = [sp.lambdify(self.params, b, "numpy") for b in bps]
+        bp_fns = [lambdify(self.params, b, "numpy") for b in bps]
         self.bp_fns = bp_fns
-        self.lo_fn = sp.lambdify(self.params, lo, "numpy")
-        self.hi_fn = sp.lambdify(self.params, hi, "numpy")
+        self.lo_fn = lambdify(self.params, lo, "numpy")
+        self.hi_fn = lambdify(self.params, hi, "numpy")
         # each breakpoint lies below lo (-1), inside (lo, hi) (0) or above hi (+1)
         for where in itertools.product((-1, 0, 1), repeat=len(bps)):
             ins = [b for b, w_ in zip(bps, where) if w_ == 0]

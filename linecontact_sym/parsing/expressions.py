@@ -45,7 +45,9 @@ from ..core import symbols as S
 from ..core.conversion import exact_number, to_basic
 from ..core.errors import ClaimError, DomainError, LineContactError
 
-#: integration variables (the paper's a-tilde); the same symbols as the engine's
+#: integration variables of formulas people write (the paper's a-tilde); the
+#: engine's own are Dummies (:mod:`linecontact_sym.method.transforms`), so a
+#: parameter named t or s in a profile never meets them
 t = sp.Symbol("t", positive=True)
 s = sp.Symbol("s", positive=True)
 

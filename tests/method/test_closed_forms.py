@@ -230,7 +230,7 @@ def test_cache_on_disk_and_in_memory(tmp_path, monkeypatch):
     prof = x**2 / (2 * R) + x**4 / R**3
     d1 = lcs.LineContact(prof, points=3).derivation("pressure")
     assert d1.cached == "" and d1.closed_form
-    files = list(tmp_path.rglob("*.pickle"))
+    files = list(tmp_path.rglob("*.json"))
     assert files, "nothing written to the cache directory"
     d2 = lcs.LineContact(prof, points=3).derivation("pressure")
     assert d2.cached == "memory" and d2.expr == d1.expr
@@ -242,7 +242,7 @@ def test_cache_on_disk_and_in_memory(tmp_path, monkeypatch):
     assert abs(d3.evalf(dps=20, a=0.5, x=0.25, R=1, E_star=1)
                - d3.reference({a: sp.Rational(1, 2), x: sp.Rational(1, 4), R: 1, E_star: 1}, 20)) < 1e-15
     # corrupt entries are recomputed, never trusted
-    for f in tmp_path.rglob("*.pickle"):
+    for f in tmp_path.rglob("*.json"):
         f.write_bytes(f.read_bytes()[:-7] + b"garbage")
     store.clear_memory()
     d4 = lcs.LineContact(prof, points=3).derivation("pressure")
@@ -289,7 +289,7 @@ def test_cli_no_cache_writes_nothing(tmp_path, monkeypatch):
         assert cli.main(["derive", "x**3", "--quantities", "force", "--no-cache"]) == 0
     finally:
         store.set_enabled(True)
-    assert not list(tmp_path.rglob("*.pickle"))
+    assert not list(tmp_path.rglob("*.json"))
 
 
 # ----------------------------------------------------------------- evaluate: arrays, and the scalar path

@@ -21,7 +21,7 @@ from ..normal.equilibria import equilibria, landscape, minimum
 from .pull_off import NumericDerivation, sample_points, solve_load, statement, tidy_checked
 from ...core.precision import workdps
 
-_phi = sp.Symbol("phi", positive=True)
+_phi = sp.Dummy("phi", positive=True)   # an integration variable: never a user's phi
 
 
 def equilibrium_digits(ad, pexpr) -> float:

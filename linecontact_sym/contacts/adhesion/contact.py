@@ -42,6 +42,7 @@ from ...method.derivation import Derivation, values_by_name
 from ...parsing import to_sympy
 from . import branches
 from . import pull_off
+from ..normal.cases import case_of
 from ..base import ContactOn, Quantity
 from ..normal.equilibria import SEARCH_BUDGET, equilibria, searching_until
 from ..normal.force_law import PullOff, ForceLaw
@@ -231,6 +232,9 @@ class AdhesiveContact(ContactOn):
         numeric search outlasts ``budget`` seconds (default
         :data:`~linecontact_sym.contacts.normal.equilibria.SEARCH_BUDGET`; the
         symbolic attempt has its own, the contact's)."""
+        case = case_of(self, values)       # a profile switching on its parameters: that case's contact
+        if case is not self:
+            return case.pull_off_at(dps, budget, **values)
         vals = self._numeric_values(values)
         budget = SEARCH_BUDGET if budget is None else checked_budget(budget)
         with searching_until(budget):

@@ -20,6 +20,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.errors import DomainError, InadmissibleProfileError
+from ...method.verification import holds
 from ...parsing import to_sympy
 from ...core.precision import workdps
 
@@ -119,4 +120,20 @@ def admissible_range(contact, a_max: float = 100.0, rtol: float = 1e-6, **values
     return good, reason
 
 
-__all__ = ["check_admissible", "admissible_range"]
+__all__ = ["check_admissible", "admissible_range", "check_point"]
+
+
+def check_point(contact, values: dict) -> None:
+    """The frictionless solution holds at ``values`` (Symbol -> number, with
+    ``a``): the point conditions of the force law (the exact cylinder's
+    a < R, ...) that the values decide hold there.  The contacts built on
+    this one (adhesive, tangential, stresses) call it before any numeric
+    work, so a point outside is a :class:`~linecontact_sym.core.errors.DomainError`
+    at once, not a foreign exception after a long search."""
+    d = contact.derivation("force")
+    failed = [c for c, t in zip(d.point_conditions, d.point_test)
+              if c.free_symbols <= set(values) and not holds((t,), values)]
+    if failed:
+        shown = {k.name if hasattr(k, "name") else k: v for k, v in values.items()}
+        raise DomainError(f"the frictionless solution holds only where {', '.join(map(str, d.point_conditions))}; "
+                          f"{', '.join(map(str, failed))} fails at {shown}")

@@ -25,6 +25,7 @@ from ..base import Contact, Quantity
 from .equilibria import SEARCH_BUDGET, half_width_at, searching_until
 from .force_law import ForceLaw
 from .inverse import derive_half_width
+from .cases import derive_by_case
 from ..sampling import point_sampler
 from ...core.precision import workdps
 
@@ -104,6 +105,24 @@ class LineContact(Contact):
     def variables(self):
         """The symbols a number needs besides the arguments: E_star and the profile's parameters."""
         return (S.E_star,) + tuple(self.params)
+
+    def derivation(self, quantity: str) -> Derivation:
+        """See :meth:`~.base.Contact.derivation`; switching on parameters: case by case (:mod:`.cases`)."""
+        if not self.profile.cases:
+            return super().derivation(quantity)
+        name = self.resolve(quantity)
+        cache = self._caches()
+        if name not in cache:
+            cache[name] = derive_by_case(self, name)
+        return cache[name]
+
+    def derive_by_case(self, on, name: str) -> Derivation:
+        """``on.derivation(name)`` (a contact built on this one) case by case."""
+        return derive_by_case(on, name)
+
+    def check_point(self, values: dict) -> None:
+        """See :func:`~.admissibility.check_point`."""
+        admissibility.check_point(self, values)
 
     def _sampler(self, domain="any"):
         return point_sampler(self.profile, domain)

@@ -26,6 +26,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
+from ...core.ranges import check_stick, check_value
 from ...parsing import user_value
 from ...method.derivation import Derivation, fallback_step, values_by_name, timed
 from ...method.rules import Step
@@ -38,7 +39,7 @@ from ...core.conversion import real_mpf, to_mpf
 from ...core.precision import workdps
 
 #: the integration variable of a traction given as an expression (real: s < 0 too)
-s_real = sp.Symbol("s", real=True)
+s_real = sp.Dummy("s", real=True)   # an integration variable: never a user's s
 _ARGS = ("a", "x", "z")
 _MAX = {"max_shear": "principal_shear", "max_von_mises": "von_mises", "max_tresca": "tresca"}
 
@@ -100,10 +101,17 @@ class StressField(ContactOn):
             raise DomainError("partial slip needs the stick half-width: stick = c")
         self.contact, self.tangential = contact, tangential
         self.mu, self.nu = user_value(mu), user_value(nu)
+        check_value("nu", self.nu)
+        if tangential is not None:
+            check_value("mu", self.mu, zero_ok=tangential == "sliding")
         self.stick = None if stick is None else user_value(stick)
         self.breaks, self.verify, self.points = tuple(breaks), verify, points
         self._cache: dict = {}
         self._fields: dict = {}
+
+    @property
+    def _zero_ok(self):
+        return ("mu",) if self.tangential == "sliding" else ()
 
     @classmethod
     def from_frictionless(cls, contact):
@@ -226,6 +234,13 @@ class StressField(ContactOn):
             raise DomainError(f"{exc} (the stress field of {self.contact.profile.expr})") from None
         if vals[S.a] <= 0:
             raise DomainError(f"the half-width must be positive, got a = {values['a']}")
+        by_name = {k.name: v for k, v in vals.items()}
+        check_value("nu", by_name.get("nu"))
+        if self.tangential is not None:
+            check_value("mu", by_name.get("mu"), zero_ok=self.tangential == "sliding")
+        if self.stick is not None:
+            check_stick(vals[S.a], self.stick.xreplace(vals))
+        self.contact.check_point(vals)              # where the normal solution holds (a < R, ...)
         return vals
 
     def field(self, **values) -> F.FieldEvaluator:

@@ -22,6 +22,7 @@ s = 0 for power laws, s = +-b for the worn cylinder), by tanh-sinh.
 from __future__ import annotations
 
 import mpmath
+from ...core.errors import DomainError
 from ...core.precision import workdps
 
 
@@ -36,11 +37,12 @@ def _pieces(x, z, a, breaks):
 
 
 def flamant_stresses(p, q, a, x, z, breaks=(), dps: int = 30):
-    """(sigma_x, sigma_z, tau_xz) at (x, z), z > 0, of the pressure ``p`` and
+    """(sigma_x, sigma_z, tau_xz) at (x, z), z >= 0, of the pressure ``p`` and
     the tangential traction ``q`` (mpmath callables on [-a, a], ``q`` may be
     None) by tanh-sinh quadrature of Johnson's Eq. (2.23) after
     s = x + z sinh(u).  Signs as in :mod:`.kolosov` (tensile positive,
-    q acting on the body in +x).
+    q acting on the body in +x).  On the surface z = 0 without tangential
+    traction: sigma_z = sigma_x = -p(x), tau_xz = 0 (Johnson Eq. 2.25).
 
     >>> import mpmath
     >>> hertz = lambda s: mpmath.sqrt(1 - s**2)          # p0 = a = 1
@@ -49,6 +51,12 @@ def flamant_stresses(p, q, a, x, z, breaks=(), dps: int = 30):
     """
     with workdps(dps + 10):
         a, x, z = mpmath.mpf(a), mpmath.mpf(x), mpmath.mpf(z)
+        if z == 0:                  # the surface: the tractions themselves
+            if q is not None:
+                raise DomainError("the surface stresses under a tangential traction need its Hilbert transform; "
+                                  "evaluate at a depth z > 0 (or use a closed form)")
+            pv = p(x) if -a <= x <= a else mpmath.mpf(0)
+            return (-pv, -pv, mpmath.mpf(0))
         us = _pieces(x, z, a, [mpmath.mpf(b) for b in breaks])
 
         def s_of(u):
@@ -82,6 +90,12 @@ def cauchy_quad(p, a, x, z, breaks=(), dps: int = 30):
     by tanh-sinh after s = x + z sinh(u): p(s) z cosh(u)/(z (i - sinh u)) du."""
     with workdps(dps + 10):
         a, x, z = mpmath.mpf(a), mpmath.mpf(x), mpmath.mpf(z)
+        if z == 0:                  # the surface: the tractions themselves
+            if q is not None:
+                raise DomainError("the surface stresses under a tangential traction need its Hilbert transform; "
+                                  "evaluate at a depth z > 0 (or use a closed form)")
+            pv = p(x) if -a <= x <= a else mpmath.mpf(0)
+            return (-pv, -pv, mpmath.mpf(0))
         us = _pieces(x, z, a, [mpmath.mpf(b) for b in breaks])
         j = mpmath.mpc(0, 1)
 

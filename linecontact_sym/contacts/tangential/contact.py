@@ -93,14 +93,15 @@ from ...core.errors import DomainError
 from ...method.derivation import Derivation, fallback_step
 from ...method.rules import Step
 from ...method.verification import verify
-from ...parsing import to_sympy, user_value
+from ...core.ranges import check_points, check_value
+from ...parsing import user_value
 from . import history
 from . import states
 from ..base import ContactOn, Quantity
 
 #: range of the friction coefficient at the verification points
 MU_RANGE = (0.1, 1.0)
-_t = sp.Symbol("t", positive=True)
+_t = sp.Dummy("t", positive=True)   # an integration variable: never a user's t
 #: symbols the tangential quantities take besides the profile's
 _OWN = (S.mu, S.Q, S.c_s, S.c_r)
 
@@ -179,6 +180,7 @@ class TangentialLineContact(ContactOn):
         m = user_value(friction)
         if not isinstance(m, sp.Expr) or m.has(S.x, S.a, S.P, S.Q, S.c_s, S.c_r):
             raise DomainError(f"the friction coefficient {m} must be an expression free of x, a, P, Q, c_s, c_r")
+        check_value("mu", m)
         if m.is_positive is not True:
             raise DomainError(f"the friction coefficient must be positive, got {m} (use a number > 0 or a "
                               f"symbol created with positive=True, e.g. lcs.mu)")
@@ -211,21 +213,6 @@ class TangentialLineContact(ContactOn):
         starts with a flat, f = 0 on [0, b))."""
         first = self.profile.pieces[0]
         return first.hi if (len(self.profile.pieces) > 1 and sp.simplify(first.expr) == 0) else sp.S.Zero
-
-    def check_domain(self, quantity, values):
-        """The base checks (a > 0, E* > 0, |x| <= a) plus 0 <= c_s <= c_r <= a
-        and mu > 0."""
-        vals = super().check_domain(quantity, values)
-        num = {k: to_sympy(v) for k, v in vals.items() if v is not None}
-        A, cs, cr = num.get("a"), num.get("c_s"), num.get("c_r")
-        if cs is not None and cs.is_number and (cs < 0 or (A is not None and A.is_number and cs > A)):
-            raise DomainError(f"the stick half-width must lie in [0, a], got c_s = {cs}, a = {A}")
-        if cr is not None and cr.is_number and ((cs is not None and cs.is_number and cr < cs)
-                                                or (A is not None and A.is_number and cr > A)):
-            raise DomainError(f"the reversal stick half-width must lie in [c_s, a], got c_r = {cr}")
-        if "mu" in num and num["mu"].is_number and not num["mu"] > 0:
-            raise DomainError(f"the friction coefficient must be positive, got mu = {num['mu']}")
-        return vals
 
     # ----------------------------------------------------------- building blocks
     def _normal(self, name) -> Derivation:
@@ -354,7 +341,9 @@ class TangentialLineContact(ContactOn):
             return history.stick_half_width_at(self, Qv, values).c
         key = ("stick_half_width", Qv)
         if key not in self._cache or (not self._cache[key].closed_form and self._cache[key].attempts):
-            self._cache[key] = states.derive_stick_half_width(self, Qv, budget)
+            # derived for the package's Q, then written in the user's own symbol
+            self._cache[key] = states.derive_stick_half_width(self, S.Q, budget) if Qv == S.Q else \
+                states.in_terms_of(self, self._stick_half_width(S.Q, budget), Qv)
         return self._cache[key]
 
     def _derive_stick_half_width(self):
@@ -390,7 +379,7 @@ class TangentialLineContact(ContactOn):
         """A full fretting cycle between +-Q_amplitude: the loop (Q, delta),
         the stick half-width at the extremes and the energy dissipated per
         cycle; a :class:`~.history.FrettingCycle`."""
-        return history.cycle(self, Q_amplitude, points, values)
+        return history.cycle(self, Q_amplitude, check_points(points), values)
 
     def bem(self, elements: int = 200, **values):
         """The independent direct solution on this contact's normal pressure

@@ -14,6 +14,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, GrossSlidingError, LineContactError
+from ...core.ranges import check_values
 from ...core.roots import root_in_log
 from ...numeric.exports import lambdify_numpy, make_callable
 from ...parsing import user_value
@@ -193,6 +194,9 @@ def _numbers(t, values):
         raise DomainError(f"values needed for {', '.join(missing)}")
     if ("a" in values) == ("P" in values):
         raise DomainError("give either the half-width a or the normal load P")
+    check_values({s.name: v for s, v in vals.items()})          # mu > 0 (core.ranges)
+    if "a" in values:                                           # where the normal solution holds (a < R, ...)
+        t.contact.check_point({**vals, S.a: to_sympy_number(values["a"])})
     with workdps(30):
         law = force_law_at(t, vals)
         if "a" in values:

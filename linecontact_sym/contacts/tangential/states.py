@@ -11,7 +11,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.budget import Deadline, checked_budget, run_with_budget
 from ...core.conversion import float_values, rational, to_mpf
-from ...core.errors import BudgetExceeded
+from ...core.errors import BudgetExceeded, DomainError
 from ...method import transforms as T
 from ...method.derivation import Derivation, fallback_step, remembered, timed
 from ...method.rules import Step
@@ -355,6 +355,51 @@ def _derive_stick(t, Qv, fd, deadline) -> Derivation:
                       reference=_value_ref(t, Qv), variables=variables, attempts=inv.attempts)
 
 
+def in_terms_of(t, d: Derivation, Qv) -> Derivation:
+    """The stick half-width derived for the package's Q, written for the
+    user's own tangential force ``Qv`` (a symbol such as a positive ``F``,
+    or an expression in such symbols): the same closed form with Q -> Qv
+    (|Q| becomes Qv for a positive Qv), its conditions and its reference
+    rewritten alike.  ``Qv`` must be real (a symbol without assumptions is
+    taken as real, and the notes say so) and may not use the profile's
+    parameters, E_star, a, mu's symbols or the stick half-widths."""
+    Qv = sp.sympify(Qv, strict=True)  # safe: a SymPy expression already (the caller converted it)
+    taken = set(t.contact.params) | {S.E_star, S.a, S.x, S.c_s, S.c_r, S.P} | set(t.mu.free_symbols)
+    clash = Qv.free_symbols & taken
+    if clash:
+        raise DomainError(f"the tangential force {Qv} uses {', '.join(sorted(map(str, clash)))}, which already mean "
+                          f"something here; use a symbol of its own (e.g. lcs.Q or Symbol('F', positive=True))")
+    if Qv.is_real is False or Qv.is_extended_real is False:
+        raise DomainError(f"the tangential force {Qv} is not real")
+    notes = d.notes
+    if Qv.is_real is None:
+        notes += (f"the tangential force {Qv} has no assumptions: it is taken real (the formula holds for real "
+                  f"{Qv}; declare it Symbol(..., real=True) or positive=True)",)
+        Qr = sp.Dummy("Q", real=True)
+        expr = d.expr.xreplace({S.Q: Qr}).xreplace({Qr: Qv})
+    else:
+        expr = d.expr.xreplace({S.Q: Qv})
+    conds = tuple(c.xreplace({S.Q: Qv}) for c in d.conditions)
+
+    def translated(fn):
+        if fn is None:
+            return None
+
+        def g(vals, dps):
+            q = Qv.xreplace(vals)
+            return fn({**{k: v for k, v in vals.items() if k not in Qv.free_symbols}, S.Q: q}, dps)
+        return g
+    variables = []
+    for v in d.variables:
+        for w in ((v,) if v != S.Q else tuple(sorted(Qv.free_symbols, key=lambda q: q.name))):
+            if w not in variables:
+                variables.append(w)
+    step = Step(d.step.rule, expr, conds, d.step.notes)
+    return Derivation("stick_half_width", expr=expr, closed_form=d.closed_form, step=step, conditions=conds,
+                      verification=d.verification, seconds=d.seconds, notes=notes, reference=translated(d.reference),
+                      variables=tuple(variables), attempts=d.attempts, cached=d.cached)
+
+
 def _tidy_root(e):
     """sqrt(u)/sqrt(v) -> sqrt(expand(u/v)) for a non-negative square root
     (a half-width): c_s = sqrt(a**2 - 4 R |Q|/(pi E* mu)) for Hertz."""
@@ -367,4 +412,4 @@ def _tidy_root(e):
 
 
 __all__ = ["CONDITIONS", "normal_fn", "sampler", "references", "energy_parts", "energy_references",
-           "derive_stick_half_width"]
+           "derive_stick_half_width", "in_terms_of"]

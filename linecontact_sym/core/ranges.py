@@ -1,0 +1,116 @@
+"""Physical ranges: the one place that says which values a physical quantity
+may take, and checks them.
+
+=========  ==================  ===============================================
+name       range               why
+=========  ==================  ===============================================
+``nu``     -1 < nu <= 1/2      Poisson's ratio of an isotropic elastic solid
+                               (1/2: incompressible; 0 and negative values are
+                               valid: cork, auxetic materials)
+``mu``     mu > 0              Coulomb friction coefficient of a tangential or
+                               sliding contact (0 is the frictionless contact)
+``c_s``    0 <= c_s <= a       the stick zone lies inside the contact
+``c_r``    c_s <= c_r <= a     a reversal's stick zone holds the turning point's
+``points`` integer >= 2        a load cycle needs both of its ends
+=========  ==================  ===============================================
+
+Conditions of a derived result (the exact cylinder's a < R, ...) are not
+listed here: they are part of the result
+(:attr:`~linecontact_sym.method.derivation.Derivation.point_conditions`)
+and every numeric path checks them.
+
+Each check takes a SymPy number, a Python/NumPy number or an array (checked
+elementwise); a symbolic value is left alone (it is checked when it gets a
+number).  A value outside its range raises
+:class:`~linecontact_sym.core.errors.DomainError` naming the quantity, the
+value and the range.
+"""
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+import sympy as sp
+
+from .errors import DomainError
+
+#: name -> (low, low included, high, high included, what it is)
+RANGES = {
+    "nu": (-1, False, sp.Rational(1, 2), True, "Poisson's ratio"),
+    "mu": (0, False, sp.oo, False, "the friction coefficient"),
+}
+
+
+def _numeric(v):
+    """The value as a float array (None for a symbolic value)."""
+    if isinstance(v, sp.Basic):
+        if not v.is_number:
+            return None
+        if v.is_real is False:
+            raise DomainError(f"{v} is not a real number")
+        return np.asarray(float(sp.N(v, 30)))
+    if isinstance(v, str):
+        return None                      # text: checked once it is read as a number
+    try:
+        return np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        return None
+
+
+def check_value(name: str, value, zero_ok: bool = False) -> None:
+    """``value`` lies in the physical range of ``name`` (see the module
+    docstring); names without a range pass.  ``zero_ok``: the value 0 is
+    accepted too (the sliding stress field's mu = 0 is the frictionless field)."""
+    if name not in RANGES or value is None:
+        return
+    if zero_ok and _numeric(value) is not None and np.all(_numeric(value) == 0):
+        return
+    lo, lo_in, hi, hi_in, what = RANGES[name]
+    arr = _numeric(value)
+    if arr is None:
+        return
+    if isinstance(value, sp.Basic):
+        ok = (value >= lo if lo_in else value > lo) == sp.true and \
+            (hi == sp.oo or (value <= hi if hi_in else value < hi) == sp.true)
+    else:
+        with np.errstate(invalid="ignore"):
+            ok = bool(np.all(np.isfinite(arr))) and bool(np.all(arr >= float(lo) if lo_in else arr > float(lo))) \
+                and (hi == sp.oo or bool(np.all(arr <= float(hi) if hi_in else arr < float(hi))))
+    if not ok:
+        rng = f"{'[' if lo_in else '('}{lo}, {hi}{']' if hi_in else ')'}"
+        must = "positive" if (lo, lo_in, hi) == (0, False, sp.oo) else f"in {rng}"
+        raise DomainError(f"{what} must be {must}, got {name} = {value} (its physical range is {rng})")
+
+
+def check_stick(a=None, c_s=None, c_r=None) -> None:
+    """0 <= c_s <= c_r <= a (each where given and numeric)."""
+    A, C, Cr = (_numeric(v) for v in (a, c_s, c_r))
+    with np.errstate(invalid="ignore"):
+        if C is not None and np.any(C < 0):
+            raise DomainError(f"the stick half-width must be >= 0, got c_s = {c_s}")
+        if C is not None and A is not None and np.any(C > A):
+            raise DomainError(f"the stick half-width must lie in [0, a], got c_s = {c_s} > a = {a}")
+        if Cr is not None and C is not None and np.any(Cr < C):
+            raise DomainError(f"the reversal stick half-width must lie in [c_s, a], got c_r = {c_r} < c_s = {c_s}")
+        if Cr is not None and A is not None and np.any(Cr > A):
+            raise DomainError(f"the reversal stick half-width must lie in [c_s, a], got c_r = {c_r} > a = {a}")
+
+
+def check_points(points, least: int = 2, what: str = "a load cycle") -> int:
+    """An integer number of points >= ``least``."""
+    if isinstance(points, bool) or not isinstance(points, numbers.Integral) or points < least:
+        raise DomainError(f"{what} needs an integer number of points >= {least}, got {points!r}")
+    return int(points)
+
+
+def check_values(values: dict, zero_ok=()) -> None:
+    """Every ranged name of ``values`` (keywords by name) in its range (the
+    names in ``zero_ok`` may also be 0), and the stick half-widths in order."""
+    for name in RANGES:
+        if name in values:
+            check_value(name, values[name], zero_ok=name in zero_ok)
+    if "c_s" in values or "c_r" in values:
+        check_stick(values.get("a"), values.get("c_s"), values.get("c_r"))
+
+
+__all__ = ["RANGES", "check_value", "check_stick", "check_points", "check_values"]
