@@ -226,7 +226,7 @@ class Contact:
         check_values(vals, self._zero_ok)  # nu, mu, c_s, c_r: the physical ranges (core.ranges)
         self._check_admissible(vals)
         out = DomainValues(vals)
-        out.mark(*x_domain(name, q.domain, vals, values))
+        out.mark(*x_domain(name, q.domain, out, values))   # x -> |x| in the values returned
         if conds and set(known) <= set(vals):
             try:
                 r = cond_fn(*[_as_float_array(vals[k]) for k in known])
