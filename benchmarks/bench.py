@@ -53,7 +53,8 @@ import linecontact_sym as lcs  # noqa: E402
 from linecontact_sym.core import symbols as S  # noqa: E402
 from linecontact_sym.numeric.certified import arb_callable  # noqa: E402
 from linecontact_sym.numeric.accuracy import audit  # noqa: E402
-from linecontact_sym.numeric.exports import lambdify_mpmath, make_callable, stable_form  # noqa: E402
+from linecontact_sym.numeric.exports import lambdify_mpmath, stable_form  # noqa: E402
+from linecontact_sym.numeric.functions import make_callable  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from extremes import extreme_points  # noqa: E402

@@ -78,7 +78,8 @@ def million(quick):
     import sympy as sp
     import linecontact_sym as lcs
     from linecontact_sym.numeric.accuracy import audit
-    from linecontact_sym.numeric.exports import lambdify_mpmath, make_callable
+    from linecontact_sym.numeric.exports import lambdify_mpmath
+    from linecontact_sym.numeric.functions import make_callable
     from bench import sample_points
     laws = {"parabola": lcs.parabola(), "power law n=3/2": lcs.power_law(n=sp.Rational(3, 2)),
             "power law n=3": lcs.power_law(n=3), "wedge": lcs.wedge(), "worn cylinder": lcs.worn_cylinder(),

@@ -369,7 +369,7 @@ _CLI_QUANTITIES = {"force": "force", "pressure": "pressure", "gap": "gap",
 
 
 def cmd_check(args):
-    from .claims.check import check_paper
+    from .claims.batch import check_paper
     from .claims.spec import Paper, claim_from_cli, load_paper
     from .claims.report import text_table
     formulas = [(q, getattr(args, q)) for q in _CLI_QUANTITIES if getattr(args, q, None)]

@@ -203,17 +203,8 @@ def test_imports_run_down_the_layers():
     assert not bad, "imports against the flow:\n" + "\n".join(bad)
 
 
-#: cycles that came with main at 13:24 (speed: the paper-level batch and the
-#: scalar fast path), each hidden in a function-level import; allowed here until
-#: they are untangled (claims.check re-exports batch.check_paper, which tests
-#: monkeypatch there; exports.NumericFunction builds fastpath's scalar plan).
-#: UNFINISHED: remove them, then empty this list.
-KNOWN_CYCLES = [["linecontact_sym.claims.batch", "linecontact_sym.claims.check"],
-                ["linecontact_sym.numeric.exports", "linecontact_sym.numeric.fastpath"]]
-
-
 def test_no_import_cycle_even_through_function_level_imports():
-    cycles = [c for c in import_cycles(PKG) if c not in KNOWN_CYCLES]
+    cycles = import_cycles(PKG)
     assert not cycles, "import cycles:\n" + "\n".join(" <-> ".join(c) for c in cycles)
 
 

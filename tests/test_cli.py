@@ -266,11 +266,11 @@ def test_paper_unknown_label_and_internal_error(tmp_path, capsys, monkeypatch):
     code, _, err = run(capsys, "paper", "popov2017", "--only", "Eq. (99)", "--out", str(tmp_path))
     assert code == 2 and "Eq. (99)" in err
 
-    import linecontact_sym.claims.check as C
+    import linecontact_sym.claims.batch as B
 
     def boom(*a, **k):
         raise RuntimeError("kaboom")
-    monkeypatch.setattr(C, "check_paper", boom)
+    monkeypatch.setattr(B, "check_paper", boom)
     code, _, err = run(capsys, "paper", "popov2017", "--out", str(tmp_path), "--no-figures")
     assert code == 3 and "internal error" in err and "kaboom" in err
 

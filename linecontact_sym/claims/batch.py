@@ -24,17 +24,20 @@ from .references import DPS
 from .results import UNDECIDED, ClaimResult, PaperResult, TargetResult
 from .spec import Claim, Paper, load_paper
 
-__all__ = ["check_paper", "check_claim_portable", "check_part", "check_and_draw"]
+__all__ = ["check_paper", "check_file", "check_claim_portable", "check_part", "check_and_draw"]
+
+
+def check_file(path, **kw) -> PaperResult:
+    """The claims file at ``path`` checked (:func:`check_paper`)."""
+    return check_paper(load_paper(path), **kw)
 
 
 def check_and_draw(paper, jobs, out_dir, budget, **kw):
     """``(check_paper(paper, ...), figure paths or None)``: with ``jobs > 1``
     one process pool checks the claims and, beside them, draws the paper's
     figures into ``out_dir`` (None: no figures; they are drawn with the
-    reports when ``jobs == 1``).  :func:`check_paper` is looked up in
-    :mod:`.check` at the call (the name the package exports)."""
-    from . import check as _check
-    check = _check.check_paper
+    reports when ``jobs == 1``)."""
+    check = check_paper
     if not jobs or jobs <= 1:
         return check(paper, budget=budget, **kw), None
     with process_pool(jobs) as pool:

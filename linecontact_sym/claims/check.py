@@ -536,14 +536,5 @@ def _check_table(claim: Claim, ctx: Context, t0) -> ClaimResult:
     return ClaimResult(claim, HOLDS, f"{HOLDS}: {mapping}{gap_note}", min(digits, default=0), seconds,
                        [tr], details)
 
-
-# =====================================================================  papers
-def check_file(path, **kw) -> PaperResult:
-    return check_paper(load_paper(path), **kw)
-
-
-# the paper level (serial, or on an executor) builds on the above
-from .batch import check_claim_portable, check_paper  # noqa: E402
-
 __all__ = ["REQUIRED_DIGITS", "evaluate_point", "check_form", "check_claim", "check_target", "claim_result",
            "check_claim_portable", "check_paper", "check_file"]

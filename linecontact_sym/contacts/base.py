@@ -372,7 +372,7 @@ class Contact:
         points outside it: NaN, with a DomainWarning);
         ``check=False``: no check (a few microseconds less per call), NaN or
         complex values outside the domain."""
-        from ..numeric.exports import make_callable
+        from ..numeric.functions import make_callable
         checked_dps(dps)
         name = self.resolve(quantity)
         return make_callable(self.derivation(name), backend, dps, params,

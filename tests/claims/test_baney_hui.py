@@ -1,7 +1,7 @@
 """The shipped claims file of Baney & Hui (1997): Eq. (23) in their
 normalisation (derived from the parabola's Maugis-Dugdale conditions) and the
 normalised pull-off table (computed here; no copy of the paper's table)."""
-from linecontact_sym.claims.check import check_paper
+from linecontact_sym.claims.batch import check_paper
 from linecontact_sym.claims.spec import load_paper
 
 

@@ -12,6 +12,7 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.claims import check as C
+from linecontact_sym.claims.batch import check_paper
 from linecontact_sym.claims import references as REF
 from linecontact_sym.claims import spec as SPEC
 from linecontact_sym.claims.results import FAILS, HOLDS, HOLDS_IF, UNDECIDED
@@ -268,7 +269,7 @@ def test_printed_figures_hold_to_their_printed_digits():
             "ranges": {"R": [2, 2]}}
     paper = paper_from_dict({"claims": [dict(base, label="ok", formula="0.785*E_star*a**2/(2*R)*2"),
                                         dict(base, label="off", formula="0.786*E_star*a**2/R")]})
-    res = {r.label: r for r in C.check_paper(paper, budget=BUDGET).results}
+    res = {r.label: r for r in check_paper(paper, budget=BUDGET).results}
     assert res["ok"].status == C.HOLDS and 2.5 < res["ok"].digits < 3.5
     assert res["off"].status == C.FAILS
     assert all(p.values[sp.Symbol("R", positive=True)] == 2 for t in res["ok"].targets

@@ -7,6 +7,7 @@ import pytest
 
 from linecontact_sym.claims import batch as B
 from linecontact_sym.claims import check as C
+from linecontact_sym.claims.batch import check_paper
 from linecontact_sym.claims import derive as D
 from linecontact_sym.claims import memo as M
 from linecontact_sym.claims import spec as SPEC
@@ -45,9 +46,9 @@ def fresh(monkeypatch):
 
 @pytest.mark.slow
 def test_processes_give_the_serial_results_in_order(fresh):
-    serial = C.check_paper(_paper(), budget=BUDGET, jobs=1)
+    serial = check_paper(_paper(), budget=BUDGET, jobs=1)
     done = []
-    parallel = C.check_paper(_paper(), budget=BUDGET, jobs=2, progress=lambda i, n, r: done.append(i))
+    parallel = check_paper(_paper(), budget=BUDGET, jobs=2, progress=lambda i, n, r: done.append(i))
     assert [r.label for r in parallel.results] == [c["label"] for c in CLAIMS]
     assert _verdicts(parallel) == _verdicts(serial)
     assert sorted(done) == [0, 1, 2, 3]
@@ -57,9 +58,9 @@ def test_processes_give_the_serial_results_in_order(fresh):
 
 
 def test_any_executor(fresh):
-    serial = C.check_paper(_paper(), budget=BUDGET)
+    serial = check_paper(_paper(), budget=BUDGET)
     with cf.ThreadPoolExecutor(2) as ex:
-        threaded = C.check_paper(_paper(), budget=BUDGET, executor=ex)
+        threaded = check_paper(_paper(), budget=BUDGET, executor=ex)
     assert _verdicts(threaded) == _verdicts(serial)
 
 
@@ -69,7 +70,7 @@ def test_a_lost_worker_is_one_undecided_claim():
             f = cf.Future()
             f.set_exception(RuntimeError("worker died"))
             return f
-    res = C.check_paper(_paper(), budget=BUDGET, executor=Broken())
+    res = check_paper(_paper(), budget=BUDGET, executor=Broken())
     assert [r.status for r in res.results] == ["undecided"] * 4
     assert "worker died" in res.results[0].verdict and res.exit_code() == 3
 
@@ -84,10 +85,10 @@ def test_second_run_reads_the_comparisons(monkeypatch):
     monkeypatch.setattr(D, "_evaluate_point", counting)
     claim = SPEC.claim_from_dict({**CLAIMS[1], "points": 2, "formula": "pi*E_star*a**2/(3*R)"}, "test.toml")
     paper = SPEC.Paper("test", "t", "", [claim], {}, "t")
-    first = C.check_paper(paper, budget=BUDGET)
+    first = check_paper(paper, budget=BUDGET)
     n = len(calls)
     assert n > 0
-    second = C.check_paper(paper, budget=BUDGET)
+    second = check_paper(paper, budget=BUDGET)
     assert len(calls) == n                      # nothing computed again
     assert _verdicts(second) == _verdicts(first)
     # a different point, form or derived record is a different key
@@ -103,10 +104,10 @@ def test_second_run_reads_the_comparisons(monkeypatch):
 @pytest.mark.slow
 def test_dask_cluster(fresh):
     distributed = pytest.importorskip("distributed")
-    serial = C.check_paper(_paper(), budget=BUDGET)
+    serial = check_paper(_paper(), budget=BUDGET)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
                                   silence_logs=40) as cluster, distributed.Client(cluster) as client:
-        res = C.check_paper(_paper(), budget=BUDGET, executor=client.get_executor())
+        res = check_paper(_paper(), budget=BUDGET, executor=client.get_executor())
     assert _verdicts(res) == _verdicts(serial)
 
 

@@ -32,7 +32,8 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.numeric.accuracy import audit
-from linecontact_sym.numeric.exports import make_callable, lambdify_mpmath, lambdify_mpmath_quad
+from linecontact_sym.numeric.exports import lambdify_mpmath, lambdify_mpmath_quad
+from linecontact_sym.numeric.functions import make_callable
 from extremes import extreme_points
 
 TOL = 8.0

@@ -8,6 +8,7 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.claims import check as C
+from linecontact_sym.claims.batch import check_paper
 from linecontact_sym.claims.results import FAILS, HOLDS, HOLDS_IF
 from linecontact_sym.claims.spec import paper_from_dict
 from linecontact_sym.views.latex import booktabs_table, check_latex, latex_escape, standalone, to_latex
@@ -96,7 +97,7 @@ def _small_result():
              "formula": "E_star*a", "points": 2},
             {"label": "Table 1", "title": "table", "quantity": "Z_n", "profile": "c*x**n", "values": ["1", "pi/2"]},
         ]}, "demo.toml")
-    return C.check_paper(paper, budget=5)
+    return check_paper(paper, budget=5)
 
 
 def test_reports_are_well_formed():
@@ -169,7 +170,7 @@ def test_markdown_report_keeps_the_whole_printed_formula():
         "claims": [{"label": "long", "title": "a long wrong law", "quantity": "force", "profile": "x**2/(2*R)",
                     "formula": " + ".join(f"E_star*a**{k}/(R**{k - 1}*{k + 1})" for k in range(2, 12)),
                     "points": 1}]}, "demo.toml")
-    result = C.check_paper(paper, budget=5)
+    result = check_paper(paper, budget=5)
     md = markdown_report(result)
     printed = paper.claims[0].forms[0].text
     assert f"`{printed}`" in md and len(printed) > 150

@@ -16,7 +16,8 @@ from ...core.conversion import to_mpf
 from ...core.errors import DomainError, GrossSlidingError, LineContactError
 from ...core.ranges import check_values
 from ...core.roots import root_in_log
-from ...numeric.exports import lambdify_numpy, make_callable
+from ...numeric.exports import lambdify_numpy
+from ...numeric.functions import make_callable
 from ...parsing import user_value
 from . import reference as ref
 from ..normal.equilibria import half_width_at

@@ -16,7 +16,7 @@ from ...method import transforms as T
 from ...method.derivation import Derivation, fallback_step, remembered, timed
 from ...method.rules import Step
 from ...method.verification import verify
-from ...numeric.exports import make_callable
+from ...numeric.functions import make_callable
 from . import reference as ref
 from ..normal.equilibria import half_width_at
 from ..normal.force_law import ForceLaw
