@@ -428,7 +428,8 @@ def remembered_many(parts, make, budget, rebuild) -> tuple:
     a stored one ready for use (its reference set, its class restored)."""
     key = store.make_key("remembered", *parts)
     rec = store.get(key)
-    if rec is not None and "derivations" in rec and all(_usable(r, budget) for r in rec["derivations"]):
+    if rec is not None and "derivations" in rec and all(_usable({**r, "source": rec["source"]}, budget)
+                                                            for r in rec["derivations"]):
         return tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
                                         conditions=r["conditions"], verification=r["verification"],
                                         seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
@@ -457,11 +458,16 @@ def _budget_limited(attempts) -> bool:
 
 def _usable(rec, budget) -> bool:
     """A stored result answers a call unless it gave up for lack of time and
-    this call allows more."""
+    this call allows more, or it gave up in another process: how far a rule
+    gets in a wall-clock budget depends on the machine's load, so a result
+    cut short by the clock is not carried across processes (a new process
+    tries again; within one process nothing waits twice)."""
     if rec["closed_form"]:
         return True
     timed_out = _budget_limited(rec["attempts"]) or (
         rec["verification"] is not None and not rec["verification"].points)
+    if timed_out and rec.get("source") == "disk":
+        return False
     more = budget is None if rec["budget"] is not None else False
     return not (timed_out and (more or (budget is not None and budget > rec["budget"])))
 

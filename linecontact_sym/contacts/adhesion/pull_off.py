@@ -155,7 +155,7 @@ def closed_attempt(ad):
         raise NoPullOffError(f"{ad.profile.name!r}: {law.inactive}: P(a) = P0(a) >= 0, "
                              f"no tensile pull-off")
     a_star = Pmin = adh = method = None
-    unique = False
+    unique = timed_out = False
     if not fd.closed_form:
         notes.append("the force law P0(a) has no closed form")
     elif not force.closed_form:
@@ -175,6 +175,7 @@ def closed_attempt(ad):
                 notes.append(f"sympy.solve(dP/da = 0) gave {len(cands)} candidate(s)")
             except BudgetExceeded:
                 notes.append(f"sympy.solve(dP/da = 0) found nothing within {ad.contact.budget:g} s")
+                timed_out = True
             except (NotImplementedError, ValueError, TypeError) as exc:
                 notes.append(f"sympy.solve(dP/da = 0) gave up: {type(exc).__name__}")
             a_star = pick_minimum(ad, cands, P, conds)
@@ -192,7 +193,8 @@ def closed_attempt(ad):
             a_star = tidy_checked(ad, a_star, conds, simplify=not unique)
             if adh is None:
                 adh = tidy_checked(ad, -Pmin, conds)
-    return dict(Pmin=Pmin, a_star=a_star, adh=adh, conds=conds, notes=notes, method=method, unique=unique)
+    return dict(Pmin=Pmin, a_star=a_star, adh=adh, conds=conds, notes=notes, method=method, unique=unique,
+                timed_out=timed_out)
 
 
 def derivations(ad):
@@ -301,7 +303,8 @@ def remembered_closed_attempt(ad):
     if rec is not None and "Pmin" in rec:
         return {k: v for k, v in rec.items() if k not in ("key", "version", "source")}
     r = closed_attempt(ad)
-    store.put(key, {k: (tuple(v) if isinstance(v, list) else v) for k, v in r.items()})
+    if not r["timed_out"]:   # an attempt cut short by the clock (a loaded machine) is not an answer to keep
+        store.put(key, {k: (tuple(v) if isinstance(v, list) else v) for k, v in r.items()})
     return r
 
 
@@ -323,6 +326,8 @@ def remembered_derivations(ad):
                                  reference=lambda v, dd: mpmath.fmul(sign, getattr(ad._pull_off_checked(v, dd), attr),
                                                                     exact=True), variables=d.variables,
                                  attempts=d.attempts, cached=d.cached)
+    if ad._pull_off_closed().get("timed_out"):   # cut short by the clock: derived here, not kept
+        return tuple(derivations(ad))
     return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild)
 
 
