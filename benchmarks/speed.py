@@ -148,6 +148,7 @@ def main(argv=None):
     ap.add_argument("--no-suite", action="store_true", help="skip the fast test loop")
     ap.add_argument("--full-suite", action="store_true", help="also time the whole suite (minutes)")
     ap.add_argument("--quick", action="store_true", help="only the in-process rows")
+    ap.add_argument("--report", metavar="DIR", help="keep the paper job's reports (of the warm run) in DIR")
     args = ap.parse_args(argv)
     m0 = machine()
     rows = []
@@ -155,7 +156,7 @@ def main(argv=None):
     with tempfile.TemporaryDirectory(prefix="lcs-bench-") as tmp:
         cache = os.path.join(tmp, "cache")
         if not (args.no_paper or args.quick):
-            out = os.path.join(tmp, "report")
+            out = args.report or os.path.join(tmp, "report")
             for what, target in (("cold", "empty cache; target <= 60 s"), ("warm", "same cache; target <= 10 s")):
                 wall, cpu, code = run_cli(["paper", "popov2017", "--jobs", str(args.jobs), "--out", out, "--quiet"],
                                           cache)

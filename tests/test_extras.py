@@ -85,5 +85,5 @@ def test_pyproject_declares_the_extras():
     extras = meta["optional-dependencies"]
     assert any(d.startswith("matplotlib") for d in extras["plot"])
     assert any(d.startswith("python-flint") for d in extras["certified"])   # the old command still works
-    assert extras["all"] == ["linecontact_sym[plot,certified]"]
+    assert extras["all"] == ["linecontact_sym[plot,certified,units]"]   # every feature, no cluster
     assert any(d.startswith("linecontact_sym[all") for d in extras["test"])   # all (+ docs: the site is tested)

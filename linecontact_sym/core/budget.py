@@ -17,6 +17,7 @@ import math
 import multiprocessing as _mp
 import numbers
 import os
+import signal
 import pickle
 import time
 import traceback
@@ -45,6 +46,27 @@ def checked_budget(seconds):
     if math.isnan(v) or v <= 0:
         raise BudgetError(f"the budget must be a number of seconds > 0 (or None for no limit), got {seconds!r}")
     return None if math.isinf(v) else v
+
+
+def _budget_from_environment(default: float) -> float:
+    """``$LINECONTACT_SYM_BUDGET`` (seconds > 0) replaces the default budget
+    of a derivation, for a machine known to be slow or loaded (a CI worker
+    beside other workers): a wall-clock budget that runs out turns a closed
+    form into an unevaluated integral.  A value that is not a number of
+    seconds > 0 raises :class:`BudgetError` naming the variable."""
+    text = os.environ.get("LINECONTACT_SYM_BUDGET", "").strip()
+    if not text:
+        return default
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (value > 0) or math.isinf(value):
+        raise BudgetError(f"LINECONTACT_SYM_BUDGET must be a number of seconds > 0, got {text!r}")
+    return value
+
+
+DEFAULT_BUDGET = _budget_from_environment(DEFAULT_BUDGET)
 
 
 class Deadline:
@@ -77,6 +99,41 @@ def _child(conn, fn, args, kwargs):
         os._exit(0)
 
 
+class _Forked:
+    """The child of :func:`run_with_budget` forked with ``os.fork`` where
+    multiprocessing will not start one (inside a daemonic process: a process
+    pool's worker, a Dask worker); the same work, the same pipe, so an
+    executor never changes a result (before: every rule failed there and the
+    parabola's force law came back as an unevaluated integral)."""
+
+    def __init__(self, recv, send, fn, args, kwargs):
+        self.pid = os.fork()
+        if self.pid == 0:        # the child: never returns
+            try:
+                recv.close()
+                _child(send, fn, args, kwargs)
+            finally:
+                os._exit(0)
+        self._status = None
+
+    def is_alive(self) -> bool:
+        if self._status is None:
+            pid, status = os.waitpid(self.pid, os.WNOHANG)
+            if pid:
+                self._status = status
+        return self._status is None
+
+    def kill(self):
+        try:
+            os.kill(self.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+
+    def join(self):
+        if self._status is None:
+            self._status = os.waitpid(self.pid, 0)[1]
+
+
 def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
     """Call ``fn(*args, **kwargs)`` and return its result, or raise
     :class:`BudgetExceeded` after ``seconds`` of wall-clock time.
@@ -87,8 +144,11 @@ def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
         return fn(*args, **kwargs)
     ctx = _mp.get_context("fork")
     recv, send = ctx.Pipe(duplex=False)
-    proc = ctx.Process(target=_child, args=(send, fn, args, kwargs), daemon=True)
-    proc.start()
+    if _mp.current_process().daemon:   # a pool's or a Dask worker's process: multiprocessing refuses it
+        proc = _Forked(recv, send, fn, args, kwargs)   # children, a plain fork does the same work
+    else:
+        proc = ctx.Process(target=_child, args=(send, fn, args, kwargs), daemon=True)
+        proc.start()
     send.close()
     try:
         if not recv.poll(max(float(seconds), 0.0) if seconds == seconds else 0.0):

@@ -9,6 +9,7 @@ import mpmath
 import pytest
 
 from linecontact_sym.claims import check as C
+from linecontact_sym.claims.batch import check_paper
 from linecontact_sym.claims import references as REF
 from linecontact_sym.claims.spec import paper_from_dict
 from linecontact_sym.core.precision import workdps
@@ -31,7 +32,7 @@ def test_published_rounded_punch_and_wedge_pressures_hold():
         "claims": [dict(base, label="punch", profile=PUNCH, formula=PUNCH_P),
                    dict(base, label="wedge", profile=WEDGE, formula=WEDGE_P),
                    dict(base, label="punch, wrong", profile=PUNCH, formula=PUNCH_P.replace("2*pi*R", "2.001*pi*R"))]})
-    res = {r.label: r for r in C.check_paper(paper, budget=20).results}
+    res = {r.label: r for r in check_paper(paper, budget=20).results}
     assert res["punch"].status == C.HOLDS, res["punch"].verdict
     assert res["wedge"].status == C.HOLDS, res["wedge"].verdict
     assert res["punch, wrong"].status == C.FAILS
