@@ -147,22 +147,21 @@ class ForceLaw:
         def edges(A):
             return [mpmath.mpf(0)] + npf.kinks(0, A) + [A]
 
-        def P(A):
+        def over_pieces(g, A, e):
+            """int_0^{pi/2} sin(phi) g(A sin phi) dphi, piece by piece between the kinks e."""
             total = mpmath.mpf(0)
-            e = edges(A)
             for lo, hi in zip(e[:-1], e[1:]):
-                fn = inside(f1, lo, hi)
+                fn = inside(g, lo, hi)
                 total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
                                      [mpmath.asin(lo / A), mpmath.asin(hi / A)])
-            return real_value(to_mpf(E) * A * total)
+            return total
+
+        def P(A):
+            return real_value(to_mpf(E) * A * over_pieces(f1, A, edges(A)))
 
         def dP(A):
-            total = mpmath.mpf(0)
             e = edges(A)
-            for lo, hi in zip(e[:-1], e[1:]):
-                fn = inside(h1, lo, hi)
-                total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
-                                     [mpmath.asin(lo / A), mpmath.asin(hi / A)])
+            total = over_pieces(h1, A, e)
             for bv in e[1:-1]:
                 eps = bv * mpmath.mpf(10)**(-mpmath.mp.dps - 5)
                 J = f1(bv + eps) - f1(bv - eps)

@@ -90,12 +90,8 @@ def cauchy_quad(p, a, x, z, breaks=(), dps: int = 30):
     by tanh-sinh after s = x + z sinh(u): p(s) z cosh(u)/(z (i - sinh u)) du."""
     with workdps(dps + 10):
         a, x, z = mpmath.mpf(a), mpmath.mpf(x), mpmath.mpf(z)
-        if z == 0:                  # the surface: the tractions themselves
-            if q is not None:
-                raise DomainError("the surface stresses under a tangential traction need its Hilbert transform; "
-                                  "evaluate at a depth z > 0 (or use a closed form)")
-            pv = p(x) if -a <= x <= a else mpmath.mpf(0)
-            return (-pv, -pv, mpmath.mpf(0))
+        if not z > 0:               # on the surface G has a jump (a principal value): not this quadrature
+            raise DomainError(f"the Cauchy transform is evaluated below the surface (z > 0), got z = {z}")
         us = _pieces(x, z, a, [mpmath.mpf(b) for b in breaks])
         j = mpmath.mpc(0, 1)
 
