@@ -196,9 +196,9 @@ def scalar_plan(nf):
         merged = {**params, **kw} if params else kw
         if domain is not None:
             merged = domain(merged)
-        try:
-            v = float(f(**merged))
-        except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+        try:   # positionally: the compiled arguments are renamed Dummies (core.printing.lambdify)
+            v = float(f(*[merged[n] for n in names]))
+        except (ValueError, ZeroDivisionError, OverflowError, TypeError, KeyError):
             return None
         return np.float64(v) if math.isfinite(v) else None
     return fast

@@ -48,3 +48,24 @@ def test_choice_unchanged():
         assert got == _choose_reference(t, rtol)
         seen += got is not None
     assert seen > 100
+
+
+def test_scalar_calls_take_the_scalar_path(monkeypatch):
+    """A call on Python floats is served by the scalar plan (the compiled
+    stable form called positionally: its arguments are renamed Dummies), not
+    by the NumPy path and the full domain check: with both made to fail, a
+    valid scalar call still returns the closed form's value."""
+    import mpmath
+    import linecontact_sym as lcs
+    from linecontact_sym.contacts.base import Contact
+
+    f = lcs.exact_cylinder().to_numeric("force")
+    f(a=0.5, R=1.0, E_star=1.0)                       # builds the plan (and the point's admissibility)
+
+    def no(*a, **k):
+        raise AssertionError("the scalar call took the slow path")
+    monkeypatch.setattr(Contact, "check_domain", no)
+    monkeypatch.setattr(f, "_fn", no)
+    with mpmath.workdps(30):                          # P = E* R (K(m) - E(m)), m = (a/R)^2
+        ref = mpmath.ellipk(mpmath.mpf(1) / 4) - mpmath.ellipe(mpmath.mpf(1) / 4)
+    assert abs(f(a=0.5, R=1.0, E_star=1.0) - float(ref)) <= 4e-16 * float(ref)
