@@ -16,7 +16,11 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
+import mpmath
+
 from ..method import store
+from .references import Comparison
+from .results import PointResult
 
 __all__ = ["source_version", "point_key", "symbolic_key", "remembered", "remember"]
 
@@ -69,15 +73,53 @@ def symbolic_key(printed, derived_expr, vals, budget):
         return None
 
 
+def _number(v):
+    """An mpf as plain data, exactly (mantissa and exponent); other numbers as they are."""
+    if isinstance(v, mpmath.mpf):
+        if mpmath.isfinite(v):
+            man, exp = v.man_exp
+            return {"mpf": [str(int(man)), int(exp)]}
+        return {"mpf_text": str(v)}
+    return v
+
+
+def _mpf(v):
+    if isinstance(v, dict) and "mpf" in v:
+        man, exp = v["mpf"]      # exactly, whatever the working precision (make_mpf does not round)
+        return mpmath.mp.make_mpf(mpmath.libmp.from_man_exp(int(man), int(exp)))
+    if isinstance(v, dict) and "mpf_text" in v:
+        return mpmath.mpf(v["mpf_text"])
+    return v
+
+
+def _record(value):
+    """A point's result as the plain data the store keeps (JSON: the store
+    unpickles nothing), or the value itself (text)."""
+    if not isinstance(value, PointResult):
+        return value
+    comps = [[c.what, _number(c.printed), _number(c.target), _number(c.scale), c.resolution]
+             for c in value.comparisons]
+    return {"PointResult": [value.kind, value.status, float(value.digits), comps, value.reason]}
+
+
+def _value(data):
+    if isinstance(data, dict) and "PointResult" in data:
+        kind, status, digits, comps, reason = data["PointResult"]
+        return PointResult({}, kind, status, digits,
+                           [Comparison(w, _mpf(p), _mpf(tg), _mpf(s), r) for w, p, tg, s, r in comps], reason)
+    return data
+
+
 def remembered(key, kind):
-    """The record of type ``kind`` stored under ``key``, or None."""
+    """The record of type ``kind`` stored under ``key``, or None (the
+    caller puts the point's values back)."""
     if key is None:
         return None
     rec = store.get(key)
-    value = rec.get("value") if rec is not None else None
+    value = _value(rec.get("value")) if rec is not None else None
     return value if isinstance(value, kind) else None
 
 
 def remember(key, value) -> None:
     if key is not None:
-        store.put(key, {"value": value})
+        store.put(key, {"value": _record(value)})
