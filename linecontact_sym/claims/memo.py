@@ -77,16 +77,16 @@ def _number(v):
     """An mpf as plain data, exactly (mantissa and exponent); other numbers as they are."""
     if isinstance(v, mpmath.mpf):
         if mpmath.isfinite(v):
-            man, exp = v.man_exp
-            return {"mpf": [str(int(man)), int(exp)]}
+            sign, man, exp, bc = v._mpf_     # the exact binary value, sign included
+            return {"mpf": [int(sign), str(int(man)), int(exp), int(bc)]}
         return {"mpf_text": str(v)}
     return v
 
 
 def _mpf(v):
     if isinstance(v, dict) and "mpf" in v:
-        man, exp = v["mpf"]      # exactly, whatever the working precision (make_mpf does not round)
-        return mpmath.mp.make_mpf(mpmath.libmp.from_man_exp(int(man), int(exp)))
+        sign, man, exp, bc = v["mpf"]      # exactly, whatever the working precision (make_mpf does not round)
+        return mpmath.mp.make_mpf((int(sign), int(man), int(exp), int(bc)))
     if isinstance(v, dict) and "mpf_text" in v:
         return mpmath.mpf(v["mpf_text"])
     return v

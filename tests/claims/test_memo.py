@@ -13,7 +13,7 @@ from linecontact_sym.method import store
 
 def test_point_result_round_trip_through_the_disk():
     with mpmath.workdps(50):
-        printed, target = mpmath.pi / 3, mpmath.pi / 3 + mpmath.mpf(10)**-40
+        printed, target = -mpmath.pi / 3, -mpmath.pi / 3 + mpmath.mpf(10)**-40   # a pull-off: negative
     pr = PointResult({sp.Symbol("a"): sp.Rational(1, 3)}, "random", "pass", 40.0,
                      [Comparison("value", printed, target), Comparison("resultant", mpmath.mpf(2), mpmath.mpf(2),
                                                                      mpmath.mpf(3), 12.5),
