@@ -138,12 +138,9 @@ _WORDS = {"m": "a length", "Pa": "a pressure (stress)", "N/m": "a force per unit
 def _plain(m):
     """A pint magnitude as a plain number: NumPy arrays stay arrays; an int that
     the conversion kept exact stays an int, other numbers are floats."""
-    try:
-        import numpy as np
-        if isinstance(m, np.ndarray):
-            return m.astype(float)
-    except ImportError:  # pragma: no cover - NumPy is a core dependency
-        pass
+    import numpy as np
+    if isinstance(m, np.ndarray):
+        return m.astype(float)
     if isinstance(m, int) and not isinstance(m, bool):
         return m
     return float(m)

@@ -128,11 +128,8 @@ def code_version() -> str:
     if _state["version"] is None:
         import mpmath
         import sympy
-        try:
-            import flint
-            flint_version = getattr(flint, "__version__", "present")
-        except ImportError:   # pragma: no cover - a core dependency
-            flint_version = "absent"
+        import flint      # a core dependency: its version is part of the key
+        flint_version = getattr(flint, "__version__", "present")
         pkg = Path(__file__).resolve().parent.parent
         init = (pkg / "__init__.py").read_text(encoding="utf-8")
         found = re.search(r"__version__\s*=\s*[\"']([^\"']+)[\"']", init)

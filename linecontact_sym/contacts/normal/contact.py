@@ -195,17 +195,18 @@ class LineContact(Contact):
         return self._derive("force", Problem("force", prof), lambda vals, dps: T.force_quad(prof, vals, dps),
                             T.force_integral(prof), "any", (note,))
 
-    def _dP(self, vals):
-        """mpmath P'(s) at the parameters of ``vals``, and the breakpoints."""
-        law = ForceLaw.from_contact(self, {k: v for k, v in vals.items() if k not in (S.a, S.x)})
-        return law.dP, law.breaks()
+    def _dP(self, vals, dps):
+        """mpmath P'(s) at the parameters of ``vals``, and the breakpoints,
+        located to twice the digits ``dps`` of the reference (see quad0)."""
+        with workdps(2 * dps + 20):
+            law = ForceLaw.from_contact(self, {k: v for k, v in vals.items() if k not in (S.a, S.x)})
+            return law.dP, law.breaks()
 
     def _derive_pressure(self) -> Derivation:
         fd = self.derivation("force")
 
         def reference(vals, dps):
-            with workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
-                dP, breaks = self._dP(vals)
+            dP, breaks = self._dP(vals, dps)
             with workdps(dps + 10):
                 return T.pressure_quad(dP, breaks, vals, dps)
         fallback = T.pressure_integral(fd.expr)
@@ -223,8 +224,7 @@ class LineContact(Contact):
         fd = self.derivation("force")
 
         def reference(vals, dps):
-            with workdps(2 * dps + 20):  # breakpoints to twice the digits (see quad0)
-                dP, breaks = self._dP(vals)
+            dP, breaks = self._dP(vals, dps)
             with workdps(dps + 10):
                 f = self.profile.mp_callable({k: v for k, v in vals.items() if k not in (S.a, S.x)})
                 return T.gap_quad(f, dP, breaks, vals, dps)
