@@ -385,8 +385,11 @@ class Contact:
         Values may be pint quantities (as in :meth:`evaluate_at`): the
         Evaluation's numbers stay SI numbers, its ``unit`` says which, and
         ``.quantity_value()`` is the value as a pint quantity."""
-        from ..numeric.evaluate import evaluate
-        values, registry, unit = self._strip_units(quantity, values)
+        evaluate = _numeric_evaluate()
+        if all(v.__class__ in _PLAIN_NUMBERS for v in values.values()):   # no pint quantity among them
+            registry = None
+        else:
+            values, registry, unit = self._strip_units(quantity, values)
         try:
             r = evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
         except (ZeroDivisionError, OverflowError) as exc:
@@ -415,6 +418,22 @@ class Contact:
         names = quantities or [n for n, q in type(self).quantities().items() if not q.method]
         return "\n".join(self.derivation(q).summary() for q in names)
 
+
+def _numeric_evaluate():
+    """:func:`linecontact_sym.numeric.evaluate.evaluate`, imported at the first
+    call (not with the contacts: a plain import stays light), then looked up
+    once per call in this module's globals, not through the import system."""
+    fn = _NUMERIC.get("evaluate")
+    if fn is None:
+        from ..numeric.evaluate import evaluate as fn
+        _NUMERIC["evaluate"] = fn
+    return fn
+
+
+_NUMERIC: dict = {}
+
+#: the types of plain SI numbers (no unit to strip: the common, fast case of evaluate)
+_PLAIN_NUMBERS = (float, int)
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
 #: mirrored, f(-x) = f(x))
