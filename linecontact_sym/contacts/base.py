@@ -564,9 +564,19 @@ def scalar_domain_plan(self, quantity):
                 if fprime is not None or slope is not None:
                     adm = ("a", "E_star", *names)
             plan = (frozenset(known), positive, frozenset(q.nonnegative), domain, tuple(known),
-                    cond_fn if conds else None, adm)
+                    _scalar_test(self, name, known, cond_fn) if conds else None, adm)
         cache[key] = plan
     return cache[key]
+
+
+def _scalar_test(contact, name, known, cond_fn):
+    """The derivation's point test for plain floats: compiled for the math
+    module (a comparison of floats, not a NumPy call), else ``cond_fn``."""
+    try:
+        test = sp.And(*contact.derivation(name).point_test)
+        return lambdify(list(known.values()), test, "math")
+    except Exception:   # noqa: BLE001 -- a function the math module lacks: the NumPy test
+        return cond_fn
 
 
 class DomainCheck:

@@ -223,6 +223,7 @@ class SeriesModel:
         self.coeffs = coeffs
         self.args = (S.a, S.E_star) + tuple(prof.params)
         self.names = [s.name for s in self.args]
+        self.name_set = frozenset(self.names)
         self.terms = [S.E_star * cb * S.a ** (k + 1) for k, cb in coeffs]
         self._mp = lambdify(list(self.args), self.terms, "mpmath")
         self._math = None
@@ -316,9 +317,11 @@ class _RatioPlan:
     def choose(self, vals, tol):
         """As :meth:`SeriesModel.choose` at the floats ``vals`` (positional),
         with the ratio bound rb = q_inf rho: ``(N, partial, bound, rb,
-        terms)``, None (no N meets ``tol``), or False where float64 does
-        not hold the terms (then the general way).  Each term is within
-        (4 + 2j) eps of its value (t_0, C_j, rho**j: rho's rounding grows j-fold)."""
+        terms, growth)``, None (no N meets ``tol``), or False where float64
+        does not hold the terms (then the general way).  Each term is within
+        (4 + 2j) eps of its value (t_0, C_j, rho**j: rho's rounding grows
+        j-fold); ``growth`` = 2 eps sum_j j |t_j| over the N terms summed,
+        added to the model's error."""
         try:
             rho = float(self.rho(*vals))
             t0 = float(self.first(*vals))
@@ -329,20 +332,22 @@ class _RatioPlan:
             return False
         C, rising = self.C, self.rising
         t = [t0]
-        partial = 0.0
+        partial, last, weighted = 0.0, t0, 0.0      # weighted: sum of j |t_j| over the terms summed
         for N in range(1, self.n_terms - 2):
             tN = C[N] * rho**N * t0
             if tN == 0 or not math.isfinite(tN):
                 return False
             t.append(tN)
-            partial += t[N - 1]
+            partial += last
+            weighted += (N - 1) * abs(last)
+            last = tN
             if not rising[N]:
                 continue
             if rb >= 1:
                 return None
             bound = abs(tN) / (1 - rb)
             if bound <= tol * abs(partial):
-                return N, partial, bound, rb, t
+                return N, partial, bound, rb, t, 2 * EPS * weighted
         return None
 
 
@@ -406,7 +411,8 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     (True, '0.39269908169872415480783042291')
     """
     t0 = time.perf_counter()
-    _check_tolerance(rtol, dps)
+    if not (rtol.__class__ is float and 0 < rtol < 1 and dps is None):   # else the full check
+        _check_tolerance(rtol, dps)
     d = contact.derivation(quantity)
     kit = scalar_kit(d)
     names = kit.names
@@ -446,7 +452,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         m = _model(contact)
         # the model is the series of the profile's Eq. (10); a force law with
         # other arguments (e.g. an adhesive one, with gamma) is not that series
-        if m is not None and set(m.names) == set(names):
+        if m is not None and m.name_set == kit.name_set:
             res = _try_model(m, quantity, values, rtol, t0)
             if res is not None:
                 return res
@@ -567,8 +573,7 @@ def _try_model(m, quantity, values, rtol, t0):
     if rtol >= 1e-14 and m._ratios is not None:     # the ratios' structure found once per model
         choice = m._ratios.choose([_as_float(values[n]) for n in m.names], max(rtol - 8 * EPS, rtol / 2) / 2)
         if choice:
-            N, partial, bound, rb, floats = choice
-            growth = 2 * EPS * sum(j * abs(floats[j]) for j in range(1, N))   # rho**j's rounding, see choose
+            N, partial, bound, rb, floats, growth = choice     # growth: rho**j's rounding, see choose
     if choice is False:
         floats = m.term_floats(values) if rtol >= 1e-14 else None
         choice = m.choose(values, max(rtol - 8 * EPS, rtol / 2) if rtol >= 1e-14 else rtol, floats)
