@@ -386,7 +386,7 @@ class Contact:
         Evaluation's numbers stay SI numbers, its ``unit`` says which, and
         ``.quantity_value()`` is the value as a pint quantity."""
         evaluate = _numeric_evaluate()
-        if all(v.__class__ in _PLAIN_NUMBERS for v in values.values()):   # no pint quantity among them
+        if _PLAIN_NUMBERS.issuperset(map(type, values.values())):   # no pint quantity among them
             registry = None
         else:
             values, registry, unit = self._strip_units(quantity, values)
@@ -433,7 +433,7 @@ def _numeric_evaluate():
 _NUMERIC: dict = {}
 
 #: the types of plain SI numbers (no unit to strip: the common, fast case of evaluate)
-_PLAIN_NUMBERS = (float, int)
+_PLAIN_NUMBERS = frozenset((float, int))
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
 #: mirrored, f(-x) = f(x))
@@ -527,14 +527,17 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
             return self.check_domain(quantity, values)
         vals["x"] = xv
     if adm is not None and "a" in vals:
-        key = tuple(vals.get(n) for n in adm)
-        seen = self._caches().setdefault(("_admissible", adm), {})
+        key = tuple([vals.get(n) for n in adm])
+        caches = self._caches()
+        seen = caches.get(("_admissible", adm))
+        if seen is None:
+            seen = caches[("_admissible", adm)] = {}
         if key not in seen:
             self._check_admissible(vals)          # raises where inadmissible
             if len(seen) > 100000:
                 seen.clear()
             seen[key] = True
-    if cond_fn is not None and all(n in vals for n in cond_names):
+    if cond_fn is not None and known.issubset(vals.keys()):          # cond_names: the names of known
         try:
             ok = bool(cond_fn(*[float(vals[n]) for n in cond_names]))
         except (TypeError, ValueError):

@@ -158,7 +158,7 @@ _CACHE = IdentityCache()
 
 
 #: plain Python numbers (neither arrays nor NumPy scalars): no conversion needed
-_PLAIN = (float, int)
+_PLAIN = frozenset((float, int))
 
 
 def _as_float(v):
@@ -418,7 +418,7 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     names = kit.names
     if values.keys() != kit.name_set:
         check_arguments(names, values, quantity)
-    if all(v.__class__ in _PLAIN for v in values.values()):    # plain Python numbers: the common case
+    if _PLAIN.issuperset(map(type, values.values())):    # plain Python numbers: the common case
         arrays = None
     else:
         values = {k: v[()] if isinstance(v, np.ndarray) and v.ndim == 0 else v for k, v in values.items()}
@@ -571,7 +571,9 @@ def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0, outsid
 def _try_model(m, quantity, values, rtol, t0):
     choice, growth = False, 0.0
     if rtol >= 1e-14 and m._ratios is not None:     # the ratios' structure found once per model
-        choice = m._ratios.choose([_as_float(values[n]) for n in m.names], max(rtol - 8 * EPS, rtol / 2) / 2)
+        vals = [values[n] for n in m.names]
+        vals = [v if v.__class__ is float else _as_float(v) for v in vals]
+        choice = m._ratios.choose(vals, max(rtol - 8 * EPS, rtol / 2) / 2)
         if choice:
             N, partial, bound, rb, floats, growth = choice     # growth: rho**j's rounding, see choose
     if choice is False:
