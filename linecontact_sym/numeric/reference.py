@@ -266,12 +266,28 @@ def compile_acb(expr, var):
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
     acb, arb = flint.acb, flint.arb
 
-    def const(c):
-        return lambda z, an: c
-
     def build(e):
         if var is not None and e == var:
             return lambda z, an: z
+        if var is not None and not e.has(var):
+            return constant(build_node(e))
+        return build_node(e)
+
+    def constant(f):
+        """A subexpression free of the variable: its ball computed once per
+        working precision (the rationals and parameter combinations of an
+        integrand are not rebuilt at every node)."""
+        memo = {}
+
+        def g(z, an):
+            prec = flint.ctx.prec
+            v = memo.get(prec)
+            if v is None:
+                v = memo[prec] = f(z, False)
+            return v
+        return g
+
+    def build_node(e):
         if e.is_Integer:
             c = int(e)
             return lambda z, an: acb(flint.fmpz(c))
@@ -560,6 +576,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         total = flint.acb(0)
         tol = flint.arb(2) ** -(goal + 8)
         for lo, hi in zip(edges[:-1], edges[1:]):
+            _ends_bounded(f, lo, hi)
             try:
                 piece = flint.acb.integral(f, lo, hi, rel_tol=tol, eval_limit=eval_limit)
             except (ZeroDivisionError, ValueError, TypeError) as exc:
@@ -576,6 +593,23 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         if re_.rel_accuracy_bits() < goal and re_.rad() > flint.arb(2) ** -goal:
             raise ArbUnsupported(f"enclosure too wide: {re_.rel_accuracy_bits()} of {goal} bits")
         return total
+
+
+def _ends_bounded(f, lo, hi):
+    """Fail at once where Arb would spend its evaluation limit in vain: the
+    integrand must have a finite ball on a short segment at each end of the
+    piece (an integrable 1/sqrt or log singularity there has none; a
+    removable one with a ``crude`` bound, a sqrt-type branch point, a
+    Piecewise decided next to its switch have one)."""
+    eps = (hi - lo) * flint.arb(2) ** -30
+    for end in ((lo).union(lo + eps), (hi - eps).union(hi)):
+        try:
+            v = f(flint.acb(end.real), False)
+        except (ZeroDivisionError, ValueError, TypeError):
+            v = _nan()
+        if not v.is_finite():
+            raise ArbUnsupported("Arb cannot bound the integrand next to an end point of a piece (an integrable "
+                                 "singularity such as 1/sqrt or log there: ball arithmetic has no finite bound)")
 
 
 def _mpmath_integral(integrand, var, points, dps):
