@@ -572,19 +572,28 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
                 return v
             return crude(z)
     with flint.ctx.workprec(prec):
-        edges = [to_acb(p) for p in points]
+        exact = [_exact(p) for p in points]
         total = flint.acb(0)
         tol = flint.arb(2) ** -(goal + 8)
-        for lo, hi in zip(edges[:-1], edges[1:]):
-            _ends_bounded(f, lo, hi)
+
+        def piece(fn, lo, hi):
+            lo_b, hi_b = to_acb(lo), to_acb(hi)
+            _ends_bounded(fn, lo_b, hi_b)
             try:
-                piece = flint.acb.integral(f, lo, hi, rel_tol=tol, eval_limit=eval_limit)
+                v = flint.acb.integral(fn, lo_b, hi_b, rel_tol=tol, eval_limit=eval_limit)
             except (ZeroDivisionError, ValueError, TypeError) as exc:
                 raise ArbUnsupported(f"Arb could not evaluate the integrand: {exc}") from None
-            if not piece.is_finite():
+            if not v.is_finite():
                 raise ArbUnsupported("Arb could not bound a piece (a singularity at an end point that "
                                      "ball arithmetic cannot enclose, or the evaluation limit)")
-            total += piece
+            return v
+        for lo, hi in zip(exact[:-1], exact[1:]):
+            try:
+                total += piece(f, lo, hi)
+            except ArbUnsupported:
+                if crude is not None or lo is None or hi is None:
+                    raise
+                total += _substituted(integrand, var, lo, hi, piece)
         if 0 not in total.imag:
             raise ArbUnsupported(f"the integral is not real: {total}")
         re_ = total.real
@@ -593,6 +602,82 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         if re_.rel_accuracy_bits() < goal and re_.rad() > flint.arb(2) ** -goal:
             raise ArbUnsupported(f"enclosure too wide: {re_.rel_accuracy_bits()} of {goal} bits")
         return total
+
+
+def _exact(p):
+    """A break point as an exact SymPy number where it is one (an mpf is its
+    binary value), None where it is not a real number."""
+    try:
+        q = number(p) if not isinstance(p, sp.Basic) else p
+    except LineContactError:
+        return None
+    return q if q.is_number and q.is_real is not False else None
+
+
+#: the substitution variable of an end-point singularity
+_u = sp.Dummy("u", positive=True)
+
+
+def _substituted(integrand, var, lo, hi, piece):
+    """The piece [lo, hi] whose integrand has an algebraic end-point
+    singularity (1/sqrt(a^2 - t^2) at t = a, 1/sqrt(s^2 - b^2) behind a
+    break): split at the middle m and, on each half with a singular end e,
+    t = e + (m - e) u^2, u in [0, 1]: the radicands are factored, so that the
+    u^2 they vanish with comes out of the root and cancels the Jacobian
+    2 (m - e) u exactly (ball arithmetic cannot cancel 0/0 by itself).  A
+    singularity that this does not remove (log, a non-algebraic one)
+    raises :class:`ArbUnsupported` (the fallback runs)."""
+    m = (lo + hi) / 2
+    f = compile_acb(integrand, var)
+    total = flint.acb(0)
+    for e, other in ((lo, m), (m, hi)):
+        try:
+            total += piece(f, e, other)
+            continue
+        except ArbUnsupported:
+            pass
+        total_half = None
+        for end, far in ((e, other), (other, e)):
+            d = far - end
+            g = integrand.xreplace({var: end + d * _u**2}) * 2 * d * _u
+            try:
+                g = _inside_branch(sp.piecewise_fold(g))
+                g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_u),
+                              lambda z: sp.factor(z.base) ** z.exp)
+                v = piece(compile_acb(sp.expand_mul(g), _u), sp.S.Zero, sp.S.One)
+            except ArbUnsupported:
+                continue
+            # t runs from ``end`` to ``far`` as u runs from 0 to 1
+            total_half = v if end == e else -v
+            break
+        if total_half is None:
+            raise ArbUnsupported("an end-point singularity that the substitution t = e + d u^2 does not remove")
+        total += total_half
+    return total
+
+
+def _inside_branch(g):
+    """A Piecewise integrand of a substituted half piece (u in [0, 1], the
+    singular end at u = 0, which is a break point of the caller) replaced
+    by the branch that holds on all of [2**-20, 1] (decided on a ball: the
+    caller's break points are the switch points, so the branch of the open
+    half piece is the branch next to its end); :class:`ArbUnsupported` where
+    no branch is decided there."""
+    if not isinstance(g, sp.Piecewise):
+        if g.has(sp.Piecewise):
+            raise ArbUnsupported("a Piecewise inside the substituted integrand")
+        return g
+    span = flint.acb((flint.arb(2) ** -20).union(flint.arb(1)))
+    for expr, cond in g.args:
+        if cond == sp.true:
+            return expr
+        test = _condition(cond, lambda e: compile_acb(e, _u))
+        dec = test(span)
+        if dec is True:
+            return expr
+        if dec is None:
+            raise ArbUnsupported("the branch of a Piecewise is not decided on the substituted half piece")
+    raise ArbUnsupported("no branch of the Piecewise holds on the substituted half piece")
 
 
 def _ends_bounded(f, lo, hi):
