@@ -61,7 +61,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "quotient_bound", "compile_acb", "to_acb", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "compile_acb", "to_acb", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -453,7 +453,9 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
     every point given: a :class:`RefValue`.
 
     ``integrand``: a SymPy expression in ``var`` alone (all parameters
-    already replaced by numbers, exact ones preferably);
+    already replaced by numbers, exact ones preferably), or a list of them,
+    one per piece [points[k], points[k+1]] (a function whose formula
+    differs between pieces, |s| written s or -s: no switch to bisect);
     ``points``: the end points and break points, ascending (SymPy numbers,
     ints, Rationals, mpf); ``dps``: the relative digits asked of the
     enclosure (of the sum; each piece is asked a little more);
@@ -532,6 +534,29 @@ def combine(expr, sym, ref: RefValue, dps: int = 45) -> RefValue:
     return RefValue(+val, mpmath.mpf(0), MPMATH, ref.note or "outer terms not in Arb")
 
 
+def lincomb(terms, dps: int = 45, note: str = "") -> RefValue:
+    """sum(coef * value) for ``terms`` [(coef, value)]: ``coef`` an exact
+    number, ``value`` a :class:`RefValue` or an exact SymPy number (a closed
+    term beside the integrals: mu p(x) outside the stick zone).  Rigorous in
+    Arb when every RefValue is an enclosure, else an mpmath estimate that
+    keeps the first reason why not."""
+    refs = [v for _, v in terms if isinstance(v, RefValue)]
+    why = next((r.note for r in refs if not r.certified), None)
+    if why is None and all(r.ball is not None for r in refs):
+        try:
+            with flint.ctx.workprec(_bits(dps) + 64):
+                b = flint.acb(0)
+                for c, v in terms:
+                    b += to_acb(c) * (v.ball if isinstance(v, RefValue) else to_acb(v))
+            if b.is_finite() and 0 in b.imag:
+                return RefValue(_mpf_of(b.real.mid()), _mpf_of(b.real.rad()), ARB, note, ball=b)
+        except ArbUnsupported as exc:
+            why = str(exc)
+    with workdps(dps + 10):
+        val = mpmath.fsum(to_mpf(c) * (v.mid if isinstance(v, RefValue) else to_mpf(v)) for c, v in terms)
+    return RefValue(val, mpmath.mpf(0), MPMATH, why or note)
+
+
 def _mpf_of(b):
     """An arb with an exact midpoint (mid() or rad()) as an exact mpf."""
     if b.is_zero():
@@ -542,24 +567,40 @@ def _mpf_of(b):
         return mpmath.ldexp(mpmath.mpf(man), exp)
 
 
+def _per_piece(integrand, points):
+    """The integrand of each piece (one expression for all, or a list)."""
+    if isinstance(integrand, (list, tuple)):
+        if len(integrand) != len(points) - 1:
+            raise ValueError(f"{len(integrand)} integrands for {len(points) - 1} pieces")
+        return list(integrand)
+    return [integrand] * (len(points) - 1)
+
+
 def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
-    f = compile_acb(integrand, var)
-    prec = _bits(dps) + 30
     goal = _bits(dps)
-    if crude is not None:
-        main = f
-        prec = 2 * goal + 40
+    prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
+
+    def compiled(expr):
+        main = compile_acb(expr, var)
+        if crude is None:
+            return main
 
         def f(z, an):
             v = main(z, an)
             if an or v.is_finite() or z.imag != 0:
                 return v
             return crude(z)
+        return f
+    fs = {}
+    for e in _per_piece(integrand, points):
+        if e not in fs:
+            fs[e] = compiled(e)
     with flint.ctx.workprec(prec):
         edges = [to_acb(p) for p in points]
         total = flint.acb(0)
         tol = flint.arb(2) ** -(goal + 8)
-        for lo, hi in zip(edges[:-1], edges[1:]):
+        for e, lo, hi in zip(_per_piece(integrand, points), edges[:-1], edges[1:]):
+            f = fs[e]
             try:
                 piece = flint.acb.integral(f, lo, hi, rel_tol=tol, eval_limit=eval_limit)
             except (ZeroDivisionError, ValueError, TypeError) as exc:
@@ -580,10 +621,18 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
 
 def _mpmath_integral(integrand, var, points, dps):
     from .exports import lambdify_mpmath
-    g = lambdify_mpmath(integrand, [var])
     pts = [to_mpf(p) for p in points]
+    pieces = _per_piece(integrand, points)
+    if all(e is pieces[0] for e in pieces):
+        pieces, spans = pieces[:1], [pts]
+    else:
+        spans = [pts[k:k + 2] for k in range(len(pieces))]
+    total = 0
+    for e, span in zip(pieces, spans):
+        g = lambdify_mpmath(e, [var])
 
-    def h(t):
-        v = g(t)
-        return mpmath.re(v) if isinstance(v, mpmath.mpc) and abs(mpmath.im(v)) < mpmath.eps * abs(v) else v
-    return mpmath.quad(h, pts)
+        def h(t, g=g):
+            v = g(t)
+            return mpmath.re(v) if isinstance(v, mpmath.mpc) and abs(mpmath.im(v)) < mpmath.eps * abs(v) else v
+        total += mpmath.quad(h, span)
+    return total
