@@ -162,8 +162,7 @@ def to_acb(v):
     if isinstance(v, mpmath.mpf):
         if not mpmath.isfinite(v):
             raise ArbUnsupported(f"non-finite number {v}")
-        man, exp = mpmath.mpf(v).man_exp
-        return flint.acb(flint.arb(flint.fmpz(int(man))) * flint.arb(2) ** int(exp)) if man else flint.acb(0)
+        return _acb_of_mpf(v._mpf_)
     try:
         q = number(v)
     except LineContactError as exc:
@@ -173,6 +172,15 @@ def to_acb(v):
     if q.is_number and not q.free_symbols:
         return compile_acb(q, None)(flint.acb(0), False)
     raise ArbUnsupported(f"cannot make a ball of {v!r}")
+
+
+def _acb_of_mpf(t):
+    """The exact ball of an mpf's raw (sign, mantissa, exponent, bits) value
+    (not through mpmath.mpf(), which rounds to mpmath's working precision,
+    nor mpf.man_exp, which drops the sign)."""
+    sign, man, exp, _ = t
+    man = -int(man) if sign else int(man)
+    return flint.acb(flint.arb(flint.fmpz(man)) * flint.arb(2) ** int(exp)) if man else flint.acb(0)
 
 
 # ----------------------------------------------------------------- the compiler
@@ -279,8 +287,10 @@ def compile_acb(expr, var):
             p_, q_ = int(e.p), int(e.q)
             return lambda z, an: acb(flint.fmpq(p_, q_))
         if e.is_Float:
-            m = mpmath.mpf(e._mpf_)
-            return lambda z, an: to_acb(m)
+            if not mpmath.isfinite(mpmath.mpf(e._mpf_)):
+                raise ArbUnsupported(f"non-finite number {e}")
+            t_ = e._mpf_
+            return lambda z, an: _acb_of_mpf(t_)
         if e is sp.pi:
             return lambda z, an: acb(arb.pi())
         if e is sp.E:

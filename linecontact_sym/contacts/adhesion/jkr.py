@@ -17,8 +17,12 @@ paper's gamma_12) gives Phat = sqrt(2 pi a gamma E*) (Eq. 31).
 The same follows from the compliance of the flat punch, Eq. (3):
 C(a) = (2/(pi E*)) arccosh(L/a) for the displacement at a distant point L,
 so G = (Phat**2/2) |dC/d(2a)| = Phat**2/(2 pi E* a) as L -> oo.
-:func:`phat_energy` evaluates that route numerically (quadrature of the
-punch displacement, numerical differentiation, root finding).
+:func:`phat_energy` evaluates that route numerically: the compliance's slope
+dC/da as the quadrature of Eq. (3) differentiated under the integral sign
+(:func:`compliance_slope`: the log kernel's a-derivative is bounded, so the
+one reference integrator encloses it in Arb; the old route, numerical
+differentiation of the log-singular quadrature :func:`compliance_quad`, is
+its recorded fallback), then the root of G(Phat) = gamma.
 """
 from __future__ import annotations
 
@@ -35,6 +39,7 @@ from ...method.derivation import Derivation
 from ...method.rules import Step
 from ...method.transforms import force_quad
 from ...method.verification import verify
+from ...numeric.reference import combine, integrate
 from ..base import Quantity
 from . import branches
 from .law import CohesiveLaw, Parameter, on_base
@@ -77,19 +82,46 @@ def compliance_quad(A, E, dps, L):
         return 2 * I / (mpmath.pi * E)
 
 
+_phi = sp.Dummy("phi", real=True)
+_dC = sp.Dummy("dC", negative=True)
+
+
+def compliance_slope(A, E, dps, L):
+    """dC/da of :func:`compliance_quad` (a RefValue): Eq. (3) differentiated
+    under the integral sign, d/da [ln|L - a sin phi| - ln|a sin phi|] =
+    -sin phi/(L - a sin phi) - 1/a (bounded: the log singularity at phi = 0
+    does not depend on a), integrated by the one reference integrator;
+    mpmath.diff of :func:`compliance_quad` is the recorded fallback.
+    ``A, E, L``: exact numbers (SymPy, int, float)."""
+    A, E, L = (sp.nsimplify(v) if isinstance(v, mpmath.mpf) else sp.sympify(v) for v in (A, E, L))
+    f = 2 / (sp.pi**2 * E) * (-sp.sin(_phi) / (L - A * sp.sin(_phi)) - 1 / A)
+
+    def fallback():
+        Am, Em, Lm = to_mpf(A), to_mpf(E), to_mpf(L)
+        return mpmath.diff(lambda u: compliance_quad(u, Em, dps + 10, Lm), Am)
+    return integrate(f, _phi, [-sp.pi / 2, 0, sp.pi / 2], dps, fallback=fallback)
+
+
 def phat_energy(A, gamma, E, dps, quadrature=True):
     """Phat from the energy balance G = gamma, G = (P^2/2) |dC/d(2a)| with C
-    the punch compliance (Eq. 3, by quadrature or, with ``quadrature=False``,
-    in its closed arccosh form): numerical differentiation + root finding."""
+    the punch compliance (Eq. 3): with ``quadrature`` (default) its slope by
+    :func:`compliance_slope` and the root Phat = sqrt(4 gamma/|dC/da|) as a
+    :class:`~linecontact_sym.numeric.reference.RefValue` (an Arb enclosure
+    where the slope is one); with ``quadrature=False`` the closed arccosh
+    form differentiated numerically and the root by findroot (an mpf)."""
+    if quadrature:
+        g = sp.sympify(gamma)
+        if g == 0:
+            return mpmath.mpf(0)
+        L = sp.sympify(A) * sp.Integer(10)**(dps + 20)
+        slope = compliance_slope(A, E, dps + 5, L)
+        return combine(sp.sqrt(-4 * g / _dC), _dC, slope, dps)
     with workdps(dps + 10):
         A, g, E = to_mpf(A), to_mpf(gamma), to_mpf(E)
         if g == 0:
             return mpmath.mpf(0)
         L = A * mpmath.mpf(10)**(dps + 20)
-        if quadrature:
-            dC = mpmath.diff(lambda u: compliance_quad(u, E, dps + 10, L), A)
-        else:
-            dC = mpmath.diff(lambda u: 2 * mpmath.acosh(L / u) / (mpmath.pi * E), A)
+        dC = mpmath.diff(lambda u: 2 * mpmath.acosh(L / u) / (mpmath.pi * E), A)
         G = lambda Pv: Pv**2 / 4 * abs(dC) - g  # noqa: E731
         guess = mpmath.sqrt(4 * g / abs(dC))
         return mpmath.findroot(G, (guess * mpmath.mpf("0.5"), guess * 2), solver="anderson")
@@ -315,8 +347,9 @@ def _derive_phat(ad, gamma) -> Derivation:
     rec = None
     if ad.contact.verify and gamma != 0:
         rec = verify(expr, reference, sampler, (), n_points=ad.contact.points,
-                     reference_name="energy release rate G = (Phat^2/2)|dC/d(2a)| = gamma of the flat punch, "
-                                    "compliance C by quadrature of Eq. (3), mpmath.diff + findroot")
+                     reference_name="the energy release rate G = (Phat^2/2)|dC/d(2a)| = gamma of the flat punch, "
+                                    "the compliance's slope by quadrature of Eq. (3) differentiated under the "
+                                    "integral sign")
         ad._require(rec, "flat_punch_force")
     step = Step("griffith", expr, (), ("Eq. (31): Griffith balance K_I^2/(2 E*) = gamma at the edge, "
                                        "K_I = Phat/sqrt(pi a) (Eq. 30)",))
@@ -327,4 +360,4 @@ def _derive_phat(ad, gamma) -> Derivation:
 
 
 __all__ = ["JKR", "check_existence", "flat_punch_force", "stress_intensity", "energy_release_rate",
-           "compliance_quad", "phat_energy", "GAMMA_RANGE"]
+           "compliance_quad", "compliance_slope", "phat_energy", "GAMMA_RANGE"]
