@@ -138,3 +138,14 @@ def test_jkr_energy_route_is_certified_and_contains_eq31():
     s = compliance_slope(R(1, 2), 1, 30, R(1, 2) * 10**50)
     with workdps(40):
         assert s.method == "arb" and s.contains(-4 / mpmath.pi)      # -2/(pi E* a)
+
+
+@pytest.mark.slow
+def test_jkr_verification_records_are_certified_by_arb():
+    """Eq. (31), (33) and (29) of the parabola: every point checked against an
+    Arb enclosure (Eq. 10* / Eq. 12 minus the energy route's Phat)."""
+    ad = lcs.parabola().adhesive(S.gamma)
+    for q in ("flat_punch_force", "force", "pressure"):
+        v = ad.derivation(q).verification
+        assert v.passed and v.certified and min(v.guaranteed) >= 30, (q, str(v))
+        assert "Arb ball quadrature" in str(v)

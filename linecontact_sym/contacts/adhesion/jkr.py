@@ -37,9 +37,9 @@ from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
 from ...method.derivation import Derivation
 from ...method.rules import Step
-from ...method.transforms import force_quad
 from ...method.verification import verify
-from ...numeric.reference import combine, integrate
+from ...numeric.reference import combine, integrate, lincomb
+from ..normal.reference import force_reference
 from ..base import Quantity
 from . import branches
 from .law import CohesiveLaw, Parameter, on_base
@@ -86,6 +86,15 @@ _phi = sp.Dummy("phi", real=True)
 _dC = sp.Dummy("dC", negative=True)
 
 
+def _exact(v):
+    """A number as an exact SymPy number (an mpf by its binary value)."""
+    if isinstance(v, mpmath.mpf):
+        sign, man, exp, _ = v._mpf_
+        r = sp.Integer(int(man)) * sp.Integer(2)**int(exp)
+        return -r if sign else r
+    return sp.sympify(v)
+
+
 def compliance_slope(A, E, dps, L):
     """dC/da of :func:`compliance_quad` (a RefValue): Eq. (3) differentiated
     under the integral sign, d/da [ln|L - a sin phi| - ln|a sin phi|] =
@@ -93,7 +102,7 @@ def compliance_slope(A, E, dps, L):
     does not depend on a), integrated by the one reference integrator;
     mpmath.diff of :func:`compliance_quad` is the recorded fallback.
     ``A, E, L``: exact numbers (SymPy, int, float)."""
-    A, E, L = (sp.nsimplify(v) if isinstance(v, mpmath.mpf) else sp.sympify(v) for v in (A, E, L))
+    A, E, L = (_exact(v) for v in (A, E, L))
     f = 2 / (sp.pi**2 * E) * (-sp.sin(_phi) / (L - A * sp.sin(_phi)) - 1 / A)
 
     def fallback():
@@ -175,7 +184,7 @@ class JKR(CohesiveLaw):
     # ----------------------------------------------------------- Eqs. (29), (31), (33)
     def derive_flat_punch_force(self, ad) -> Derivation:
         """Eq. (31), verified against the energy balance of the flat-punch
-        compliance (quadrature of Eq. 3, mpmath.diff, findroot); shared by all
+        compliance (its slope by quadrature of Eq. 3, :func:`compliance_slope`); shared by all
         contacts with the same work of adhesion."""
         key = (self.gamma, ad.contact.points, ad.contact.verify)
         if key not in _PHAT_CACHE:
@@ -190,14 +199,13 @@ class JKR(CohesiveLaw):
         prof, gexpr = ad.profile, self.gamma
 
         def reference(vals, dps):
-            with workdps(dps + 10):
-                return force_quad(prof, vals, dps) - phat_energy(
-                    vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
+            return lincomb([(1, force_reference(prof, vals, dps)),
+                            (-1, phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps))], dps)
         rec = None
         if fd.closed_form and ad.contact.verify:
             rec = verify(expr, reference, ad._sampler(), fd.conditions, n_points=ad.contact.points,
-                         reference_name="quadrature of Eq. (10*) minus Phat from the energy balance of "
-                                        "the flat-punch compliance (Eq. 3, mpmath.diff + findroot)")
+                         reference_name="Eq. (10*) minus Phat from the energy balance of the flat-punch "
+                                        "compliance (Eq. 3 differentiated under the integral sign)")
             ad._require(rec, "force")
         step = Step("jkr_superposition", expr, fd.conditions,
                     (f"Eq. (33): P0(a) of the engine ({fd.method}) minus Phat, Eq. (31)" if fd.closed_form
@@ -214,15 +222,14 @@ class JKR(CohesiveLaw):
         gexpr = self.gamma
 
         def reference(vals, dps):
-            with workdps(dps + 10):
-                A, X = to_mpf(vals[S.a]), to_mpf(vals[S.x])
-                ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
-                return pd.reference(vals, dps) - ph / (mpmath.pi * mpmath.sqrt(A**2 - X**2))
+            A, X = vals[S.a], vals[S.x]
+            ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps)
+            return lincomb([(1, pd.reference(vals, dps)), (-1 / (sp.pi * sp.sqrt(A**2 - X**2)), ph)], dps)
         rec, notes = None, list(pd.notes)
         if pd.closed_form and ad.contact.verify:
             rec = verify(expr, reference, ad._sampler("inside"), pd.conditions, n_points=ad.contact.points,
-                         reference_name="Eq. (12) quadrature of p0 minus the flat punch (Eq. 1) with Phat "
-                                        "from the energy balance (mpmath.diff + findroot)")
+                         reference_name="Eq. (12) of p0 minus the flat punch (Eq. 1) with Phat from the energy "
+                                        "balance (Eq. 3 differentiated under the integral sign)")
             ad._require(rec, "pressure")
             eq = branches.equilibrium_digits(ad, expr)
             notes.append(f"equilibrium: 2 int_0^a p dx (quadrature of Eq. 29) = P(a) of Eq. (33) to "
@@ -331,8 +338,8 @@ def check_existence(ad, C, m, vals=None):
 
 def _derive_phat(ad, gamma) -> Derivation:
     """Eq. (31), verified against the energy balance G = gamma computed from
-    the flat-punch compliance by quadrature (Eq. 3), numerical
-    differentiation and root finding."""
+    the flat-punch compliance's slope by quadrature (Eq. 3 differentiated
+    under the integral sign, an Arb enclosure) and its root."""
     expr = flat_punch_force(gamma)
     gsyms = tuple(sorted(gamma.free_symbols, key=lambda s: s.name))
 
