@@ -611,6 +611,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         tol = flint.arb(2) ** -(goal + 8)
         for e, lo, hi in zip(_per_piece(integrand, points), edges[:-1], edges[1:]):
             f = fs[e]
+            _bounded_at_ends(f, lo, hi, prec)
             try:
                 piece = flint.acb.integral(f, lo, hi, rel_tol=tol, eval_limit=eval_limit)
             except (ZeroDivisionError, ValueError, TypeError) as exc:
@@ -627,6 +628,22 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         if re_.rel_accuracy_bits() < goal and re_.rad() > flint.arb(2) ** -goal:
             raise ArbUnsupported(f"enclosure too wide: {re_.rel_accuracy_bits()} of {goal} bits")
         return total
+
+
+def _bounded_at_ends(f, lo, hi, prec):
+    """ArbUnsupported at once when the integrand is not finite on a real ball
+    of width 2**-(2 prec) |hi - lo| touching an end of the piece (a log or a
+    2F1 at its branch point): acb.integral's bisection could never bound the
+    segment at that end and would spend its whole evaluation limit first."""
+    w = abs((hi - lo).real) * flint.arb(2) ** (-2 * prec)
+    for end, side in ((lo.real, 1), (hi.real, -1)):
+        try:
+            v = f(flint.acb(end.union(end + side * w)), False)
+        except (ZeroDivisionError, ValueError, TypeError):
+            v = _nan()
+        if not v.is_finite():
+            raise ArbUnsupported("Arb could not bound a piece: the integrand is unbounded in ball arithmetic at "
+                                 "an end point (a singularity there)")
 
 
 def _mpmath_integral(integrand, var, points, dps):
