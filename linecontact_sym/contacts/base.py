@@ -375,8 +375,9 @@ class Contact:
         from ..numeric.functions import make_callable
         checked_dps(dps)
         name = self.resolve(quantity)
-        return make_callable(self.derivation(name), backend, dps, params,
-                             domain=DomainCheck(self, name) if check else None)
+        inputs = ExportInputs(self, name, params)
+        return make_callable(self.derivation(name), backend, dps, inputs.params,
+                             domain=DomainCheck(self, name) if check else None, inputs=inputs)
 
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
         """The cheapest evaluation that meets ``rtol``: float64, mpmath at a
@@ -548,6 +549,34 @@ def scalar_domain_plan(self, quantity):
                     cond_fn if conds else None, adm)
         cache[key] = plan
     return cache[key]
+
+
+class ExportInputs:
+    """What an export does with its arguments before anything else, checked
+    or not (``to_numeric(check=False)`` too): pint quantities checked against
+    their units and converted to SI (:meth:`Contact._strip_units`, the one
+    place; the result then carries the quantity's declared unit), and x
+    replaced by |x| for a quantity of x inside or outside the contact (the
+    profile is mirrored, f(-x) = f(x): the pressure, gap, traction ... are
+    even in x, and the derived closed forms hold for x > 0, x being a
+    positive symbol).  The parameters fixed at export time are converted
+    once (``params``, SI numbers).  Pickles with its contact."""
+
+    def __init__(self, contact, quantity, params):
+        from ..core.units import is_quantity
+        self.contact, self.quantity = contact, quantity
+        self.fold_x = type(contact)._registry[quantity].domain in ("inside", "outside")
+        self.given = dict(params)
+        self.has_units = any(is_quantity(v) for v in self.given.values())
+        self.params = contact._strip_units(quantity, self.given)[0] if self.has_units else self.given
+        if self.fold_x and "x" in self.params:
+            from ..numeric.functions import fold_x
+            self.params = {**self.params, "x": fold_x(self.params["x"])}
+
+    def strip(self, kw):
+        """``(values in SI, registry or None, unit)`` of a call's keywords."""
+        plain, registry, unit = self.contact._strip_units(self.quantity, {**self.given, **kw})
+        return {k: plain[k] for k in kw}, registry, unit
 
 
 class DomainCheck:
