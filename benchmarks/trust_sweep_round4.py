@@ -286,8 +286,8 @@ for _n, _f in {
         Q_(0.1, "N/m"), E_star=Q_(1, "Pa"), R=Q_(1, "m"), mu=0.4, a=Q_(0.8, "m")).c, 0.8 * 0.708971651646,
         "m", 1e-9),
     "md_state": lambda: units_ok(lambda: lcs.parabola(verify=False).maugis_dugdale().state(
-        Q_(0.5, "m"), E_star=Q_(1, "Pa"), R=Q_(1, "m"), gamma=Q_(0.01, "J/m**2"), sigma_0=Q_(1, "Pa")).P,
-        float(lcs.parabola(verify=False).maugis_dugdale().state(0.5, E_star=1, R=1, gamma=0.01, sigma_0=1).P),
+        Q_(0.5, "m"), E_star=Q_(1, "Pa"), R=Q_(1, "m"), gamma=Q_(0.01, "J/m**2"), sigma_0=Q_(1, "Pa")).force,
+        float(lcs.parabola(verify=False).maugis_dugdale().state(0.5, E_star=1, R=1, gamma=0.01, sigma_0=1).force),
         "N/m", 1e-8),
     "wrong_dimension_nocheck": lambda: refused(lambda: lcs.parabola(verify=False).to_numeric(
         "force", check=False)(a=Q_(1, "mm"), R=Q_(5, "s"), E_star=Q_(210, "GPa"))),
@@ -336,8 +336,8 @@ for _n, _f in {
     "rtol_negative": lambda: refused(lambda: _md().model_choice(-0.1, sigma_0=1, **MDV)),
     "rtol_nan": lambda: refused(lambda: _md().model_choice(float("nan"), sigma_0=1, **MDV)),
     "rtol_text": lambda: refused(lambda: _md().model_choice("abc", sigma_0=1, **MDV)),
-    "gap_at_cD_real": lambda: (lambda st: isinstance(st.gap(st.c), (mpmath.mpf, float, sp.Float))
-                               or complex(st.gap(st.c)).imag == 0)(_md().state(0.5, sigma_0=1, **MDV)),
+    "gap_at_cD_real": lambda: (lambda st: isinstance(st.gap(st.c_D), (mpmath.mpf, float, sp.Float))
+                               or complex(st.gap(st.c_D)).imag == 0)(_md().state(0.5, sigma_0=1, **MDV)),
     "at_pull_off_force_number": lambda: (lambda v: float(v) < 0)(
         _md().at(sigma_0=1, **MDV).pull_off_force),
     "to_numeric_force": lambda: number_or_refused(

@@ -22,6 +22,8 @@ checker and the LaTeX/report views.  A new physical effect is a new subclass
 """
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass, field
 
 import math
@@ -89,7 +91,7 @@ class Quantity:
         if obj is None:
             return self
         if self.method:
-            return getattr(obj, "_" + self.name)
+            return _method_with_units(obj, self, getattr(obj, "_" + self.name))
         return obj._value(self.name)
 
     @property
@@ -549,6 +551,32 @@ def scalar_domain_plan(self, quantity):
                     cond_fn if conds else None, adm)
         cache[key] = plan
     return cache[key]
+
+
+def _method_with_units(contact, q, fn):
+    """A method quantity (``c.half_width(P, **values)``, ``t.stick_half_width(Q, ...)``)
+    that takes pint quantities: the load (its first argument, named
+    ``q.arguments[-1]``) and the values converted to SI by the contact's one
+    unit stripper (:meth:`Contact._strip_units`), the result (a number, or a
+    tuple of numbers) in the quantity's declared unit.  Plain numbers pass
+    straight through."""
+    from ..core.units import is_quantity, with_unit
+
+    @functools.wraps(fn)
+    def call(*args, **kw):
+        if not any(is_quantity(v) for v in args) and not any(is_quantity(v) for v in kw.values()):
+            return fn(*args, **kw)
+        load = q.arguments[-1] if q.arguments else "load"
+        vals = dict(kw)
+        if args:
+            vals[load] = args[0]
+        plain, registry, unit = contact._strip_units(q.name, vals)
+        rest = {k: v for k, v in plain.items() if k != load or not args}
+        out = fn(*((plain[load],) + tuple(args[1:]) if args else ()), **rest)
+        if isinstance(out, tuple):
+            return tuple(with_unit(o, unit, registry) for o in out)
+        return with_unit(out, unit, registry)
+    return call
 
 
 class ExportInputs:

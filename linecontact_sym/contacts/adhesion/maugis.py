@@ -38,6 +38,7 @@ from ...core import symbols as S
 from ...core.conversion import float_values, point_value, rational
 from ...core.errors import DomainError, NumericValuesRequired
 from ...core.precision import workdps
+from ...core.ranges import check_positive, check_tolerance
 from ...method.derivation import Derivation, values_by_name
 from ...method.rules import Step
 from ...method.verification import verify
@@ -342,6 +343,8 @@ class MaugisDugdaleContact(ContactOn):
 
     # ------------------------------------------------------------ numbers
     def _numeric_values(self, values):
+        from ...core.units import refuse_units
+        refuse_units(values, "the Maugis-Dugdale contact's numeric results", S.UNITS)
         vals = dict(self.values)
         for s in self.variables:
             if s.name in values:
@@ -354,9 +357,8 @@ class MaugisDugdaleContact(ContactOn):
         missing = [s.name for s in self.variables if s not in vals]
         if missing:
             raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
-        for s in self.variables:
-            if not to_sympy(vals[s]).is_number or not to_sympy(vals[s]) > 0:
-                raise DomainError(f"{s.name} = {vals[s]} must be a positive number")
+        for s in self.variables:     # a finite positive real number each (core.ranges)
+            check_positive(s.name, to_sympy(vals[s]), _LIMITS.get(s.name))
         return vals
 
     def numeric_law(self, **values) -> MDLaw:
@@ -412,8 +414,9 @@ class MaugisDugdaleContact(ContactOn):
         return maugis_choice.sigma0_for(self, lam, dps, **values)
 
     def model_choice(self, rtol=0.05, dps: int = 15, **values):
-        """'JKR' or 'MD' for a tolerance, see :func:`.maugis_choice.model_choice`."""
-        return maugis_choice.model_choice(self, rtol, dps, **values)
+        """'JKR' or 'MD' for a tolerance (> 0, :func:`~linecontact_sym.core.ranges.check_tolerance`),
+        see :func:`.maugis_choice.model_choice`."""
+        return maugis_choice.model_choice(self, check_tolerance(rtol), dps, **values)
 
     def adhesion_map(self, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), path=None, **kw):
         """The adhesion map (needs the ``[plot]`` extra): P(a) for several
@@ -429,6 +432,10 @@ class MaugisDugdaleContact(ContactOn):
     def report(self, quantities=("zone_force", "cohesive_gap", "pressure")) -> str:
         return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
 
+
+#: what an infinite value of a parameter stands for (said when one is given)
+_LIMITS = {"sigma_0": "the cohesive stress sigma_0 (sigma_0 -> oo with w fixed is the JKR limit: "
+                      "use contact.adhesive(w) for it)"}
 
 _REFERENCE_NAMES = {
     "zone_force": "Johnson's bounded-solution condition P = (E*/2) int_-a^a s phi'(s)/sqrt(a^2-s^2) ds on the effective "
