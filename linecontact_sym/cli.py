@@ -303,6 +303,8 @@ def cmd_eval(args):
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": mpmath.nstr(v, args.dps)})
         except LineContactError as exc:
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": None, "error": str(exc)})
+            at = ", ".join(f"{k} = {vv}" for k, vv in point.items())
+            _err(f"{q}{' at ' + at if at else ''}: {_cli_hint(str(exc))}")   # on stderr too, not only in the table
     if args.json:
         _emit_json({"profile": str(prof), "quantity": q, "set": {k: str(v) for k, v in fixed.items()},
                     "dps": args.dps, "rows": rows})

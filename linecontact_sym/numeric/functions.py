@@ -52,6 +52,11 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     """
     if backend not in ("numpy", "mpmath"):
         raise LineContactError(f"unknown backend {backend!r}; use 'numpy' or 'mpmath'")
+    import sympy as sp
+    if not isinstance(derivation.expr, sp.Expr):       # a system of equations (the MD force with its c_D)
+        raise LineContactError(f"the {derivation.quantity} is not one expression but {type(derivation.expr).__name__} "
+                               f"{str(derivation.expr)[:160]}; it has no export of its own: evaluate it through "
+                               f"its contact's numeric methods (e.g. the Maugis-Dugdale state(a, ...))")
     return NumericFunction(derivation, backend, dps, dict(params or {}), stable, domain, inputs)
 
 

@@ -29,6 +29,7 @@ delta = pi E* w/(4 sigma_0^2) the cohesive-zone length of the JKR limit
 """
 from __future__ import annotations
 
+import contextlib
 import time
 
 import mpmath
@@ -207,7 +208,11 @@ class MaugisDugdaleContact(ContactOn):
         return new
 
     def _value(self, name):
-        e = self.derivation(name).expr
+        d = self.derivation(name)
+        if not d.closed_form and d.reference is not None and self.values and \
+                all(s in self.values for s in self.variables):
+            return d.reference(self.values, 30)      # a numeric quantity at bound values: the number (as JKR's)
+        e = d.expr
         return e.xreplace(self.values) if self.values else e
 
     # ------------------------------------------------------------ the derivation
@@ -378,7 +383,8 @@ class MaugisDugdaleContact(ContactOn):
             A = mpmath.mpf(sp.N(to_sympy(a), dps + 20)) if not isinstance(a, mpmath.mpf) else a
         if not A > 0:
             raise DomainError(f"the half-width must be positive, got a = {a}")
-        return law.state(A, dps)
+        with _real_profile(self, values):
+            return law.state(A, dps)
 
     def pull_off_at(self, dps: int = 30, **values) -> MDPullOff:
         """The load-control pull-off: the global minimum of P(a) over every
@@ -388,7 +394,8 @@ class MaugisDugdaleContact(ContactOn):
         law = self.numeric_law(**values)
         key = ("po", dps, id(law))
         if key not in self._cache:
-            self._cache[key] = law.pull_off(dps)
+            with _real_profile(self, values):
+                self._cache[key] = law.pull_off(dps)
         return self._cache[key]
 
     def displacement_control(self):
@@ -431,6 +438,22 @@ class MaugisDugdaleContact(ContactOn):
 
     def report(self, quantities=("zone_force", "cohesive_gap", "pressure")) -> str:
         return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
+
+
+@contextlib.contextmanager
+def _real_profile(md, values):
+    """The numeric law's searches compare real numbers; where the cohesive
+    zone would reach past the profile's real domain (the exact cylinder's
+    |x| > R) they meet complex values: a DomainError saying so, not a
+    TypeError of mpmath."""
+    try:
+        yield
+    except TypeError as exc:
+        if "complex" not in str(exc):
+            raise
+        raise DomainError(f"no Maugis-Dugdale state of f(x) = {md.profile.expr} at {values}: the cohesive zone "
+                          f"would reach where the profile is not real (e.g. |x| > R of the exact cylinder); "
+                          f"a smaller work of adhesion or a larger sigma_0 keeps it inside") from None
 
 
 #: what an infinite value of a parameter stands for (said when one is given)
