@@ -249,3 +249,149 @@ def test_item3_every_x_export_on_both_signs(worn, par):
                 assert np.allclose(arr, ref, rtol=1e-10), (q, check, sign)
             fm = c.to_numeric(q, "mpmath", check=check)
             assert float(fm(x=-xv, **vals)) == pytest.approx(ref, rel=1e-12), (q, "mpmath", check)
+
+
+# ------------------------------------------------------------------ 4: one reader of numeric settings (issue item 6)
+def test_item4_one_reader_for_budgets_jobs_tolerances():
+    from linecontact_sym.core.budget import checked_budget
+    from linecontact_sym.core.errors import BudgetError
+    from linecontact_sym.core.parallel import capped_jobs, jobs_count
+    from linecontact_sym.core.ranges import check_tolerance
+    assert checked_budget(" 2.5 ") == 2.5 and checked_budget(np.float32(4)) == 4.0
+    assert checked_budget("inf") is None and checked_budget(10**400) is None    # larger than any float: no limit
+    for bad in ("abc", "nan", 0, -1, True, 1j, "1e-400x"):
+        with pytest.raises(BudgetError):
+            checked_budget(bad)
+    assert jobs_count(" 3 ") == 3 and jobs_count(np.int64(2)) == 2 and jobs_count(2.0) == 2
+    for bad in ("abc", 0, 2.5, "inf", None, True):
+        with pytest.raises(DomainError):
+            jobs_count(bad)
+    assert capped_jobs(1000, 20) == 20 and capped_jobs(4, 0) == 1
+    assert check_tolerance("0.05") == 0.05
+    for bad in (-0.1, float("nan"), 0, "abc", 2):
+        with pytest.raises(DomainError):
+            check_tolerance(bad)
+
+
+def test_item4_an_executor_given_as_text_is_refused():
+    from linecontact_sym.core.parallel import map_ordered
+    with pytest.raises(DomainError, match="executor"):
+        map_ordered(abs, [1, -2], executor="processes")
+
+
+def _cli(args, **env):
+    return subprocess.run([sys.executable, "-m", "linecontact_sym"] + args, capture_output=True, text=True,
+                          timeout=300, env={**os.environ, "PYTHONPATH": ROOT, **env})
+
+
+@pytest.mark.slow
+def test_item4_budget_environment_on_the_cli():
+    args = ["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "--dps", "12"]
+    r = _cli(args, LINECONTACT_SYM_BUDGET="abc")
+    assert r.returncode == 2 and "LINECONTACT_SYM_BUDGET" in r.stderr and "Traceback" not in r.stderr
+    r = _cli(args, LINECONTACT_SYM_BUDGET="inf")        # the README's "no limit"
+    assert r.returncode == 0 and "0.785398163397" in r.stdout
+    r = _cli(["paper", "popov2017", "--jobs", "abc"])
+    assert r.returncode == 2 and "--jobs" in r.stderr and "Traceback" not in r.stderr
+
+
+@pytest.mark.slow
+def test_item4_paper_jobs_are_capped_at_the_work(monkeypatch, tmp_path):
+    from linecontact_sym import cli
+    from linecontact_sym.claims import batch
+    seen = []
+    real = batch.process_pool
+    monkeypatch.setattr(batch, "process_pool", lambda jobs=None: seen.append(jobs) or real(jobs))
+    code = cli.main(["paper", "popov2017", "--jobs", "1000", "--only", "Eq. (13)", "--no-figures", "--quiet",
+                     "--out", str(tmp_path)])
+    assert code == 0 and all(j <= 2 for j in seen)
+
+
+# ------------------------------------------------------------------ 5: units never dropped (issue item 3)
+pint = pytest.importorskip("pint")
+ureg = pint.UnitRegistry()
+Q_ = ureg.Quantity
+U_REF = math.pi * 210e9 * 1e-3**2 / (4 * 5e-3)       # Eq. (13) in SI: 32986722.86 N/m
+
+
+@pytest.mark.slow
+def test_item5_exports_take_units_checked_or_not(par):
+    vals = dict(a=Q_(1, "mm"), R=Q_(5, "mm"), E_star=Q_(210, "GPa"))
+    for check in (True, False):
+        v = par.to_numeric("force", check=check)(**vals)
+        assert v.to("N/m").magnitude == pytest.approx(U_REF, rel=1e-12)     # 32.99 before: mm read as numbers
+        with pytest.raises(DomainError, match="dimension"):
+            par.to_numeric("force", check=check)(**{**vals, "R": Q_(5, "s")})
+    v = par.to_numeric("force", "mpmath", R=Q_(5, "mm"))(a=Q_(1, "mm"), E_star=Q_(210, "GPa"))
+    assert float(v.to("N/m").magnitude) == pytest.approx(U_REF, rel=1e-14)
+    assert par.to_numeric("force")(a=1e-3, R=5e-3, E_star=210e9) == pytest.approx(U_REF, rel=1e-12)   # plain: SI
+
+
+def test_item5_half_width_takes_units(par):
+    a = par.half_width(Q_(U_REF, "N/m"), R=Q_(5, "mm"), E_star=Q_(210, "GPa"))
+    assert float(a.to("mm").magnitude) == pytest.approx(1.0, rel=1e-12)
+
+
+def test_item5_record_results_refuse_units_naming_them(par):
+    with pytest.raises(DomainError, match="pint quantity"):
+        par.tangential().state(Q_(0.1, "N/m"), E_star=1, R=1, mu=0.4, a=0.8)
+    with pytest.raises(DomainError, match="pint quantity"):
+        par.maugis_dugdale().pull_off_at(15, E_star=Q_(1, "Pa"), R=1, gamma=0.01, sigma_0=1)
+
+
+# ------------------------------------------------------------------ 6: Maugis-Dugdale inputs (issue item 4)
+MDV = dict(E_star=1, R=1, gamma=sp.Rational(1, 100))
+
+
+@pytest.mark.parametrize("sigma0", [sp.oo, 1 + 2j, sp.Symbol("q") + 1, sp.nan, -1, 0])
+def test_item6_md_sigma0_refused_at_the_entry(par, sigma0):
+    with pytest.raises(DomainError, match="sigma_0"):
+        par.maugis_dugdale().pull_off_at(15, sigma_0=sigma0, **MDV)
+
+
+@pytest.mark.parametrize("rtol", [-0.1, float("nan"), "abc", 0])
+def test_item6_model_choice_refuses_a_bad_tolerance(par, rtol):
+    t0 = time.perf_counter()
+    with pytest.raises(DomainError, match="tolerance"):
+        par.maugis_dugdale().model_choice(rtol, sigma_0=1, **MDV)
+    assert time.perf_counter() - t0 < 1            # refused before any pull-off is searched
+
+
+@pytest.mark.slow
+def test_item6_md_force_export_refused_clearly(par):
+    with pytest.raises(LineContactError, match="not one expression"):
+        par.maugis_dugdale().to_numeric("force")
+
+
+@pytest.mark.slow
+def test_item6_md_numbers(par):
+    md = par.maugis_dugdale()
+    v = md.at(sigma_0=1, **MDV).pull_off_force
+    ref = md.pull_off_at(20, sigma_0=1, **MDV).force
+    assert float(v) == pytest.approx(float(ref), rel=1e-12) and float(v) < 0
+    st = md.state(0.5, sigma_0=1, **MDV)
+    g = st.gap(st.c_D)
+    assert not isinstance(g, mpmath.mpc) and float(g) == pytest.approx(float(st.h0), rel=1e-10)
+    with pytest.raises(DomainError, match="not real"):
+        lcs.exact_cylinder(verify=False).maugis_dugdale().pull_off_at(15, E_star=1, R=1, gamma=1,
+                                                                      sigma_0=sp.Rational(1, 100))
+
+
+# ------------------------------------------------------------------ 7: carried over
+def test_item7_cli_eval_bad_value_on_stderr():
+    import contextlib
+    import io
+    from linecontact_sym import cli
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=-1", "--set", "R=1", "E_star=1"])
+    assert code == 2 and "a = -1" in err.getvalue() and "positive" in err.getvalue()
+
+
+@pytest.mark.slow
+def test_item7_partial_slip_stick_beyond_a_refused(par):
+    c = sp.Symbol("c", positive=True)
+    for sf, extra in ((par.stresses("partial_slip", stick=c, mu=0.3), {"c": sp.Rational(3, 2)}),
+                      (par.stresses("partial_slip", stick=sp.Rational(3, 2), mu=0.3), {})):
+        with pytest.raises(DomainError, match="stick half-width"):
+            sf.evaluate_at("sigma_x", x=sp.Rational(1, 10), z=sp.Rational(1, 5), a=1, R=1, E_star=1, **extra)
