@@ -534,7 +534,7 @@ def _derive(quantity, problem, reference, sampler, fallback, deadline, check, po
     if step is not None and check:
         left = deadline.left()
         rec = verify(step.expr, reference, sampler, step.conditions, n_points=points,
-                     reference_name=f"mpmath quadrature of the defining integral ({quantity})",
+                     reference_name=f"the defining integral ({quantity})",
                      budget=max(left, 0.05) if left is not None else None)
         if not rec.passed and not rec.points:
             attempts.append((step.rule, f"closed form not verified: the verification did not finish in "
