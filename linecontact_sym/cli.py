@@ -113,9 +113,57 @@ def _profile(text, symbols=(), where="PROFILE"):
     return parse_expr(text, symbols=list(symbols or ()), where=where)
 
 
+_WITH_UNIT = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z\u00b5\u03bc][A-Za-z0-9_*/^ .\u00b5\u03bc]*)\s*")
+
+
 def _settings(items, symbols=()):
+    """``--set NAME=VALUE ...``: numbers (parsed by the whitelisted parser);
+    a number with a unit (``E_star=210GPa``, ``R=5 mm``; the ``[units]``
+    extra, pint's unit parser, nothing evaluated) is converted to the SI
+    unit declared for NAME (:data:`~linecontact_sym.core.symbols.UNITS`),
+    exactly as typed in decimal; a wrong dimension, or a name without a
+    declared unit, is bad input naming the unit."""
     from .parsing import parse_assignments
-    return parse_assignments(items or [], where="--set", symbols=list(symbols or ()))
+    plain, out = [], {}
+    for item in items or []:
+        name, _, val = item.partition("=")
+        m = _WITH_UNIT.fullmatch(val) if "=" in item else None
+        if m is None:
+            plain.append(item)
+            continue
+        out[name.strip()] = _si_value(name.strip(), m.group(1), m.group(2).strip())
+    values = parse_assignments(plain, where="--set", symbols=list(symbols or ()))
+    if out:
+        extra = parse_assignments([f"{k}={v}" for k, v in out.items()], where="--set", symbols=list(symbols or ()))
+        values.update(extra)
+    return values
+
+
+def _si_value(name, number, unit_text):
+    """The SI value (decimal text) of ``number unit_text`` for the setting ``name``."""
+    from .core.errors import DomainError
+    from .core.extras import require
+    unit = S.UNITS.get(name)
+    if unit is None:
+        raise DomainError(f"--set {name}={number}{unit_text}: {name} has no declared unit; give it in SI as a "
+                          f"plain number")
+    pint = require("units", "pint")
+    reg = _unit_registry(pint)
+    try:
+        q = reg.Quantity(number) * reg.parse_units(unit_text)
+        si = q.to(unit or "dimensionless").magnitude
+    except pint.DimensionalityError:
+        raise DomainError(f"--set {name}={number}{unit_text}: the unit {unit_text!r} is not one of "
+                          f"{unit or 'a dimensionless number'} ({name})") from None
+    except Exception as exc:  # noqa: BLE001 -- pint's parser refusing the text
+        raise DomainError(f"--set {name}={number}{unit_text}: {unit_text!r} is not a unit ({exc})") from None
+    return repr(float(si))
+
+
+def _unit_registry(pint, _reg=[]):   # noqa: B006 -- one registry per process
+    if not _reg:
+        _reg.append(pint.UnitRegistry())
+    return _reg[0]
 
 
 def _contact(args, profile):
@@ -310,6 +358,9 @@ def cmd_eval(args):
                     "dps": args.dps, "rows": rows})
     else:
         head = "  ".join(f"{n:>12}" for n in names) + f"  {q}"
+        if any("=" in i and _WITH_UNIT.fullmatch(i.partition("=")[2]) for i in args.set or []):
+            unit = getattr(_registry()[q][2], "unit", None)      # values with units: the result in SI, said
+            head += f" [{unit or 'SI'}]"
         print(head)
         for r in rows:
             print("  ".join(f"{r[n]:>12}" for n in names) + "  " + (r["value"] or f"error: {r['error']}"))

@@ -395,3 +395,32 @@ def test_item7_partial_slip_stick_beyond_a_refused(par):
                       (par.stresses("partial_slip", stick=sp.Rational(3, 2), mu=0.3), {})):
         with pytest.raises(DomainError, match="stick half-width"):
             sf.evaluate_at("sigma_x", x=sp.Rational(1, 10), z=sp.Rational(1, 5), a=1, R=1, E_star=1, **extra)
+
+
+@pytest.mark.slow
+def test_item7_cos_bump_pull_off_gives_the_reason():
+    """The cos bump's JKR pull-off at gamma = 1: its minimum lies at the end of
+    the admissible range, where the two methods place that end differently (a
+    VerificationError before): a NoPullOffError stating why there is none."""
+    from linecontact_sym.core.errors import NoPullOffError
+    A, L = sp.Symbol("A", positive=True), sp.Symbol("L", positive=True)
+    c = lcs.LineContact(A * (1 - sp.cos(sp.pi * x / L)), verify=False)
+    with pytest.raises(NoPullOffError, match="no minimum inside the admissible range"):
+        c.adhesive().pull_off_at(15, A=sp.Rational(1, 10), L=1, E_star=1, gamma=1)
+
+
+@pytest.mark.slow
+def test_item5_cli_set_with_units():
+    """--set E_star=210GPa: converted to the declared SI unit (before: 'not a
+    valid formula'); a wrong dimension is bad input naming the unit."""
+    import contextlib
+    import io
+    from linecontact_sym import cli
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=1e-3", "--set", "R=5 mm", "E_star=210GPa",
+                         "--dps", "12"])
+    assert code == 0 and "32986722.8627" in out.getvalue() and "[N/m]" in out.getvalue()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=1e-3", "--set", "R=5 s", "E_star=1"])
+    assert code == 2 and "'s'" in err.getvalue() and "(R)" in err.getvalue()
