@@ -151,6 +151,7 @@ def test_item1_the_cli_never_runs_a_planted_record(cache):
 
 
 # ------------------------------------------------------------------ 2: a tampered record is not trusted
+@pytest.mark.slow
 @pytest.mark.parametrize("tamper", [
     lambda old: f"Mul(Integer(-1), {old})",                              # the sign flipped
     lambda old: "Mul(Rational(1, 2), pi, Symbol('E_star', positive=True), "   # another profile's result
@@ -424,3 +425,31 @@ def test_item5_cli_set_with_units():
     with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
         code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=1e-3", "--set", "R=5 s", "E_star=1"])
     assert code == 2 and "'s'" in err.getvalue() and "(R)" in err.getvalue()
+
+
+@pytest.mark.slow
+def test_item2_a_tampered_half_width_record_is_rechecked(cache):
+    """Records made outside derive() (the half-width a(P)) are re-checked too:
+    a(P(a)) = a at a random admissible point."""
+    lcs.parabola(verify=False).derivation("half_width")
+    assert _rewrite_derivations(cache, lambda old: f"Mul(Integer(2), {old})") == 1
+    store.clear_memory()
+    with pytest.warns(store.UntrustedCacheWarning, match="independent check"):
+        e = lcs.parabola(verify=False).derivation("half_width").expr
+    assert sp.simplify(e - 2 * sp.sqrt(lcs.P * lcs.R / (sp.pi * lcs.E_star))) == 0
+
+
+def _rewrite_derivations(d, fn):
+    n = 0
+    for p in d.rglob("*.json"):
+        data = json.loads(p.read_bytes()[len(store._MAGIC) + 65:].decode())
+        for pair in data.get("dict", []):
+            if pair[0] == "derivations":
+                for r in pair[1]["tuple"]:
+                    for f in r["dict"]:
+                        if f[0] == "expr":
+                            f[1] = {"sympy": fn(f[1]["sympy"])}
+                            n += 1
+                payload = json.dumps(data, separators=(",", ":")).encode()
+                p.write_bytes(store._MAGIC + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload)
+    return n

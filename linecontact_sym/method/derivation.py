@@ -450,35 +450,45 @@ def _trusted(rec, reference, sampler, quantity):
     return rec
 
 
-def remembered(parts, make, budget, reference) -> Derivation:
+def remembered(parts, make, budget, reference, recheck=None) -> Derivation:
     """A derivation made by ``make()`` once per key (:mod:`.store`: in this
     process and on disk), for quantities derived outside :func:`derive`
     (the half-width, the tangential stick half-width ...).  ``parts`` name
     the problem completely (the key adds the code version); ``budget`` is
     the caller's (a result that ran out of time is made again under a
     larger one); ``reference(derivation)`` rebuilds the numeric reference
-    of a stored derivation (closures are not stored)."""
+    of a stored derivation (closures are not stored); ``recheck(derivation)``
+    (optional) tells whether a closed form read from disk agrees with an
+    independent check at a random point (else it is dropped and made
+    afresh, with a warning: see :func:`_trusted`)."""
     def rebuild(d):
         d.reference = reference(d)
         return d
-    return remembered_many(parts, lambda: (make(),), budget, rebuild)[0]
+    return remembered_many(parts, lambda: (make(),), budget, rebuild, recheck)[0]
 
 
-def remembered_many(parts, make, budget, rebuild) -> tuple:
+def remembered_many(parts, make, budget, rebuild, recheck=None) -> tuple:
     """:func:`remembered` for derivations made together (the three pull-off
     quantities): ``make()`` returns a tuple of them; ``rebuild(d)`` returns
-    a stored one ready for use (its reference set, its class restored)."""
+    a stored one ready for use (its reference set, its class restored);
+    ``recheck(d)`` as in :func:`remembered`, for each closed form read from disk."""
     key = store.make_key("remembered", *parts)
     rec = store.get(key)
     if rec is not None and not _derivations_record(rec):
         rec = _distrust("derivations", "is not a record of derivations")
     if rec is not None and "derivations" in rec and all(_usable({**r, "source": rec["source"]}, budget)
                                                             for r in rec["derivations"]):
-        return tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
-                                        conditions=r["conditions"], verification=r["verification"],
-                                        seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
-                                        attempts=r["attempts"], cached=rec["source"]))
-                     for r in rec["derivations"])
+        ds = tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
+                                      conditions=r["conditions"], verification=r["verification"],
+                                      seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
+                                      attempts=r["attempts"], cached=rec["source"]))
+                   for r in rec["derivations"])
+        bad = [d.quantity for d in ds if rec["source"] == "disk" and recheck is not None and d.closed_form
+               and not recheck(d)]
+        if not bad:
+            return ds
+        _distrust(", ".join(bad), "disagrees with its independent check at a random point: it was changed "
+                                  "after it was written")
     ds = tuple(make())
     store.put(key, {"derivations": tuple(
         {"quantity": d.quantity, "expr": d.expr, "closed_form": d.closed_form, "step": d.step,
