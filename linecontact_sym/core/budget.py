@@ -79,7 +79,7 @@ def checked_budget(seconds):
     check_environment()
     if seconds is None:
         return None
-    v = read_number(seconds, "the budget (seconds)", low=0, low_open=True, allow_inf=True, error=BudgetError)
+    v = read_number(seconds, "the budget (CPU seconds)", low=0, low_open=True, allow_inf=True, error=BudgetError)
     return None if math.isinf(v) else float(v)
 
 
@@ -101,7 +101,7 @@ def _budget_from_environment(default: float):
     if not text.strip():
         return default
     try:
-        value = read_number(text, BUDGET_ENV + " (seconds)", low=0, low_open=True, allow_inf=True,
+        value = read_number(text, BUDGET_ENV + " (CPU seconds)", low=0, low_open=True, allow_inf=True,
                             error=BudgetError)
     except BudgetError as exc:
         _ENV["problem"] = exc
