@@ -609,9 +609,11 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         edges = [to_acb(p) for p in points]
         total = flint.acb(0)
         tol = flint.arb(2) ** -(goal + 8)
-        for e, lo, hi in zip(_per_piece(integrand, points), edges[:-1], edges[1:]):
+        pieces = list(zip(_per_piece(integrand, points), edges[:-1], edges[1:]))
+        for e, lo, hi in pieces:       # every end first: no piece is integrated in vain
+            _bounded_at_ends(fs[e], lo, hi, prec)
+        for e, lo, hi in pieces:
             f = fs[e]
-            _bounded_at_ends(f, lo, hi, prec)
             try:
                 piece = flint.acb.integral(f, lo, hi, rel_tol=tol, eval_limit=eval_limit)
             except (ZeroDivisionError, ValueError, TypeError) as exc:
