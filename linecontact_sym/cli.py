@@ -67,7 +67,7 @@ def _dps(text):
 
 
 def _budget(text):
-    """--budget: seconds > 0, or 'inf' / 'none' for no limit (the one reader
+    """--budget: CPU seconds > 0, or 'inf' / 'none' for no limit (the one reader
     of numeric settings, :func:`~linecontact_sym.core.options.read_number`)."""
     try:
         return checked_budget(text)
@@ -496,7 +496,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     def common(sp_, quiet=False):
         sp_.add_argument("--budget", type=_budget, default=DEFAULT_BUDGET, metavar="S",
-                         help=f"wall-clock seconds allowed to each symbolic derivation, rules, tidying and "
+                         help=f"CPU seconds allowed to each symbolic derivation, rules, tidying and "
                               f"verification together (default "
                               f"{'no limit' if DEFAULT_BUDGET is None else format(DEFAULT_BUDGET, 'g')}; "
                               f"'inf' for no limit)")

@@ -44,7 +44,8 @@ class LineContact(Contact):
         Declared parameters (positive symbols are declared implicitly); a dict
         gives each a (low, high) range for the random verification points.
     budget : float
-        Seconds allowed to the symbolic derivation of each quantity.
+        CPU seconds allowed to the symbolic derivation of each quantity
+        (:mod:`~linecontact_sym.core.budget`: rules, tidying and verification).
     verify : bool
         Check every closed form against mpmath quadrature (default True).
 
