@@ -410,7 +410,7 @@ def _derive_remembered(quantity, problem, reference, sampler, fallback, budget, 
 
 
 #: the re-check of a closed form read from disk: digits of the comparison, digits it must agree to
-RECHECK_DPS, RECHECK_DIGITS = 25, 15
+RECHECK_DPS, RECHECK_DIGITS = 20, 12
 #: the fields a record of :func:`derive` holds, with their types
 _RECORD_FIELDS = {"expr": sp.Basic, "closed_form": bool, "step": Step, "conditions": tuple,
                   "verification": (VerificationRecord, type(None)), "seconds": (int, float), "notes": tuple,
