@@ -22,6 +22,8 @@ checker and the LaTeX/report views.  A new physical effect is a new subclass
 """
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass, field
 
 import math
@@ -89,7 +91,7 @@ class Quantity:
         if obj is None:
             return self
         if self.method:
-            return getattr(obj, "_" + self.name)
+            return _method_with_units(obj, self, getattr(obj, "_" + self.name))
         return obj._value(self.name)
 
     @property
@@ -375,8 +377,9 @@ class Contact:
         from ..numeric.functions import make_callable
         checked_dps(dps)
         name = self.resolve(quantity)
-        return make_callable(self.derivation(name), backend, dps, params,
-                             domain=DomainCheck(self, name) if check else None)
+        inputs = ExportInputs(self, name, params)
+        return make_callable(self.derivation(name), backend, dps, inputs.params,
+                             domain=DomainCheck(self, name) if check else None, inputs=inputs)
 
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
         """The cheapest evaluation that meets ``rtol``: float64, mpmath at a
@@ -570,6 +573,60 @@ def scalar_domain_plan(self, quantity):
                     _scalar_test(self, name, known, cond_fn) if conds else None, adm)
         cache[key] = plan
     return cache[key]
+
+
+def _method_with_units(contact, q, fn):
+    """A method quantity (``c.half_width(P, **values)``, ``t.stick_half_width(Q, ...)``)
+    that takes pint quantities: the load (its first argument, named
+    ``q.arguments[-1]``) and the values converted to SI by the contact's one
+    unit stripper (:meth:`Contact._strip_units`), the result (a number, or a
+    tuple of numbers) in the quantity's declared unit.  Plain numbers pass
+    straight through."""
+    from ..core.units import is_quantity, with_unit
+
+    @functools.wraps(fn)
+    def call(*args, **kw):
+        if not any(is_quantity(v) for v in args) and not any(is_quantity(v) for v in kw.values()):
+            return fn(*args, **kw)
+        load = q.arguments[-1] if q.arguments else "load"
+        vals = dict(kw)
+        if args:
+            vals[load] = args[0]
+        plain, registry, unit = contact._strip_units(q.name, vals)
+        rest = {k: v for k, v in plain.items() if k != load or not args}
+        out = fn(*((plain[load],) + tuple(args[1:]) if args else ()), **rest)
+        if isinstance(out, tuple):
+            return tuple(with_unit(o, unit, registry) for o in out)
+        return with_unit(out, unit, registry)
+    return call
+
+
+class ExportInputs:
+    """What an export does with its arguments before anything else, checked
+    or not (``to_numeric(check=False)`` too): pint quantities checked against
+    their units and converted to SI (:meth:`Contact._strip_units`, the one
+    place; the result then carries the quantity's declared unit), and x
+    replaced by |x| for a quantity of x inside or outside the contact (the
+    profile is mirrored, f(-x) = f(x): the pressure, gap, traction ... are
+    even in x, and the derived closed forms hold for x > 0, x being a
+    positive symbol).  The parameters fixed at export time are converted
+    once (``params``, SI numbers).  Pickles with its contact."""
+
+    def __init__(self, contact, quantity, params):
+        from ..core.units import is_quantity
+        self.contact, self.quantity = contact, quantity
+        self.fold_x = type(contact)._registry[quantity].domain in ("inside", "outside")
+        self.given = dict(params)
+        self.has_units = any(is_quantity(v) for v in self.given.values())
+        self.params = contact._strip_units(quantity, self.given)[0] if self.has_units else self.given
+        if self.fold_x and "x" in self.params:
+            from ..numeric.functions import fold_x
+            self.params = {**self.params, "x": fold_x(self.params["x"])}
+
+    def strip(self, kw):
+        """``(values in SI, registry or None, unit)`` of a call's keywords."""
+        plain, registry, unit = self.contact._strip_units(self.quantity, {**self.given, **kw})
+        return {k: plain[k] for k in kw}, registry, unit
 
 
 def _scalar_test(contact, name, known, cond_fn):
