@@ -196,9 +196,29 @@ class PeriodicLineContact(LineContact):
     def _full_reference(self, vals, dps):
         return full_contact_quad(self.profile, vals, self.geometry.period.xreplace(vals), dps)
 
+    def _crest_slope(self):
+        """f'(L/2-), the slope of the profile at the crest (SymPy), or None."""
+        L = self.geometry.period
+        d = sp.diff(self.profile.pieces[-1].expr if self.profile.is_piecewise else self.profile.expr, S.x)
+        try:
+            v = sp.simplify(d.xreplace({S.x: L / 2}))
+            if v.has(sp.nan, sp.zoo):
+                v = sp.limit(d, S.x, L / 2, "-")
+        except Exception:   # a limit SymPy cannot take: undecided
+            return None
+        return v
+
     def _make_full_contact(self) -> Derivation:
         kd = self.kernel.derivation("force")
         variables = self.variables
+        crest = self._crest_slope()
+        if crest is not None and crest.is_positive:
+            note = (f"f'(L/2-) = {crest} > 0: the crest is a corner; near full contact P(a) ~ "
+                    f"-(E* L f'(L/2)/pi) ln(L/2 - a) -> oo (the integrand of E* int_0^(L/2) f'(t) tan(pi t/L) dt "
+                    f"is ~ f'(L/2) L/(pi (L/2 - t))): full contact needs an infinite load")
+            return Derivation("full_contact_force", expr=sp.oo, closed_form=True,
+                              step=Step("periodic_full_contact", sp.oo, (), (note,)), notes=(note,),
+                              reference=self._full_reference, variables=variables)
         if not kd.closed_form:
             return Derivation("full_contact_force", expr=self.force_integral().xreplace({S.a: self.period / 2}),
                               closed_form=False, step=fallback_step("the force law has no closed form"),
