@@ -62,6 +62,12 @@ class Geometry:
 
     name = "isolated"
     period = None
+    #: does the end of the range of half-widths close the contact (a periodic
+    #: array at a = L/2: full contact, which holds any tension in JKR) rather
+    #: than end the model?  The first minimum of P(a) from small a is then
+    #: the pull-off of a partial contact, and the maximum beyond it the load
+    #: of the snap into full contact.
+    closes_at_end = False
     #: the symbols of the geometry a number needs (the period, when symbolic)
     symbols: tuple = ()
 
@@ -124,7 +130,11 @@ class Geometry:
         """S(a)/S'(a) as a float64 function of a (the fast path of an adhesive law)."""
         return float
 
-    def mp_punch_compliance(self, A, E, values, far):
+    def float_s(self, values):
+        """s(x) as a float64 function (the independent grid searches)."""
+        return float
+
+    def mp_punch_compliance(self, A, E, values, far, quadrature=False):
         """The compliance of the punch of half-width A (its displacement per
         unit load, up to a constant that does not depend on A): isolated,
         against a distant point ``far`` (Eq. 3), (2/(pi E*)) acosh(far/A)."""
@@ -136,6 +146,7 @@ class Periodic(Geometry):
     symbol): s = sin(pi x/L), see the module docstring."""
 
     name = "periodic"
+    closes_at_end = True
 
     def __init__(self, period):
         L = user_value(period)
@@ -211,13 +222,34 @@ class Periodic(Geometry):
         L = float(self.mp_period(values))
         return lambda A: L / math.pi * math.tan(math.pi * float(A) / L)
 
-    def mp_punch_compliance(self, A, E, values, far=None):
+    def float_s(self, values):
+        import math
+        L = float(self.mp_period(values))
+        return lambda A: math.sin(math.pi * float(A) / L)
+
+    def mp_punch_compliance(self, A, E, values, far=None, quadrature=False):
         """-(2/(pi E*)) ln sin(pi A/L): the displacement of Koiter's punch
-        under the periodic Green's function -(2/(pi E*)) ln|2 sin(pi x/L)|
-        (zero mean over a period, so the constant of the uniform part of the
-        load, which does not depend on A, is left out)."""
+        (unit load per period) under the periodic Green's function
+        -(2/(pi E*)) ln|2 sin(pi x/L)|, whose mean over a period is 0 (the
+        uniform part of the load adds a constant that does not depend on A).
+        ``quadrature=True``: the defining integral
+        -(2/(pi E*)) (2/L) int_0^A cos(pi t/L) ln|2 sin(pi t/L)| / sqrt(S^2 - sin^2(pi t/L)) dt
+        by quadrature in t = A sin(phi), S^2 - sin^2 as a product of sines (no cancellation at the edge)."""
         L = self.mp_period(values)
-        return -2 * mpmath.log(mpmath.sin(mpmath.pi * A / L)) / (mpmath.pi * E)
+        if not quadrature:
+            return -2 * mpmath.log(mpmath.sin(mpmath.pi * A / L)) / (mpmath.pi * E)
+        with mpmath.workdps(mpmath.mp.dps + 10):
+            def g(ph):
+                t = A * mpmath.sin(ph)
+                gap = 2 * A * mpmath.sin(mpmath.pi / 4 - ph / 2)**2      # A - t, without cancellation
+                st = mpmath.sin(mpmath.pi * t / L)
+                # S^2 - sin^2(pi t/L) = sin(pi (A - t)/L) sin(pi (A + t)/L)
+                den = mpmath.sin(mpmath.pi * gap / L) * mpmath.sin(mpmath.pi * (A + t) / L)
+                if den <= 0:    # a node that rounds onto the edge (tanh-sinh weight ~ 0 there)
+                    return mpmath.mpf(0)
+                return mpmath.cos(mpmath.pi * t / L) * mpmath.log(2 * st) * A * mpmath.cos(ph) / mpmath.sqrt(den)
+            I = 2 / L * mpmath.quad(g, [0, mpmath.pi / 2])
+        return +(-2 * I / (mpmath.pi * E))
 
     # ------------------------------------------------------------ the maps
     def kernel_profile(self, f):

@@ -229,7 +229,7 @@ class ForceLaw:
             out = ForceLaw(P, dP, tuple(sp.N(b.xreplace(pf), 80) for b in xs), route.mode,
                            expr=None if route.expr is None else geometry.from_kernel(route.expr, "force"),
                            conditions=[geometry.condition_from_kernel(c) for c in route.conditions])
-            out.geometry = geometry
+            out.geometry, out.kernel_law, out.geometry_values = geometry, route, pf
             if route.flat is not None:
                 out.flat = to_mpf(sp.N(geometry.x_of(sp.Float(route.flat, mpmath.mp.dps + 5)).xreplace(pf),
                                        mpmath.mp.dps + 5))
@@ -250,6 +250,7 @@ class ForceLaw:
                        float_P=float_P, inactive=inactive)
         law.base = self
         law.geometry = self.geometry
+        law.geometry_values = getattr(self, "geometry_values", {})
         # what the searches may assume of P - P0 (equilibria): only a term whose slope is
         # < 0 and increasing (JKR's -B1 sqrt(a)) keeps dP/da increasing where P0 is convex
         # and leaves no stationary point on a flat
