@@ -223,3 +223,87 @@ def test_isolated_limit_of_the_periodic_parabola_numbers(contacts):
         P = c.evaluate_at("force", dps=30, a=1, R=1, L=Lv, E_star=1)
         errs.append(abs(P - hertz) / hertz)
     assert errs[0] < 0.05 and 80 < errs[0] / errs[1] < 120 and 80 < errs[1] / errs[2] < 120
+
+
+# ---------------------------------------------------------------- adhesion: JKR on the array (Johnson 1995)
+gam = lcs.gamma
+
+
+def _johnson(alpha):
+    """Johnson's (1995) P/(p* L) = sin^2 u - alpha sqrt(tan u), u = pi a/L, and
+    its stationary points recomputed here (the analytic derivative
+    2 sin u cos u - alpha sec^2 u/(2 sqrt(tan u)), mpmath.findroot)."""
+    f = lambda u: mpmath.sin(u)**2 - alpha * mpmath.sqrt(mpmath.tan(u))  # noqa: E731
+    df = lambda u: 2 * mpmath.sin(u) * mpmath.cos(u) - alpha / (2 * mpmath.cos(u)**2 * mpmath.sqrt(mpmath.tan(u)))  # noqa: E731
+    return f, df
+
+
+def test_compliance_of_koiters_punch_by_quadrature():
+    from linecontact_sym.method.geometry import Periodic
+    g = Periodic(2)
+    with mpmath.workdps(30):
+        for A in ("0.1", "0.95"):
+            A = mpmath.mpf(A)
+            assert _agree(g.mp_punch_compliance(A, 3, {}, quadrature=True), -2 * mpmath.log(mpmath.sin(mpmath.pi * A / 2))
+                          / (3 * mpmath.pi)) >= 28
+
+
+@pytest.mark.slow
+def test_johnson_force_law_and_stress_intensity(contacts):
+    """JKR on Westergaard's array: the engine's P(a) is Johnson's
+    P/(p* L) = sin^2(pi a/L) - alpha sqrt(tan(pi a/L)), alpha^2 = 2 w L/(pi^2 E* h^2);
+    the edge of its pressure has K = pbar_hat sqrt(L cot(pi a/L)) and G = K^2/(2 E*) = w."""
+    c = contacts["sinusoid"]
+    ad = c.adhesive(gam)
+    alpha = sp.Symbol("alpha", positive=True)
+    u = sp.pi * a / L
+    P = ad.force.xreplace({gam: alpha**2 * sp.pi**2 * E * h**2 / (2 * L)})
+    assert sp.simplify(P / (sp.pi * E * h) - (sp.sin(u)**2 - alpha * sp.sqrt(sp.tan(u)))) == 0
+    for q in ("flat_punch_force", "force", "pressure"):
+        d = ad.derivation(q)
+        assert d.closed_form and d.verification.passed
+    # K from the engine's pressure at the edge, at 40 digits
+    vals = {h: sp.Rational(1, 3), L: 2, E: sp.Rational(3, 2), gam: sp.Rational(1, 20), a: sp.Rational(7, 10)}
+    p = sp.lambdify(x, ad.pressure.xreplace(vals), "mpmath")
+    with mpmath.workdps(60):
+        A = mpmath.mpf(7) / 10
+        eps = mpmath.mpf(10)**-40
+        K = -mpmath.sqrt(2 * mpmath.pi * eps) * p(A - eps)
+        Phat = mpmath.mpf(sp.N(sp.sqrt(2 * gam * E * L * sp.tan(u)).xreplace(vals), 60))
+        assert _agree(K, Phat / 2 * mpmath.sqrt(2 / mpmath.tan(mpmath.pi * A / 2))) >= 18
+        assert _agree(K**2 / (2 * mpmath.mpf(3) / 2), mpmath.mpf(1) / 20) >= 18
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("alpha", ["0.3", "0.5", "0.6"])
+def test_johnson_pull_off_and_snap_into_full_contact(contacts, alpha):
+    """ad.pull_off_at and ad.full_contact_at against Johnson's (1995)
+    equation recomputed independently, to 20 digits; alpha = 0.6 > 0.570:
+    the array snaps into full contact at zero load."""
+    ad = contacts["sinusoid"].adhesive(gam)
+    with mpmath.workdps(40):
+        al = mpmath.mpf(alpha)
+        f, df = _johnson(al)
+        u_po, u_fc = mpmath.findroot(df, 0.3), mpmath.findroot(df, 1.2)
+        w = al**2 * mpmath.pi**2 / 2                    # h = L = E* = 1: p* L = pi
+        values = dict(h=1, L=1, E_star=1, gamma=sp.Float(w, 40))
+        po = ad.pull_off_at(dps=20, **values)
+        fc = ad.full_contact_at(dps=20, **values)
+        assert po.digits >= 20 and fc.digits >= 20
+        assert _agree(po.force / mpmath.pi, f(u_po)) >= 20
+        assert _agree(po.half_width, u_po / mpmath.pi) >= 20
+        assert _agree(fc.force / mpmath.pi, f(u_fc)) >= 20
+        assert _agree(fc.half_width, u_fc / mpmath.pi) >= 20
+        assert fc.at_zero_load == (al > mpmath.mpf(3) / 4 / mpmath.root(3, 4))
+
+
+@pytest.mark.slow
+def test_strong_adhesion_closes_the_array_at_once(contacts):
+    """alpha > 1.066 (4 sin^1.5 u cos^2.5 u < alpha for every u): P(a) falls
+    from 0: no pull-off of a partial contact, full contact at zero load."""
+    ad = contacts["sinusoid"].adhesive(gam)
+    w = sp.Rational(6, 5)**2 * sp.pi**2 / 2
+    with pytest.raises(lcs.NoPullOffError, match="full contact"):
+        ad.pull_off_at(dps=20, h=1, L=1, E_star=1, gamma=w)
+    fc = ad.full_contact_at(dps=20, h=1, L=1, E_star=1, gamma=w)
+    assert fc.kind == "origin" and fc.at_zero_load
