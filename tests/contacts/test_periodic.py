@@ -307,3 +307,20 @@ def test_strong_adhesion_closes_the_array_at_once(contacts):
         ad.pull_off_at(dps=20, h=1, L=1, E_star=1, gamma=w)
     fc = ad.full_contact_at(dps=20, h=1, L=1, E_star=1, gamma=w)
     assert fc.kind == "origin" and fc.at_zero_load
+
+
+@pytest.mark.slow
+def test_cli_derive_and_eval_with_a_period(capsys):
+    from linecontact_sym.cli import main
+    assert main(["derive", "h*(1 - cos(2*pi*x/L))", "--symbols", "h", "L", "--period", "L", "--quantities",
+                 "force,full_contact_pressure", "--json", "--quiet"]) == 0
+    import json
+    out = json.loads(capsys.readouterr().out)
+    assert sp.simplify(lcs.parse_expr(out["quantities"]["force"]["expr"], symbols=["h", "L"])
+                       - sp.pi * E * h * sp.sin(sp.pi * a / L)**2) == 0
+    assert out["quantities"]["full_contact_pressure"]["verified_digits"] >= 30
+    assert main(["eval", "h*(1 - cos(2*pi*x/L))", "force", "--symbols", "h", "L", "--period", "L", "--at",
+                 "a=0.45", "--set", "h=1", "L=1", "E_star=1", "--dps", "25", "--json"]) == 0
+    row = json.loads(capsys.readouterr().out)["rows"][0]
+    with mpmath.workdps(30):
+        assert _agree(mpmath.mpf(row["value"]), mpmath.pi * mpmath.sin(mpmath.pi * mpmath.mpf("0.45"))**2) >= 24
