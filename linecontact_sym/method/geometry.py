@@ -37,7 +37,7 @@ A contact keeps its geometry and works in the kernel variable through a
 twin contact of F (:class:`~linecontact_sym.contacts.normal.periodic.PeriodicLineContact`):
 nothing of the isolated engine is copied.  The map to the kernel variable
 and back is exact algebra; every mapped closed form is verified again in x
-against a route that shares nothing with the map (:mod:`.tan_route`).
+against a route that shares nothing with the map (:mod:`linecontact_sym.contacts.normal.tan_route`).
 """
 from __future__ import annotations
 

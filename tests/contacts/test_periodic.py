@@ -3,7 +3,7 @@
 Every number is checked against a route that shares nothing with the
 engine's map s = sin(pi x/L):
 
-* the tan route (method.tan_route, X = tan(pi x/L): an isolated contact
+* the tan route (contacts.normal.tan_route, X = tan(pi x/L): an isolated contact
   whose profile carries the logarithm of the periodic kernel);
 * the surface slope of the periodic half-plane computed here from the
   engine's pressure with the cot kernel (no map at all):
@@ -19,7 +19,7 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import DomainError, LineContactError, ProfileError
-from linecontact_sym.method.tan_route import TanRoute
+from linecontact_sym.contacts.normal.tan_route import TanRoute
 
 x, a, E = lcs.x, lcs.a, lcs.E_star
 h, L, R, th = sp.symbols("h L R theta", positive=True)

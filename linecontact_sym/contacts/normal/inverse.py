@@ -15,7 +15,7 @@ from ...method.derivation import Derivation, derive, fallback_step, remembered, 
 from ...method.geometry import Periodic
 from ...method.profile import Profile
 from ...method.rules import Problem, Step
-from ...method.tan_route import TanRoute
+from .tan_route import TanRoute
 from ...method.verification import verify
 from .equilibria import half_width_at
 from .force_law import ForceLaw
@@ -85,7 +85,7 @@ def periodic_profile_from_force(force_law, period, params=None, budget: float = 
     Q(S) = P((L/pi) asin S) is the force law of the kernel twin, Eq. (9)
     gives its profile F(s), and f(x) = F(sin(pi x/L)); the result is
     verified against the tan route's force law of f
-    (:mod:`~linecontact_sym.method.tan_route`) at random a in (0, 0.46 L).
+    (:mod:`~linecontact_sym.contacts.normal.tan_route`) at random a in (0, 0.46 L).
 
     >>> import linecontact_sym as lcs, sympy as sp
     >>> h, L = sp.symbols("h L", positive=True)
@@ -114,7 +114,7 @@ def periodic_profile_from_force(force_law, period, params=None, budget: float = 
         prof = Profile(f.xreplace({p: vals[p] for p in psyms}))
         return TanRoute(prof, vals, g.period.xreplace(vals)).force(vals[S.a], dps)
     rec = verify(force_law, reference, sampler, (), n_points=verify_points,
-                 reference_name="the tan route's force law of the profile found (method.tan_route)")
+                 reference_name="the tan route's force law of the profile found (contacts.normal.tan_route)")
     step = Step("periodic_map", f, (), (f"Eq. (9) of the kernel twin Q(S) = {Q}: {kd.method}; "
                                         f"F(s) -> F(sin(pi x/L))",))
     if not rec.passed:

@@ -14,7 +14,7 @@ verification and cache), mapped back:
     P*      = Q(1)                            the load of full contact (a -> L/2)
 
 Every mapped closed form is verified again, in x, against the tan route
-(:mod:`~linecontact_sym.method.tan_route`: X = tan(pi x/L), an isolated
+(:mod:`~linecontact_sym.contacts.normal.tan_route`: X = tan(pi x/L), an isolated
 contact whose profile carries the logarithm of the periodic kernel), which
 shares nothing with the map.  Westergaard's (1939) sinusoid
 h (1 - cos(2 pi x/L)) follows: F = 2 h s^2 is a parabola, P = pi E* h sin^2(pi a/L),
@@ -36,7 +36,7 @@ from ...method import transforms as T
 from ...method.derivation import Derivation, fallback_step, remembered
 from ...method.geometry import Periodic
 from ...method.rules import Step
-from ...method.tan_route import TanRoute
+from .tan_route import TanRoute
 from ...method.verification import REQUIRED_DIGITS, verify
 from ...parsing import to_sympy
 from ..base import Quantity
@@ -108,7 +108,7 @@ class PeriodicLineContact(LineContact):
         return TanRoute(self.profile, vals, L)
 
     def force_reference(self, vals, dps):
-        """P(a) by the tan route (:mod:`~linecontact_sym.method.tan_route`)."""
+        """P(a) by the tan route (:mod:`~linecontact_sym.contacts.normal.tan_route`)."""
         return self._tan(vals).force(vals[S.a], dps)
 
     def _reference(self, quantity):
@@ -163,7 +163,7 @@ class PeriodicLineContact(LineContact):
         rec = None
         if self.verify:
             rec = verify(expr, reference, self._sampler(domain), conds, n_points=self.points,
-                         reference_name=f"the tan route X = tan(pi x/L) ({quantity}, method.tan_route)")
+                         reference_name=f"the tan route X = tan(pi x/L) ({quantity}, contacts.normal.tan_route)")
             if not rec.passed:
                 note = (f"the mapped closed form {expr} FAILED verification against the tan route "
                         f"({rec.min_digits:.1f} digits); returned unevaluated")

@@ -25,7 +25,9 @@ so
     g(x; a) = -(2/(pi E*)) P acosh(X/A)
               + (2/pi) X sqrt(X^2 - A^2) int_0^A (F2(X) - F2(T))/((X^2 - T^2) sqrt(A^2 - T^2)) dT,
 
-each one quadrature in T = A sin(phi), split at the profile's kinks (found
+each one quadrature in T = A sin(phi) (the force law by the one reference
+integrator, Arb's ball quadrature with mpmath as its recorded fallback; the
+pressure and the gap by mpmath), split at the profile's kinks (found
 numerically at the point by :class:`~.transforms.NumericProfile`) and at the
 removable point T = X.  Nothing here uses sin(pi x/L) as a variable or a
 superposition of punches over the half-width.
@@ -33,13 +35,17 @@ superposition of punches over the half-width.
 from __future__ import annotations
 
 import mpmath
+import sympy as sp
 
-from ..core import symbols as S
-from ..core.conversion import to_mpf
-from ..core.precision import workdps
-from .transforms import NumericProfile, inside
+from ...core import symbols as S
+from ...core.conversion import to_mpf
+from ...core.precision import workdps
+from ...method.transforms import NumericProfile, inside
+from ...numeric.reference import integrate
 
 __all__ = ["TanRoute"]
+
+_phi = sp.Dummy("phi", positive=True)
 
 
 class TanRoute:
@@ -81,7 +87,27 @@ class TanRoute:
 
     # ------------------------------------------------------------ force
     def force(self, a, dps: int = 45):
-        """P(a) = (E*/cos(pi a/L)) int_0^{pi/2} A sin(phi) F'(A sin phi) dphi."""
+        """P(a) = (E*/cos(pi a/L)) int_0^{pi/2} A sin(phi) F'(A sin phi) dphi:
+        the integral by the one reference integrator (Arb's ball quadrature,
+        :func:`linecontact_sym.numeric.reference.integrate`), the mpmath
+        quadrature of :meth:`force_mpmath` its recorded fallback."""
+        a_ex = sp.nsimplify(a) if not isinstance(a, sp.Basic) else a
+        L = sp.nsimplify(self.L) if not isinstance(self.L, sp.Basic) else self.L
+        A = sp.tan(sp.pi * a_ex / L)
+        T = A * sp.sin(_phi)
+        f1 = sp.diff(self.npf.expr, S.x).xreplace({S.x: L / sp.pi * sp.atan(T)})
+        integrand = T * f1 * L / (sp.pi * (1 + T**2))
+        with workdps(dps + 30):
+            Am = to_mpf(A)
+            kinks = [mpmath.tan(mpmath.pi * k / to_mpf(L)) for k in self.npf.kinks(0, to_mpf(a_ex))]
+            pts = [0] + [mpmath.asin(k / Am) for k in kinks if 0 < k < Am] + [sp.pi / 2]
+        r = integrate(integrand, _phi, pts, dps, fallback=lambda: self.force_mpmath(a, dps) * mpmath.cos(
+            mpmath.pi * to_mpf(a_ex) / to_mpf(L)) / to_mpf(self.E))
+        with workdps(dps + 15):
+            return +(to_mpf(self.E) * mpmath.mpf(r) / mpmath.cos(mpmath.pi * to_mpf(a_ex) / to_mpf(L)))
+
+    def force_mpmath(self, a, dps: int = 45):
+        """:meth:`force` by mpmath's tanh-sinh quadrature."""
         with workdps(dps + 15):
             L, A, kinks = self._setup(a)
             Fp = self._Fp(L)
