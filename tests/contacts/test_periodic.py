@@ -324,3 +324,26 @@ def test_cli_derive_and_eval_with_a_period(capsys):
     row = json.loads(capsys.readouterr().out)["rows"][0]
     with mpmath.workdps(30):
         assert _agree(mpmath.mpf(row["value"]), mpmath.pi * mpmath.sin(mpmath.pi * mpmath.mpf("0.45"))**2) >= 24
+
+
+@pytest.mark.slow
+def test_plots_in_westergaards_and_johnsons_axes(contacts):
+    """pbar/p* = sin^2(pi a/L) (Westergaard), p/p* over a period against his
+    printed pressure, and Johnson's P/(p* L) = sin^2 - alpha sqrt(tan)."""
+    import numpy as np
+    from linecontact_sym.views.contact_plots import wavy_force_data, wavy_pressure_data
+    c = contacts["sinusoid"]
+    X, Y = wavy_force_data(c, {"h": 1, "L": 2})
+    assert np.max(np.abs(Y - np.sin(np.pi * X)**2)) < 1e-13
+    X, Ys, As = wavy_pressure_data(c, (0.25, 0.75), {"h": 1, "L": 2})
+    for f, Yp, aL in zip((0.25, 0.75), Ys, As):
+        S = np.sin(np.pi * aL)
+        assert abs(S**2 - f) < 1e-13
+        west = np.where(np.abs(X) < aL, 2 * f * np.cos(np.pi * X)
+                        * np.sqrt(np.clip(S**2 - np.sin(np.pi * X)**2, 0, None)) / S**2, 0)
+        assert np.max(np.abs(Yp - west)) < 1e-12
+    al = 0.3
+    X, Y = wavy_force_data(c.adhesive(gam), {"h": 1, "L": 1, "gamma": al**2 * np.pi**2 / 2})
+    assert np.max(np.abs(Y - (np.sin(np.pi * X)**2 - al * np.sqrt(np.tan(np.pi * X))))) < 1e-12
+    with pytest.raises(DomainError, match="infinite"):
+        wavy_force_data(contacts["wedge"], {"theta": 0.2, "L": 1})
