@@ -347,3 +347,22 @@ def test_plots_in_westergaards_and_johnsons_axes(contacts):
     assert np.max(np.abs(Y - (np.sin(np.pi * X)**2 - al * np.sqrt(np.tan(np.pi * X))))) < 1e-12
     with pytest.raises(DomainError, match="infinite"):
         wavy_force_data(contacts["wedge"], {"theta": 0.2, "L": 1})
+
+
+@pytest.mark.slow
+def test_claims_of_westergaard_and_johnson(tmp_path):
+    """The shipped claims file wavy1995 holds; a misprinted pressure (cos
+    for sin under the root) does not."""
+    from linecontact_sym.claims.batch import check_file
+    from linecontact_sym.claims.results import FAILS, HOLDS
+    res = check_file("wavy1995", budget=300)
+    assert [r.status for r in res.results] == [HOLDS] * 3
+    assert all(r.digits >= 30 for r in res.results)
+    from linecontact_sym.claims.spec import resolve_paper
+    text = resolve_paper("wavy1995").read_text()
+    wrong = text.replace("sqrt(sin(pi*a/L)**2 - sin(pi*x/L)**2)\"", "sqrt(sin(pi*a/L)**2 - sin(pi*x/L)**2)*cos(pi*a/L)\"")
+    assert wrong != text
+    f = tmp_path / "wrong.toml"
+    f.write_text(wrong)
+    res = check_file(f, budget=300, only={"Westergaard (1939): pressure"})
+    assert [r.status for r in res.results] == [FAILS]
