@@ -41,11 +41,12 @@ from ...core import symbols as S
 from ...core.conversion import to_mpf
 from ...core.precision import workdps
 from ...method.transforms import NumericProfile, inside
-from ...numeric.reference import integrate
+from ...numeric.reference import combine, integrate
 
 __all__ = ["TanRoute"]
 
 _phi = sp.Dummy("phi", positive=True)
+_J = sp.Dummy("J")
 
 
 class TanRoute:
@@ -103,8 +104,8 @@ class TanRoute:
             pts = [0] + [mpmath.asin(k / Am) for k in kinks if 0 < k < Am] + [sp.pi / 2]
         r = integrate(integrand, _phi, pts, dps, fallback=lambda: self.force_mpmath(a, dps) * mpmath.cos(
             mpmath.pi * to_mpf(a_ex) / to_mpf(L)) / to_mpf(self.E))
-        with workdps(dps + 15):
-            return +(to_mpf(self.E) * mpmath.mpf(r) / mpmath.cos(mpmath.pi * to_mpf(a_ex) / to_mpf(L)))
+        # E*/cos(pi a/L) times the integral: in Arb too where the integral is an enclosure
+        return combine(sp.sympify(self.E) * _J / sp.cos(sp.pi * a_ex / L), _J, r, dps)
 
     def force_mpmath(self, a, dps: int = 45):
         """:meth:`force` by mpmath's tanh-sinh quadrature."""
