@@ -15,8 +15,9 @@ a callable          q(s) vectorised float64 (numeric field only)
 
 The closed forms go through the Cauchy transform of the pressure, G(zeta) =
 int p(s)/(zeta - s) ds = int_0^a P'(t) (zeta^2 - t^2)^(-1/2) dt (Popov's
-flat punches, :mod:`.kolosov`), and are verified against the mpmath
-quadrature of the Flamant integrals of p and q (:mod:`~linecontact_sym.contacts.stresses.reference`).
+flat punches, :mod:`.kolosov`), and are certified against Arb ball
+quadrature of the Flamant integrals of p and q (mpmath where Arb cannot,
+recorded; :mod:`~linecontact_sym.contacts.stresses.reference`).
 """
 from __future__ import annotations
 
