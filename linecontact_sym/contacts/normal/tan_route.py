@@ -38,7 +38,7 @@ import mpmath
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.conversion import to_mpf
+from ...core.conversion import point_value, to_mpf
 from ...core.precision import workdps
 from ...method.transforms import NumericProfile, inside
 from ...numeric.reference import combine, integrate
@@ -92,8 +92,7 @@ class TanRoute:
         the integral by the one reference integrator (Arb's ball quadrature,
         :func:`linecontact_sym.numeric.reference.integrate`), the mpmath
         quadrature of :meth:`force_mpmath` its recorded fallback."""
-        a_ex = sp.nsimplify(a) if not isinstance(a, sp.Basic) else a
-        L = sp.nsimplify(self.L) if not isinstance(self.L, sp.Basic) else self.L
+        a_ex, L = point_value(a), point_value(self.L)        # exact: an mpf by its binary value
         A = sp.tan(sp.pi * a_ex / L)
         T = A * sp.sin(_phi)
         f1 = sp.diff(self.npf.expr, S.x).xreplace({S.x: L / sp.pi * sp.atan(T)})
@@ -105,7 +104,7 @@ class TanRoute:
         r = integrate(integrand, _phi, pts, dps, fallback=lambda: self.force_mpmath(a, dps) * mpmath.cos(
             mpmath.pi * to_mpf(a_ex) / to_mpf(L)) / to_mpf(self.E))
         # E*/cos(pi a/L) times the integral: in Arb too where the integral is an enclosure
-        return combine(sp.sympify(self.E) * _J / sp.cos(sp.pi * a_ex / L), _J, r, dps)
+        return combine(point_value(self.E) * _J / sp.cos(sp.pi * a_ex / L), _J, r, dps)
 
     def force_mpmath(self, a, dps: int = 45):
         """:meth:`force` by mpmath's tanh-sinh quadrature."""
