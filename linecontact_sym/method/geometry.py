@@ -47,6 +47,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.conversion import to_mpf
 from ..core.errors import DomainError, ProfileError
+from ..core.precision import workdps
 from ..parsing import user_value
 
 __all__ = ["Geometry", "Periodic", "ISOLATED", "periodic"]
@@ -238,7 +239,7 @@ class Periodic(Geometry):
         L = self.mp_period(values)
         if not quadrature:
             return -2 * mpmath.log(mpmath.sin(mpmath.pi * A / L)) / (mpmath.pi * E)
-        with mpmath.workdps(mpmath.mp.dps + 10):
+        with workdps(mpmath.mp.dps + 10):
             def g(ph):
                 t = A * mpmath.sin(ph)
                 gap = 2 * A * mpmath.sin(mpmath.pi / 4 - ph / 2)**2      # A - t, without cancellation
