@@ -289,6 +289,9 @@ class StressField(ContactOn):
 
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
         name = self.resolve(quantity)
+        if self.stick is not None and "a" in values:     # the stick zone lies in the contact: 0 <= c <= a
+            given = {q: user_value(values[q.name]) for q in self.stick.free_symbols if q.name in values}
+            check_stick(user_value(values["a"]), self.stick.xreplace(given))
         if name in _MAX or name.endswith("_depth") or name.startswith("critical"):
             return self.derivation(name).evalf(dps=dps, **values)
         return super().evaluate_at(name, dps, **values)
