@@ -66,6 +66,7 @@ def _slope_from_pressure(p, A, X, Lv, Ev):
 
 
 # ---------------------------------------------------------------- the geometry and the tan route alone
+@pytest.mark.slow
 def test_geometry_maps_and_the_tan_route_on_westergaard():
     """The maps of Koiter's variable, and the tan route's numbers for the
     sinusoid against Westergaard's printed solution (no engine involved)."""
