@@ -166,9 +166,15 @@ def _unit_registry(pint, _reg=[]):   # noqa: B006 -- one registry per process
     return _reg[0]
 
 
-def _contact(args, profile):
+def _contact(args, profile, values=None):
+    """The frictionless contact of a profile; ``--period L`` (derive, eval): a
+    periodic array (its symbols fixed by ``values``, the --set of derive)."""
     from .contacts.normal.contact import LineContact
-    return LineContact(profile, budget=args.budget)
+    period = getattr(args, "period", None)
+    if period is None:
+        return LineContact(profile, budget=args.budget)
+    L = _profile(period, getattr(args, "symbols", None), where="--period")
+    return LineContact(profile, budget=args.budget, period=L.xreplace(values or {}))
 
 
 def _derivation_dict(d, values=None):
@@ -248,11 +254,11 @@ def cmd_derive(args):
     if unused:
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
-    c = _contact(args, prof)
+    c = _contact(args, prof, values)
     quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
     if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
-    known = _expression_quantities("frictionless")
+    known = [n for n, q in type(c).quantities().items() if not q.method]    # a periodic array has more
     adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
     for q in (q for q in quantities if q not in known and not (args.adhesion and q in adhesive)):
         raise LineContactError(f"unknown quantity {q!r}; choose from {', '.join(known)} (--adhesion: {adhesive})")
@@ -537,6 +543,9 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
                     "force, pressure, P_adh, a at pull-off, or those of --quantities")
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
+    pd.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (a number or a "
+                    "symbol; the profile given on 0 <= x <= L/2): also nominal_pressure, full_contact_force, "
+                    "full_contact_pressure")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")
@@ -557,6 +566,8 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fixed values, e.g. R=1 E_star=1")
     pe.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
+    pe.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (the profile given "
+                    "on 0 <= x <= L/2; L a number or a symbol given by --set)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
 

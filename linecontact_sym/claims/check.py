@@ -364,8 +364,8 @@ def _force_law(claim, prof, ctx, printed):
     try:
         adhesive = adhesive_entry(claim.quantity)
         if adhesive is not None:
-            return ctx.adhesive(prof, claim.range_of, adhesive[0]).force
-        d = ctx.contact(prof, claim.range_of).derivation("force")
+            return ctx.adhesive(prof, claim.range_of, adhesive[0], claim.period).force
+        d = ctx.contact(prof, claim.range_of, claim.period).derivation("force")
         return d.expr if d.closed_form else None
     except Exception:  # noqa: BLE001 -- only a hint
         return None

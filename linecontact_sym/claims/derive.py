@@ -137,23 +137,25 @@ class Context:
         self.adhesives = {}
         self.kinds = {}   # (id(contact), kind) -> the contact of that kind
 
-    def contact(self, profile, ranges: Callable):
+    def contact(self, profile, ranges: Callable, period=None):
         """The contact of ``profile``, its parameters verified over
-        ``ranges(symbol)`` (e.g. :meth:`Claim.range_of`)."""
+        ``ranges(symbol)`` (e.g. :meth:`Claim.range_of`); a periodic array
+        of ``period`` (a claim's ``period`` field) where given."""
         from ..contacts.normal.contact import LineContact
         params = {}
         for sym in sorted(profile.free_symbols - {S.x}, key=lambda z: z.name):
             params[sym] = ranges(sym)
-        key = (profile, tuple(sorted((k.name, v) for k, v in params.items())))
+        key = (profile, tuple(sorted((k.name, v) for k, v in params.items())), period)
         if key not in self.contacts:
-            self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget)
+            self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget) if period is None \
+                else LineContact(profile, params=params or None, budget=self.budget, period=period)
         return self.contacts[key]
 
-    def adhesive(self, profile, ranges: Callable, kind: str = "adhesive"):
+    def adhesive(self, profile, ranges: Callable, kind: str = "adhesive", period=None):
         """The adhesive form of :meth:`contact` of the given kind (default
         JKR, work of adhesion gamma), the law's parameters symbolic."""
         from ..contacts.base import contact_kind
-        c = self.contact(profile, ranges)
+        c = self.contact(profile, ranges, period)
         key = (id(c), kind)
         if key not in self.adhesives:
             self.adhesives[key] = contact_kind(kind).from_frictionless(c)
@@ -222,7 +224,7 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
     """The derived counterpart of ``claim.quantity`` for one profile."""
     q = claim.quantity
     if q in ("force", "pressure", "gap", "Z_n", "profile_at_a", "half_width"):
-        c = ctx.contact(profile, claim.range_of)
+        c = ctx.contact(profile, claim.range_of, claim.period)
         slope = c.profile.slope_at_origin
         if q == "profile_at_a":
             return Derived(profile.xreplace({S.x: S.a}), "the profile itself, f(a)", profile=profile,
@@ -242,7 +244,7 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
             return _from_derivation(c.half_width(S.P), profile, slope)
         d = c.derivation(q)
         physics = None
-        if q == "pressure":
+        if q == "pressure" and claim.period is None:   # (the Flamant checks are the isolated half-plane's)
             fd = c.derivation("force")
             physics = _pressure_physics(profile, lambda vals, dps: _from_derivation(fd).value(vals, dps),
                                         c.profile.breakpoints)
@@ -275,7 +277,7 @@ def _derive_registered(claim, profile, ctx) -> Derived:
         raise ClaimError(f"{_where(claim)}: quantity {claim.quantity!r} is not implemented")
     kind, name, quantity = entry
     t0 = time.perf_counter()
-    c = ctx.contact(profile, claim.range_of)
+    c = ctx.contact(profile, claim.range_of, claim.period)
     contact = ctx.kinds.get((id(c), kind))
     if contact is None:
         contact = ctx.kinds[(id(c), kind)] = contact_kind(kind).from_frictionless(c)
@@ -296,7 +298,7 @@ def placeholder_laws(claim: Claim, profile, ctx: Context):
     dforce = dpress = None
     if not claim.general:
         return dforce, dpress
-    c = ctx.contact(profile, claim.range_of)
+    c = ctx.contact(profile, claim.range_of, claim.period)
     if any(f.expr.has(PLACEHOLDER_FORCE) for f in claim.forms):
         fd = c.derivation("force")
         dforce = fd.expr if fd.closed_form else None
@@ -345,14 +347,15 @@ def adhesive_entry(q):
 def _derive_adhesive(claim, profile, ctx, kind="adhesive", q=None) -> Derived:
     t0 = time.perf_counter()
     q = q or claim.quantity
-    ad = ctx.adhesive(profile, claim.range_of, kind)
-    slope = ctx.contact(profile, claim.range_of).profile.slope_at_origin
+    ad = ctx.adhesive(profile, claim.range_of, kind, claim.period)
+    slope = ctx.contact(profile, claim.range_of, claim.period).profile.slope_at_origin
     force = _as_derived(_adhesion_item(ad, "force"), f"adhesive force law (engine, {ad.law.title})")
     if q == "force":
         out = force
     elif q == "pressure":
         out = _as_derived(_adhesion_item(ad, "pressure"), f"adhesive pressure (engine, {ad.law.title})")
-        out.physics = _pressure_physics(profile, force.value, ad.profile.breakpoints)
+        if claim.period is None:     # (the Flamant checks are the isolated half-plane's)
+            out.physics = _pressure_physics(profile, force.value, ad.profile.breakpoints)
     elif q == "pull_off_half_width":
         out = _as_derived(_adhesion_item(ad, "pull_off_half_width"), "half-width at pull-off (engine)")
     else:

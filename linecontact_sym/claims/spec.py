@@ -155,7 +155,7 @@ for _key, (_kind, _name, _q) in qualified_quantities().items():
 _TOP_KEYS = {"key", "title", "reference", "definitions", "ranges", "claims", "source", "symbols", "figures"}
 _CLAIM_KEYS = {"label", "title", "description", "quantity", "profile", "profiles", "profile_names", "formula", "forms",
                "assumptions", "ranges", "special", "symbols", "force_law", "values", "labels", "note",
-               "points", "reading", "rounding"}
+               "points", "reading", "rounding", "period"}
 _FIGURE_KEYS = {"file", "title", "caption", "quantity", "x", "y", "x_range", "points", "values", "xlabel", "ylabel",
                 "y_min", "y_max", "size", "marks", "ratio", "ratio_label", "curves"}
 _CURVE_KEYS = {"name", "profile", "label", "style", "width"}
@@ -215,6 +215,7 @@ class Claim:
     points: int = 6
     source: str = "<claims>"
     file_ranges: dict = field(default_factory=dict)   # the file's default ranges
+    period: sp.Expr | None = None   # a periodic array of this period (LineContact(f, period=L))
 
     @property
     def formula(self) -> Form:
@@ -363,7 +364,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     for key, types in (("quantity", str), ("profile", str), ("profiles", list), ("profile_names", list),
                        ("formula", (str, int, float)), ("forms", list), ("assumptions", list), ("ranges", dict),
                        ("special", dict), ("force_law", str), ("values", list), ("labels", dict), ("note", str),
-                       ("reading", str), ("title", str), ("description", str), ("points", int)):
+                       ("reading", str), ("title", str), ("description", str), ("points", int), ("period", str)):
         typed_field(cd, key, types, W())
     quantity = cd.get("quantity")
     if quantity not in QUANTITIES:
@@ -458,7 +459,7 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     return Claim(label.strip(), quantity, forms, profiles, general, assumptions, table, special,
                  {**syms}, force_law, values, labels, str(cd.get("title", cd.get("description", ""))),
                  str(cd.get("note", "")), str(cd.get("reading", "")), pts, str(source),
-                 dict(file_ranges or {}))
+                 dict(file_ranges or {}), parse(cd["period"], "period", placeholders={}) if "period" in cd else None)
 
 
 def claim_from_cli(quantity: str, formula: str, profile: str | None = None, *, label="command line",

@@ -300,6 +300,9 @@ class Contact:
         base = getattr(self, "contact", self)
         prof = getattr(base, "profile", None)
         av = vals.get("a")
+        geometry = getattr(base, "geometry", None)
+        if geometry is not None and av is not None and not isinstance(av, np.ndarray):
+            geometry.check_half_width(vals)       # a periodic array: a <= L/2
         if prof is None or av is None or isinstance(av, np.ndarray) or \
                 any(p.name not in vals or isinstance(vals[p.name], np.ndarray) for p in prof.params):
             return

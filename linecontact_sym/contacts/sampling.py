@@ -68,4 +68,37 @@ def point_sampler(profile, domain: str = "any", extra=None):
     return sample
 
 
-__all__ = ["point_sampler", "sample_half_width", "E_STAR_RANGE", "X_RANGES"]
+#: the half-width of a periodic array relative to L/2 at the verification points (a/L up to 0.46)
+PERIODIC_A_RANGE = (0.04, 0.92)
+#: the range of a symbolic period not in the profile
+PERIOD_RANGE = (0.5, 2.5)
+
+
+def periodic_sampler(profile, geometry, domain: str = "any", extra=None):
+    """:func:`point_sampler` for a periodic array (``geometry`` a
+    :class:`~linecontact_sym.method.geometry.Periodic`): the period's symbol
+    (its profile range, or :data:`PERIOD_RANGE`), a in :data:`PERIODIC_A_RANGE`
+    times L/2 where the profile does not decrease on (0, a), x inside or in
+    (a, L/2) outside."""
+    def sample(rng):
+        vals = profile.sample_params(rng)
+        for sym in geometry.symbols:
+            if sym not in vals:
+                vals[sym] = rational(rng.uniform(*profile.ranges.get(sym, PERIOD_RANGE)))
+        vals[S.E_star] = rational(rng.uniform(*E_STAR_RANGE))
+        half = float(sp.N(geometry.period.xreplace(vals))) / 2
+        av = rational(half * rng.uniform(*PERIODIC_A_RANGE))
+        if profile.rising_on(vals, av) is not None:
+            return None
+        vals[S.a] = av
+        if domain == "inside":
+            vals[S.x] = rational(float(av) * rng.uniform(*X_RANGES["inside"]))
+        elif domain == "outside":
+            vals[S.x] = rational(float(av) + (half - float(av)) * rng.uniform(0.05, 0.95))
+        for sym, (lo, hi) in (extra or {}).items():
+            vals[sym] = rational(rng.uniform(lo, hi))
+        return vals
+    return sample
+
+
+__all__ = ["point_sampler", "periodic_sampler", "sample_half_width", "E_STAR_RANGE", "X_RANGES"]

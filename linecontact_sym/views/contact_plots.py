@@ -14,6 +14,12 @@ literature (``contact.plot(what, ...)`` calls :func:`plot_contact`):
                 jump-in at P = 0 marked;
 ``"gap"``       g(x)/f(a) against x/a outside the contact at several loads
                 (f(a): the profile's height at the edge).
+``"wavy_force"``  a periodic array (``LineContact(f, period=L)``): the
+                nominal pressure pbar/p* = P/(p* L) against a/L in (0, 1/2),
+                p* the nominal pressure of full contact (Westergaard's axes;
+                of an adhesive array, Johnson's 1995: P/(p* L) falls below 0);
+``"wavy_pressure"``  p/p* against x/L over a period at the nominal pressures
+                pbar = ``loads`` (fractions of p*, default 0.25, 0.5, 0.75).
 
 The contact is used by duck typing (``to_numeric``, ``half_width``,
 ``profile``, and for adhesion ``law`` and ``pull_off_at``); no contact class is
@@ -33,7 +39,7 @@ from ..core.errors import DomainError
 from ..core.extras import require
 
 #: what :func:`plot_contact` draws
-PLOTS = ("pressure", "force", "adhesive", "gap")
+PLOTS = ("pressure", "force", "adhesive", "gap", "wavy_force", "wavy_pressure")
 _STYLES = ("-", "--", "-.", ":")
 
 
@@ -171,6 +177,50 @@ def gap_data(contact, loads, values=None, x_max: float = 3.0, points: int = 201)
 
 
 # ------------------------------------------------------------------ drawing
+def _wavy(contact, values):
+    """(the frictionless periodic contact, L, p* as floats) of a periodic array."""
+    base = getattr(contact, "contact", contact)
+    geometry = getattr(base, "geometry", None)
+    if geometry is None or geometry.period is None:
+        raise DomainError("the wavy plots need a periodic array: LineContact(f, period=L)")
+    vals = _values(contact, values)
+    L = float(geometry.period.xreplace({s: vals[s.name] for s in geometry.symbols if s.name in vals}))
+    pstar = base.derivation("full_contact_pressure").expr
+    if pstar == sp.oo:
+        raise DomainError("p* is infinite (the crest is a corner): no full contact to normalise by; "
+                          "plot what='force' instead")
+    pv = {k: v for k, v in vals.items()}
+    pstar = float(sp.N(pstar.xreplace({s: pv[s.name] for s in pstar.free_symbols if s.name in pv})))
+    return base, L, pstar, vals
+
+
+def wavy_force_data(contact, values=None, points: int = 401):
+    """``(X, Y)``: X = a/L in (0, 1/2), Y = P(a)/(p* L) (of the adhesive
+    law for an adhesive contact)."""
+    base, L, pstar, vals = _wavy(contact, values)
+    X = np.linspace(0.5 / points, 0.5 * (1 - 1.0 / points), int(points))
+    fn = contact.to_numeric("force", check=False)
+    Y = _call(fn, a=X * L, **vals) / (pstar * L)
+    return X, Y
+
+
+def wavy_pressure_data(contact, loads=(0.25, 0.5, 0.75), values=None, points: int = 401):
+    """``(X, [Y per load], [a/L per load])``: X = x/L in [-1/2, 1/2], Y = p/p*
+    (0 outside the contact) at the nominal pressures pbar = load p*."""
+    base, L, pstar, vals = _wavy(contact, values)
+    X = np.linspace(-0.5, 0.5, int(points))
+    fn = base.to_numeric("pressure", check=False)
+    Ys, As = [], []
+    for f in loads:
+        a = _half_width(base, float(f) * pstar * L, vals)
+        inside = np.abs(X * L) < a
+        Y = np.zeros_like(X)
+        Y[inside] = _call(fn, a=a, x=np.abs(X[inside] * L), **vals) / pstar
+        Ys.append(Y)
+        As.append(a / L)
+    return X, Ys, As
+
+
 def _figure(size=(5.2, 3.8)):
     Figure = require("plot", "matplotlib.figure").Figure
     fig = Figure(figsize=size)
@@ -266,6 +316,27 @@ def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=
         ax.set_xlim(0, X[-1])
         law = getattr(getattr(contact, "law", None), "label", "")
         default = f"{law + ' f' if law else 'F'}orce law{' of ' + name if name else ''}"
+    elif what == "wavy_force":
+        X, Y = wavy_force_data(contact, values, points or 401)
+        fig, ax = _figure()
+        ax.plot(X, Y, lw=1.5, label=name or None)
+        ax.axhline(0, color="0.5", lw=0.8)
+        ax.set_xlabel("$a/L$")
+        ax.set_ylabel(r"$\bar{p}/p^{*} = P/(p^{*} L)$")
+        ax.set_xlim(0, 0.5)
+        ax.set_ylim(max(float(np.nanmin(Y)), -1.0) - 0.05, max(float(np.nanmax(Y)), 0.0) + 0.05)  # -oo at L/2
+        default = f"Nominal pressure of a periodic array{' of ' + name if name else ''}"
+    elif what == "wavy_pressure":
+        loads = loads or (0.25, 0.5, 0.75)
+        X, Ys, As = wavy_pressure_data(contact, loads, values, points or 401)
+        fig, ax = _figure()
+        for i, (f, Y, a) in enumerate(zip(loads, Ys, As)):
+            ax.plot(X, Y, _STYLES[i % 4], lw=1.5, label=rf"$\bar{{p}}/p^* = {float(f):g}$ ($a/L = {a:.3g}$)")
+        ax.set_xlabel("$x/L$")
+        ax.set_ylabel(r"$p(x)/p^{*}$")
+        ax.set_xlim(-0.5, 0.5)
+        ax.set_ylim(bottom=0)
+        default = f"Pressure over a period{' of ' + name if name else ''}"
     else:
         X, Ys, As = gap_data(contact, loads, values, points=points or 201, **kw)
         fig, ax = _figure()
@@ -279,4 +350,5 @@ def plot_contact(contact, what: str = "force", *, loads=None, values=None, path=
     return _finish(fig, ax, path, default if title is None else title)
 
 
-__all__ = ["PLOTS", "plot_contact", "default_loads", "profile_label", "pressure_data", "force_data", "adhesive_data", "gap_data"]
+__all__ = ["PLOTS", "plot_contact", "default_loads", "profile_label", "pressure_data", "force_data", "adhesive_data",
+           "gap_data", "wavy_force_data", "wavy_pressure_data"]

@@ -27,6 +27,17 @@ def _float_P0(quad):
     import numpy as np
     import sympy as sp
     from ...core import symbols as S
+    base = quad.base
+    if not base.geometry.is_isolated:    # another geometry: the kernel twin's P0 at S = s(a) (method.geometry)
+        P0k = _float_P0(base.kernel_law)
+        s_of = base.geometry.float_s(base.geometry_values)
+        top = float(base.geometry.mp_a_max(base.geometry_values))
+
+        def P0_mapped(A):
+            if float(A) > top:
+                raise Outside
+            return P0k(s_of(A))
+        return P0_mapped
     npf = quad.base.numeric_profile
     E = float(quad.base.E)
     f1 = sp.lambdify(S.x, sp.diff(npf.expr, S.x), "numpy")
@@ -95,31 +106,12 @@ def minimum_by_grid(law, dps: int) -> PullOff:
     profile's expression has there (found numerically at this point; a kink
     minimum, confirmed by one-sided differences) or successive parabolic
     interpolation (a stationary minimum)."""
-    quad = law.quadrature_law
-    P0f = _float_P0(quad)
-    Pf = _float_P(quad, P0f)
-    s = float(quad.scale)
-    grid = [s * 10.0**(-8 + 16 * k / (GRID_POINTS - 1)) for k in range(GRID_POINTS)]
-    pts, last0, cut = [], None, False
-    for A in grid:
-        try:
-            p0 = P0f(A)
-        except (Outside, ValueError, ZeroDivisionError):
-            cut = True
-            break
-        # falling beyond float64 rounding (relative to P0 and to the adhesive term it is
-        # weighed against): on a flat P0 = 0, and the 97-node rule over the sliver of
-        # a grid point just past the flat's end may give -1e-17 (a false cut there)
-        pa = Pf(A) if math.isfinite(p0) else math.nan
-        noise = 1e-12 * max(abs(p0), abs(last0 or 0.0), abs(pa - p0)) if math.isfinite(pa) else 0.0
-        if not math.isfinite(p0) or (last0 is not None and p0 < last0 - noise):
-            cut = True
-            break
-        last0 = p0
-        pts.append((A, pa))
-    if len(pts) < 3:
-        raise NoPullOffError("the quadrature force law is real and rising at fewer than 3 grid points")
+    quad, Pf, pts, cut = _grid(law)
     k = min(range(len(pts)), key=lambda i: pts[i][1])
+    if quad.geometry.closes_at_end:   # a periodic array: the first local minimum from small a (equilibria)
+        k = _first_local_minimum(pts)
+        if k is None or pts[k][1] >= 0:
+            raise NoPullOffError("P(a) has no negative local minimum before full contact on the grid")
     if pts[k][1] >= 0:
         raise NoPullOffError("P(a) is nowhere negative on the grid: no finite pull-off")
     if k == len(pts) - 1:
@@ -150,4 +142,67 @@ def minimum_by_grid(law, dps: int) -> PullOff:
                                                         "on the quadrature law")
 
 
-__all__ = ["minimum_by_grid", "GRID_POINTS"]
+def _grid(law):
+    """(quadrature law, float P, [(a, P(a))] on the grid of :func:`minimum_by_grid`, cut)."""
+    quad = law.quadrature_law
+    P0f = _float_P0(quad)
+    Pf = _float_P(quad, P0f)
+    s = float(quad.scale)
+    grid = [s * 10.0**(-8 + 16 * k / (GRID_POINTS - 1)) for k in range(GRID_POINTS)]
+    if quad.geometry.closes_at_end:   # a periodic array: evenly up to L/2 too, and ever closer to it
+        top = float(quad.geometry.mp_a_max(quad.geometry_values))
+        grid = sorted({A for A in grid if A < top} | {top * k / GRID_POINTS for k in range(1, GRID_POINTS)}
+                      | {top * (1 - 10.0**(-j / 4)) for j in range(8, 48)})
+    pts, last0, cut = [], None, False
+    for A in grid:
+        try:
+            p0 = P0f(A)
+        except (Outside, ValueError, ZeroDivisionError):
+            cut = True
+            break
+        # falling beyond float64 rounding (relative to P0 and to the adhesive term it is
+        # weighed against): on a flat P0 = 0, and the 97-node rule over the sliver of
+        # a grid point just past the flat's end may give -1e-17 (a false cut there)
+        pa = Pf(A) if math.isfinite(p0) else math.nan
+        noise = 1e-12 * max(abs(p0), abs(last0 or 0.0), abs(pa - p0)) if math.isfinite(pa) else 0.0
+        if not math.isfinite(p0) or (last0 is not None and p0 < last0 - noise):
+            cut = True
+            break
+        last0 = p0
+        pts.append((A, pa))
+    if len(pts) < 3:
+        raise NoPullOffError("the quadrature force law is real and rising at fewer than 3 grid points")
+    return quad, Pf, pts, cut
+
+
+def _first_local_minimum(pts):
+    """The index of the first interior local minimum of the grid values, or None."""
+    first = [i for i in range(1, len(pts) - 1) if pts[i][1] <= pts[i - 1][1] and pts[i][1] <= pts[i + 1][1]]
+    return first[0] if first else None
+
+
+def maximum_by_grid(law, dps: int) -> PullOff:
+    """The first local maximum of P(a) after its first local minimum (from
+    small a), by the same independent search as :func:`minimum_by_grid`
+    (float64 grid of the quadrature law, golden section, parabolic polish at
+    full precision): the snap into full contact of a periodic array.  With
+    no minimum before it, the maximum is P(0+) = 0 (``kind='origin'``)."""
+    quad, Pf, pts, cut = _grid(law)
+    i0 = _first_local_minimum(pts)
+    if i0 is None:
+        return PullOff(mpmath.mpf(0), mpmath.mpf(0), mpmath.mpf(0), "origin", None, (),
+                       "P(a) has no local minimum on the grid: its supremum is P(0+) = 0")
+    tops = [i for i in range(i0 + 1, len(pts) - 1) if pts[i][1] >= pts[i - 1][1] and pts[i][1] >= pts[i + 1][1]]
+    if not tops:
+        raise VerificationError("P(a) has a minimum but no maximum after it on the grid")
+    k = tops[0]
+    lo, hi = pts[k - 1][0], pts[k + 1][0]
+    A = float(golden_minimum(lambda v: -Pf(v), lo, hi, tol=hi * 1e-7))
+    with workdps(3 * dps // 2 + GUARD):
+        A = _parabolic_polish(lambda v: -quad.P(v), mpmath.mpf(A), A * mpmath.mpf("1e-6"))
+        Pm = quad.P(A)
+        return PullOff(+Pm, -Pm, +A, "stationary", None, (), "dense float64 grid + golden section + parabolic "
+                                                             "polish of -P on the quadrature law")
+
+
+__all__ = ["minimum_by_grid", "maximum_by_grid", "GRID_POINTS"]

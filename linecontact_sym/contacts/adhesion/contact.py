@@ -40,7 +40,7 @@ from ...core.errors import (DomainError, NoEquilibriumError, NoPullOffError, Num
                            VerificationError)
 from ...method.derivation import Derivation, values_by_name
 from ...parsing import to_sympy
-from . import branches
+from . import branches, full_contact
 from . import pull_off
 from ..normal.cases import case_of
 from ..base import ContactOn, Quantity
@@ -239,6 +239,17 @@ class AdhesiveContact(ContactOn):
         budget = SEARCH_BUDGET if budget is None else checked_budget(budget)
         with searching_until(budget):
             return pull_off.at_values(self, vals, dps)
+
+    def full_contact_at(self, dps: int = 30, budget=None, **values):
+        """A periodic array (``LineContact(f, period=L)``): the load per period
+        above which a partial contact snaps into full contact, the first
+        maximum of P(a) after the pull-off, verified by two independent
+        methods (:mod:`.full_contact`); ``force <= 0``: full contact at zero
+        load.  In JKR full contact then holds any tension."""
+        vals = self._numeric_values(values)
+        budget = SEARCH_BUDGET if budget is None else checked_budget(budget)
+        with searching_until(budget):
+            return full_contact.full_contact_at(self, vals, dps)
 
     def pull_off_force_at(self, dps: int = 30, **values):
         """P_min (< 0) at numeric values, verified to ``dps`` digits."""

@@ -36,6 +36,7 @@ from ...core.conversion import float_values, rational, to_mpf
 from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
 from ...method.derivation import Derivation
+from ...method.geometry import ISOLATED
 from ...method.rules import Step
 from ...method.verification import verify
 from ...numeric.reference import combine, integrate, lincomb
@@ -49,15 +50,21 @@ from .pull_off import same_at_points, single_power
 GAMMA_RANGE = (0.005, 0.5)
 
 
-def flat_punch_force(work_of_adhesion=S.gamma, a=S.a, E_star=S.E_star):
+def flat_punch_force(work_of_adhesion=S.gamma, a=S.a, E_star=S.E_star, geometry=ISOLATED):
     """Eq. (31): Phat = sqrt(2 pi a gamma E*), the force of the pulled flat
     punch that makes the energy release rate at the edges equal to gamma
     (K_I**2/(2 E*) = gamma with K_I = Phat/sqrt(pi a), Eq. 30).
 
+    Another geometry (:mod:`~linecontact_sym.method.geometry`): the punch of
+    half-width S in the kernel variable s has K_s = Phat/sqrt(pi S), and the
+    edge in x sees K = K_s sqrt(S'(a)) (s - S = S'(a) (x - a) there), so
+    Phat = sqrt(2 pi gamma E* S/S').  A periodic array:
+    Phat = sqrt(2 gamma E* L tan(pi a/L)), K = pbar sqrt(L cot(pi a/L)), pbar = Phat/L.
+
     >>> flat_punch_force()
     sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(a)*sqrt(gamma)
     """
-    return sp.sqrt(2 * sp.pi * a * work_of_adhesion * E_star)
+    return sp.sqrt(2 * sp.pi * geometry.punch_ratio(a) * work_of_adhesion * E_star)
 
 
 def stress_intensity(Phat, a=S.a):
@@ -111,13 +118,26 @@ def compliance_slope(A, E, dps, L):
     return integrate(f, _phi, [-sp.pi / 2, 0, sp.pi / 2], dps, fallback=fallback)
 
 
-def phat_energy(A, gamma, E, dps, quadrature=True):
+def phat_energy(A, gamma, E, dps, quadrature=True, geometry=ISOLATED, values=None):
     """Phat from the energy balance G = gamma, G = (P^2/2) |dC/d(2a)| with C
     the punch compliance (Eq. 3): with ``quadrature`` (default) its slope by
     :func:`compliance_slope` and the root Phat = sqrt(4 gamma/|dC/da|) as a
     :class:`~linecontact_sym.numeric.reference.RefValue` (an Arb enclosure
     where the slope is one); with ``quadrature=False`` the closed arccosh
-    form differentiated numerically and the root by findroot (an mpf)."""
+    form differentiated numerically and the root by findroot (an mpf).
+    Another geometry (``values``: its parameters): its punch's compliance
+    (:meth:`~linecontact_sym.method.geometry.Geometry.mp_punch_compliance`,
+    a periodic array: Koiter's punch under the periodic Green's function, by
+    quadrature or closed), differentiated numerically, the root by findroot."""
+    if not geometry.is_isolated:
+        with workdps(dps + 10):
+            A, g, E = to_mpf(A), to_mpf(gamma), to_mpf(E)
+            if g == 0:
+                return mpmath.mpf(0)
+            dC = mpmath.diff(lambda u: geometry.mp_punch_compliance(u, E, values, quadrature=quadrature), A)
+            G = lambda Pv: Pv**2 / 4 * abs(dC) - g  # noqa: E731
+            guess = mpmath.sqrt(4 * g / abs(dC))
+            return mpmath.findroot(G, (guess * mpmath.mpf("0.5"), guess * 2), solver="anderson")
     if quadrature:
         g = sp.sympify(gamma)
         if g == 0:
@@ -186,7 +206,7 @@ class JKR(CohesiveLaw):
         """Eq. (31), verified against the energy balance of the flat-punch
         compliance (its slope by quadrature of Eq. 3, :func:`compliance_slope`); shared by all
         contacts with the same work of adhesion."""
-        key = (self.gamma, ad.contact.points, ad.contact.verify)
+        key = (self.gamma, ad.contact.points, ad.contact.verify, ad.contact.geometry)
         if key not in _PHAT_CACHE:
             _PHAT_CACHE[key] = _derive_phat(ad, self.gamma)
         return _PHAT_CACHE[key]
@@ -195,10 +215,15 @@ class JKR(CohesiveLaw):
         """Eq. (33): P(a) = P0(a) - Phat, verified against the quadrature of
         Eq. (10*) minus Phat from the energy balance."""
         fd = ad.contact.derivation("force")
-        expr = fd.expr - flat_punch_force(self.gamma)
-        prof, gexpr = ad.profile, self.gamma
+        geometry = ad.contact.geometry
+        expr = fd.expr - flat_punch_force(self.gamma, geometry=geometry)
+        contact, prof, gexpr = ad.contact, ad.profile, self.gamma
 
         def reference(vals, dps):
+            if not geometry.is_isolated:    # the contact's own reference (a periodic array: the tan route)
+                return lincomb([(1, contact.force_reference(vals, dps)),
+                                (-1, phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps,
+                                                 geometry=geometry, values=vals))], dps)
             return lincomb([(1, force_reference(prof, vals, dps)),
                             (-1, phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps))], dps)
         rec = None
@@ -218,13 +243,16 @@ class JKR(CohesiveLaw):
         the quadrature of Eq. (12) minus the punch with Phat from the energy
         balance, and by equilibrium: 2 int_0^a p dx = P(a) of Eq. (33)."""
         pd = ad.contact.derivation("pressure")
-        expr = pd.expr - flat_punch_force(self.gamma) / (sp.pi * sp.sqrt(S.a**2 - S.x**2))
+        geometry = ad.contact.geometry
+        expr = pd.expr - geometry.punch_pressure(flat_punch_force(self.gamma, geometry=geometry))
         gexpr = self.gamma
 
         def reference(vals, dps):
             A, X = vals[S.a], vals[S.x]
-            ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps)
-            return lincomb([(1, pd.reference(vals, dps)), (-1 / (sp.pi * sp.sqrt(A**2 - X**2)), ph)], dps)
+            ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps, geometry=geometry, values=vals)
+            # the punch's pressure per unit load at the point (isolated: 1/(pi sqrt(a^2 - x^2)))
+            unit = geometry.punch_pressure(sp.S.One).xreplace({**vals, S.a: A, S.x: X})
+            return lincomb([(1, pd.reference(vals, dps)), (-unit, ph)], dps)
         rec, notes = None, list(pd.notes)
         if pd.closed_form and ad.contact.verify:
             rec = verify(expr, reference, ad._sampler("inside"), pd.conditions, n_points=ad.contact.points,
@@ -254,17 +282,33 @@ class JKR(CohesiveLaw):
 
             def B1():
                 return mpmath.sqrt(2 * mpmath.pi * to_mpf(g) * to_mpf(E))
-            expr = None if b.expr is None else b.expr - sp.sqrt(2 * sp.pi * g * E * S.a)
             b1f = math.sqrt(2 * math.pi * float(g) * float(E))
-            return b.on_top(lambda A: P0(A) - B1() * mpmath.sqrt(A), lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
-                            expr=expr, float_P=lambda P0f: (lambda A: P0f(A) - b1f * math.sqrt(float(A))),
-                            inactive=self.inactive, monotone_term=True)
+            geo, gv = b.geometry, getattr(b, "geometry_values", {})
+            if geo.is_isolated:
+                expr = None if b.expr is None else b.expr - sp.sqrt(2 * sp.pi * g * E * S.a)
+                return b.on_top(lambda A: P0(A) - B1() * mpmath.sqrt(A),
+                                lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
+                                expr=expr, float_P=lambda P0f: (lambda A: P0f(A) - b1f * math.sqrt(float(A))),
+                                inactive=self.inactive, monotone_term=True)
+            # another geometry: Phat = B1 sqrt(S/S') (flat_punch_force), S/S' the geometry's punch ratio
+            expr = None if b.expr is None else b.expr - flat_punch_force(g, E_star=E, geometry=geo).xreplace(gv)
+            ratio_f = geo.float_punch_ratio(gv)
+
+            def P(A):
+                r, _ = geo.mp_punch_ratio(A, gv)
+                return P0(A) - B1() * mpmath.sqrt(r)
+
+            def dP(A):
+                r, dr = geo.mp_punch_ratio(A, gv)
+                return dP0(A) - B1() * dr / (2 * mpmath.sqrt(r))
+            return b.on_top(P, dP, expr=expr, float_P=lambda P0f: (lambda A: P0f(A) - b1f * math.sqrt(ratio_f(A))),
+                            inactive=self.inactive, monotone_term=False)
         return on_base(base, build)
 
     # ----------------------------------------------------------- closed forms
     def pull_off_conditions(self, ad, force0, values=None):
         """A single power term P0 = C a**m has a finite pull-off iff m > 1/2."""
-        single = single_power(force0.expr) if force0.closed_form else None
+        single = single_power(force0.expr) if force0.closed_form and ad.contact.geometry.is_isolated else None
         if single is None:
             return []
         C, m = single
@@ -276,7 +320,7 @@ class JKR(CohesiveLaw):
         a_po = (2 pi gamma E*/(4 m**2 C**2))**(1/(2m-1)) -- kept where they equal
         the solve result at random points (the single stationary point is
         the global minimum)."""
-        single = single_power(force0.expr) if force0.closed_form else None
+        single = single_power(force0.expr) if force0.closed_form and ad.contact.geometry.is_isolated else None
         if single is None:
             return None
         C, m = single
@@ -293,7 +337,7 @@ class JKR(CohesiveLaw):
         """For P0 = C a**m: m C a**(m-1) = B1/(2 sqrt(a)) solved by hand,
         a**(m - 1/2) = B1/(2 m C); sympy.solve of the same equation with
         symbolic C and m spent its whole budget (K x**4: 20 s)."""
-        single = single_power(force0.expr) if force0.closed_form else None
+        single = single_power(force0.expr) if force0.closed_form and ad.contact.geometry.is_isolated else None
         if single is None:
             return None
         C, m = single
@@ -302,7 +346,7 @@ class JKR(CohesiveLaw):
                         "sqrt(2 pi gamma E*)/(2 m C)")
 
     def jump_in_candidates(self, ad, force0):
-        single = single_power(force0.expr) if force0.closed_form else None
+        single = single_power(force0.expr) if force0.closed_form and ad.contact.geometry.is_isolated else None
         if single is None:
             return None
         C, m = single
@@ -339,18 +383,27 @@ def check_existence(ad, C, m, vals=None):
 def _derive_phat(ad, gamma) -> Derivation:
     """Eq. (31), verified against the energy balance G = gamma computed from
     the flat-punch compliance's slope by quadrature (Eq. 3 differentiated
-    under the integral sign, an Arb enclosure) and its root."""
-    expr = flat_punch_force(gamma)
+    under the integral sign, an Arb enclosure; another geometry: its punch's
+    compliance by quadrature, differentiated numerically) and its root."""
+    geometry = ad.contact.geometry
+    expr = flat_punch_force(gamma, geometry=geometry)
     gsyms = tuple(sorted(gamma.free_symbols, key=lambda s: s.name))
+    psyms = tuple(v for v in geometry.symbols if v not in gsyms)
 
     def sampler(rng):
-        vals = {S.a: rational(rng.uniform(0.05, 2.0)), S.E_star: rational(rng.uniform(0.5, 3.0))}
+        if geometry.is_isolated:
+            vals = {S.a: rational(rng.uniform(0.05, 2.0)), S.E_star: rational(rng.uniform(0.5, 3.0))}
+        else:       # a periodic array: a in (0.05, 0.92) L/2
+            vals = {S.E_star: rational(rng.uniform(0.5, 3.0))}
+            vals.update({v: rational(rng.uniform(0.5, 2.5)) for v in psyms})
+            vals[S.a] = rational(rng.uniform(0.05, 0.92) * float(geometry.a_max().xreplace(vals)))
         for gs in gsyms:
             vals[gs] = rational(rng.uniform(*GAMMA_RANGE))
         return float_values(vals, 80)
 
     def reference(vals, dps):
-        return phat_energy(vals[S.a], gamma.xreplace(vals), vals[S.E_star], dps, quadrature=True)
+        return phat_energy(vals[S.a], gamma.xreplace(vals), vals[S.E_star], dps, quadrature=True, geometry=geometry,
+                           values=vals)
     rec = None
     if ad.contact.verify and gamma != 0:
         rec = verify(expr, reference, sampler, (), n_points=ad.contact.points,
@@ -362,8 +415,7 @@ def _derive_phat(ad, gamma) -> Derivation:
                                        "K_I = Phat/sqrt(pi a) (Eq. 30)",))
     return Derivation("flat_punch_force", expr=expr, closed_form=True, step=step, verification=rec,
                       notes=("K_I = Phat/sqrt(pi*a) = sqrt(2*gamma*E_star); G = K_I^2/(2 E*) = Phat^2/(2 pi a E*)",),
-                      reference=lambda vals, dps: phat_energy(vals[S.a], gamma.xreplace(vals), vals[S.E_star], dps),
-                      variables=(S.a, S.E_star) + gsyms)
+                      reference=reference, variables=(S.a, S.E_star) + gsyms + psyms)
 
 
 __all__ = ["JKR", "check_existence", "flat_punch_force", "stress_intensity", "energy_release_rate",

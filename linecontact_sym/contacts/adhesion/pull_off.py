@@ -158,6 +158,9 @@ def closed_attempt(ad):
     unique = timed_out = False
     if not fd.closed_form:
         notes.append("the force law P0(a) has no closed form")
+    elif not ad.contact.geometry.is_isolated:
+        notes.append("a periodic array: dP/da = 0 is transcendental in a (sin and tan of pi a/L); the numeric "
+                     "minimum, checked by the independent grid search")
     elif not force.closed_form:
         notes.append(f"the {law.name} force law P(a) has no closed form")
     else:

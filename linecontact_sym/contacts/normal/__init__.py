@@ -7,8 +7,13 @@
 * :mod:`.inverse`       -- the inverse map, Eq. (9): the profile of a given force law;
 * :mod:`.force_law`     -- the numeric force law P(a) at fixed parameters (slope, kinks,
   admissible range);
-* :mod:`.equilibria`    -- the one scan / bracket / root / minimum toolkit over a force law.
+* :mod:`.equilibria`    -- the one scan / bracket / root / minimum toolkit over a force law;
+* :mod:`.periodic`      -- :class:`PeriodicLineContact`: a periodic array (``LineContact(f, period=L)``),
+  the isolated contact of its kernel twin in s = sin(pi x/L) mapped back (Koiter's periodic punch).
 """
 from .contact import LineContact
+from .periodic import PeriodicLineContact
 
-__all__ = ["LineContact"]
+LineContact.GEOMETRIES["periodic"] = PeriodicLineContact
+
+__all__ = ["LineContact", "PeriodicLineContact"]

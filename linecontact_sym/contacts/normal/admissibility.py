@@ -68,8 +68,12 @@ def check_admissible(contact, dps: int = 20, **values):
                     f"profile {prof.name!r}: tensile pressure p = {float(p):.3g} at "
                     f"x = {float(xv):.4g} without adhesion; the frictionless solution does not hold")
         # the gap on a geometric grid out to 1000 a (points where the profile
-        # is not real, e.g. beyond a cylinder's radius, are skipped)
-        for fac in (1.01, 1.1, 1.5, 2, 3, 5, 10, 30, 100, 1000):
+        # is not real, e.g. beyond a cylinder's radius, are skipped); a periodic
+        # array: on (a, L/2], up to the crest between two contacts
+        top = contact.geometry.mp_a_max(fixed)
+        facs = (1.01, 1.1, 1.5, 2, 3, 5, 10, 30, 100, 1000) if top == mpmath.inf else \
+            tuple(1 + (top / mpmath.mpf(A) - 1) * k for k in (0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99))
+        for fac in facs:
             try:
                 g = gfun(**kw, x=mpmath.mpf(A) * fac)
             except (DomainError, ValueError, ZeroDivisionError):
@@ -78,18 +82,22 @@ def check_admissible(contact, dps: int = 20, **values):
                 continue
             if g < 0:
                 raise InadmissibleProfileError(
-                    f"profile {prof.name!r}: negative gap {float(g):.3g} at x = {A * fac:.4g}"
+                    f"profile {prof.name!r}: negative gap {float(g):.3g} at x = {float(A * fac):.4g}"
                     f" outside the contact: a second contact opens there")
     return True
 
 
 def admissible_range(contact, a_max: float = 100.0, rtol: float = 1e-6, **values):
-    """The half-widths 0 < a < a* for which the frictionless compact-contact
+    """The half-widths 0 < a < a* (a periodic array: a* <= L/2) for which the frictionless compact-contact
     solution holds at the given parameters (keywords) -- within the checks of
     :func:`check_admissible` (the gap is sampled out to 1000 a) -- found by
     scanning it on a geometric grid up to ``a_max`` and bisecting the first
     failure to ``rtol``.  Returns ``(a_star, reason)``; ``a_star = a_max`` and
     ``reason = None`` when no failure was found."""
+    top = contact.geometry.mp_a_max({s: to_sympy(values[s.name]) for s in contact.geometry.symbols})
+    if top != mpmath.inf:       # a periodic array: full contact at a = L/2
+        a_max = min(a_max, float(top))
+
     def ok(av):
         try:
             check_admissible(contact, **{**values, "a": sp.Float(av, 20)})

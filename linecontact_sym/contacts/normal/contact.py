@@ -14,6 +14,7 @@ from ...core.budget import DEFAULT_BUDGET, checked_budget
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, ProfileError
 from ...method import transforms as T
+from ...method.geometry import ISOLATED
 from ...method.derivation import Derivation, derive, fallback_step
 from ...method.profile import Profile
 from ...numeric.exports import lambdify_numpy
@@ -46,6 +47,9 @@ class LineContact(Contact):
     budget : float
         CPU seconds allowed to the symbolic derivation of each quantity
         (:mod:`~linecontact_sym.core.budget`: rules, tidying and verification).
+    period : number or positive Symbol, optional
+        A periodic array of period L (f given on 0 <= x <= L/2): see
+        :class:`~.periodic.PeriodicLineContact`.
     verify : bool
         Check every closed form against mpmath quadrature (default True).
 
@@ -61,6 +65,18 @@ class LineContact(Contact):
     """
 
     kind = "frictionless"
+    #: the punches of the superposition (:mod:`~linecontact_sym.method.geometry`): the isolated
+    #: half-plane here; ``LineContact(f, period=L)`` makes a periodic array (:mod:`.periodic`)
+    geometry = ISOLATED
+    #: the contact of the kernel variable whose results this one maps (None: this is it)
+    kernel = None
+    #: the contact class of each other geometry, by name (filled by the modules that define them)
+    GEOMETRIES: dict = {}
+
+    def __new__(cls, *args, period=None, **kw):
+        if period is not None and cls is LineContact:
+            cls = LineContact.GEOMETRIES["periodic"]
+        return super().__new__(cls)
 
     force = Quantity("P(a)", "Eq. (10*)", "load per unit length at the half-width a (compressive positive)",
                      arguments=("a",), latex="P(a)", unit="N/m")
@@ -77,7 +93,9 @@ class LineContact(Contact):
 
     def __init__(self, profile, params=None, name: str | None = None,
                  budget: float = DEFAULT_BUDGET, verify: bool = True,
-                 points: int = 5, digits: int = REQUIRED_DIGITS):
+                 points: int = 5, digits: int = REQUIRED_DIGITS, period=None):
+        if period is not None and not isinstance(self, LineContact.GEOMETRIES["periodic"]):
+            raise ProfileError("period= makes a periodic array: build it as LineContact(f, period=L)")
         self.profile = profile if isinstance(profile, Profile) else Profile(profile, params, name)
         self.budget = checked_budget(budget)
         for what, v, hi in (("points", points, 1000), ("digits", digits, 100)):
@@ -186,6 +204,15 @@ class LineContact(Contact):
         return cache["_adm_fns"]
 
     # --------------------------------------------------------------- derivations
+    def force_reference(self, vals, dps):
+        """P(a) at a point by the independent quadrature of the defining
+        integral (here Eq. 10*), for the checks of the contacts built on this one."""
+        return T.force_quad(self.profile, vals, dps)
+
+    def force_integral(self):
+        """The unevaluated force law (Eq. 10*)."""
+        return T.force_integral(self.profile)
+
     def _derive_force(self) -> Derivation:
         slope = self.profile.slope_at_origin
         if slope != 0:
@@ -264,7 +291,7 @@ class LineContact(Contact):
                      reference_name=what) if self.verify else None
         if rec is not None and not rec.passed:
             note = f"closed form FAILED verification ({rec.min_digits:.1f} digits); returned unevaluated: {expr}"
-            return Derivation(quantity, expr=make(T.force_integral(self.profile)), closed_form=False,
+            return Derivation(quantity, expr=make(self.force_integral()), closed_form=False,
                               step=fallback_step(), verification=rec, notes=(note,), reference=reference,
                               variables=(S.a,) + self.variables)
         step = Step(quantity, expr, fd.conditions, (what,))
@@ -274,25 +301,21 @@ class LineContact(Contact):
     def _derive_mean_pressure(self) -> Derivation:
         """P(a)/(2a) of the closed force law, checked against the quadrature of
         Eq. (10*) divided by 2a."""
-        prof = self.profile
-
         def reference(vals, dps):
             with workdps(dps + 10):
-                return T.force_quad(prof, vals, dps) / (2 * to_mpf(vals[S.a]))
+                return self.force_reference(vals, dps) / (2 * to_mpf(vals[S.a]))
         return self._derive_from_force("mean_pressure", lambda P: P / (2 * S.a), reference,
                                        "P(a)/(2a) against the quadrature of Eq. (10*) over 2a")
 
     def _derive_stiffness(self) -> Derivation:
         """dP/da of the closed force law, checked against numerical
         differentiation of the quadrature of Eq. (10*)."""
-        prof = self.profile
-
         def reference(vals, dps):
             with workdps(dps + 20):
                 fixed = {k: v for k, v in vals.items() if k != S.a}
                 A = to_mpf(vals[S.a])
                 # the quadrature runs above diff's own (raised) working precision
-                return mpmath.diff(lambda u: T.force_quad(prof, {**fixed, S.a: u}, mpmath.mp.dps), A)
+                return mpmath.diff(lambda u: self.force_reference({**fixed, S.a: u}, mpmath.mp.dps), A)
         return self._derive_from_force("stiffness", lambda P: sp.diff(P, S.a), reference,
                                        "dP/da against mpmath.diff of the quadrature of Eq. (10*)")
 

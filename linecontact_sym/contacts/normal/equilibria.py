@@ -493,6 +493,8 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
     with workdps(dps + GUARD):
         mins = [_refine(law, e, dps) for e in land.minima]
         neg = [e for e in mins if e.force < 0]
+        if law.geometry.closes_at_end:      # a periodic array: the end is full contact, not a separation
+            return _first_minimum(law, land, mins)
         if not neg:
             raise NoPullOffError(
                 "P(a) has no negative minimum: no tensile load is sustained (the infimum 0 is "
@@ -503,6 +505,36 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
             note += ("; the global minimum is at the end of the admissible range: the lowest load the "
                      "frictionless adhesive solution describes, not a proven separation load")
         return PullOff(+best.force, -best.force, +best.half_width, best.kind, None, tuple(mins), note)
+
+
+def _first_minimum(law, land, mins) -> PullOff:
+    """The pull-off of a partial contact where the end of the range closes
+    the contact (:attr:`~linecontact_sym.method.geometry.Geometry.closes_at_end`,
+    a periodic array): pulled from a partial contact, the contact follows its
+    stable branch down to the first local minimum of P(a) from small a and
+    separates there; the fall of P(a) towards the end is the unstable branch
+    beyond the snap into full contact, which in JKR holds any tension."""
+    inner = sorted((e for e in mins if e.kind != "end"), key=lambda e: e.half_width)
+    if not inner or inner[0].force >= 0:
+        raise NoPullOffError(
+            "P(a) has no negative local minimum before full contact: from any partial contact the array snaps "
+            "into full contact (a = L/2), which in JKR holds any tension: no pull-off of a partial contact")
+    first = inner[0]
+    note = land.describe() + ("; the first local minimum from small a (the end a -> L/2 is full contact: "
+                              "in JKR it holds any tension)")
+    return PullOff(+first.force, -first.force, +first.half_width, first.kind, None, tuple(mins), note)
+
+
+def first_maximum_after(law, A, dps: int):
+    """The first local maximum of P(a) beyond the half-width A (stationary or
+    kink) at ``dps`` digits, or None: the load of the snap into full contact
+    of a periodic array (every extremum from :func:`landscape`)."""
+    land = landscape(law)
+    with workdps(dps + GUARD):
+        for e in sorted(land.extrema, key=lambda e: e.half_width):
+            if not e.minimum and e.half_width > A and e.kind != "end":
+                return _refine(law, e, dps)
+    return None
 
 
 # ---------------------------------------------------------------- equilibria
@@ -573,6 +605,6 @@ def half_width_at(law, load, dps: int = 30):
     return roots[0]
 
 
-__all__ = ["Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings", "real_range", "admissible_range", "landscape",
+__all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings", "real_range", "admissible_range", "landscape",
            "minimum", "equilibria", "equilibria_at", "half_width_at",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]

@@ -36,6 +36,7 @@ from ...core import symbols as S
 from ...core.conversion import to_basic, to_mpf
 from ...core.errors import DomainError
 from ...core.roots import UNDEFINED, Outside, real_value
+from ...method.geometry import ISOLATED
 from ...method.transforms import NumericProfile, inside
 from ...core.precision import workdps
 
@@ -94,6 +95,7 @@ class ForceLaw:
         self.monotone_term = False  # (a law on top of P0) see :meth:`on_top`
         self._landscape = None
         self._balls = None
+        self.geometry = ISOLATED   # the punches of the superposition (method.geometry); see mapped()
 
     # ----------------------------------------------------------- builders
     @classmethod
@@ -186,6 +188,9 @@ class ForceLaw:
         """The non-adhesive law of a :class:`~.contact.LineContact` at
         ``values``: the closed form where the engine found one (``mode='closed'``,
         with the quadrature as fallback off its domain), else the quadrature."""
+        kernel = getattr(contact, "kernel", None)
+        if kernel is not None:     # another geometry: the law of its kernel twin, mapped (method.geometry)
+            return cls.from_contact(kernel, values, mode).mapped(contact.geometry, values)
         quad = cls.from_profile(contact.profile, values)
         cache = contact._caches()
         if "_convex" not in cache:
@@ -201,6 +206,39 @@ class ForceLaw:
         law.convex, law.flat = quad.convex, quad.flat
         return law
 
+    def mapped(self, geometry, values) -> "ForceLaw":
+        """This law of the kernel variable (half-width S) as a law of the
+        half-width a of ``geometry`` (:mod:`~linecontact_sym.method.geometry`):
+        P(a) = Q(S(a)), dP/da = Q'(S(a)) S'(a), breakpoints at x_of(s), not
+        real beyond the largest half-width (L/2 for a periodic array)."""
+        top = geometry.mp_a_max(values)
+        kernel = self
+
+        def law_of(route):
+            def P(A):
+                if A > top:
+                    raise Outside
+                return route.P(geometry.mp_s(A, values))
+
+            def dP(A):
+                if A > top:
+                    raise Outside
+                return route.dP(geometry.mp_s(A, values)) * geometry.mp_jacobian(A, values)
+            xs = [geometry.x_of(b) for b in route.breaks_exact]
+            pf = {k: v for k, v in values.items() if k not in (S.a, S.x)}
+            out = ForceLaw(P, dP, tuple(sp.N(b.xreplace(pf), 80) for b in xs), route.mode,
+                           expr=None if route.expr is None else geometry.from_kernel(route.expr, "force"),
+                           conditions=[geometry.condition_from_kernel(c) for c in route.conditions])
+            out.geometry, out.kernel_law, out.geometry_values = geometry, route, pf
+            if route.flat is not None:
+                out.flat = to_mpf(sp.N(geometry.x_of(sp.Float(route.flat, mpmath.mp.dps + 5)).xreplace(pf),
+                                       mpmath.mp.dps + 5))
+            return out
+        law = law_of(kernel)
+        if kernel.fallback is not None:
+            law.fallback = law_of(kernel.fallback)
+        return law
+
     def on_top(self, P, dP, expr=None, float_P=None, inactive=False, monotone_term=False) -> "ForceLaw":
         """A law built on this one (an adhesive law on the non-adhesive
         ``self``, its ``base``): P, dP callables of a (mpf), ``expr`` the
@@ -211,6 +249,8 @@ class ForceLaw:
         law = ForceLaw(P, dP, self.breaks_exact, self.mode, expr=expr, conditions=self.conditions,
                        float_P=float_P, inactive=inactive)
         law.base = self
+        law.geometry = self.geometry
+        law.geometry_values = getattr(self, "geometry_values", {})
         # what the searches may assume of P - P0 (equilibria): only a term whose slope is
         # < 0 and increasing (JKR's -B1 sqrt(a)) keeps dP/da increasing where P0 is convex
         # and leaves no stationary point on a flat

@@ -12,14 +12,18 @@ from ...core.conversion import rational
 from ...core.errors import BudgetExceeded, ProfileError
 from ...method import transforms as T
 from ...method.derivation import Derivation, derive, fallback_step, remembered, timed
+from ...method.geometry import Periodic
+from ...method.profile import Profile
 from ...method.rules import Problem, Step
+from .tan_route import TanRoute
+from ...method.verification import verify
 from .equilibria import half_width_at
 from .force_law import ForceLaw
 
 
 @timed
 def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
-                       verify_points: int = 5) -> Derivation:
+                       verify_points: int = 5, period=None) -> Derivation:
     """Eq. (9): the profile f(x) whose contact has the force law ``force_law``
     (a SymPy expression in ``a``), f(a) = (2a/(pi E*)) int_0^a P(s)/(s sqrt(a^2 - s^2)) ds.
     Returns a :class:`~linecontact_sym.method.derivation.Derivation` whose
@@ -29,7 +33,12 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
     >>> R = sp.Symbol("R", positive=True)
     >>> profile_from_force(sp.pi*lcs.E_star*lcs.a**2/(4*R)).expr
     x**2/(2*R)
+
+    ``period=L``: the profile of a periodic array whose load per period is
+    ``force_law`` (:func:`periodic_profile_from_force`).
     """
+    if period is not None:
+        return periodic_profile_from_force(force_law, period, params, budget, verify_points)
     if isinstance(force_law, str) or not isinstance(force_law, sp.Basic):
         raise ProfileError(f"the force law must be a SymPy expression in a, got {force_law!r}")
     free = force_law.free_symbols - {S.a, S.E_star}
@@ -68,6 +77,53 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
     return Derivation("profile", expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
                       verification=d.verification, seconds=d.seconds, notes=d.notes, reference=reference_in_x,
                       variables=variables, attempts=d.attempts, cached=d.cached)
+
+
+def periodic_profile_from_force(force_law, period, params=None, budget: float = DEFAULT_BUDGET,
+                                verify_points: int = 5) -> Derivation:
+    """Eq. (9) for a periodic array (:mod:`~linecontact_sym.method.geometry`):
+    Q(S) = P((L/pi) asin S) is the force law of the kernel twin, Eq. (9)
+    gives its profile F(s), and f(x) = F(sin(pi x/L)); the result is
+    verified against the tan route's force law of f
+    (:mod:`~linecontact_sym.contacts.normal.tan_route`) at random a in (0, 0.46 L).
+
+    >>> import linecontact_sym as lcs, sympy as sp
+    >>> h, L = sp.symbols("h L", positive=True)
+    >>> profile_from_force(sp.pi*lcs.E_star*h*sp.sin(sp.pi*lcs.a/L)**2, period=L).expr
+    2*h*sin(pi*x/L)**2
+    """
+    g = Periodic(period)
+    Q = sp.simplify(force_law.xreplace({S.a: g.x_of(S.a)}))
+    kd = profile_from_force(Q, params, budget, verify_points)
+    variables = (S.x, S.E_star) + tuple(sorted((force_law.free_symbols | set(g.symbols)) - {S.a, S.E_star},
+                                                key=lambda v: v.name))
+    if not kd.closed_form:
+        return Derivation("profile", expr=kd.expr.xreplace({S.x: g.s(S.x)}), closed_form=False, step=kd.step,
+                          notes=kd.notes + ("the kernel twin's Eq. (9) in s = sin(pi x/L)",),
+                          variables=variables, attempts=kd.attempts)
+    f = kd.expr.xreplace({S.x: g.s(S.x)})
+    psyms = tuple(v for v in variables if v not in (S.x, S.E_star))
+
+    def sampler(rng):
+        vals = {p: rational(rng.uniform(0.5, 2.5)) for p in psyms}
+        vals[S.E_star] = rational(rng.uniform(0.5, 3))
+        vals[S.a] = rational(float(sp.N(g.period.xreplace(vals))) * rng.uniform(0.02, 0.46))
+        return vals
+
+    def reference(vals, dps):
+        prof = Profile(f.xreplace({p: vals[p] for p in psyms}))
+        return TanRoute(prof, vals, g.period.xreplace(vals)).force(vals[S.a], dps)
+    rec = verify(force_law, reference, sampler, (), n_points=verify_points,
+                 reference_name="the tan route's force law of the profile found (contacts.normal.tan_route)")
+    step = Step("periodic_map", f, (), (f"Eq. (9) of the kernel twin Q(S) = {Q}: {kd.method}; "
+                                        f"F(s) -> F(sin(pi x/L))",))
+    if not rec.passed:
+        return Derivation("profile", expr=kd.expr.xreplace({S.x: g.s(S.x)}), closed_form=False,
+                          step=fallback_step(f"the profile found, {f}, FAILED verification against the tan route "
+                                             f"({rec.min_digits:.1f} digits)"), verification=rec,
+                          variables=variables)
+    return Derivation("profile", expr=f, closed_form=True, step=step, verification=rec, variables=variables,
+                      notes=kd.notes)
 
 
 @timed
@@ -148,4 +204,4 @@ def _solve_for_a(Pexpr, load):
     return [sp.simplify(s) for s in sols]
 
 
-__all__ = ["profile_from_force", "derive_half_width"]
+__all__ = ["profile_from_force", "periodic_profile_from_force", "derive_half_width"]
