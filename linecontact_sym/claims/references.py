@@ -116,7 +116,7 @@ def _arb_integral(f, var, lo, hi, dps):
     (a finite enclosure also proves the integral converges); None otherwise,
     and the tanh-sinh route with its divergence test runs."""
     try:
-        lo_b, hi_b = sp.sympify(lo), sp.sympify(hi)
+        lo_b, hi_b = sp.sympify(lo, strict=True), sp.sympify(hi, strict=True)
         if not (lo_b.is_real and hi_b.is_real) or lo_b == hi_b:
             return None
         sign = 1

@@ -260,7 +260,7 @@ def compile_acb(expr, var):
     current python-flint precision, holomorphy signalled as ``acb.integral``
     expects (module docstring).  :class:`ArbUnsupported` for a function
     without an acb counterpart or a symbol other than ``var``."""
-    expr = sp.sympify(expr)
+    expr = sp.sympify(expr, strict=True)
     extra = expr.free_symbols - ({var} if var is not None else set())
     if extra:
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")

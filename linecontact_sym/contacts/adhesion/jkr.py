@@ -32,7 +32,7 @@ import sympy as sp
 import math
 
 from ...core import symbols as S
-from ...core.conversion import float_values, rational, to_mpf
+from ...core.conversion import float_values, number, rational, to_mpf
 from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
 from ...method.derivation import Derivation
@@ -94,12 +94,9 @@ _dC = sp.Dummy("dC", negative=True)
 
 
 def _exact(v):
-    """A number as an exact SymPy number (an mpf by its binary value)."""
-    if isinstance(v, mpmath.mpf):
-        sign, man, exp, _ = v._mpf_
-        r = sp.Integer(int(man)) * sp.Integer(2)**int(exp)
-        return -r if sign else r
-    return sp.sympify(v)
+    """A number as an exact SymPy number (an mpf by its binary value): the
+    package's one converter."""
+    return number(v)
 
 
 def compliance_slope(A, E, dps, L):
@@ -139,10 +136,10 @@ def phat_energy(A, gamma, E, dps, quadrature=True, geometry=ISOLATED, values=Non
             guess = mpmath.sqrt(4 * g / abs(dC))
             return mpmath.findroot(G, (guess * mpmath.mpf("0.5"), guess * 2), solver="anderson")
     if quadrature:
-        g = sp.sympify(gamma)
+        g = number(gamma)
         if g == 0:
             return mpmath.mpf(0)
-        L = sp.sympify(A) * sp.Integer(10)**(dps + 20)
+        L = number(A) * sp.Integer(10)**(dps + 20)
         slope = compliance_slope(A, E, dps + 5, L)
         return combine(sp.sqrt(-4 * g / _dC), _dC, slope, dps)
     with workdps(dps + 10):

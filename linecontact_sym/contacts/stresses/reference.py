@@ -31,6 +31,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
+from ...core.conversion import number
 from ...core.errors import DomainError
 from ...core.precision import workdps
 from ...numeric.reference import estimate, integrate
@@ -118,7 +119,7 @@ def _exact_sorted(values):
     """Distinct exact values, ascending (floats taken as their binary value)."""
     out = {}
     for v in values:
-        v = sp.Rational(v) if isinstance(v, float) else sp.nsimplify(v) if isinstance(v, sp.Float) else sp.sympify(v)
+        v = number(v)            # the package's one converter: a float or Float is its binary value
         key = mpmath.mpf(sp.N(v, 60)) if not v.is_Rational else mpmath.mpf(v.p) / v.q
         with workdps(60):
             key = +key
@@ -144,7 +145,7 @@ def flamant_enclosures(tractions, a, x, z, breaks=(), dps: int = 30, fallback=No
     >>> [v.method for v in r], [mpmath.nstr(v, 12) for v in r[:2]], abs(r[2]) < 1e-35   # tau_xz = 0 on the axis
     (['arb', 'arb', 'arb'], ['-0.12132034356', '-0.707106781187'], True)
     """
-    a, x, z = sp.sympify(a), sp.sympify(x), sp.sympify(z)
+    a, x, z = number(a), number(x), number(z)
     if not z > 0:
         raise DomainError(f"the Flamant enclosures are taken below the surface (z > 0), got z = {z}")
     ss = _exact_sorted([-a, a, *(b for b in breaks if -a < b < a), *([x] if -a < x < a else [])])

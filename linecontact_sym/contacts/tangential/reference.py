@@ -64,6 +64,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+from ...core.conversion import number
 from ...core.errors import DomainError, LineContactError
 from ...numeric.reference import integrate
 
@@ -207,7 +208,7 @@ def _exact_pieces(lo, hi, inner):
     """[lo, *inner in (lo, hi) ascending and distinct, hi] (exact SymPy numbers)."""
     keep = {}
     for v in inner:
-        v = sp.nsimplify(v) if isinstance(v, (float, sp.Float)) else sp.sympify(v)
+        v = number(v)            # the package's one converter: a float is its binary value
         if bool(lo < v) and bool(v < hi):
             keep.setdefault(sp.N(v, 50), v)
     return [lo, *(keep[k] for k in sorted(keep)), hi]
@@ -219,8 +220,8 @@ def _inside(c, a, breaks):
 
 
 def _checked(a, c, x=None):
-    a, c = sp.sympify(a), sp.sympify(c)
-    if not (bool(0 <= c) and bool(c <= a)) or (x is not None and not bool(abs(sp.sympify(x)) < c)):
+    a, c = number(a), number(c)
+    if not (bool(0 <= c) and bool(c <= a)) or (x is not None and not bool(abs(number(x)) < c)):
         raise DomainError(f"the inversion needs |x| < c <= a, got x = {x}, c = {c}, a = {a}")
     return a, c
 
@@ -239,7 +240,7 @@ def stick_traction_enclosure(p, a, c, x, mu, breaks=(), dps: int = 30, fallback=
     ('arb', True)
     """
     a, c = _checked(a, c, x)
-    d2 = c**2 - sp.sympify(x)**2
+    d2 = c**2 - number(x)**2
     f = 2 * mu / sp.pi * sp.sqrt(d2) * p(sp.sqrt(c**2 + _u**2)) / (d2 + _u**2)
     return integrate(f, _u, _exact_pieces(sp.S.Zero, sp.sqrt(a**2 - c**2), _inside(c, a, breaks)), dps,
                      fallback=fallback)
