@@ -14,6 +14,13 @@ and adhesionless gap g0(x; a)):
     P(a, c_D)  = P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2)                      (bounded pressure, K_I = 0)
     h0 = w/sigma_0 = g0(c_D; a) + (4 sigma_0/(pi E*)) (sqrt(c_D^2 - a^2) acosh(c_D/a) - c_D log(c_D/a))
 
+Where the engine leaves g0(x; a), P0(a) or p0(x; a) as an unevaluated
+Integral (R (cosh(x/R) - 1), the Gaussian bump, a user's profile), the
+numeric law (:class:`.maugis_law.MDLaw`) evaluates those defining integrals
+by quadrature inside the solve, at the digits asked (``MDState.closed`` says
+which parts were closed); the cohesive zone never leaves the profile's real
+domain (the exact cylinder: c_D < R, else a DomainError).
+
 JKR limit: sigma_0 -> oo gives c_D - a -> pi E* w/(4 sigma_0^2) and
 2 sigma_0 sqrt(c_D^2 - a^2) -> sqrt(2 pi a w E*), Popov's Eq. (31).
 

@@ -4,6 +4,14 @@ total derivative dP/da, the state (pressure, gap) and the load-control
 pull-off (global minimum of P(a) over every stationary point, every kink and
 the limit a -> 0+).
 
+Closed or not: the two conditions are lambdified where the engine found P0,
+g0 and p0 in closed form; otherwise P0 and dP0/da come from the normal
+contact's ForceLaw (closed with its quadrature fallback, or Eq. 10* by
+quadrature) and g0(c; a) with its partial derivatives from :class:`QuadGap`
+(the defining integral, by parts, in s = c sin(theta)), at the working
+precision of the solve plus the digits its cancellation costs.  The root
+c_D stays inside the profile's real domain (:func:`profile_end`).
+
 Uniqueness of c_D(a): the Dugdale part of the gap at c_D,
 (4 sigma_0/(pi E*)) (sqrt(c^2 - a^2) acosh(c/a) - c log(c/a)), has the
 c-derivative (4 sigma_0/(pi E*)) (c acosh(c/a)/sqrt(c^2 - a^2) - log(c/a)) > 0
