@@ -228,3 +228,29 @@ def test_model_choice_cli_new_profile(capsys):
     assert main(args + ["sigma_0=5", "--rtol", "0.01", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
     assert d["model"] == "JKR" and float(d["maugis_parameter"]) > 100
+
+
+# ---------------------------------------------------------------- the generic descent (normal/equilibria)
+def _synthetic(P, dP, P_zero, lo=mpmath.mpf(10)**-6):
+    """A ForceLaw with P(0+) = P_zero and a search range starting at lo (its landscape given)."""
+    from linecontact_sym.contacts.normal.equilibria import Landscape
+    from linecontact_sym.contacts.normal.force_law import ForceLaw
+    law = ForceLaw(P, dP, mode="quad")
+    law.P_zero = lambda: mpmath.mpf(P_zero)
+    law._landscape = Landscape(lo, mpmath.mpf(10), "search", (), "adaptive", (), True)
+    return law
+
+
+def test_generic_descent_infimum_and_tiny_minimum():
+    """The generic minimum follows dP/da down below its search range when P(0+) != 0 (every law
+    gets what Maugis-Dugdale needed): P = -1 + a^2 decreases to P(0+) = -1, an infimum at a = 0;
+    P = -1 + (a - 1e-13)^2 - 1e-26 has its minimum 1e-26 below P(0+), seven decades below the range."""
+    from linecontact_sym.contacts.normal.equilibria import minimum
+    po = minimum(_synthetic(lambda a: -1 + a * a, lambda a: 2 * a, -1), 20)
+    assert po.kind == "infimum" and po.half_width == 0 and po.force == -1
+    t = mpmath.mpf(10)**-13
+    law = _synthetic(lambda a: -1 + (a - t)**2 - t * t, lambda a: 2 * (a - t), -1)
+    po = minimum(law, 30)
+    assert po.kind == "stationary" and abs(po.half_width / t - 1) < 1e-10
+    with mpmath.workdps(40):
+        assert abs(po.force - (-1 - t * t)) < mpmath.mpf(10)**-38

@@ -120,7 +120,10 @@ class MaugisDugdale(CohesiveLaw):
                     return mpmath.mpf(0)
                 Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
                 return b.dP(A) + dPv - law._dP0(A)
-            return b.on_top(P, dP)
+            out = b.on_top(P, dP)
+            # P(0+) = -2 sigma_0 c0 is not 0: the generic minimum descends towards a -> 0+ (equilibria.descent)
+            out.P_zero = lambda: law.force_zero_width(mpmath.mp.dps)
+            return out
         return on_base(base, build)
 
 
