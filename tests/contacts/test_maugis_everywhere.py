@@ -254,3 +254,23 @@ def test_generic_descent_infimum_and_tiny_minimum():
     assert po.kind == "stationary" and abs(po.half_width / t - 1) < 1e-10
     with mpmath.workdps(40):
         assert abs(po.force - (-1 - t * t)) < mpmath.mpf(10)**-38
+
+
+@pytest.mark.slow
+def test_half_width_and_branches_from_the_layer():
+    """half_width(P) and branches of the MD contact come from the generic equilibria over its
+    ForceLaw; each root is checked by the contact's own state (P(a) = load, the sign of dP/da)."""
+    md = lcs.parabola().maugis_dugdale()
+    v = dict(E_star=1, R=1, gamma=1, sigma_0=sp.Rational(1, 2))
+    po = md.pull_off_at(15, **v)
+    load = po.force / 2
+    br = md.branches(load, 20, **v)
+    assert [s for _, s in br] == ["stable", "unstable"]
+    assert br[1][0] < po.half_width < br[0][0]
+    for a, s in br:
+        st = md.state(a, 20, **v)
+        assert abs(st.force - load) < 1e-18 * abs(load)
+        assert (st.dP_da > 0) == (s == "stable")
+    assert md.half_width(load, 20, **v) == tuple(a for a, _ in br)
+    with pytest.raises(lcs.core.errors.NoEquilibriumError):
+        md.half_width(2 * po.force, 20, **v)

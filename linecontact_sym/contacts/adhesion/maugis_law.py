@@ -462,7 +462,23 @@ class MDLaw:
             # upper end: double from c0 until P > 0 and rising
             top = c0
             for _ in range(200):
-                P, dP, _c = slope(top)
+                try:
+                    P, dP, _c = slope(top)
+                except DomainError:   # past the profile's end (or no zone inside it): the scan stops below
+                    if top == c0:
+                        raise
+                    lo_ok, hi_bad = top / 10, top
+                    for _ in range(40):       # the largest half-width with a state, to 1e-12
+                        mid = mpmath.sqrt(lo_ok * hi_bad)
+                        try:
+                            slope(mid)
+                            lo_ok = mid
+                        except DomainError:
+                            hi_bad = mid
+                    top = lo_ok
+                    notes.append(f"the states end at a = {mpmath.nstr(top, 8)} (the cohesive zone would reach "
+                                 f"past the end of the profile beyond)")
+                    break
                 if P > 0 and dP > 0:
                     break
                 top *= 10
