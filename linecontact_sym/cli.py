@@ -67,7 +67,7 @@ def _dps(text):
 
 
 def _budget(text):
-    """--budget: seconds > 0, or 'inf' / 'none' for no limit."""
+    """--budget: CPU seconds > 0, or 'inf' / 'none' for no limit."""
     if text.strip().lower() in ("none", "inf", "infinity"):
         return None
     try:
@@ -427,7 +427,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     def common(sp_, quiet=False):
         sp_.add_argument("--budget", type=_budget, default=DEFAULT_BUDGET, metavar="S",
-                         help=f"wall-clock seconds allowed to each symbolic derivation, rules, tidying and "
+                         help=f"CPU seconds allowed to each symbolic derivation, rules, tidying and "
                               f"verification together (default {DEFAULT_BUDGET:g}; 'inf' for no limit)")
         sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
         sp_.add_argument("--no-cache", dest="no_cache", action="store_true",

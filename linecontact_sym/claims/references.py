@@ -9,7 +9,10 @@ critical force of a pulled punch is derived by two physical routes
 (:func:`griffith_punch_force`); the pull-off load by a plain minimum search
 (:func:`numeric_minimum`).  :class:`Comparison` measures agreeing digits.
 
-The generic quadrature helpers come from :mod:`linecontact_sym.core.quadrature`.
+Integrals of printed formulas go to the one reference integrator first
+(:func:`linecontact_sym.numeric.reference.integrate`: an Arb enclosure);
+where Arb cannot enclose one, the tanh-sinh route runs, with the generic
+quadrature helpers of :mod:`linecontact_sym.core.quadrature`.
 """
 from __future__ import annotations
 
@@ -21,6 +24,7 @@ import sympy as sp
 from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
+from ..numeric.reference import ArbUnsupported, integrate
 
 #: working precision of the comparisons (digits)
 DPS = 45
@@ -78,6 +82,9 @@ def quad_integral(I: sp.Integral, dps: int = DPS):
     f = I.function
     if f.free_symbols - {var}:
         raise Undefined(f"the integrand has free symbols {sorted(map(str, f.free_symbols - {var}))}")
+    certified = _arb_integral(f, var, lo, hi, dps)
+    if certified is not None:
+        return certified
     with workdps(quad_dps(dps)):
         lo_v, hi_v = to_mpf(lo), to_mpf(hi)
         if lo_v == hi_v:
@@ -102,6 +109,27 @@ def quad_integral(I: sp.Integral, dps: int = DPS):
         if g.complex_at is not None:
             raise Undefined(f"the integrand of {I} is complex at {var} = {mpmath.nstr(g.complex_at, 8)}")
         return sign * v
+
+
+def _arb_integral(f, var, lo, hi, dps):
+    """The integral by the one reference integrator when Arb encloses it
+    (a finite enclosure also proves the integral converges); None otherwise,
+    and the tanh-sinh route with its divergence test runs."""
+    try:
+        lo_b, hi_b = sp.sympify(lo), sp.sympify(hi)
+        if not (lo_b.is_real and hi_b.is_real) or lo_b == hi_b:
+            return None
+        sign = 1
+        if (hi_b < lo_b) == sp.true:
+            lo_b, hi_b, sign = hi_b, lo_b, -1
+        with workdps(quad_dps(dps)):
+            pts = [lo_b] + relational_breakpoints(f, var, to_mpf(lo_b), to_mpf(hi_b)) + [hi_b]
+        r = integrate(f, var, pts, dps, fallback=lambda: mpmath.nan)
+    except (ArbUnsupported, TypeError, ValueError, ZeroDivisionError):
+        return None
+    if not r.certified:
+        return None
+    return r if sign == 1 else -r
 
 
 def num_eval(expr: sp.Expr, vals: dict, dps: int = DPS, what: str = "the printed formula", exc=Undefined):

@@ -1,15 +1,39 @@
-"""Run symbolic work under a wall-clock budget.
+"""Run symbolic work under a budget of CPU seconds.
 
-A budget is a number of seconds of wall-clock time, > 0; ``None`` or
-``math.inf`` means no limit (:func:`checked_budget`).  The budget of a
-derivation covers all of it: the rules, the tidying of the result and its
-verification (:mod:`linecontact_sym.method.derivation` keeps one deadline).
+A budget is a number of **CPU seconds** > 0: the processor time of the
+process doing the work, not wall-clock time, so a result does not depend on
+the machine's load (a closed form found on an idle server is found on a
+laptop running a video call).  ``None`` or ``math.inf`` means no limit
+(:func:`checked_budget`).  The budget of a derivation covers all of it: the
+rules, the tidying of the result and its verification
+(:mod:`linecontact_sym.method.derivation` keeps one :class:`Deadline`).
 
 SymPy computations cannot be interrupted from another thread, so a step that
-may run long is executed in a forked child process that is killed when its
-budget runs out.  Results come back pickled (SymPy objects pickle, Dummy
-symbols keep their identity).  On platforms without ``fork`` the work runs
-in-process and the budget is not enforced (documented limitation).
+may run long is executed in a forked child process (:func:`run_with_budget`).
+The child arms a CPU-time timer (``setitimer(ITIMER_PROF)``, which counts
+the user and system time of the child alone) whose signal, left at its
+default action, ends the child when its budget is spent: the kernel enforces
+it, even inside a long C call.  Results come back pickled (SymPy objects
+pickle, Dummy symbols keep their identity).
+
+The parent also keeps a **wall-clock guard**, only against a true hang (a
+child waiting on something that uses no CPU): :func:`wall_guard` seconds
+(10 x the CPU budget + 60 s).  When it fires the :class:`BudgetExceeded`
+says so (``wall_guard`` attribute True, "wall-clock guard" in its message),
+since such a result, unlike a spent CPU budget, may depend on the load.
+
+A :class:`Deadline` shared by several steps counts the CPU time of this
+process since it began (``time.process_time``: the in-process steps) plus
+that of every child process reaped since (``getrusage(RUSAGE_CHILDREN)``:
+the forked steps, with the children they reaped themselves).  Inside a
+forked child, a nested :func:`run_with_budget` gets at most what remains of
+the child's own budget, and the child's timer is re-armed after it.
+
+``$LINECONTACT_SYM_BUDGET`` (CPU seconds > 0) replaces the default budget
+of a derivation (:data:`DEFAULT_BUDGET`).
+
+On platforms without ``fork`` the work runs in-process and the budget is not
+enforced (documented limitation).
 """
 from __future__ import annotations
 
@@ -24,15 +48,24 @@ import traceback
 
 from .errors import BudgetError, BudgetExceeded
 
-#: Default time budget, in seconds, for the derivation of one quantity.
+try:
+    import resource as _resource
+except ImportError:   # no resource module (Windows): children's CPU time is not counted (no fork there either)
+    _resource = None
+
+#: Default budget, in CPU seconds, for the derivation of one quantity.
 DEFAULT_BUDGET = 20.0
 
 _HAS_FORK = "fork" in _mp.get_all_start_methods()
 
+#: the wall-clock guard against a hang: WALL_GUARD_FACTOR x the CPU budget + WALL_GUARD_EXTRA seconds
+WALL_GUARD_FACTOR = 10.0
+WALL_GUARD_EXTRA = 60.0
+
 
 def checked_budget(seconds):
     """A budget as given by a user: ``None`` or ``math.inf`` (no limit, returned
-    as None) or a real number of seconds > 0 (returned as float).  Anything
+    as None) or a real number of CPU seconds > 0 (returned as float).  Anything
     else (NaN, 0, negative, a string, a bool) raises :class:`BudgetError`.
 
     >>> checked_budget(5), checked_budget(None), checked_budget(float("inf"))
@@ -41,19 +74,19 @@ def checked_budget(seconds):
     if seconds is None:
         return None
     if isinstance(seconds, bool) or not isinstance(seconds, numbers.Real):
-        raise BudgetError(f"the budget must be a number of seconds > 0 (or None for no limit), got {seconds!r}")
+        raise BudgetError(f"the budget must be a number of CPU seconds > 0 (or None for no limit), got {seconds!r}")
     v = float(seconds)
     if math.isnan(v) or v <= 0:
-        raise BudgetError(f"the budget must be a number of seconds > 0 (or None for no limit), got {seconds!r}")
+        raise BudgetError(f"the budget must be a number of CPU seconds > 0 (or None for no limit), got {seconds!r}")
     return None if math.isinf(v) else v
 
 
 def _budget_from_environment(default: float) -> float:
-    """``$LINECONTACT_SYM_BUDGET`` (seconds > 0) replaces the default budget
-    of a derivation, for a machine known to be slow or loaded (a CI worker
-    beside other workers): a wall-clock budget that runs out turns a closed
-    form into an unevaluated integral.  A value that is not a number of
-    seconds > 0 raises :class:`BudgetError` naming the variable."""
+    """``$LINECONTACT_SYM_BUDGET`` (CPU seconds > 0) replaces the default
+    budget of a derivation, for a slow machine (or to allow a hard integral
+    more time); a machine's load no longer matters, the budget being CPU
+    time.  A value that is not a number of seconds > 0 raises
+    :class:`BudgetError` naming the variable."""
     text = os.environ.get("LINECONTACT_SYM_BUDGET", "").strip()
     if not text:
         return default
@@ -62,38 +95,88 @@ def _budget_from_environment(default: float) -> float:
     except ValueError:
         value = math.nan
     if not (value > 0) or math.isinf(value):
-        raise BudgetError(f"LINECONTACT_SYM_BUDGET must be a number of seconds > 0, got {text!r}")
+        raise BudgetError(f"LINECONTACT_SYM_BUDGET must be a number of CPU seconds > 0, got {text!r}")
     return value
 
 
 DEFAULT_BUDGET = _budget_from_environment(DEFAULT_BUDGET)
 
 
-class Deadline:
-    """One wall-clock deadline shared by the steps of a derivation:
-    ``left()`` is the time that remains (None: no limit; never negative)."""
+def children_cpu_time() -> float:
+    """CPU seconds (user + system) of the child processes of this process
+    reaped so far (with what they reaped themselves); 0 where unknown."""
+    if _resource is None:
+        return 0.0
+    ru = _resource.getrusage(_resource.RUSAGE_CHILDREN)
+    return ru.ru_utime + ru.ru_stime
 
-    def __init__(self, budget, start=None):
+
+def cpu_time() -> float:
+    """CPU seconds of this process and of its reaped children: the work
+    done, whichever process did it."""
+    return time.process_time() + children_cpu_time()
+
+
+def wall_guard(seconds) -> float:
+    """The wall-clock seconds after which a child with a CPU budget of
+    ``seconds`` is taken for hung and killed."""
+    return WALL_GUARD_FACTOR * float(seconds) + WALL_GUARD_EXTRA
+
+
+class Deadline:
+    """One budget of CPU seconds shared by the steps of a derivation:
+    ``used()`` the CPU time since it began (this process and the children
+    it reaped since), ``left()`` what remains (None: no limit; never
+    negative)."""
+
+    def __init__(self, budget):
         self.budget = checked_budget(budget)
-        start = time.monotonic() if start is None else start
-        self.at = None if self.budget is None else start + self.budget
+        self.start = cpu_time()
+
+    def used(self) -> float:
+        return cpu_time() - self.start
 
     def left(self):
-        return None if self.at is None else max(self.at - time.monotonic(), 0.0)
+        return None if self.budget is None else max(self.budget - self.used(), 0.0)
 
     def expired(self, margin: float = 0.0) -> bool:
-        return self.at is not None and self.left() <= margin
+        return self.budget is not None and self.left() <= margin
 
 
-def _child(conn, fn, args, kwargs):
+#: inside a forked child of run_with_budget: its own Deadline (nested calls get at most what remains)
+_IN_CHILD: dict = {"deadline": None}
+
+
+def _arm(seconds):
+    """Arm this process's CPU-time timer (ITIMER_PROF: user + system time of
+    the process); its signal, at its default action, ends the process."""
+    signal.signal(signal.SIGPROF, signal.SIG_DFL)
+    signal.setitimer(signal.ITIMER_PROF, max(float(seconds), 1e-3))
+
+
+def _disarm():
     try:
-        result = ("ok", fn(*args, **kwargs))
-    except BaseException as exc:  # sent back and re-raised in the parent
-        result = ("err", exc, traceback.format_exc())
+        signal.setitimer(signal.ITIMER_PROF, 0)
+    except (AttributeError, OSError, ValueError):
+        pass
+
+
+def _child(conn, fn, args, kwargs, seconds):
     try:
-        conn.send_bytes(pickle.dumps(result))
-    except Exception as exc:  # unpicklable result: report it as an error
-        conn.send_bytes(pickle.dumps(("err", RuntimeError(f"unpicklable result: {exc}"), "")))
+        _IN_CHILD["deadline"] = Deadline(seconds)
+        try:
+            _arm(seconds)
+        except (AttributeError, OSError, ValueError):   # no CPU timer here: only the wall-clock guard remains
+            pass
+        try:
+            result = ("ok", fn(*args, **kwargs))
+        except BaseException as exc:  # sent back and re-raised in the parent
+            result = ("err", exc, traceback.format_exc())
+        _disarm()                     # pickling and sending the result is not the work budgeted
+        try:
+            conn.send_bytes(pickle.dumps(result))
+        except Exception as exc:  # unpicklable result: report it as an error
+            conn.send_bytes(pickle.dumps(("err", RuntimeError(f"unpicklable result: {exc}"), "")))
     finally:
         conn.close()
         os._exit(0)
@@ -106,12 +189,12 @@ class _Forked:
     executor never changes a result (before: every rule failed there and the
     parabola's force law came back as an unevaluated integral)."""
 
-    def __init__(self, recv, send, fn, args, kwargs):
+    def __init__(self, recv, send, fn, args, kwargs, seconds):
         self.pid = os.fork()
         if self.pid == 0:        # the child: never returns
             try:
                 recv.close()
-                _child(send, fn, args, kwargs)
+                _child(send, fn, args, kwargs, seconds)
             finally:
                 os._exit(0)
         self._status = None
@@ -133,35 +216,73 @@ class _Forked:
         if self._status is None:
             self._status = os.waitpid(self.pid, 0)[1]
 
+    @property
+    def exitcode(self):
+        """As multiprocessing's: -N for a child ended by signal N."""
+        if self._status is None:
+            return None
+        return -os.WTERMSIG(self._status) if os.WIFSIGNALED(self._status) else os.WEXITSTATUS(self._status)
+
+
+def _exceeded(fn, seconds, *, guard=None):
+    name = getattr(fn, "__name__", fn)
+    if guard is None:
+        return BudgetExceeded(f"{name} exceeded its budget of {seconds:g} CPU s")
+    exc = BudgetExceeded(f"{name} did not finish within the wall-clock guard of {guard:g} s against a hang "
+                         f"(its CPU budget was {seconds:g} s): the wall-clock guard fired")
+    exc.wall_guard = True
+    return exc
+
 
 def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
-    """Call ``fn(*args, **kwargs)`` and return its result, or raise
-    :class:`BudgetExceeded` after ``seconds`` of wall-clock time.
+    """Call ``fn(*args, **kwargs)`` in a forked child and return its result,
+    or raise :class:`BudgetExceeded` once the child has used ``seconds`` of
+    CPU time (or, against a true hang, after :func:`wall_guard` seconds of
+    wall-clock time: the exception's ``wall_guard`` is then True).
 
-    Exceptions raised by ``fn`` are re-raised in the caller.
+    Inside another budgeted child, ``seconds`` is cut to what remains of
+    that child's budget.  Exceptions raised by ``fn`` are re-raised in the
+    caller.
     """
+    outer = _IN_CHILD["deadline"]
+    if outer is not None and outer.budget is not None:
+        left = max(outer.left(), 1e-3)
+        seconds = left if seconds is None or math.isinf(seconds) else min(float(seconds), left)
     if seconds is None or math.isinf(seconds) or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK"):
         return fn(*args, **kwargs)
+    seconds = max(float(seconds), 1e-3) if seconds == seconds else 1e-3
     ctx = _mp.get_context("fork")
     recv, send = ctx.Pipe(duplex=False)
     if _mp.current_process().daemon:   # a pool's or a Dask worker's process: multiprocessing refuses it
-        proc = _Forked(recv, send, fn, args, kwargs)   # children, a plain fork does the same work
+        proc = _Forked(recv, send, fn, args, kwargs, seconds)   # children, a plain fork does the same work
     else:
-        proc = ctx.Process(target=_child, args=(send, fn, args, kwargs), daemon=True)
+        proc = ctx.Process(target=_child, args=(send, fn, args, kwargs, seconds), daemon=True)
         proc.start()
     send.close()
+    payload = None
     try:
-        if not recv.poll(max(float(seconds), 0.0) if seconds == seconds else 0.0):
-            raise BudgetExceeded(f"{getattr(fn, '__name__', fn)} exceeded its budget of {seconds:g} s")
+        guard = wall_guard(seconds)
+        if not recv.poll(guard):
+            raise _exceeded(fn, seconds, guard=guard)
         try:
             payload = pickle.loads(recv.recv_bytes())
         except EOFError:
-            raise BudgetExceeded(f"{getattr(fn, '__name__', fn)}: worker died without a result")
+            payload = None
     finally:
         recv.close()
         if proc.is_alive():
             proc.kill()
         proc.join()
+        if outer is not None and outer.budget is not None:
+            try:                      # this child's own timer: what remains after the grandchild's work
+                _arm(outer.left())
+            except (AttributeError, OSError, ValueError):
+                pass
+    if payload is None:
+        if proc.exitcode in (-signal.SIGPROF, -getattr(signal, "SIGXCPU", signal.SIGPROF)):
+            raise _exceeded(fn, seconds)
+        raise BudgetExceeded(f"{getattr(fn, '__name__', fn)}: worker died without a result "
+                             f"(exit code {proc.exitcode})")
     if payload[0] == "ok":
         return payload[1]
     raise payload[1]

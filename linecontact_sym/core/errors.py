@@ -53,7 +53,11 @@ class VerificationError(LineContactError):
 
 
 class BudgetExceeded(LineContactError, TimeoutError):
-    """A symbolic step did not finish within its time budget."""
+    """A symbolic step did not finish within its budget of CPU seconds
+    (``wall_guard`` True: it was stopped by the wall-clock guard against a
+    hang instead, a verdict that may depend on the machine's load)."""
+
+    wall_guard = False
 
 
 def singular_point(quantity, values, exc) -> "DomainError":

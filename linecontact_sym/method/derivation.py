@@ -326,7 +326,7 @@ def tidy_conditions(conds) -> tuple:
 # ------------------------------------------------------------------ dispatch
 def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = None):
     """Try the rules of ``problem.transform`` in order, each under what
-    remains of ``budget`` seconds (or of ``deadline``, shared with the rest
+    remains of ``budget`` CPU seconds (or of ``deadline``, shared with the rest
     of a derivation); a rule whose ``applies()`` says no is skipped at once.
     Returns ``(step, attempts)``: the tidied :class:`~.rules.Step` of the
     first success (or None) and the list of ``(rule name, reason)`` of the
@@ -335,7 +335,7 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
     :class:`~linecontact_sym.core.errors.DivergentIntegralError` propagates."""
     attempts = []
     deadline = Deadline(budget) if deadline is None else deadline
-    shown = "no limit" if deadline.budget is None else f"{deadline.budget:g} s"
+    shown = "no limit" if deadline.budget is None else f"{deadline.budget:g} CPU s"
     for rule in (RULES[problem.transform] if rules is None else rules):
         why = rule.applies(problem)
         if why is not None:
@@ -349,8 +349,8 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
         except NotApplicable as exc:
             attempts.append((rule.name, f"not applicable: {exc}"))
             continue
-        except BudgetExceeded:
-            attempts.append((rule.name, f"no result within {shown}"))
+        except BudgetExceeded as exc:
+            attempts.append((rule.name, f"no result within {shown}" + (f" ({exc})" if exc.wall_guard else "")))
             continue
         except DivergentIntegralError:
             raise
@@ -381,8 +381,9 @@ def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.
     a result without closed form is derived again only under a larger
     budget than the one it ran out of.
 
-    ``budget`` (seconds > 0, or None: no limit) is the wall-clock limit of
-    the whole derivation: rules, tidying and verification.  A closed form
+    ``budget`` (CPU seconds > 0, or None: no limit; :mod:`~linecontact_sym.core.budget`)
+    is the limit of the whole derivation: rules, tidying and verification,
+    counted as the CPU time of this process and of the children doing them.  A closed form
     whose verification did not finish in what remained is not returned as
     verified: the unevaluated integral is, with a note."""
     with timing(new=False):
@@ -456,17 +457,24 @@ def _budget_limited(attempts) -> bool:
                for _, why in attempts)
 
 
+def _guard_fired(attempts) -> bool:
+    return any("wall-clock guard" in why for _, why in attempts)
+
+
 def _usable(rec, budget) -> bool:
     """A stored result answers a call unless it gave up for lack of time and
-    this call allows more, or it gave up in another process: how far a rule
-    gets in a wall-clock budget depends on the machine's load, so a result
-    cut short by the clock is not carried across processes (a new process
-    tries again; within one process nothing waits twice)."""
+    this call allows more.  Budgets are CPU seconds (:mod:`~linecontact_sym.core.budget`),
+    so how far a rule gets does not depend on the machine's load, and a
+    result cut short by its budget is carried across processes like any
+    other.  The one exception is a step stopped by the wall-clock guard
+    against a hang: that may depend on the load, so such a result is not
+    taken from the disk (a new process tries again; within one process
+    nothing waits twice)."""
     if rec["closed_form"]:
         return True
     timed_out = _budget_limited(rec["attempts"]) or (
         rec["verification"] is not None and not rec["verification"].points)
-    if timed_out and rec.get("source") == "disk":
+    if _guard_fired(rec["attempts"]) and rec.get("source") == "disk":
         return False
     more = budget is None if rec["budget"] is not None else False
     return not (timed_out and (more or (budget is not None and budget > rec["budget"])))
@@ -479,7 +487,7 @@ def _derive(quantity, problem, reference, sampler, fallback, deadline, check, po
     if step is not None and check:
         left = deadline.left()
         rec = verify(step.expr, reference, sampler, step.conditions, n_points=points,
-                     reference_name=f"mpmath quadrature of the defining integral ({quantity})",
+                     reference_name=f"the defining integral ({quantity})",
                      budget=max(left, 0.05) if left is not None else None)
         if not rec.passed and not rec.points:
             attempts.append((step.rule, f"closed form not verified: the verification did not finish in "

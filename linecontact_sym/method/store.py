@@ -292,7 +292,8 @@ def encode(obj):
     if isinstance(obj, Step):
         return {"Step": [encode(obj.rule), encode(obj.expr), encode(tuple(obj.conditions)), encode(tuple(obj.notes))]}
     if isinstance(obj, VerificationRecord):
-        return {"VerificationRecord": [encode(obj.points), encode(obj.digits), obj.dps, obj.reference, obj.required]}
+        return {"VerificationRecord": [encode(obj.points), encode(obj.digits), obj.dps, obj.reference, obj.required,
+                                       encode(obj.guaranteed), obj.outside]}
     raise TypeError(f"the derivation store does not keep {type(obj).__name__}")
 
 
@@ -316,11 +317,12 @@ def decode(data):
             rule, expr, conds, notes = (decode(v) for v in val)
             if isinstance(rule, str) and isinstance(conds, tuple) and isinstance(notes, tuple):
                 return Step(rule, expr, conds, notes)
-        if tag == "VerificationRecord" and isinstance(val, list) and len(val) == 5:
-            points, digits = decode(val[0]), decode(val[1])
+        if tag == "VerificationRecord" and isinstance(val, list) and len(val) == 7:
+            points, digits, guaranteed = decode(val[0]), decode(val[1]), decode(val[5])
             if isinstance(points, tuple) and isinstance(digits, tuple) and isinstance(val[2], int) \
-                    and isinstance(val[3], str) and isinstance(val[4], int):
-                return VerificationRecord(points, digits, val[2], val[3], val[4])
+                    and isinstance(val[3], str) and isinstance(val[4], int) and isinstance(guaranteed, tuple) \
+                    and all(isinstance(g, float) for g in guaranteed) and isinstance(val[6], int):
+                return VerificationRecord(points, digits, val[2], val[3], val[4], guaranteed, val[6])
     raise UntrustedRecord(f"not a record of this store: {str(data)[:80]}")
 
 

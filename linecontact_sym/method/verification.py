@@ -2,6 +2,13 @@
 high-precision evaluation of its defining integral (or another route that
 shares nothing with the derivation) at random admissible points.
 
+A reference returns a number (an estimate: mpmath quadrature) or an
+enclosure (an object with ``mid``, ``rad``, ``certified`` and ``digits``:
+:class:`linecontact_sym.numeric.reference.RefValue`, Arb ball quadrature).
+Against an enclosure the closed form is *certified*: its value must lie in
+the ball (a wrong coefficient 1e-35 off fails even though 35 digits agree),
+and the record keeps the digits each ball guarantees.
+
 A :class:`VerificationRecord` with no points never counts as verified.
 """
 from __future__ import annotations
@@ -36,6 +43,21 @@ class VerificationRecord:
     dps: int                 # working precision of the reference
     reference: str           # how the reference was computed
     required: int = REQUIRED_DIGITS
+    #: digits the reference guarantees at each point (Arb's enclosure; 0 where
+    #: the point's reference is an mpmath estimate); empty: no enclosures
+    guaranteed: tuple = ()
+    #: number of points whose enclosure does NOT contain the closed form's value
+    outside: int = 0
+
+    @property
+    def certified(self) -> bool:
+        """Every point checked against a rigorous enclosure that holds the value."""
+        return self.passed and bool(self.guaranteed) and len(self.guaranteed) == len(self.points) and \
+            min(self.guaranteed) > 0
+
+    @property
+    def certified_points(self) -> int:
+        return sum(1 for g in self.guaranteed if g > 0)
 
     @property
     def min_digits(self) -> float:
@@ -43,18 +65,34 @@ class VerificationRecord:
 
     @property
     def passed(self) -> bool:
-        return bool(self.digits) and self.min_digits >= self.required
+        return bool(self.digits) and self.min_digits >= self.required and not self.outside
+
+    def _how(self):
+        n, k = len(self.points), self.certified_points
+        if k == n:
+            return f"Arb ball quadrature of {self.reference}"
+        if k:
+            return f"{self.reference}: Arb ball quadrature at {k} of {n} points, mpmath quadrature at the others"
+        return f"mpmath quadrature of {self.reference}"
 
     def __str__(self):
         if not self.points:
             return (f"NOT verified: no admissible point could be checked against {self.reference} "
                     f"(a verification with 0 points never counts)")
+        if self.outside:
+            return (f"FAILED certification at {len(self.points)} random admissible points: at {self.outside} "
+                    f"of them the closed form lies outside the enclosure of the {self._how()} "
+                    f"({self.min_digits:.1f} digits agree)")
         if not self.passed:
             return (f"FAILED verification at {len(self.points)} random admissible points against "
-                    f"{self.reference} ({self.dps} digits): only {self.min_digits:.1f} digits agree "
+                    f"{self._how()} ({self.dps} digits): only {self.min_digits:.1f} digits agree "
                     f"(required {self.required})")
+        if self.certified:
+            return (f"certified at {len(self.points)} random admissible points by {self._how()} "
+                    f"({self.dps} digits): every enclosure contains the closed form's value, "
+                    f">= {min(self.guaranteed):.1f} digits guaranteed, >= {self.min_digits:.1f} digits agree")
         return (f"verified at {len(self.points)} random admissible points against "
-                f"{self.reference} ({self.dps} digits): >= {self.min_digits:.1f} digits agree")
+                f"{self._how()} ({self.dps} digits): >= {self.min_digits:.1f} digits agree")
 
 
 
@@ -117,6 +155,7 @@ def verify_many(exprs: dict, reference, sampler, conditions=(), n_points: int = 
 def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
     rng = random.Random(seed)
     points, digits = [], {k: [] for k in exprs}
+    guaranteed, outside = {k: [] for k in exprs}, {k: 0 for k in exprs}
     tries = 0
     while len(points) < n_points and tries < 20 * n_points:
         tries += 1
@@ -127,15 +166,27 @@ def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
             refs = reference(vals, dps)
         except (ZeroDivisionError, ValueError, DomainError):
             continue
-        if any(not mpmath.isfinite(r) or isinstance(r, mpmath.mpc) for r in refs.values()):
+        mids = {k: getattr(r, "mid", r) for k, r in refs.items()}
+        if any(not mpmath.isfinite(r) or isinstance(r, mpmath.mpc) for r in mids.values()):
             continue
         points.append(vals)
         fvals = float_values(vals, dps + 30)
         for k, expr in exprs.items():
-            with workdps(dps):
+            with workdps(dps + 10):
                 try:
                     val = real_mpf(sp.N(expr.xreplace(fvals), dps + 10))
                 except (DomainError, TypeError, ValueError):
                     val = mpmath.mpf("nan")
-                digits[k].append(digits_agreeing(val, refs[k], dps))
-    return {k: VerificationRecord(tuple(points), tuple(digits[k]), dps, name(k)) for k in exprs}
+            with workdps(dps):
+                digits[k].append(digits_agreeing(val, mids[k], dps))
+            ref = refs[k]
+            if getattr(ref, "certified", False):
+                guaranteed[k].append(ref.digits)
+                # the closed form's own value is good to dps + 10 digits (sp.N)
+                slack = abs(val) * mpmath.mpf(10) ** -(dps + 5) if mpmath.isfinite(val) else 0
+                if not mpmath.isfinite(val) or not ref.contains(val, slack):
+                    outside[k] += 1
+            else:
+                guaranteed[k].append(0.0)
+    return {k: VerificationRecord(tuple(points), tuple(digits[k]), dps, name(k), REQUIRED_DIGITS,
+                                  tuple(guaranteed[k]), outside[k]) for k in exprs}

@@ -35,12 +35,12 @@ import math
 
 import mpmath
 import numpy as np
-import scipy.special as sc
 import sympy as sp
 
 from ..core import symbols as S
 from ..core.conversion import point_value, to_mpf
 from ..core.errors import DomainError, LineContactError, singular_point
+from ..core.lazy import lazy_module
 from ..core.printing import lambdify
 from ..parsing import to_sympy
 from .cache import IdentityCache
@@ -52,10 +52,13 @@ from .stable_elliptic import EllipticPiToCarlson
 _TO_CARLSON = EllipticPiToCarlson()
 from ..core.precision import workdps
 
-_SCIPY_FUNCS = {
-    "_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1,
-    "_hyp1f1": sc.hyp1f1, "_hyp0f1": sc.hyp0f1, "_struve": sc.struve,
-}
+sc = lazy_module("scipy.special")     # loaded when a float64 function is first built
+
+
+def _scipy_funcs() -> dict:
+    """The special functions of the NumPy export, by their printed names."""
+    return {"_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1,
+            "_hyp1f1": sc.hyp1f1, "_hyp0f1": sc.hyp0f1, "_struve": sc.struve}
 
 
 def mp_hyper_vec(*args):
@@ -144,7 +147,7 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
             quads[name] = q
             return sp.Function(name)(*q.params)
         expr = expr.replace(lambda e: isinstance(e, sp.Integral), to_quad)
-    mods = [dict(_SCIPY_FUNCS, _mphyper=mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
+    mods = [dict(_scipy_funcs(), _mphyper=mp_hyper_vec, **NUMPY_FUNCS, **NUMPY_LOGIC, **quads), "scipy", "numpy"]
     f = lambdify(args, to_scipy_names(fold_constants(expr)), modules=mods, cse=True)
     patches = []
     for i, sym in enumerate(args):

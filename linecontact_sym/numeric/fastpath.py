@@ -26,10 +26,12 @@ from __future__ import annotations
 
 import math
 
+import functools
+
 import numpy as np
-import scipy.special as sc
 import sympy as sp
 
+from ..core.lazy import lazy_module
 from ..core.printing import lambdify
 from .cache import IdentityCache
 from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, cancellation_probe,
@@ -41,16 +43,23 @@ __all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "STEP"]
 #: relative step of the central differences for kappa
 STEP = 1e-6
 
-_SCALAR_FUNCS = {
-    "_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1, "_hyp1f1": sc.hyp1f1,
-    "_hyp0f1": sc.hyp0f1, "_struve": sc.struve,
-    "carlson_rf": sc.elliprf, "carlson_rd": sc.elliprd, "carlson_rg": sc.elliprg, "carlson_rj": sc.elliprj,
-    "gamma_ratio": lambda u, v: float(np_gamma_ratio(u, v)),
-    "hyp2f1c": lambda *a: float(np_hyp2f1c(*a)),
-    "gamma": math.gamma, "loggamma": math.lgamma, "besseli": sc.iv, "besselj": sc.jv,
-    # pFq beyond SciPy's 2F1/1F1/0F1 (a sin(x) profile's force law): mpmath, as in the NumPy export
-    "_mphyper": lambda *a: float(mp_hyper_vec(*a)),
-}
+sc = lazy_module("scipy.special")     # loaded when a scalar function is first built
+
+
+@functools.cache
+def _scalar_funcs() -> dict:
+    """The functions of the scalar float64 path, by their printed names."""
+    return {
+        "_ellipk": sc.ellipk, "_ellipe": sc.ellipe, "_hyp2f1": sc.hyp2f1, "_hyp1f1": sc.hyp1f1,
+        "_hyp0f1": sc.hyp0f1, "_struve": sc.struve,
+        "carlson_rf": sc.elliprf, "carlson_rd": sc.elliprd, "carlson_rg": sc.elliprg, "carlson_rj": sc.elliprj,
+        "gamma_ratio": lambda u, v: float(np_gamma_ratio(u, v)),
+        "hyp2f1c": lambda *a: float(np_hyp2f1c(*a)),
+        "gamma": math.gamma, "loggamma": math.lgamma, "besseli": sc.iv, "besselj": sc.jv,
+        # pFq beyond SciPy's 2F1/1F1/0F1 (a sin(x) profile's force law): mpmath, as in the NumPy export
+        "_mphyper": lambda *a: float(mp_hyper_vec(*a)),
+    }
+
 
 _CACHE = IdentityCache()
 _FAIL = (ValueError, ZeroDivisionError, OverflowError, TypeError)
@@ -76,11 +85,11 @@ class ScalarKit:
         if expr.has(sp.Integral):
             return
         try:
-            self.f = lambdify(syms, to_scipy_names(fold_constants(expr)), modules=[_SCALAR_FUNCS, "math"])
+            self.f = lambdify(syms, to_scipy_names(fold_constants(expr)), modules=[_scalar_funcs(), "math"])
             pairs = cancellation_sums(d)
             if pairs:
                 tup = to_scipy_names(fold_constants(sp.Tuple(*[q for p in pairs for q in p])))
-                self.probe = lambdify(syms, tup, modules=[_SCALAR_FUNCS, "math"], cse=True)
+                self.probe = lambdify(syms, tup, modules=[_scalar_funcs(), "math"], cse=True)
         except Exception:          # a function the math module does not have
             self.f = self.probe = None
 

@@ -48,10 +48,12 @@ import math
 
 import mpmath
 import numpy as np
-import scipy.special as sc
 import sympy as sp
 from ..core.conversion import to_mpf
+from ..core.lazy import lazy_module
 from ..core.precision import workdps
+
+sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "np_rf", "np_rd", "np_rg",
            "np_rj", "np_gamma_ratio", "np_hyp2f1c", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]

@@ -195,7 +195,7 @@ def test_numeric_search_stops_at_its_budget():
     c = lcs.LineContact(sp.Piecewise((0, x < b), (R - sp.sqrt(R**2 - (x - b)**2), True)),
                         params={R: (2.0, 4.0), b: (0.2, 0.8)}, budget=2)
     ad = c.adhesive()
-    with pytest.raises(BudgetExceeded, match="budget of 1 s"):
+    with pytest.raises(BudgetExceeded, match="budget of 1 CPU s"):
         ad.pull_off_at(budget=1, E_star=1, R=3, b=sp.Rational(1, 2), gamma=sp.Rational(1, 100))
 
 

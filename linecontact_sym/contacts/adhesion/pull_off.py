@@ -271,8 +271,9 @@ def numeric_derivations(ad, P, notes):
                "B: dense grid + golden section on the quadrature force law)"
         try:
             pts, digs = run_with_budget(work, seconds=VERIFY_BUDGET)
-        except BudgetExceeded:
-            pts, digs, name = [], [], name + f" (did not finish in {VERIFY_BUDGET:g} s)"
+        except BudgetExceeded as exc:
+            pts, digs, name = [], [], name + (f" (did not finish: {exc})" if exc.wall_guard else
+                                              f" (did not finish in {VERIFY_BUDGET:g} CPU s)")
         rec = VerificationRecord(tuple(pts), tuple(digs), VERIFY_DPS, name)
         ad._require(rec, "pull_off_force")
     stat = statement(P, "stationary")

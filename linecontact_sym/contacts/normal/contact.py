@@ -24,6 +24,7 @@ from . import admissibility
 from ..base import Contact, Quantity
 from .equilibria import SEARCH_BUDGET, half_width_at, searching_until
 from .force_law import ForceLaw
+from . import reference as R
 from .inverse import derive_half_width
 from .cases import derive_by_case
 from ..sampling import point_sampler
@@ -43,7 +44,8 @@ class LineContact(Contact):
         Declared parameters (positive symbols are declared implicitly); a dict
         gives each a (low, high) range for the random verification points.
     budget : float
-        Seconds allowed to the symbolic derivation of each quantity.
+        CPU seconds allowed to the symbolic derivation of each quantity
+        (:mod:`~linecontact_sym.core.budget`: rules, tidying and verification).
     verify : bool
         Check every closed form against mpmath quadrature (default True).
 
@@ -192,7 +194,7 @@ class LineContact(Contact):
         else:
             note = "f'(0+) = 0: the paper's printed Eq. (10) and Eq. (10*) agree"
         prof = self.profile
-        return self._derive("force", Problem("force", prof), lambda vals, dps: T.force_quad(prof, vals, dps),
+        return self._derive("force", Problem("force", prof), lambda vals, dps: R.force_reference(prof, vals, dps),
                             T.force_integral(prof), "any", (note,))
 
     def _dP(self, vals, dps):
@@ -202,13 +204,21 @@ class LineContact(Contact):
             law = ForceLaw.from_contact(self, {k: v for k, v in vals.items() if k not in (S.a, S.x)})
             return law.dP, law.breaks()
 
+    def _breaks(self, vals):
+        """The profile's break points at the parameters of ``vals`` (exact)."""
+        pv = {k: v for k, v in vals.items() if k not in (S.a, S.x)}
+        return [b for b in (bp.xreplace(pv) for bp in self.profile.breakpoints) if b.is_number and b > 0]
+
     def _derive_pressure(self) -> Derivation:
         fd = self.derivation("force")
 
-        def reference(vals, dps):
+        def quad(vals, dps):
             dP, breaks = self._dP(vals, dps)
             with workdps(dps + 10):
                 return T.pressure_quad(dP, breaks, vals, dps)
+
+        def reference(vals, dps):
+            return R.pressure_reference(fd.expr, self._breaks(vals), vals, dps, lambda: quad(vals, dps))
         fallback = T.pressure_integral(fd.expr)
         if not fd.closed_form:
             notes = ()
@@ -223,11 +233,17 @@ class LineContact(Contact):
     def _derive_gap(self) -> Derivation:
         fd = self.derivation("force")
 
-        def reference(vals, dps):
+        def quad(vals, dps):
             dP, breaks = self._dP(vals, dps)
             with workdps(dps + 10):
                 f = self.profile.mp_callable({k: v for k, v in vals.items() if k not in (S.a, S.x)})
                 return T.gap_quad(f, dP, breaks, vals, dps)
+
+        def reference(vals, dps):
+            if not fd.closed_form:
+                return quad(vals, dps)
+            return R.gap_reference(self.profile.expr, fd.expr, self._breaks(vals), vals, dps,
+                                   lambda: quad(vals, dps))
         fallback = T.gap_integral(self.profile.expr, fd.expr)
         if not fd.closed_form:
             return Derivation("gap", expr=fallback, closed_form=False,

@@ -93,7 +93,7 @@ _DEADLINE = contextvars.ContextVar("linecontact_sym_search_deadline", default=No
 @contextlib.contextmanager
 def searching_until(budget):
     """Run the numeric searches of this module (scans, subdivisions, roots)
-    under a wall-clock ``budget`` (seconds, None: no limit): they check it
+    under a ``budget`` of CPU seconds (None: no limit; :class:`~linecontact_sym.core.budget.Deadline`): they check it
     between evaluations and raise :class:`BudgetExceeded` when it is spent.
     In-process and cheap (no fork): a search is a loop of mpmath or ball
     evaluations, each short, so the check between them is a deadline."""
@@ -107,7 +107,7 @@ def searching_until(budget):
 def _check_deadline(what):
     d = _DEADLINE.get()
     if d is not None and d.expired():
-        raise BudgetExceeded(f"{what} did not finish within its budget of {d.budget:g} s")
+        raise BudgetExceeded(f"{what} did not finish within its budget of {d.budget:g} CPU s")
 
 
 @dataclass(frozen=True)

@@ -34,9 +34,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize
 
 from ...core.errors import LineContactError
+from ...core.lazy import lazy_module
+
+optimize = lazy_module("scipy.optimize")     # loaded at the first search
 
 #: the grid of the coarse search, in units of a: x in [-X_SPAN, X_SPAN], z in (0, Z_SPAN]
 X_SPAN, Z_SPAN = 2.0, 2.0

@@ -52,12 +52,10 @@ wedge (P' constant: G = E* tan(theta) asin(a/zeta)).
 """
 from __future__ import annotations
 
-import time
-
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.budget import run_with_budget
+from ...core.budget import Deadline, run_with_budget
 from ...core.errors import BudgetExceeded, DivergentIntegralError
 from ...method.derivation import tidy
 from ...method.hyperseries import NotDecomposable, beta_kernel_sum, decompose
@@ -174,18 +172,18 @@ def density_breakpoints(density) -> tuple:
 
 def cauchy_transform(density, budget: float):
     """G(zeta) of (*) for the punch density P'(a) (an expression in a): the
-    rules of :data:`CAUCHY_RULES` in order under ``budget`` seconds, the
+    rules of :data:`CAUCHY_RULES` in order under ``budget`` CPU seconds, the
     result tidied (hyperexpand, simplify).  Returns ``(step or None,
     attempts)`` like :func:`linecontact_sym.method.derivation.integrate`."""
     attempts = []
-    deadline = time.monotonic() + budget
+    deadline = Deadline(budget)
     for rule in CAUCHY_RULES:
         why = rule.applies(density)
         if why is not None:
             attempts.append((rule.name, f"not applicable: {why}"))
             continue
-        left = deadline - time.monotonic()
-        if left <= 0.05:
+        left = deadline.left()
+        if left is not None and left <= 0.05:
             attempts.append((rule.name, "budget used up"))
             break
         try:
@@ -193,14 +191,14 @@ def cauchy_transform(density, budget: float):
         except (NotApplicable, DivergentIntegralError) as exc:
             attempts.append((rule.name, f"not applicable: {exc}"))
             continue
-        except BudgetExceeded:
-            attempts.append((rule.name, f"no result within {budget:g} s"))
+        except BudgetExceeded as exc:
+            attempts.append((rule.name, f"no result within {budget:g} CPU s" + (f" ({exc})" if exc.wall_guard else "")))
             continue
         except Exception as exc:  # a SymPy failure inside a rule
             attempts.append((rule.name, f"{type(exc).__name__}: {exc}"))
             continue
         try:
-            expr = run_with_budget(tidy, step.expr, seconds=max(min(deadline - time.monotonic(), 15.0), 1.0))
+            expr = run_with_budget(tidy, step.expr, seconds=15.0 if deadline.budget is None else max(min(deadline.left(), 15.0), 1.0))
         except Exception:
             expr = sp.hyperexpand(step.expr)
         return Step(step.rule, expr, step.conditions, step.notes), attempts

@@ -1,0 +1,589 @@
+"""The one reference integrator: Arb ball quadrature (python-flint's
+``acb.integral``) of an integrand compiled from SymPy, with mpmath as the
+recorded fallback.
+
+Every independent reference of the package (the verification of a closed
+form against its defining integral, the claims' references, the
+Maugis-Dugdale, tangential and stress checks) integrates through
+:func:`integrate`.  Where Arb does it, the answer is a *rigorous enclosure*
+[mid +/- rad] of the exact integral (for the exact inputs given: a Rational
+is its exact value, a float its binary value), not an estimate; where it
+cannot, the caller's mpmath quadrature (tanh-sinh) runs instead and the
+result says so (``method == "mpmath"``).
+
+How the integrand reaches Arb (:func:`compile_acb`)
+    The SymPy expression, in the integration variable only (every other
+    symbol replaced by a number), becomes a function ``f(z, analytic)`` of a
+    complex ball z.  ``acb.integral`` bounds the error of its Gauss-Legendre
+    rules from the integrand on complex neighbourhoods of the path, so the
+    integrand must say where it is not holomorphic: with ``analytic`` set,
+    sqrt, log, non-integer powers and Abs use Arb's own ``analytic`` flag,
+    and every other function with a branch cut (acosh, asin, acos, atanh,
+    elliptic K and E, 2F1, Bessel functions of non-integer order, K and Y)
+    returns a non-finite ball when the argument's ball touches its cut.
+    A Piecewise is decided on the real part of the ball: a ball inside one
+    branch's region takes that branch (its analytic continuation), a ball
+    that straddles a switch is not holomorphic (non-finite when
+    ``analytic``; the union of the branches otherwise, which encloses the
+    value of the function there).  The break points a caller gives are hints
+    that make the work fast; a switch between them is still integrated
+    rigorously (by bisection), only slower.
+
+What Arb cannot do, and what happens then
+    A function without an acb counterpart, a singularity at an end point
+    that ball arithmetic cannot bound (a log singularity, a removable 0/0),
+    or an integral that needs more than :data:`EVAL_LIMIT` evaluations: the
+    fallback runs (``fallback()``, an mpmath quadrature of the caller's, or,
+    without one, ``mpmath.quad`` of the lambdified integrand over the same
+    pieces) and the result carries ``method="mpmath"`` and the reason.
+
+Precision: python-flint's and mpmath's global precisions are never changed
+(``flint.ctx.workprec``, :func:`~linecontact_sym.core.precision.workdps`).
+
+>>> import sympy as sp, mpmath
+>>> t = sp.Dummy("t")
+>>> r = integrate(sp.sqrt(1 - t**2), t, [0, 1], dps=40)     # pi/4: sqrt's branch point at t = 1
+>>> r.method, r.digits >= 40
+('arb', True)
+>>> with mpmath.workdps(50):
+...     print(r.contains(mpmath.pi / 4), mpmath.nstr(r.mid, 30))
+True 0.78539816339744830961566084582
+"""
+from __future__ import annotations
+
+import math
+
+import flint
+import mpmath
+import sympy as sp
+
+from ..core.conversion import number, to_mpf
+from ..core.errors import LineContactError
+from ..core.precision import workdps, workprec
+
+__all__ = ["RefValue", "integrate", "estimate", "combine", "quotient_bound", "compile_acb", "to_acb", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+
+#: the method names a :class:`RefValue` records
+ARB = "arb"
+MPMATH = "mpmath"
+
+#: work limit of one Arb integral (integrand evaluations): past it the
+#: fallback runs.  A smooth piece at 45 digits takes a few hundred.
+EVAL_LIMIT = 20000
+
+
+class ArbUnsupported(LineContactError):
+    """The integrand cannot be integrated in Arb (a function without an acb
+    counterpart, a symbol left in it): the fallback runs."""
+
+
+class RefValue(mpmath.mpf):
+    """A reference value: an mpmath ``mpf`` (its midpoint, to every bit Arb
+    or mpmath computed: arithmetic with it gives plain mpf, so a caller that
+    wants a number has one) that also carries ``rad``, ``method`` and
+    ``note``.
+
+    ``method == "arb"``: the exact value lies in [mid - rad, mid + rad]
+    (a rigorous enclosure).  ``method == "mpmath"``: the value is an
+    estimate (tanh-sinh), ``rad`` is 0 (no guarantee is claimed) and
+    ``note`` says why Arb was not used."""
+
+    def __new__(cls, mid, rad, method, note="", ball=None):
+        obj = mpmath.mpf.__new__(cls)
+        obj._mpf_ = mpmath.mpf(mid)._mpf_ if not isinstance(mid, mpmath.mpf) else mid._mpf_
+        obj.rad = rad if isinstance(rad, mpmath.mpf) else mpmath.mpf(rad)
+        obj.method = method
+        obj.note = note
+        obj.ball = ball          # the acb ball itself (Arb only), for :func:`combine`
+        return obj
+
+    def __reduce__(self):
+        return (_refvalue, (self._mpf_, self.rad._mpf_, self.method, self.note))
+
+    @property
+    def mid(self):
+        """The midpoint as a plain mpf."""
+        return _plain(self)
+
+    @property
+    def certified(self) -> bool:
+        return self.method == ARB
+
+    @property
+    def digits(self) -> float:
+        """Relative digits the enclosure guarantees (0 for an estimate)."""
+        if not self.certified:
+            return 0.0
+        if self.rad == 0:
+            return math.inf
+        if self.mid == 0:
+            return 0.0
+        return max(float(-mpmath.log10(self.rad / abs(self.mid))), 0.0)
+
+    def contains(self, value, slack=0) -> bool:
+        """Does the enclosure contain ``value`` (within ``slack``, the
+        uncertainty of ``value`` itself)?  For an estimate: True."""
+        if not self.certified:
+            return True
+        with workdps(max(mpmath.mp.dps, 60)):
+            return abs(mpmath.mpf(value) - self.mid) <= self.rad + abs(mpmath.mpf(slack))
+
+
+def _plain(v):
+    out = mpmath.mpf.__new__(mpmath.mpf)
+    out._mpf_ = v._mpf_
+    return out
+
+
+def _refvalue(mpf_, rad_, method, note):
+    return RefValue(_plain(_Raw(mpf_)), _plain(_Raw(rad_)), method, note)
+
+
+class _Raw:
+    def __init__(self, t):
+        self._mpf_ = t
+
+
+# ----------------------------------------------------------------- numbers as balls
+def to_acb(v):
+    """An acb ball containing the exact value of ``v`` (current python-flint
+    precision): int, Rational, float and mpf exactly, other SymPy numbers
+    (pi/2, asin(1/3)) through :func:`compile_acb`."""
+    if isinstance(v, flint.acb):
+        return v
+    if isinstance(v, flint.arb):
+        return flint.acb(v)
+    if isinstance(v, bool):
+        raise ArbUnsupported("boolean is not a number")
+    if isinstance(v, int):
+        return flint.acb(flint.fmpz(v))
+    if isinstance(v, float) and math.isfinite(v):
+        return flint.acb(v)
+    if isinstance(v, mpmath.mpf):
+        if not mpmath.isfinite(v):
+            raise ArbUnsupported(f"non-finite number {v}")
+        man, exp = mpmath.mpf(v).man_exp
+        return flint.acb(flint.arb(flint.fmpz(int(man))) * flint.arb(2) ** int(exp)) if man else flint.acb(0)
+    try:
+        q = number(v)
+    except LineContactError as exc:
+        raise ArbUnsupported(f"cannot make a ball of {v!r}: {exc}") from None
+    if q.is_Rational:
+        return flint.acb(flint.fmpq(int(q.p), int(q.q)))
+    if q.is_number and not q.free_symbols:
+        return compile_acb(q, None)(flint.acb(0), False)
+    raise ArbUnsupported(f"cannot make a ball of {v!r}")
+
+
+# ----------------------------------------------------------------- the compiler
+def _nan():
+    return flint.acb("nan")
+
+
+def _touches(z, lo=None, hi=None) -> bool:
+    """Does the ball ``z`` touch the real segment [lo, hi] (None: unbounded)?"""
+    if 0 not in z.imag:
+        return False
+    re_ = z.real
+    if lo is not None and re_ < lo:
+        return False
+    if hi is not None and re_ > hi:
+        return False
+    return True
+
+
+def _cut(fn, *segments):
+    """``fn(z)`` guarded by its branch cuts (real segments)."""
+    def g(z, an):
+        if an and any(_touches(z, lo, hi) for lo, hi in segments):
+            return _nan()
+        return fn(z)
+    return g
+
+
+_UNARY = {
+    sp.exp: lambda z, an: z.exp(),
+    sp.sin: lambda z, an: z.sin(),
+    sp.cos: lambda z, an: z.cos(),
+    sp.tan: lambda z, an: z.tan(),
+    sp.cot: lambda z, an: z.cot(),
+    sp.sec: lambda z, an: z.sec(),
+    sp.csc: lambda z, an: z.csc(),
+    sp.sinh: lambda z, an: z.sinh(),
+    sp.cosh: lambda z, an: z.cosh(),
+    sp.tanh: lambda z, an: z.tanh(),
+    sp.coth: lambda z, an: z.coth(),
+    sp.sech: lambda z, an: z.sech(),
+    sp.csch: lambda z, an: z.csch(),
+    sp.atan: _cut(lambda z: z.atan(), ),      # cuts on the imaginary axis only
+    sp.asinh: _cut(lambda z: z.asinh()),
+    sp.log: lambda z, an: z.log(analytic=an),
+    sp.Abs: lambda z, an: z.real_abs(analytic=an),
+    sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None)),
+    sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None)),
+    sp.atanh: _cut(lambda z: z.atanh(), (None, -1), (1, None)),
+    sp.acosh: _cut(lambda z: z.acosh(), (None, 1)),
+    sp.gamma: lambda z, an: z.gamma(),
+    sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0)),
+    sp.elliptic_k: _cut(lambda m: flint.acb.elliptic_k(m), (1, None)),
+    sp.erf: lambda z, an: z.erf(),
+    sp.erfc: lambda z, an: z.erfc(),
+    sp.sign: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_sgn(),
+    sp.Heaviside: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_heaviside(),
+}
+
+# atan has branch points at +-i, off the real line: a ball near the real
+# segment never reaches them unless it is huge
+_UNARY[sp.atan] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.atan()
+_UNARY[sp.asinh] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.asinh()
+
+
+def _relation(rel):
+    if isinstance(rel, sp.StrictLessThan):
+        return lambda l, r: (True if l < r else (False if l >= r else None))
+    if isinstance(rel, sp.LessThan):
+        return lambda l, r: (True if l <= r else (False if l > r else None))
+    if isinstance(rel, sp.StrictGreaterThan):
+        return lambda l, r: (True if l > r else (False if l <= r else None))
+    if isinstance(rel, sp.GreaterThan):
+        return lambda l, r: (True if l >= r else (False if l < r else None))
+    if isinstance(rel, sp.Eq):
+        return lambda l, r: (True if l == r else (False if l != r else None))
+    if isinstance(rel, sp.Ne):
+        return lambda l, r: (True if l != r else (False if l == r else None))
+    raise ArbUnsupported(f"no ball test for the relation {rel}")
+
+
+def compile_acb(expr, var):
+    """``f(z, analytic) -> acb``: ``expr`` (SymPy, in the one symbol ``var``;
+    ``var=None`` for a number) evaluated on the complex ball ``z`` at the
+    current python-flint precision, holomorphy signalled as ``acb.integral``
+    expects (module docstring).  :class:`ArbUnsupported` for a function
+    without an acb counterpart or a symbol other than ``var``."""
+    expr = sp.sympify(expr)
+    extra = expr.free_symbols - ({var} if var is not None else set())
+    if extra:
+        raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
+    acb, arb = flint.acb, flint.arb
+
+    def const(c):
+        return lambda z, an: c
+
+    def build(e):
+        if var is not None and e == var:
+            return lambda z, an: z
+        if e.is_Integer:
+            c = int(e)
+            return lambda z, an: acb(flint.fmpz(c))
+        if e.is_Rational:
+            p_, q_ = int(e.p), int(e.q)
+            return lambda z, an: acb(flint.fmpq(p_, q_))
+        if e.is_Float:
+            m = mpmath.mpf(e._mpf_)
+            return lambda z, an: to_acb(m)
+        if e is sp.pi:
+            return lambda z, an: acb(arb.pi())
+        if e is sp.E:
+            return lambda z, an: acb(arb.const_e())
+        if e is sp.EulerGamma:
+            return lambda z, an: acb(arb.const_euler())
+        if e is sp.I:
+            return lambda z, an: acb(0, 1)
+        if e.is_Add or e.is_Mul:
+            fs = [build(t) for t in e.args]
+            if e.is_Add:
+                def add(z, an):
+                    s_ = fs[0](z, an)
+                    for f in fs[1:]:
+                        s_ = s_ + f(z, an)
+                    return s_
+                return add
+
+            def mul(z, an):
+                p_ = fs[0](z, an)
+                for f in fs[1:]:
+                    p_ = p_ * f(z, an)
+                return p_
+            return mul
+        if e.is_Pow:
+            fb = build(e.base)
+            ex = e.exp
+            if ex.is_Integer:
+                k = int(ex)
+                return lambda z, an: fb(z, an) ** k if k >= 0 else 1 / fb(z, an) ** (-k)
+            if ex == sp.S.Half:
+                return lambda z, an: fb(z, an).sqrt(analytic=an)
+            if ex == -sp.S.Half:
+                return lambda z, an: fb(z, an).rsqrt(analytic=an)
+            fe = build(ex)
+            positive = ex.is_number and ex.is_positive
+
+            def power(z, an):
+                b, y = fb(z, an), fe(z, an)
+                if not an and positive and 0 in b:
+                    # a ball around the branch point 0 of b**y, y > 0: |b**y| <= |b|**y there
+                    # (a crude bound of the whole piece, which acb's pow leaves as nan)
+                    m = b.abs_upper() ** y.real
+                    return acb(arb(0, m), arb(0, m))
+                return b.pow(y, analytic=an)
+            return power
+        if isinstance(e, sp.Piecewise):
+            return _piecewise(e, build)
+        if isinstance(e, (sp.Min, sp.Max)):
+            return build(e.rewrite(sp.Piecewise))
+        if isinstance(e, sp.elliptic_e) and len(e.args) == 1:
+            return _cut_build(build(e.args[0]), lambda m: acb.elliptic_e(m), (1, None))
+        if isinstance(e, sp.elliptic_pi) and len(e.args) == 2:
+            fn, fm = build(e.args[0]), build(e.args[1])
+
+            def epi(z, an):
+                n_, m_ = fn(z, an), fm(z, an)
+                if an and (_touches(n_, 1, None) or _touches(m_, 1, None)):
+                    return _nan()
+                return acb.elliptic_pi(n_, m_)
+            return epi
+        if isinstance(e, sp.hyper) and len(e.ap) == 2 and len(e.bq) == 1:
+            fa, fb_, fc, fz = build(e.ap[0]), build(e.ap[1]), build(e.bq[0]), build(e.argument)
+
+            def h2(z, an):
+                w = fz(z, an)
+                if an and _touches(w, 1, None):
+                    return _nan()
+                return w.hypgeom_2f1(fa(z, an), fb_(z, an), fc(z, an))
+            return h2
+        if isinstance(e, (sp.besselj, sp.besseli, sp.besselk, sp.bessely)):
+            order = e.args[0]
+            fo, fz = build(order), build(e.args[1])
+            meth = {sp.besselj: "bessel_j", sp.besseli: "bessel_i", sp.besselk: "bessel_k",
+                    sp.bessely: "bessel_y"}[type(e)]
+            entire = isinstance(e, (sp.besselj, sp.besseli)) and order.is_integer is True
+
+            def bes(z, an):
+                w = fz(z, an)
+                if an and not entire and _touches(w, None, 0):
+                    return _nan()
+                return getattr(w, meth)(fo(z, an))
+            return bes
+        if type(e) in _UNARY and len(e.args) == 1:
+            fx = build(e.args[0])
+            op = _UNARY[type(e)]
+            return lambda z, an: op(fx(z, an), an)
+        if isinstance(e, sp.Integral):
+            raise ArbUnsupported("an unevaluated integral inside the integrand")
+        raise ArbUnsupported(f"no acb counterpart for {type(e).__name__}: {e}")
+
+    return build(expr)
+
+
+def _cut_build(fx, fn, *segments):
+    def g(z, an):
+        w = fx(z, an)
+        if an and any(_touches(w, lo, hi) for lo, hi in segments):
+            return _nan()
+        return fn(w)
+    return g
+
+
+def _piecewise(e, build):
+    """A Piecewise on balls: a branch whose condition holds on the whole ball
+    (real part) is taken; a ball where a condition is undecided is not
+    holomorphic (non-finite when ``analytic``; otherwise the union of the
+    branches that may apply)."""
+    branches = []
+    for ex_, cond in e.args:
+        branches.append((build(ex_), None if cond == sp.true else _condition(cond, build)))
+
+    def pw(z, an):
+        zr = flint.acb(z.real)
+        acc = None
+        for fb_, fc in branches:
+            dec = True if fc is None else fc(zr)
+            if dec is False:
+                continue
+            if dec is None and an:
+                return _nan()
+            val = fb_(z, an)
+            acc = val if acc is None else acc.union(val)
+            if dec is True:
+                return acc
+        return acc if acc is not None else _nan()
+    return pw
+
+
+def _condition(c, build):
+    if c == sp.true:
+        return lambda z: True
+    if c == sp.false:
+        return lambda z: False
+    if isinstance(c, (sp.And, sp.Or)):
+        parts = [_condition(t, build) for t in c.args]
+        if isinstance(c, sp.And):
+            def f_and(z):
+                res = [p(z) for p in parts]
+                return False if False in res else (True if all(r is True for r in res) else None)
+            return f_and
+
+        def f_or(z):
+            res = [p(z) for p in parts]
+            return True if True in res else (False if all(r is False for r in res) else None)
+        return f_or
+    if isinstance(c, sp.Not):
+        inner = _condition(c.args[0], build)
+        return lambda z: (None if inner(z) is None else not inner(z))
+    if isinstance(c, sp.core.relational.Relational):
+        fl, fr, test = build(c.lhs), build(c.rhs), _relation(c)
+
+        def rel(z):
+            lv, rv = fl(z, False), fr(z, False)
+            if 0 not in lv.imag or 0 not in rv.imag:
+                return None
+            return test(lv.real, rv.real)
+        return rel
+    raise ArbUnsupported(f"no ball test for the condition {c}")
+
+
+# ----------------------------------------------------------------- integration
+def _bits(dps: int) -> int:
+    return int(math.ceil(dps * math.log2(10)))
+
+
+def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: int = EVAL_LIMIT,
+              crude=None) -> RefValue:
+    """int over [points[0], points[-1]] of ``integrand`` d``var``, split at
+    every point given: a :class:`RefValue`.
+
+    ``integrand``: a SymPy expression in ``var`` alone (all parameters
+    already replaced by numbers, exact ones preferably);
+    ``points``: the end points and break points, ascending (SymPy numbers,
+    ints, Rationals, mpf); ``dps``: the relative digits asked of the
+    enclosure (of the sum; each piece is asked a little more);
+    ``fallback``: a callable returning the mpmath estimate (mpf) when Arb
+    cannot do it (default: ``mpmath.quad`` of the lambdified integrand over
+    the same pieces, at ``dps`` + 10 digits).
+
+    The result is certified (``method == "arb"``) when every piece's ball
+    is finite and the sum's ball is accurate to ``dps`` digits (or its
+    absolute radius is below 10**-dps for a value that is 0)."""
+    try:
+        ball = _arb_integral(integrand, var, points, dps, eval_limit, crude)
+        reason = None
+    except ArbUnsupported as exc:
+        ball, reason = None, str(exc)
+    if ball is not None:
+        with flint.ctx.workprec(_bits(dps) + 64):
+            mid, rad = _mpf_of(ball.real.mid()), _mpf_of(ball.real.rad())
+        return RefValue(mid, rad, ARB, ball=ball)
+    if fallback is None:
+        def fallback():
+            return _mpmath_integral(integrand, var, points, dps)
+    return estimate(fallback, reason or "", dps)
+
+
+def quotient_bound(numerator, var, rest):
+    """``crude(z)`` for :func:`integrate`: a bound of numerator(t)/t * rest(t)
+    on a real ball z next to t = 0, where numerator(0) = 0 and the quotient
+    has a removable singularity (the gap's P(s)/s).  By the mean value
+    theorem numerator(t)/t = numerator'(xi), |xi| <= |z|, and by Cauchy's
+    estimate |numerator'(xi)| <= M/(rho - |xi|) with M = max |numerator| on
+    the disk |w| <= rho = 2|z| (evaluated on that disk with Arb's
+    holomorphy check: a numerator that is not holomorphic there gives no
+    bound).  The caller must know that numerator(0) = 0."""
+    fn, fr = compile_acb(numerator, var), compile_acb(rest, var)
+
+    def crude(z):
+        r = z.abs_upper()
+        if r == 0:
+            return _nan()
+        rho = 2 * r
+        disk = flint.acb(flint.arb(0, rho), flint.arb(0, rho))
+        M = fn(disk, True)
+        if not M.is_finite():
+            return _nan()
+        b = M.abs_upper() / (rho - r)
+        return flint.acb(flint.arb(0, b), flint.arb(0, b)) * fr(z, False)
+    return crude
+
+
+def estimate(fallback, reason: str, dps: int = 45) -> RefValue:
+    """The mpmath route, recorded: ``fallback()`` (an mpf) at ``dps`` + 10
+    digits as a :class:`RefValue` with ``method == "mpmath"`` and ``reason``."""
+    with workdps(dps + 10):
+        val = fallback()
+        val = val.mid if isinstance(val, RefValue) else +mpmath.mpf(val)
+    return RefValue(val, mpmath.mpf(0), MPMATH, reason)
+
+
+def combine(expr, sym, ref: RefValue, dps: int = 45) -> RefValue:
+    """``expr`` (SymPy, in the one symbol ``sym``; every other value exact)
+    at ``sym`` = the reference ``ref``: rigorous in Arb when ``ref`` is an
+    enclosure (the terms of a reference outside its integral: the gap's
+    f(x) - (2/(pi E*)) [P(a) acosh(x/a) + x J]), else in mpmath."""
+    if ref.certified and ref.ball is not None:
+        try:
+            with flint.ctx.workprec(_bits(dps) + 64):
+                b = compile_acb(expr, sym)(ref.ball, False)
+                if b.is_finite() and 0 in b.imag:
+                    return RefValue(_mpf_of(b.real.mid()), _mpf_of(b.real.rad()), ARB, ref.note, ball=b)
+        except ArbUnsupported:
+            pass
+    from .exports import lambdify_mpmath
+    with workdps(dps + 10):
+        val = mpmath.re(lambdify_mpmath(expr, [sym])(ref.mid))
+    return RefValue(+val, mpmath.mpf(0), MPMATH, ref.note or "outer terms not in Arb")
+
+
+def _mpf_of(b):
+    """An arb with an exact midpoint (mid() or rad()) as an exact mpf."""
+    if b.is_zero():
+        return mpmath.mpf(0)
+    man, exp = b.man_exp()
+    man, exp = int(man), int(exp)
+    with workprec(max(man.bit_length(), 53) + 10):
+        return mpmath.ldexp(mpmath.mpf(man), exp)
+
+
+def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
+    f = compile_acb(integrand, var)
+    prec = _bits(dps) + 30
+    goal = _bits(dps)
+    if crude is not None:
+        main = f
+        prec = 2 * goal + 40
+
+        def f(z, an):
+            v = main(z, an)
+            if an or v.is_finite() or z.imag != 0:
+                return v
+            return crude(z)
+    with flint.ctx.workprec(prec):
+        edges = [to_acb(p) for p in points]
+        total = flint.acb(0)
+        tol = flint.arb(2) ** -(goal + 8)
+        for lo, hi in zip(edges[:-1], edges[1:]):
+            try:
+                piece = flint.acb.integral(f, lo, hi, rel_tol=tol, eval_limit=eval_limit)
+            except (ZeroDivisionError, ValueError, TypeError) as exc:
+                raise ArbUnsupported(f"Arb could not evaluate the integrand: {exc}") from None
+            if not piece.is_finite():
+                raise ArbUnsupported("Arb could not bound a piece (a singularity at an end point that "
+                                     "ball arithmetic cannot enclose, or the evaluation limit)")
+            total += piece
+        if 0 not in total.imag:
+            raise ArbUnsupported(f"the integral is not real: {total}")
+        re_ = total.real
+        if not re_.is_finite():
+            raise ArbUnsupported("non-finite enclosure")
+        if re_.rel_accuracy_bits() < goal and re_.rad() > flint.arb(2) ** -goal:
+            raise ArbUnsupported(f"enclosure too wide: {re_.rel_accuracy_bits()} of {goal} bits")
+        return total
+
+
+def _mpmath_integral(integrand, var, points, dps):
+    from .exports import lambdify_mpmath
+    g = lambdify_mpmath(integrand, [var])
+    pts = [to_mpf(p) for p in points]
+
+    def h(t):
+        v = g(t)
+        return mpmath.re(v) if isinstance(v, mpmath.mpc) and abs(mpmath.im(v)) < mpmath.eps * abs(v) else v
+    return mpmath.quad(h, pts)

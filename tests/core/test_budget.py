@@ -1,0 +1,152 @@
+"""Budgets are CPU seconds of the process doing the work (core/budget.py),
+never wall time: a busy child is stopped when its CPU time is spent, a child
+that waits is not (only the wall-clock guard against a hang stops it, and
+says so), a Deadline counts the CPU time of the children it ran, and a
+derivation gives the same closed forms on a quiet machine and under load."""
+import json
+import multiprocessing as mp
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+import linecontact_sym.core.budget as B
+from linecontact_sym.core.budget import Deadline, run_with_budget
+from linecontact_sym.core.errors import BudgetExceeded
+
+pytestmark = pytest.mark.skipif("fork" not in mp.get_all_start_methods(), reason="no fork on this platform")
+
+
+def _spin(cpu_seconds):
+    """Busy for ``cpu_seconds`` of this process's CPU time; returns it."""
+    t0 = time.process_time()
+    while time.process_time() - t0 < cpu_seconds:
+        pass
+    return cpu_seconds
+
+
+def test_a_busy_child_is_stopped_when_its_cpu_seconds_are_spent():
+    d = Deadline(None)
+    with pytest.raises(BudgetExceeded, match=r"budget of 0\.3 CPU s") as info:
+        run_with_budget(_spin, 30, seconds=0.3)
+    assert not info.value.wall_guard
+    assert 0.25 < d.used() < 2.0           # the child's CPU time is counted by the Deadline
+
+
+def test_a_child_within_its_cpu_budget_returns_and_is_charged():
+    d = Deadline(10)
+    assert run_with_budget(_spin, 0.2, seconds=5) == 0.2
+    assert 0.18 < d.used() < 1.5 and 8.5 < d.left() < 9.85
+    assert not d.expired()
+
+
+def test_waiting_costs_no_cpu_and_only_the_wall_clock_guard_stops_a_hang(monkeypatch):
+    """time.sleep uses no CPU: 0.4 s of it passes a CPU budget of 0.2 s; a
+    child that sleeps for ever is stopped by the wall-clock guard, which says so."""
+    assert run_with_budget(time.sleep, 0.4, seconds=0.2) is None
+    monkeypatch.setattr(B, "WALL_GUARD_FACTOR", 1.0)
+    monkeypatch.setattr(B, "WALL_GUARD_EXTRA", 0.5)
+    t0 = time.monotonic()
+    with pytest.raises(BudgetExceeded, match="wall-clock guard") as info:
+        run_with_budget(time.sleep, 60, seconds=0.2)
+    assert info.value.wall_guard and time.monotonic() - t0 < 5
+    assert B.wall_guard(20) == 20 + 0.5
+
+
+def test_default_guard_is_generous():
+    monkey = B.WALL_GUARD_FACTOR, B.WALL_GUARD_EXTRA
+    assert monkey == (10.0, 60.0) and B.wall_guard(20) == 260.0
+
+
+def _nested():
+    """Inside a budgeted child: a nested budget larger than what remains is cut to it."""
+    _spin(0.3)
+    try:
+        run_with_budget(_spin, 30, seconds=100)
+    except BudgetExceeded as exc:
+        return str(exc)
+    return "not stopped"
+
+
+def test_nested_budget_is_cut_to_what_remains_of_the_childs():
+    t0 = time.monotonic()
+    msg = run_with_budget(_nested, seconds=0.8)
+    assert "exceeded its budget" in msg and time.monotonic() - t0 < 20
+    budget = float(msg.split("budget of ")[1].split(" CPU")[0])
+    assert 0.2 < budget < 0.55
+
+
+def test_deadline_counts_in_process_cpu_too():
+    d = Deadline(0.2)
+    _spin(0.25)
+    assert d.expired() and d.left() == 0.0
+
+
+def test_environment_budget_is_cpu_seconds(monkeypatch):
+    monkeypatch.setenv("LINECONTACT_SYM_BUDGET", "7.5")
+    assert B._budget_from_environment(20.0) == 7.5
+    monkeypatch.setenv("LINECONTACT_SYM_BUDGET", "soon")
+    with pytest.raises(B.BudgetError, match="CPU seconds"):
+        B._budget_from_environment(20.0)
+
+
+# ------------------------------------------------------- quiet and loaded
+_DERIVE = """
+import json, sys, time
+import sympy as sp
+import linecontact_sym as lcs
+out = {}
+for spec in sys.argv[1:]:
+    name, q = spec.split(":")
+    t0 = time.monotonic()
+    d = getattr(lcs, name)().derivation(q)
+    out[spec] = {"closed": d.closed_form, "expr": sp.srepr(d.expr), "wall": time.monotonic() - t0,
+                 "verified": bool(d.verification is not None and d.verification.passed)}
+print(json.dumps(out))
+"""
+
+QUANTITIES = ("worn_cylinder:pressure", "rounded_punch:pressure")
+#: the budget of the test runs, CPU seconds: about twice what each pressure needs on its own
+#: (~4 CPU s here, the force law included), far less than the wall time it takes under load
+BUDGET = "8"
+
+
+def _derive_cold():
+    env = dict(os.environ, LINECONTACT_SYM_CACHE="off", LINECONTACT_SYM_BUDGET=BUDGET,
+               PYTHONPATH=str(Path(__file__).resolve().parents[2]) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env.pop("LINECONTACT_SYM_NO_FORK", None)
+    run = subprocess.run([sys.executable, "-c", _DERIVE, *QUANTITIES], env=env, capture_output=True, text=True,
+                         timeout=900)
+    assert run.returncode == 0, run.stderr[-2000:]
+    return json.loads(run.stdout.strip().splitlines()[-1])
+
+
+_LOOP = "import time\nt = time.monotonic() + {limit}\nwhile time.monotonic() < t:\n    pass\n"
+
+
+@pytest.mark.slow
+def test_same_closed_forms_quiet_and_under_cpu_load():
+    """Cold, in fresh processes: the worn cylinder's and the rounded punch's
+    pressures (a wall-clock budget of 25 s once turned both into unevaluated
+    integrals with three busy loops per core) with a budget of 8 CPU s,
+    quiet and with three busy loops per core (each ends by itself after
+    10 minutes at most, and is killed when the test ends)."""
+    quiet = _derive_cold()
+    loops = [subprocess.Popen([sys.executable, "-c", _LOOP.format(limit=600)])
+             for _ in range(3 * (os.cpu_count() or 1))]
+    try:
+        time.sleep(0.5)
+        loaded = _derive_cold()
+    finally:
+        for p in loops:
+            p.kill()
+        for p in loops:
+            p.wait()
+    for q in QUANTITIES:
+        assert quiet[q]["closed"] and quiet[q]["verified"], q
+        assert loaded[q]["closed"] and loaded[q]["verified"], (q, loaded[q])
+        assert loaded[q]["expr"] == quiet[q]["expr"], q
+    print({q: (round(quiet[q]["wall"], 1), round(loaded[q]["wall"], 1)) for q in QUANTITIES})

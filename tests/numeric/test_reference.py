@@ -1,0 +1,74 @@
+"""The one reference integrator (numeric/reference.py): Arb ball quadrature
+with mpmath as the recorded fallback, and the certified verification of the
+seed profiles' closed forms."""
+import mpmath
+import pytest
+import sympy as sp
+
+import linecontact_sym as lcs
+from linecontact_sym.core import symbols as S
+from linecontact_sym.method.verification import verify
+from linecontact_sym.numeric.reference import ARB, MPMATH, RefValue, integrate
+
+t = sp.Dummy("t")
+
+
+def test_enclosure_contains_exact_value_and_guarantees_digits():
+    r = integrate(sp.sqrt(1 - t**2), t, [0, 1], dps=40)     # branch point of sqrt at the end
+    assert r.method == ARB and r.digits >= 40
+    with mpmath.workdps(60):
+        assert r.contains(mpmath.pi / 4)
+        assert not r.contains(mpmath.pi / 4 * (1 + mpmath.mpf(10)**-38))
+
+
+def test_piecewise_switch_between_the_given_points_is_still_enclosed():
+    third = sp.Rational(1, 3)
+    f = sp.Piecewise((t, t < third), (t**2, True))
+    exact = third**2 / 2 + (1 - third**3) / 3
+    for pts in ([0, third, 1], [0, 1]):          # with and without the hint
+        r = integrate(f, t, pts, dps=30)
+        assert r.method == ARB
+        with mpmath.workdps(50):
+            assert r.contains(mpmath.mpf(exact.p) / exact.q)
+
+
+def test_log_end_point_falls_back_to_mpmath_and_says_why():
+    # int_0^1 s acosh(2/s) ds: ball arithmetic cannot bound acosh(2/s) at s = 0
+    r = integrate(t * sp.acosh(2 / t), t, [0, 1], dps=30)
+    assert r.method == MPMATH and r.rad == 0 and "end point" in r.note
+    with mpmath.workdps(40):
+        ref = mpmath.quad(lambda s: s * mpmath.acosh(2 / s), [0, 1])
+        assert abs(r - ref) < mpmath.mpf(10)**-28
+
+
+def test_refvalue_is_a_number_and_pickles():
+    import pickle
+    r = integrate(sp.exp(t), t, [0, 1], dps=30)
+    assert isinstance(r, mpmath.mpf) and type(r + 1) is mpmath.mpf
+    r2 = pickle.loads(pickle.dumps(r))
+    assert isinstance(r2, RefValue) and r2.method == ARB and r2.rad == r.rad and r2.mid == r.mid
+
+
+@pytest.mark.parametrize("profile,quantity", [("parabola", "force"), ("parabola", "pressure"),
+                                              ("parabola", "gap"), ("exact_cylinder", "gap"),
+                                              ("wedge", "pressure")])
+def test_seed_verification_records_are_certified_by_arb(profile, quantity):
+    d = getattr(lcs, profile)().derivation(quantity)
+    v = d.verification
+    assert d.closed_form and v.passed and v.certified, str(v)
+    assert len(v.points) == 5 and min(v.guaranteed) >= 30
+    assert "Arb ball quadrature" in str(v) and "certified" in str(v)
+
+
+def test_planted_wrong_coefficient_fails_certification():
+    """A closed form 1e-35 off agrees to 35 digits (more than the 30
+    required) but lies outside the 45-digit enclosures: it fails."""
+    c = lcs.parabola()
+    d = c.derivation("force")
+    wrong = d.expr * (1 + sp.Rational(1, 10**35))
+    sampler = c._sampler("any")
+    good = verify(d.expr, d.reference, sampler, n_points=3)
+    bad = verify(wrong, d.reference, sampler, n_points=3)
+    assert good.passed and good.certified
+    assert bad.min_digits > 30 and bad.outside == 3 and not bad.passed
+    assert "outside the enclosure" in str(bad)
