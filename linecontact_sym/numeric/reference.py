@@ -162,8 +162,9 @@ def to_acb(v):
     if isinstance(v, mpmath.mpf):
         if not mpmath.isfinite(v):
             raise ArbUnsupported(f"non-finite number {v}")
-        man, exp = mpmath.mpf(v).man_exp
-        return flint.acb(flint.arb(flint.fmpz(int(man))) * flint.arb(2) ** int(exp)) if man else flint.acb(0)
+        sign, man, exp, _ = mpmath.mpf(v)._mpf_     # (mpf.man_exp drops the sign: -0.5 became +0.5)
+        man = -int(man) if sign else int(man)
+        return flint.acb(flint.arb(flint.fmpz(man)) * flint.arb(2) ** int(exp)) if man else flint.acb(0)
     try:
         q = number(v)
     except LineContactError as exc:

@@ -63,6 +63,9 @@ class MDState:
     closed     which non-adhesive parts the engine found in closed form
                ({'P0(a)': True, 'g0(c_D; a)': False, ...}); the others are
                evaluated by quadrature inside the solve, at the digits asked
+    gap_check  where g0 is not closed: the gap at c_D recomputed through the one
+               reference integrator (a RefValue: an Arb enclosure where Arb can,
+               ``gap_check.method``), to compare with h0; else None
     """
 
     a: mpmath.mpf
@@ -73,6 +76,7 @@ class MDState:
     pressure: object = field(repr=False, default=None)
     gap: object = field(repr=False, default=None)
     closed: dict = field(repr=False, default_factory=dict)
+    gap_check: object = field(repr=False, default=None)
 
     @property
     def m(self):
@@ -294,6 +298,8 @@ class MDLaw:
         f1 = _real(_lam(sp.diff(md.profile.expr.xreplace(pf), x), (x,)))
         breaks = [mpmath.mpf(str(sp.N(b, 60))) for b in base.breaks_exact]
         gap = QuadGap(self._f, f1, P0, dP0, breaks, self.E, self.h0expr)
+        self._P0_expr = fd.expr.xreplace(fixed) if fd.closed_form else None
+        self._gD_expr = gD
         self.quad_gap = gap
         self._P = lambda A, C: P0(A) + fD(A, C)
         self._Pa = lambda A, C: dP0(A) + fDa(A, C)
@@ -423,6 +429,28 @@ class MDLaw:
             dP = self._Pa(A, C) + self._Pc(A, C) * dc
             return +P, +dP, +C
 
+    def certified_gap(self, A, C, dps: int):
+        """The gap at c_D, g0(c_D; a) + (the Dugdale part), where g0 has no closed form, with the
+        integral int_0^theta_a P0(c sin t)/sin(t) dt (see :class:`QuadGap`) through the one reference
+        integrator: an Arb enclosure where P0 is closed and Arb can (RefValue, method 'arb'), else
+        its mpmath estimate; None where the engine's g0 is closed (no integral to certify)."""
+        if self.closed_parts["g0(c_D; a)"] or self._P0_expr is None:
+            return None
+        from ...numeric.reference import RefValue, integrate
+        th = sp.Dummy("theta", positive=True)
+        with workdps(dps + 20):
+            A, C = mpmath.mpf(A), mpmath.mpf(C)
+            Cs = sp.Float(mpmath.nstr(C, dps + 20), dps + 20)
+            top = mpmath.atan2(A, mpmath.sqrt((C - A) * (C + A)))
+            pts = [mpmath.mpf(0)] + sorted(mpmath.asin(b / C) for b in self.quad_gap.breaks if b < A) + [top]
+            integrand = self._P0_expr.xreplace({S.a: Cs * sp.sin(th)}) / sp.sin(th)
+            r = integrate(integrand, th, pts, dps + 5)
+            E = mpmath.mpf(sp.N(self.E, dps + 20))
+            rest = self.quad_gap.f(C) - 2 * mpmath.acosh(C / A) * self._P0(A) / (mpmath.pi * E) \
+                + sp.lambdify((S.a, S.c_D), self._gD_expr, "mpmath")(A, C)
+            k = 2 / (mpmath.pi * E)
+            return RefValue(rest - k * r.mid, k * r.rad, r.method, r.note)
+
     def state(self, A, dps: int) -> MDState:
         P, dP, C = self.P_and_slope(A, dps)
         with workdps(dps + 10):
@@ -450,7 +478,7 @@ class MDLaw:
                 I = mpmath.quad(lambda ph: mpmath.acosh(x / (C * mpmath.sin(ph))) * (-2 * sig * C * mpmath.sin(ph)),
                                 [lo, hi])
                 return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
-        return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts))
+        return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts), self.certified_gap(A, C, dps))
 
     # ------------------------------------------------------------ pull-off
     def pull_off(self, dps: int) -> MDPullOff:
