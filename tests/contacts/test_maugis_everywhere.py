@@ -128,6 +128,9 @@ def test_which_parts_are_closed(mds):
     exact cylinder and the rounded punch have all three; the state says so."""
     st = mds["cosh"].state("0.1", 15, **values("cosh", SIGMAS[1]))
     assert st.closed == {"P0(a)": True, "g0(c_D; a)": False, "p0(x; a)": False}
+    # the gap at c_D through the one reference integrator: an Arb enclosure that contains h0
+    with mpmath.workdps(30):
+        assert st.gap_check.method == "arb" and st.gap_check.contains(st.h0, st.h0 * mpmath.mpf(10)**-15)
     assert mds["cosh"].derivation("cohesive_gap").expr.has(sp.Integral)
     st = mds["exact_cylinder"].state("0.1", 15, **values("exact_cylinder", SIGMAS[1]))
     assert all(st.closed.values())
@@ -263,7 +266,9 @@ def test_half_width_and_branches_from_the_layer():
     md = lcs.parabola().maugis_dugdale()
     v = dict(E_star=1, R=1, gamma=1, sigma_0=sp.Rational(1, 2))
     po = md.pull_off_at(15, **v)
-    load = po.force / 2
+    Pz = md.numeric_law(**v).force_zero_width(20)        # P(0+): the unstable branch ends there
+    assert po.force < Pz < 0
+    load = (po.force + Pz) / 2                            # between them: two equilibria
     br = md.branches(load, 20, **v)
     assert [s for _, s in br] == ["stable", "unstable"]
     assert br[1][0] < po.half_width < br[0][0]
@@ -272,5 +277,7 @@ def test_half_width_and_branches_from_the_layer():
         assert abs(st.force - load) < 1e-18 * abs(load)
         assert (st.dP_da > 0) == (s == "stable")
     assert md.half_width(load, 20, **v) == tuple(a for a, _ in br)
+    # above P(0+) only the stable branch (P(a) > P(0+) on the whole unstable branch)
+    assert [s for _, s in md.branches(Pz / 2, 20, **v)] == ["stable"]
     with pytest.raises(lcs.core.errors.NoEquilibriumError):
         md.half_width(2 * po.force, 20, **v)
