@@ -123,6 +123,7 @@ class Independent:
 
 
 # ---------------------------------------------------------------- tests
+@pytest.mark.slow
 def test_which_parts_are_closed(mds):
     """The engine's closed forms: cosh and the Gaussian bump keep g0(c; a) as an Integral, the
     exact cylinder and the rounded punch have all three; the state says so."""
@@ -136,6 +137,7 @@ def test_which_parts_are_closed(mds):
     assert all(st.closed.values())
 
 
+@pytest.mark.slow
 def test_exact_cylinder_low_sigma_stays_in_domain(mds):
     """sigma_0 = 0.0025 (lambda ~ 0.1): the zone stays below 0.42 R (it raised TypeError from a
     guess past R); at a smaller sigma_0 the zone would need to reach past x = R: a DomainError."""
