@@ -37,12 +37,12 @@ import time
 import traceback
 from pathlib import Path
 
-from .core.budget import DEFAULT_BUDGET, checked_budget
+from .core.budget import DEFAULT_BUDGET, check_environment, checked_budget
 from .core.precision import MAX_DPS
 from .claims.results import EXIT_CODES, EXIT_FAILS, EXIT_INPUT, EXIT_INTERNAL, EXIT_OK
 from .core import symbols as S
 from .core.errors import LineContactError
-from .core.parallel import add_jobs_argument
+from .core.parallel import default_jobs, jobs_count
 from .core.progress import Progress
 
 #: kept for scripts that imported the old name (1: a claim without a verdict)
@@ -67,13 +67,29 @@ def _dps(text):
 
 
 def _budget(text):
-    """--budget: CPU seconds > 0, or 'inf' / 'none' for no limit."""
-    if text.strip().lower() in ("none", "inf", "infinity"):
-        return None
+    """--budget: CPU seconds > 0, or 'inf' / 'none' for no limit (the one reader
+    of numeric settings, :func:`~linecontact_sym.core.options.read_number`)."""
     try:
-        return checked_budget(float(text))
-    except (ValueError, LineContactError) as exc:
-        raise argparse.ArgumentTypeError(f"expected seconds > 0 or 'inf', got {text!r}") from exc
+        return checked_budget(text)
+    except LineContactError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _jobs(text):
+    """--jobs: a whole number >= 1 (capped at the work by the checker)."""
+    try:
+        return jobs_count(text)
+    except LineContactError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def _rtol(text):
+    """--rtol: a relative tolerance > 0."""
+    from .core.ranges import check_tolerance
+    try:
+        return check_tolerance(text, "--rtol")
+    except LineContactError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def _emit_json(obj):
@@ -97,9 +113,57 @@ def _profile(text, symbols=(), where="PROFILE"):
     return parse_expr(text, symbols=list(symbols or ()), where=where)
 
 
+_WITH_UNIT = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z\u00b5\u03bc][A-Za-z0-9_*/^ .\u00b5\u03bc]*)\s*")
+
+
 def _settings(items, symbols=()):
+    """``--set NAME=VALUE ...``: numbers (parsed by the whitelisted parser);
+    a number with a unit (``E_star=210GPa``, ``R=5 mm``; the ``[units]``
+    extra, pint's unit parser, nothing evaluated) is converted to the SI
+    unit declared for NAME (:data:`~linecontact_sym.core.symbols.UNITS`),
+    exactly as typed in decimal; a wrong dimension, or a name without a
+    declared unit, is bad input naming the unit."""
     from .parsing import parse_assignments
-    return parse_assignments(items or [], where="--set", symbols=list(symbols or ()))
+    plain, out = [], {}
+    for item in items or []:
+        name, _, val = item.partition("=")
+        m = _WITH_UNIT.fullmatch(val) if "=" in item else None
+        if m is None:
+            plain.append(item)
+            continue
+        out[name.strip()] = _si_value(name.strip(), m.group(1), m.group(2).strip())
+    values = parse_assignments(plain, where="--set", symbols=list(symbols or ()))
+    if out:
+        extra = parse_assignments([f"{k}={v}" for k, v in out.items()], where="--set", symbols=list(symbols or ()))
+        values.update(extra)
+    return values
+
+
+def _si_value(name, number, unit_text):
+    """The SI value (decimal text) of ``number unit_text`` for the setting ``name``."""
+    from .core.errors import DomainError
+    from .core.extras import require
+    unit = S.UNITS.get(name)
+    if unit is None:
+        raise DomainError(f"--set {name}={number}{unit_text}: {name} has no declared unit; give it in SI as a "
+                          f"plain number")
+    pint = require("units", "pint")
+    reg = _unit_registry(pint)
+    try:
+        q = reg.Quantity(number) * reg.parse_units(unit_text)
+        si = q.to(unit or "dimensionless").magnitude
+    except pint.DimensionalityError:
+        raise DomainError(f"--set {name}={number}{unit_text}: the unit {unit_text!r} is not one of "
+                          f"{unit or 'a dimensionless number'} ({name})") from None
+    except Exception as exc:  # noqa: BLE001 -- pint's parser refusing the text
+        raise DomainError(f"--set {name}={number}{unit_text}: {unit_text!r} is not a unit ({exc})") from None
+    return repr(float(si))
+
+
+def _unit_registry(pint, _reg=[]):   # noqa: B006 -- one registry per process
+    if not _reg:
+        _reg.append(pint.UnitRegistry())
+    return _reg[0]
 
 
 def _contact(args, profile):
@@ -287,11 +351,16 @@ def cmd_eval(args):
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": mpmath.nstr(v, args.dps)})
         except LineContactError as exc:
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": None, "error": str(exc)})
+            at = ", ".join(f"{k} = {vv}" for k, vv in point.items())
+            _err(f"{q}{' at ' + at if at else ''}: {_cli_hint(str(exc))}")   # on stderr too, not only in the table
     if args.json:
         _emit_json({"profile": str(prof), "quantity": q, "set": {k: str(v) for k, v in fixed.items()},
                     "dps": args.dps, "rows": rows})
     else:
         head = "  ".join(f"{n:>12}" for n in names) + f"  {q}"
+        if any("=" in i and _WITH_UNIT.fullmatch(i.partition("=")[2]) for i in args.set or []):
+            unit = getattr(_registry()[q][2], "unit", None)      # values with units: the result in SI, said
+            head += f" [{unit or 'SI'}]"
         print(head)
         for r in rows:
             print("  ".join(f"{r[n]:>12}" for n in names) + "  " + (r["value"] or f"error: {r['error']}"))
@@ -322,7 +391,7 @@ def cmd_model(args):
     missing = [s.name for s in md.variables if s.name not in values]
     if missing:
         raise LineContactError(f"model needs values for {', '.join(missing)} (--set NAME=VALUE)")
-    ch, po = md.model_choice(rtol=float(args.rtol), dps=args.dps, **values), md.pull_off_at(args.dps, **values)
+    ch, po = md.model_choice(rtol=args.rtol, dps=args.dps, **values), md.pull_off_at(args.dps, **values)
     out = {"profile": str(prof), "set": {k: str(v) for k, v in values.items()}, "model": ch.model,
            "maugis_parameter": mpmath.nstr(ch.maugis_parameter, args.dps),
            "pull_off_jkr": mpmath.nstr(ch.jkr, args.dps), "pull_off_md": mpmath.nstr(ch.md, args.dps),
@@ -428,7 +497,9 @@ def build_parser() -> argparse.ArgumentParser:
     def common(sp_, quiet=False):
         sp_.add_argument("--budget", type=_budget, default=DEFAULT_BUDGET, metavar="S",
                          help=f"CPU seconds allowed to each symbolic derivation, rules, tidying and "
-                              f"verification together (default {DEFAULT_BUDGET:g}; 'inf' for no limit)")
+                              f"verification together (default "
+                              f"{'no limit' if DEFAULT_BUDGET is None else format(DEFAULT_BUDGET, 'g')}; "
+                              f"'inf' for no limit)")
         sp_.add_argument("--json", action="store_true", help="machine-readable JSON on stdout")
         sp_.add_argument("--no-cache", dest="no_cache", action="store_true",
                          help="neither read nor write the on-disk derivation cache (default: "
@@ -449,7 +520,7 @@ def build_parser() -> argparse.ArgumentParser:
     pp.add_argument("--out", metavar="DIR", help="output directory (default: ./<key>-report)")
     pp.add_argument("--only", nargs="+", metavar="LABEL", help="check only these claims, e.g. --only 'Eq. (10)'")
     pp.add_argument("--no-figures", action="store_true", help="do not draw the figures")
-    add_jobs_argument(pp)
+    _add_jobs(pp)
     common(pp, quiet=True)
     pp.set_defaults(func=cmd_paper)
 
@@ -498,7 +569,7 @@ def build_parser() -> argparse.ArgumentParser:
     pm.add_argument("profile", help="the profile f(x) in SymPy syntax")
     pm.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE",
                     help="values: E_star, gamma, sigma_0 and the profile's parameters")
-    pm.add_argument("--rtol", default="0.05", help="relative tolerance on the pull-off (default 0.05)")
+    pm.add_argument("--rtol", type=_rtol, default=0.05, help="relative tolerance on the pull-off (default 0.05)")
     pm.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pm.add_argument("--dps", type=_dps, default=15, help="significant digits (default 15)")
     common(pm)
@@ -543,7 +614,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="sampling ranges, e.g. n=0.3:6")
     pc.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pc.add_argument("--strict", action="store_true", help="exit 1 unless every claim holds unconditionally")
-    add_jobs_argument(pc)
+    _add_jobs(pc)
     common(pc, quiet=True)
     pc.set_defaults(func=cmd_check)
     return p
@@ -583,7 +654,19 @@ def protect_formulas(argv, options) -> list:
     return out
 
 
+def _add_jobs(parser) -> None:
+    """``--jobs N`` (default: the cores), read by :func:`_jobs`."""
+    parser.add_argument("--jobs", "-j", type=_jobs, default=default_jobs(), metavar="N",
+                        help=f"check the claims in N worker processes (default: the cores, here {default_jobs()}; "
+                             f"never more than the claims); the results are those of --jobs 1, in the same order")
+
+
 def main(argv=None) -> int:
+    try:
+        check_environment()          # LINECONTACT_SYM_BUDGET: bad input (exit 2), not "a claim fails"
+    except LineContactError as exc:
+        _err(str(exc))
+        return EXIT_INPUT
     parser = build_parser()
     argv = list(sys.argv[1:] if argv is None else argv)
     args = parser.parse_args(protect_formulas(argv, _option_strings(parser)))

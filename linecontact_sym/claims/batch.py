@@ -17,7 +17,7 @@ from typing import Callable
 
 from ..core.budget import checked_budget
 from ..core.errors import ClaimError
-from ..core.parallel import default_jobs, map_ordered, process_pool
+from ..core.parallel import capped_jobs, check_executor, map_ordered, process_pool
 from .check import check_claim, check_target, claim_result
 from .derive import Context
 from .references import DPS
@@ -38,7 +38,13 @@ def check_and_draw(paper, jobs, out_dir, budget, **kw):
     figures into ``out_dir`` (None: no figures; they are drawn with the
     reports when ``jobs == 1``)."""
     check = check_paper
-    if not jobs or jobs <= 1:
+    if not isinstance(paper, Paper):
+        paper = load_paper(paper)
+    only = kw.get("only")
+    work = len(_parts([c for c in paper.claims if only is None or c.label in only]))
+    work += 1 if out_dir is not None and paper.figures else 0
+    jobs = capped_jobs(jobs, work)          # never more workers than work (paper --jobs 1000)
+    if jobs <= 1:
         return check(paper, budget=budget, **kw), None
     with process_pool(jobs) as pool:
         figs = None
@@ -150,8 +156,9 @@ def check_paper(paper, *, budget: float = 20.0, progress: Callable | None = None
     t0 = time.perf_counter()
     claims = [c for c in paper.claims if only is None or c.label in only]
     parts = _parts(claims)
-    if executor is None and (jobs is None or jobs > 1) and len(parts) > 1:
-        workers = min(default_jobs() if jobs is None else int(jobs), len(parts))
+    check_executor(executor)
+    workers = capped_jobs(jobs, len(parts))
+    if executor is None and workers > 1:
         with process_pool(workers) as pool:
             results = _check_on(pool, claims, parts, budget, dps, symbolic, on_start, progress)
     elif executor is not None:

@@ -22,6 +22,8 @@ checker and the LaTeX/report views.  A new physical effect is a new subclass
 """
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass, field
 
 import math
@@ -89,7 +91,7 @@ class Quantity:
         if obj is None:
             return self
         if self.method:
-            return getattr(obj, "_" + self.name)
+            return _method_with_units(obj, self, getattr(obj, "_" + self.name))
         return obj._value(self.name)
 
     @property
@@ -375,8 +377,9 @@ class Contact:
         from ..numeric.functions import make_callable
         checked_dps(dps)
         name = self.resolve(quantity)
-        return make_callable(self.derivation(name), backend, dps, params,
-                             domain=DomainCheck(self, name) if check else None)
+        inputs = ExportInputs(self, name, params)
+        return make_callable(self.derivation(name), backend, dps, inputs.params,
+                             domain=DomainCheck(self, name) if check else None, inputs=inputs)
 
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
         """The cheapest evaluation that meets ``rtol``: float64, mpmath at a
@@ -385,8 +388,11 @@ class Contact:
         Values may be pint quantities (as in :meth:`evaluate_at`): the
         Evaluation's numbers stay SI numbers, its ``unit`` says which, and
         ``.quantity_value()`` is the value as a pint quantity."""
-        from ..numeric.evaluate import evaluate
-        values, registry, unit = self._strip_units(quantity, values)
+        evaluate = _numeric_evaluate()
+        if _PLAIN_NUMBERS.issuperset(map(type, values.values())):   # no pint quantity among them
+            registry = None
+        else:
+            values, registry, unit = self._strip_units(quantity, values)
         try:
             r = evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
         except (ZeroDivisionError, OverflowError) as exc:
@@ -415,6 +421,22 @@ class Contact:
         names = quantities or [n for n, q in type(self).quantities().items() if not q.method]
         return "\n".join(self.derivation(q).summary() for q in names)
 
+
+def _numeric_evaluate():
+    """:func:`linecontact_sym.numeric.evaluate.evaluate`, imported at the first
+    call (not with the contacts: a plain import stays light), then looked up
+    once per call in this module's globals, not through the import system."""
+    fn = _NUMERIC.get("evaluate")
+    if fn is None:
+        from ..numeric.evaluate import evaluate as fn
+        _NUMERIC["evaluate"] = fn
+    return fn
+
+
+_NUMERIC: dict = {}
+
+#: the types of plain SI numbers (no unit to strip: the common, fast case of evaluate)
+_PLAIN_NUMBERS = frozenset((float, int))
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
 #: mirrored, f(-x) = f(x))
@@ -508,14 +530,17 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
             return self.check_domain(quantity, values)
         vals["x"] = xv
     if adm is not None and "a" in vals:
-        key = tuple(vals.get(n) for n in adm)
-        seen = self._caches().setdefault(("_admissible", adm), {})
+        key = tuple([vals.get(n) for n in adm])
+        caches = self._caches()
+        seen = caches.get(("_admissible", adm))
+        if seen is None:
+            seen = caches[("_admissible", adm)] = {}
         if key not in seen:
             self._check_admissible(vals)          # raises where inadmissible
             if len(seen) > 100000:
                 seen.clear()
             seen[key] = True
-    if cond_fn is not None and all(n in vals for n in cond_names):
+    if cond_fn is not None and known.issubset(vals.keys()):          # cond_names: the names of known
         try:
             ok = bool(cond_fn(*[float(vals[n]) for n in cond_names]))
         except (TypeError, ValueError):
@@ -545,9 +570,73 @@ def scalar_domain_plan(self, quantity):
                 if fprime is not None or slope is not None:
                     adm = ("a", "E_star", *names)
             plan = (frozenset(known), positive, frozenset(q.nonnegative), domain, tuple(known),
-                    cond_fn if conds else None, adm)
+                    _scalar_test(self, name, known, cond_fn) if conds else None, adm)
         cache[key] = plan
     return cache[key]
+
+
+def _method_with_units(contact, q, fn):
+    """A method quantity (``c.half_width(P, **values)``, ``t.stick_half_width(Q, ...)``)
+    that takes pint quantities: the load (its first argument, named
+    ``q.arguments[-1]``) and the values converted to SI by the contact's one
+    unit stripper (:meth:`Contact._strip_units`), the result (a number, or a
+    tuple of numbers) in the quantity's declared unit.  Plain numbers pass
+    straight through."""
+    from ..core.units import is_quantity, with_unit
+
+    @functools.wraps(fn)
+    def call(*args, **kw):
+        if not any(is_quantity(v) for v in args) and not any(is_quantity(v) for v in kw.values()):
+            return fn(*args, **kw)
+        load = q.arguments[-1] if q.arguments else "load"
+        vals = dict(kw)
+        if args:
+            vals[load] = args[0]
+        plain, registry, unit = contact._strip_units(q.name, vals)
+        rest = {k: v for k, v in plain.items() if k != load or not args}
+        out = fn(*((plain[load],) + tuple(args[1:]) if args else ()), **rest)
+        if isinstance(out, tuple):
+            return tuple(with_unit(o, unit, registry) for o in out)
+        return with_unit(out, unit, registry)
+    return call
+
+
+class ExportInputs:
+    """What an export does with its arguments before anything else, checked
+    or not (``to_numeric(check=False)`` too): pint quantities checked against
+    their units and converted to SI (:meth:`Contact._strip_units`, the one
+    place; the result then carries the quantity's declared unit), and x
+    replaced by |x| for a quantity of x inside or outside the contact (the
+    profile is mirrored, f(-x) = f(x): the pressure, gap, traction ... are
+    even in x, and the derived closed forms hold for x > 0, x being a
+    positive symbol).  The parameters fixed at export time are converted
+    once (``params``, SI numbers).  Pickles with its contact."""
+
+    def __init__(self, contact, quantity, params):
+        from ..core.units import is_quantity
+        self.contact, self.quantity = contact, quantity
+        self.fold_x = type(contact)._registry[quantity].domain in ("inside", "outside")
+        self.given = dict(params)
+        self.has_units = any(is_quantity(v) for v in self.given.values())
+        self.params = contact._strip_units(quantity, self.given)[0] if self.has_units else self.given
+        if self.fold_x and "x" in self.params:
+            from ..numeric.functions import fold_x
+            self.params = {**self.params, "x": fold_x(self.params["x"])}
+
+    def strip(self, kw):
+        """``(values in SI, registry or None, unit)`` of a call's keywords."""
+        plain, registry, unit = self.contact._strip_units(self.quantity, {**self.given, **kw})
+        return {k: plain[k] for k in kw}, registry, unit
+
+
+def _scalar_test(contact, name, known, cond_fn):
+    """The derivation's point test for plain floats: compiled for the math
+    module (a comparison of floats, not a NumPy call), else ``cond_fn``."""
+    try:
+        test = sp.And(*contact.derivation(name).point_test)
+        return lambdify(list(known.values()), test, "math")
+    except Exception:   # noqa: BLE001 -- a function the math module lacks: the NumPy test
+        return cond_fn
 
 
 class DomainCheck:

@@ -39,7 +39,6 @@ from __future__ import annotations
 
 import math
 import multiprocessing as _mp
-import numbers
 import os
 import signal
 import pickle
@@ -47,6 +46,7 @@ import time
 import traceback
 
 from .errors import BudgetError, BudgetExceeded
+from .options import read_number
 
 try:
     import resource as _resource
@@ -65,38 +65,54 @@ WALL_GUARD_EXTRA = 60.0
 
 def checked_budget(seconds):
     """A budget as given by a user: ``None`` or ``math.inf`` (no limit, returned
-    as None) or a real number of CPU seconds > 0 (returned as float).  Anything
-    else (NaN, 0, negative, a string, a bool) raises :class:`BudgetError`.
+    as None) or a real number of CPU seconds > 0 (returned as float), read by the
+    one reader of numeric settings (:func:`~linecontact_sym.core.options.read_number`:
+    NumPy and SymPy numbers, text such as ``" 5 "`` or ``"inf"``; a number
+    too large for a float is no limit).  Anything else (NaN, 0, negative,
+    text that is not a number, a bool) raises :class:`BudgetError`; so does
+    every budget while ``$LINECONTACT_SYM_BUDGET`` holds a value that is not
+    one (:func:`check_environment`).
 
-    >>> checked_budget(5), checked_budget(None), checked_budget(float("inf"))
-    (5.0, None, None)
+    >>> checked_budget(5), checked_budget(None), checked_budget(float("inf")), checked_budget(" 2.5 ")
+    (5.0, None, None, 2.5)
     """
+    check_environment()
     if seconds is None:
         return None
-    if isinstance(seconds, bool) or not isinstance(seconds, numbers.Real):
-        raise BudgetError(f"the budget must be a number of CPU seconds > 0 (or None for no limit), got {seconds!r}")
-    v = float(seconds)
-    if math.isnan(v) or v <= 0:
-        raise BudgetError(f"the budget must be a number of CPU seconds > 0 (or None for no limit), got {seconds!r}")
-    return None if math.isinf(v) else v
+    v = read_number(seconds, "the budget (CPU seconds)", low=0, low_open=True, allow_inf=True, error=BudgetError)
+    return None if math.isinf(v) else float(v)
 
 
-def _budget_from_environment(default: float) -> float:
-    """``$LINECONTACT_SYM_BUDGET`` (CPU seconds > 0) replaces the default
-    budget of a derivation, for a slow machine (or to allow a hard integral
-    more time); a machine's load no longer matters, the budget being CPU
-    time.  A value that is not a number of seconds > 0 raises
+#: the environment variable that replaces the default budget
+BUDGET_ENV = "LINECONTACT_SYM_BUDGET"
+_ENV: dict = {"problem": None}
+
+
+def _budget_from_environment(default: float):
+    """``$LINECONTACT_SYM_BUDGET`` (CPU seconds > 0, or ``inf`` for no limit:
+    None) replaces the default budget of a derivation, for a slow machine
+    (or to allow a hard integral more time); a machine's load does not
+    matter, the budget being CPU time.
+    A value that is not a budget is not raised at import (a command line
+    could not report it): it is remembered, and :func:`check_environment`
+    (called by every budget check and first by the command line) raises
     :class:`BudgetError` naming the variable."""
-    text = os.environ.get("LINECONTACT_SYM_BUDGET", "").strip()
-    if not text:
+    text = os.environ.get(BUDGET_ENV, "")
+    if not text.strip():
         return default
     try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not (value > 0) or math.isinf(value):
-        raise BudgetError(f"LINECONTACT_SYM_BUDGET must be a number of CPU seconds > 0, got {text!r}")
-    return value
+        value = read_number(text, BUDGET_ENV + " (CPU seconds)", low=0, low_open=True, allow_inf=True,
+                            error=BudgetError)
+    except BudgetError as exc:
+        _ENV["problem"] = exc
+        return default
+    return None if math.isinf(value) else value
+
+
+def check_environment() -> None:
+    """Raise :class:`BudgetError` if ``$LINECONTACT_SYM_BUDGET`` was not a budget."""
+    if _ENV["problem"] is not None:
+        raise BudgetError(str(_ENV["problem"]))
 
 
 DEFAULT_BUDGET = _budget_from_environment(DEFAULT_BUDGET)

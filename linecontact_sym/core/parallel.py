@@ -16,7 +16,8 @@ import functools
 import os
 from typing import Callable, Iterable
 
-__all__ = ["default_jobs", "jobs_count", "add_jobs_argument", "process_pool", "map_ordered", "map_chunks"]
+__all__ = ["default_jobs", "jobs_count", "capped_jobs", "check_executor", "process_pool",
+           "map_ordered", "map_chunks"]
 
 
 def default_jobs() -> int:
@@ -28,21 +29,31 @@ def default_jobs() -> int:
 
 
 def jobs_count(text) -> int:
-    """A number of worker processes as typed (``--jobs N``): a whole number >= 1."""
-    try:
-        n = int(text)
-    except (TypeError, ValueError):
-        n = 0
-    if n < 1:
-        raise ValueError(f"--jobs expects a whole number >= 1, got {text!r}")
-    return n
+    """A number of worker processes (``--jobs N``, ``jobs=``): a whole number
+    >= 1, read by the one reader of numeric settings
+    (:func:`~linecontact_sym.core.options.read_number`: NumPy integers, text
+    with spaces); anything else raises
+    :class:`~linecontact_sym.core.errors.DomainError`."""
+    from .options import read_number
+    return read_number(text, "--jobs (worker processes)", integer=True, low=1)
 
 
-def add_jobs_argument(parser) -> None:
-    """The command line's ``--jobs N`` (default: :func:`default_jobs`)."""
-    parser.add_argument("--jobs", "-j", type=jobs_count, default=default_jobs(), metavar="N",
-                        help=f"check the claims in N worker processes (default: the cores, here {default_jobs()}); "
-                             f"the results are those of --jobs 1, in the same order")
+def capped_jobs(jobs, work: int) -> int:
+    """The workers to start for ``work`` independent items: ``jobs`` (None:
+    :func:`default_jobs`) read by :func:`jobs_count`, never more than the
+    work (``paper --jobs 1000`` on 20 claims starts 20), at least 1."""
+    n = default_jobs() if jobs is None else jobs_count(jobs)
+    return max(1, min(n, int(work)))
+
+
+def check_executor(executor) -> None:
+    """``executor`` is None or has ``submit`` (a :class:`concurrent.futures.Executor`,
+    a Dask client's ``get_executor()``); anything else (a name as text)
+    raises :class:`~linecontact_sym.core.errors.DomainError`."""
+    if executor is not None and not callable(getattr(executor, "submit", None)):
+        from .errors import DomainError
+        raise DomainError(f"executor must be a concurrent.futures.Executor (an object with submit(), e.g. "
+                          f"process_pool(4) or a Dask client's get_executor()), got {executor!r}")
 
 
 def process_pool(jobs: int | None = None):
@@ -52,7 +63,7 @@ def process_pool(jobs: int | None = None):
     import multiprocessing as mp
     from concurrent.futures import ProcessPoolExecutor
     ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else None
-    return ProcessPoolExecutor(max_workers=jobs or default_jobs(), mp_context=ctx)
+    return ProcessPoolExecutor(max_workers=default_jobs() if jobs is None else jobs_count(jobs), mp_context=ctx)
 
 
 def map_ordered(fn: Callable, items: Iterable, executor=None, *, on_done: Callable | None = None,
@@ -62,6 +73,7 @@ def map_ordered(fn: Callable, items: Iterable, executor=None, *, on_done: Callab
     the other).  Results in the order of ``items``; ``on_done(i, result)`` is
     called as each one finishes (in the order they finish), ``on_error(i,
     exc)`` gives the result of a call that raised (default: raise)."""
+    check_executor(executor)
     items = list(items)
     out = [None] * len(items)
 

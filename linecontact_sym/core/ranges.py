@@ -103,6 +103,49 @@ def check_points(points, least: int = 2, what: str = "a load cycle") -> int:
     return int(points)
 
 
+def check_tolerance(rtol, name: str = "rtol") -> float:
+    """A relative tolerance: a real number > 0 (and < 1), read by the one
+    reader of numeric settings (text, NumPy and SymPy numbers); negative,
+    0, NaN, infinite or not a number raises :class:`DomainError`."""
+    from .options import read_number
+    return read_number(rtol, f"the relative tolerance {name}", low=0, low_open=True, high=1)
+
+
+def check_positive(name: str, value, what: str | None = None):
+    """A value that must be a finite real number > 0 (a stress, a work of
+    adhesion at a point): returned as given when it is one; a symbolic
+    value, a complex number, NaN, infinity, 0 or a negative number raises
+    :class:`DomainError` naming it (infinity with ``what`` telling the limit
+    it stands for, e.g. sigma_0 = oo: the JKR contact)."""
+    what = what or name
+    if isinstance(value, bool):
+        raise DomainError(f"{what} must be a positive number, got {name} = {value!r}")
+    v = value
+    try:
+        if isinstance(v, complex) or (isinstance(v, sp.Basic) and v.is_real is False):
+            raise DomainError(f"{what} must be a real number, got {name} = {value} (complex)")
+        if isinstance(v, sp.Basic):
+            if not v.is_number:
+                raise DomainError(f"{what} needs a number, got the expression {name} = {value}")
+            if v.has(sp.oo, -sp.oo, sp.zoo, sp.nan):
+                raise DomainError(f"{what} must be finite, got {name} = {value}")
+            f = complex(sp.N(v, 30))
+            if f.imag != 0:
+                raise DomainError(f"{what} must be a real number, got {name} = {value} (complex)")
+            f = f.real
+        else:
+            f = float(v)
+    except (TypeError, ValueError) as exc:
+        if isinstance(exc, DomainError):
+            raise
+        raise DomainError(f"{what} must be a positive number, got {name} = {value!r}") from None
+    if f != f or f in (float("inf"), float("-inf")):
+        raise DomainError(f"{what} must be a finite positive number, got {name} = {value}")
+    if not f > 0:
+        raise DomainError(f"{what} must be positive, got {name} = {value}")
+    return value
+
+
 def check_values(values: dict, zero_ok=()) -> None:
     """Every ranged name of ``values`` (keywords by name) in its range (the
     names in ``zero_ok`` may also be 0), and the stick half-widths in order."""
@@ -113,4 +156,4 @@ def check_values(values: dict, zero_ok=()) -> None:
         check_stick(values.get("a"), values.get("c_s"), values.get("c_r"))
 
 
-__all__ = ["RANGES", "check_value", "check_stick", "check_points", "check_values"]
+__all__ = ["RANGES", "check_value", "check_stick", "check_points", "check_values", "check_tolerance", "check_positive"]

@@ -126,6 +126,24 @@ def with_unit(value, unit, registry):
     return registry.Quantity(value, unit or "dimensionless")
 
 
+def refuse_units(values: dict, where: str, units: dict | None = None) -> None:
+    """Entry points whose results are records of several numbers (a pull-off,
+    a partial-slip state) take plain SI numbers: a pint Quantity among
+    ``values`` raises :class:`~linecontact_sym.core.errors.DomainError`
+    naming it, its unit and its SI value (never read as a bare number with
+    its unit dropped)."""
+    for k, v in values.items():
+        if is_quantity(v):
+            unit = (units or {}).get(k)
+            try:
+                si = v.to(unit).magnitude if unit else v.to_base_units().magnitude
+                hint = f"; in SI {k} = {si:g}" + (f" ({unit})" if unit else "")
+            except Exception:  # noqa: BLE001 -- a wrong dimension: the hint is left out
+                hint = ""
+            raise DomainError(f"{where} takes plain SI numbers; {k} = {v} is a pint quantity in {v.units}"
+                              f"{hint}")
+
+
 def describe(unit: str) -> str:
     return _WORDS.get(unit, "a quantity")
 
@@ -146,4 +164,5 @@ def _plain(m):
     return float(m)
 
 
-__all__ = ["is_quantity", "split_units", "strip_units", "check_profile_units", "with_unit", "describe"]
+__all__ = ["is_quantity", "split_units", "strip_units", "check_profile_units", "with_unit", "describe",
+           "refuse_units"]

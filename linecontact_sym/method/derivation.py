@@ -200,6 +200,9 @@ class Derivation:
             what = f"closed form, FAILED verification ({v.min_digits:.1f} digits)"
         else:
             what = f"closed form, verified at {len(v.points)} points (>= {v.min_digits:.0f} digits)"
+            if v.certified_points:
+                what += (f", certified by Arb enclosures at {v.certified_points} of them "
+                         f"(>= {min(g for g in v.guaranteed if g > 0):.0f} digits guaranteed)")
         return f"{what}; rule {self.rule}"
 
     def _timing(self) -> str:
@@ -237,6 +240,8 @@ class Derivation:
             status = r"\text{no closed form (quadrature)}"
         elif v is not None and v.passed:
             status = rf"\text{{verified at {len(v.points)} points, }}\geq {v.min_digits:.0f}\text{{ digits}}"
+            if v.certified_points:
+                status += rf"\text{{ (Arb-certified at {v.certified_points})}}"
         elif v is not None and v.points:
             status = rf"\text{{FAILED verification, {v.min_digits:.1f} digits}}"
         else:
@@ -395,7 +400,7 @@ def _derive_remembered(quantity, problem, reference, sampler, fallback, budget, 
     deadline = Deadline(budget)
     key = store.make_key("derive", quantity, problem.transform, *_problem_parts(problem), fallback, check,
                          points, REQUIRED_DIGITS, tuple(notes), tuple(variables))
-    rec = store.get(key)
+    rec = _trusted(store.get(key), reference, sampler, quantity)
     if rec is not None and _usable(rec, budget):
         return Derivation(quantity, expr=rec["expr"], closed_form=rec["closed_form"], step=rec["step"],
                           conditions=rec["conditions"], verification=rec["verification"], seconds=rec["seconds"],
@@ -409,33 +414,87 @@ def _derive_remembered(quantity, problem, reference, sampler, fallback, budget, 
     return d
 
 
-def remembered(parts, make, budget, reference) -> Derivation:
+#: the re-check of a closed form read from disk: digits of the comparison, digits it must agree to
+RECHECK_DPS, RECHECK_DIGITS = 20, 12
+#: the fields a record of :func:`derive` holds, with their types
+_RECORD_FIELDS = {"expr": sp.Basic, "closed_form": bool, "step": Step, "conditions": tuple,
+                  "verification": (VerificationRecord, type(None)), "seconds": (int, float), "notes": tuple,
+                  "attempts": tuple, "budget": (int, float, type(None))}
+
+
+def _distrust(quantity, why):
+    import warnings
+    warnings.warn(f"linecontact_sym: the cached {quantity} record {why}; it is dropped and derived afresh",
+                  store.UntrustedCacheWarning, stacklevel=5)
+    return None
+
+
+def _trusted(rec, reference, sampler, quantity):
+    """A stored record of :func:`derive`, or None (derived afresh) when it is
+    not one (a field missing or of another type), or when it was read from
+    disk and its closed form, at one random admissible point, disagrees with
+    this call's independent reference (a record whose number was changed and
+    its checksum recomputed: the checksum only detects damage).  One point at
+    :data:`RECHECK_DPS` digits: a quadrature, not a derivation."""
+    if rec is None:
+        return None
+    for name, kind in _RECORD_FIELDS.items():
+        if name not in rec or not isinstance(rec[name], kind):
+            return _distrust(quantity, f"is not a record of a derivation ({name!r} missing or of another type)")
+    if rec.get("source") != "disk" or not rec["closed_form"] or reference is None or sampler is None:
+        return rec
+    import random
+    check = verify(rec["expr"], reference, sampler, rec["conditions"], n_points=1,
+                   seed=random.SystemRandom().randrange(2**32), dps=RECHECK_DPS,
+                   reference_name="re-check of a cached record", budget=60.0)
+    if not check.points:
+        return _distrust(quantity, "could not be re-checked against the independent reference "
+                                   "(no admissible point, or out of time)")
+    if check.min_digits < RECHECK_DIGITS:
+        return _distrust(quantity, f"disagrees with the independent reference at {dict(check.points[0])} "
+                                   f"({check.min_digits:.1f} digits agree): it was changed after it was written")
+    return rec
+
+
+def remembered(parts, make, budget, reference, recheck=None) -> Derivation:
     """A derivation made by ``make()`` once per key (:mod:`.store`: in this
     process and on disk), for quantities derived outside :func:`derive`
     (the half-width, the tangential stick half-width ...).  ``parts`` name
     the problem completely (the key adds the code version); ``budget`` is
     the caller's (a result that ran out of time is made again under a
     larger one); ``reference(derivation)`` rebuilds the numeric reference
-    of a stored derivation (closures are not stored)."""
+    of a stored derivation (closures are not stored); ``recheck(derivation)``
+    (optional) tells whether a closed form read from disk agrees with an
+    independent check at a random point (else it is dropped and made
+    afresh, with a warning: see :func:`_trusted`)."""
     def rebuild(d):
         d.reference = reference(d)
         return d
-    return remembered_many(parts, lambda: (make(),), budget, rebuild)[0]
+    return remembered_many(parts, lambda: (make(),), budget, rebuild, recheck)[0]
 
 
-def remembered_many(parts, make, budget, rebuild) -> tuple:
+def remembered_many(parts, make, budget, rebuild, recheck=None) -> tuple:
     """:func:`remembered` for derivations made together (the three pull-off
     quantities): ``make()`` returns a tuple of them; ``rebuild(d)`` returns
-    a stored one ready for use (its reference set, its class restored)."""
+    a stored one ready for use (its reference set, its class restored);
+    ``recheck(d)`` as in :func:`remembered`, for each closed form read from disk."""
     key = store.make_key("remembered", *parts)
     rec = store.get(key)
+    if rec is not None and not _derivations_record(rec):
+        rec = _distrust("derivations", "is not a record of derivations")
     if rec is not None and "derivations" in rec and all(_usable({**r, "source": rec["source"]}, budget)
                                                             for r in rec["derivations"]):
-        return tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
-                                        conditions=r["conditions"], verification=r["verification"],
-                                        seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
-                                        attempts=r["attempts"], cached=rec["source"]))
-                     for r in rec["derivations"])
+        ds = tuple(rebuild(Derivation(r["quantity"], expr=r["expr"], closed_form=r["closed_form"], step=r["step"],
+                                      conditions=r["conditions"], verification=r["verification"],
+                                      seconds=r["seconds"], notes=r["notes"], variables=r["variables"],
+                                      attempts=r["attempts"], cached=rec["source"]))
+                   for r in rec["derivations"])
+        bad = [d.quantity for d in ds if rec["source"] == "disk" and recheck is not None and d.closed_form
+               and not recheck(d)]
+        if not bad:
+            return ds
+        _distrust(", ".join(bad), "disagrees with its independent check at a random point: it was changed "
+                                  "after it was written")
     ds = tuple(make())
     store.put(key, {"derivations": tuple(
         {"quantity": d.quantity, "expr": d.expr, "closed_form": d.closed_form, "step": d.step,
@@ -443,6 +502,17 @@ def remembered_many(parts, make, budget, rebuild) -> tuple:
          "notes": tuple(d.notes), "variables": tuple(d.variables), "attempts": tuple(d.attempts),
          "budget": checked_budget(budget)} for d in ds)})
     return ds
+
+
+def _derivations_record(rec) -> bool:
+    """Does a stored record of :func:`remembered_many` hold a non-empty tuple
+    of derivation records with every field of its expected type?"""
+    ds = rec.get("derivations")
+    if not isinstance(ds, tuple) or not ds:
+        return False
+    fields = {**_RECORD_FIELDS, "quantity": str, "variables": tuple}
+    return all(isinstance(r, dict) and all(n in r and isinstance(r[n], k) for n, k in fields.items())
+               for r in ds)
 
 
 def _problem_parts(problem):

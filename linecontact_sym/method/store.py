@@ -59,7 +59,9 @@ _state = {"enabled": True, "version": None, "refused": set()}
 
 
 class UntrustedCacheWarning(UserWarning):
-    """The cache directory is not the user's own: it is not used."""
+    """The cache directory is not the user's own (it is not used), or a
+    record in it is not what this package writes (it is ignored and derived
+    afresh)."""
 
 
 def set_enabled(on: bool) -> None:
@@ -169,6 +171,31 @@ def make_key(*parts) -> str:
 _CLASSES: dict = {}
 
 
+class UntrustedRecord(ValueError):
+    """A stored record holds something that is not plain data."""
+
+
+#: the limits of what a record may hold, checked on the text before anything is built
+MAX_TEXT = 2_000_000            # characters of one srepr text
+MAX_DIGITS = 1000               # digits of an Integer / Rational literal
+MAX_NAME = 200                  # characters of a Symbol's name
+MAX_FLOAT_BITS = 40_000         # precision of a Float literal (bits)
+MAX_POW_DIGITS = 10_000         # digits of a power of a number the reader would compute
+MAX_EXPONENT = 1000             # |p|, q of a rational exponent of a number
+MAX_FUNCTION_ARG = 10_000       # |p|, q of an exact number a function is applied to (factorial(10**7) ...)
+
+#: classes whose constructors compute (roots of polynomials, matrices, new
+#: functions, substitutions): never in a derivation record
+_DENIED = {"Function", "Lambda", "Subs", "WildFunction", "CRootOf", "ComplexRootOf", "RootOf", "RootSum", "Poly",
+           "PurePoly", "ImageSet", "ConditionSet", "ComplexRegion"}
+#: arithmetic and structure: their arguments' sizes are bounded by the literals and by Pow's rule
+_ARITHMETIC = {"Add", "Mul", "Pow", "Tuple", "ExprCondPair", "Piecewise", "Equality", "Unequality",
+               "StrictLessThan", "LessThan", "StrictGreaterThan", "GreaterThan", "And", "Or", "Not",
+               "Integer", "Rational", "Float", "Symbol", "Dummy", "Str", "Integral", "Interval"}
+_FLOAT_TEXT = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d{1,6})?|[+-]?inf|nan")
+_BOOL_KW = {"Symbol", "Dummy"}
+
+
 def _sympy_names():
     """name -> SymPy class (a subclass of Basic defined in SymPy) or SymPy
     singleton (pi, E, oo, true, ...): everything :func:`from_srepr` accepts."""
@@ -186,24 +213,41 @@ def _sympy_names():
                 _CLASSES[name] = v           # the public class wins a name clash
             elif isinstance(v, sp.Basic) and not name.startswith("_"):
                 _CLASSES[name] = v           # pi, E, I, oo, zoo, nan, true, false, EulerGamma, ...
-        for name in ("Function", "Lambda", "Subs"):
-            _CLASSES.pop(name, None)         # would create new functions: not in a derivation record
+        for name in list(_CLASSES):
+            v = _CLASSES[name]
+            if name in _DENIED or (isinstance(v, type) and issubclass(v, sp.MatrixBase if hasattr(sp, "MatrixBase")
+                                                                        else ())):
+                _CLASSES.pop(name)           # constructors that compute, or make new functions
     return _CLASSES
 
 
-class UntrustedRecord(ValueError):
-    """A stored record holds something that is not plain data."""
+def _digits(n: int) -> int:
+    return len(str(abs(n))) if abs(n) < 10 ** 50 else int(abs(n).bit_length() * 0.30103) + 1
 
 
 def from_srepr(text: str):
-    """The SymPy object of an ``srepr`` text, read by a whitelist: only calls
-    of SymPy classes (subclasses of ``Basic`` defined in SymPy) and SymPy's
-    singletons, with literal arguments (numbers, strings, True/False/None,
-    tuples, nested calls) and literal keywords, and unary minus.  Anything
-    else (a name that is not SymPy's, an attribute, a subscript, a lambda,
-    an operator) raises :class:`UntrustedRecord`; nothing is evaluated by
-    Python's ``eval``.  Dummies keep their name and assumptions; the
-    engine's integration variables (``_t``, ``_s`` of
+    """The SymPy object of an ``srepr`` text, read by a whitelist over
+    Python's ``ast`` of the text (nothing is evaluated by ``eval`` or
+    ``sympify``; no string reaches either):
+
+    * node types: calls of a *name*, names, literals, unary minus of a number;
+    * names: SymPy's classes (subclasses of ``Basic`` defined in SymPy; not
+      those whose constructors compute or create functions: ``Function``,
+      ``Lambda``, ``Subs``, ``RootOf``, ``Poly``, matrices, ...) and SymPy's
+      singletons (``pi``, ``oo``, ``true`` ...);
+    * argument kinds by class: a string only as the name of a ``Symbol`` /
+      ``Dummy`` / ``Str`` (kept as a name) and as the digits of a ``Float``
+      (matched as a decimal number first); a Python int only in
+      ``Integer``, ``Rational`` and the keywords ``precision`` (of a Float)
+      and ``dummy_index``; keywords only ``Symbol``'s / ``Dummy``'s boolean
+      assumptions; every other argument is a SymPy object built the same way;
+    * sizes, checked before anything is built: the text, the digits of every
+      integer literal, a Float's precision, a power of a number (the digits
+      it would have, its exponent), and an exact number given to a function
+      (``factorial(10**7)``), so that no record can make the reader hang.
+
+    Anything else raises :class:`UntrustedRecord`.  Dummies keep their name
+    and assumptions; the engine's integration variables (``_t``, ``_s`` of
     :mod:`~linecontact_sym.method.transforms`) come back as themselves.
 
     >>> import sympy as sp
@@ -214,61 +258,145 @@ def from_srepr(text: str):
     Traceback (most recent call last):
     ...
     linecontact_sym.method.store.UntrustedRecord: not SymPy data: a call of __import__('os').system
+    >>> from_srepr("sin('1+1')")
+    Traceback (most recent call last):
+    ...
+    linecontact_sym.method.store.UntrustedRecord: not SymPy data: a string given to sin
+    >>> from_srepr("Pow(Integer(10), Integer(1000000000))")
+    Traceback (most recent call last):
+    ...
+    linecontact_sym.method.store.UntrustedRecord: not SymPy data: a power of a number with the exponent 1000000000
     """
+    import sympy as sp
+    if not isinstance(text, str) or len(text) > MAX_TEXT:
+        raise UntrustedRecord("not an srepr text (not a string, or longer than a record may be)")
     names = _sympy_names()
     try:
         tree = ast.parse(text, mode="eval")
-    except (SyntaxError, ValueError, RecursionError) as exc:
+    except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
         raise UntrustedRecord(f"not an srepr text: {exc}") from None
     dummies: dict = {}
     from . import transforms as T
     engine = {(d.name, tuple(sorted(d.assumptions0.items()))): d for d in (T.t, T.s)}
 
-    def literal(node):
-        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float, str, bool, type(None))):
-            return node.value
-        if isinstance(node, ast.Tuple):
-            return tuple(conv(e) for e in node.elts)
-        return conv(node)
+    def refuse(why):
+        raise UntrustedRecord(f"not SymPy data: {why}")
+
+    def py_int(node, where):
+        """A Python int literal (unary minus allowed), its size bounded."""
+        sign = 1
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            sign, node = -1, node.operand
+        if not (isinstance(node, ast.Constant) and type(node.value) is int):
+            refuse(f"{where} takes an integer literal")
+        if _digits(node.value) > MAX_DIGITS:
+            refuse(f"an integer of more than {MAX_DIGITS} digits in {where}")
+        return sign * node.value
+
+    def py_str(node, where, limit=MAX_NAME):
+        if not (isinstance(node, ast.Constant) and type(node.value) is str):
+            refuse(f"{where} takes a string literal")
+        if len(node.value) > limit:
+            refuse(f"a string of more than {limit} characters in {where}")
+        return node.value
+
+    def small(v, bound):
+        return not (isinstance(v, sp.Rational) and (abs(v.p) > bound or v.q > bound))
+
+    def check_pow(base, exp):
+        if not base.is_number or not isinstance(exp, sp.Rational):
+            return
+        if abs(exp.p) > MAX_EXPONENT or exp.q > MAX_EXPONENT:
+            refuse(f"a power of a number with the exponent {exp}")
+        if isinstance(base, sp.Rational) and max(_digits(base.p), _digits(base.q)) * abs(exp.p) > MAX_POW_DIGITS:
+            refuse(f"a power of a number with more than {MAX_POW_DIGITS} digits")
+
+    def call(node):
+        if not isinstance(node.func, ast.Name):
+            refuse(f"a call of {ast.unparse(node.func)}")
+        name = node.func.id
+        cls = names.get(name)
+        if not isinstance(cls, type):
+            refuse(name)
+        if any(isinstance(a, ast.Starred) for a in node.args):
+            refuse(f"starred arguments of {name}")
+        if name == "Integer":
+            if len(node.args) != 1 or node.keywords:
+                refuse("Integer takes one integer literal")
+            return sp.Integer(py_int(node.args[0], name))
+        if name == "Rational":
+            if len(node.args) != 2 or node.keywords:
+                refuse("Rational takes two integer literals")
+            p, q = (py_int(a, name) for a in node.args)
+            if q == 0:
+                refuse("a Rational with denominator 0")
+            return sp.Rational(p, q)
+        if name == "Float":
+            kw = {k.arg: k.value for k in node.keywords}
+            if len(node.args) != 1 or set(kw) - {"precision"}:
+                refuse("Float takes its digits as a string and a precision")
+            digits = py_str(node.args[0], name, limit=MAX_FLOAT_BITS)
+            if not _FLOAT_TEXT.fullmatch(digits):
+                refuse(f"Float digits {digits[:40]!r} are not a decimal number")
+            prec = py_int(kw["precision"], "Float's precision") if "precision" in kw else 53
+            if not 1 <= prec <= MAX_FLOAT_BITS:
+                refuse(f"a Float of precision {prec} bits")
+            return sp.Float(digits, precision=prec)
+        if name in ("Symbol", "Dummy", "Str"):
+            if len(node.args) != 1:
+                refuse(f"{name} takes one name")
+            label = py_str(node.args[0], name)
+            kw = {}
+            for k in node.keywords:
+                if name == "Dummy" and k.arg == "dummy_index":
+                    kw[k.arg] = py_int(k.value, "dummy_index")
+                elif name in _BOOL_KW and k.arg is not None and k.arg.isidentifier() and \
+                        isinstance(k.value, ast.Constant) and type(k.value.value) is bool:
+                    kw[k.arg] = k.value.value
+                else:
+                    refuse(f"a keyword of {name} that is not a boolean assumption")
+            if name == "Str":
+                if kw:
+                    refuse("Str takes no keywords")
+                return sp.core.symbol.Str(label)
+            if name == "Dummy":
+                index = kw.pop("dummy_index", None)
+                if index not in dummies:
+                    same = engine.get((label, tuple(sorted(sp.Dummy(label, **kw).assumptions0.items()))))
+                    dummies[index] = same if same is not None else sp.Dummy(label, **kw)
+                return dummies[index]
+            return sp.Symbol(label, **kw)
+        if node.keywords:
+            refuse(f"keyword arguments of {name}")
+        args = []
+        for a in node.args:
+            if isinstance(a, ast.Constant):
+                refuse(f"a {type(a.value).__name__} given to {name}" if not isinstance(a.value, str)
+                       else f"a string given to {name}")
+            args.append(conv(a))
+        if name == "Pow":
+            if len(args) != 2:
+                refuse("Pow takes two arguments")
+            check_pow(*args)
+        elif name not in _ARITHMETIC and not all(small(v, MAX_FUNCTION_ARG) for v in args):
+            refuse(f"an exact number above {MAX_FUNCTION_ARG} given to {name}")
+        return cls(*args)
 
     def conv(node):
-        if isinstance(node, ast.Constant):
-            return literal(node)
-        if isinstance(node, ast.Tuple):
-            return literal(node)
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-            return -conv(node.operand)
+        if isinstance(node, ast.Call):
+            return call(node)
         if isinstance(node, ast.Name):
             v = names.get(node.id)
             if v is None or isinstance(v, type):
-                raise UntrustedRecord(f"not SymPy data: {node.id}")
+                refuse(node.id)
             return v
-        if isinstance(node, ast.Call):
-            if not isinstance(node.func, ast.Name):
-                raise UntrustedRecord(f"not SymPy data: a call of {ast.unparse(node.func)}")
-            cls = names.get(node.func.id)
-            if not isinstance(cls, type):
-                raise UntrustedRecord(f"not SymPy data: {node.func.id}")
-            args = [literal(a) for a in node.args]
-            kw = {}
-            for k in node.keywords:
-                if k.arg is None or not isinstance(k.value, ast.Constant):
-                    raise UntrustedRecord("a keyword argument that is not a literal")
-                kw[k.arg] = k.value.value
-            if node.func.id == "Dummy":
-                index = kw.pop("dummy_index", None)
-                key = (args[0] if args else "", tuple(sorted(kw.items())))
-                if index not in dummies:
-                    import sympy as sp
-                    same = engine.get((key[0], tuple(sorted(sp.Dummy(key[0], **kw).assumptions0.items()))))
-                    dummies[index] = same if same is not None else sp.Dummy(*args, **kw)
-                return dummies[index]
-            return cls(*args, **kw)
-        raise UntrustedRecord(f"not SymPy data: {type(node).__name__}")
+        refuse(type(node).__name__ if not isinstance(node, ast.Constant) else f"a bare {type(node.value).__name__}")
     try:
         return conv(tree.body)
     except UntrustedRecord:
         raise
+    except RecursionError:
+        raise UntrustedRecord("not SymPy data: nested too deeply") from None
     except Exception as exc:              # a SymPy class refusing its arguments
         raise UntrustedRecord(f"could not rebuild {text[:80]!r}: {type(exc).__name__}: {exc}") from None
 
@@ -374,6 +502,11 @@ def _decode(data: bytes, key: str):
         return None                                    # corrupt: recomputed, never trusted
     try:
         rec = decode(json.loads(payload.decode("utf-8")))
+    except UntrustedRecord as exc:
+        warnings.warn(f"linecontact_sym: a derivation cache record ({key[:16]}...) holds something that is not "
+                      f"plain data ({str(exc)[:160]}); it is ignored and derived afresh", UntrustedCacheWarning,
+                      stacklevel=4)
+        return None
     except Exception:   # noqa: BLE001 -- whatever is wrong with a file, it is derived afresh
         return None
     if not isinstance(rec, dict) or rec.get("key") != key or rec.get("version") != code_version():

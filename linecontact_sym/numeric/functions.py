@@ -6,14 +6,15 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.errors import DomainError, LineContactError, singular_point
+from ..core.units import is_quantity, with_unit
 from .exports import compile_callable
 from .fastpath import scalar_plan
 
-__all__ = ["make_callable", "NumericFunction"]
+__all__ = ["make_callable", "NumericFunction", "fold_x"]
 
 
 def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dict | None = None,
-                  stable: bool = True, domain=None):
+                  stable: bool = True, domain=None, inputs=None):
     """A callable ``fn(**values)`` evaluating a derived quantity.
 
     ``derivation``: a :class:`~linecontact_sym.method.derivation.Derivation`
@@ -28,7 +29,10 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     evaluates the stable form (:mod:`linecontact_sym.numeric.stable`).
     Domain: the quantity's (e.g. a > 0, |x| <= a for a pressure); outside it
     the value is NaN or complex, not an error.  ``fn.arguments`` lists the
-    names.
+    names.  ``inputs`` (a contact's ``ExportInputs``): the arguments'
+    treatment before anything else, checked or not: pint quantities
+    converted to SI (the result then a quantity), x folded to |x| for a
+    quantity even in x.
 
     >>> import sympy as sp
     >>> from linecontact_sym.core.symbols import a, E_star
@@ -48,7 +52,28 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
     """
     if backend not in ("numpy", "mpmath"):
         raise LineContactError(f"unknown backend {backend!r}; use 'numpy' or 'mpmath'")
-    return NumericFunction(derivation, backend, dps, dict(params or {}), stable, domain)
+    import sympy as sp
+    if not isinstance(derivation.expr, sp.Expr):       # a system of equations (the MD force with its c_D)
+        raise LineContactError(f"the {derivation.quantity} is not one expression but {type(derivation.expr).__name__} "
+                               f"{str(derivation.expr)[:160]}; it has no export of its own: evaluate it through "
+                               f"its contact's numeric methods (e.g. the Maugis-Dugdale state(a, ...))")
+    return NumericFunction(derivation, backend, dps, dict(params or {}), stable, domain, inputs)
+
+
+def fold_x(v):
+    """|v| of a number, an array, a list of numbers or a pint quantity (other
+    values as given: the checks that follow name them)."""
+    if isinstance(v, bool):
+        return v
+    if isinstance(v, (list, tuple)):
+        try:
+            return np.abs(np.asarray(v, dtype=float))
+        except (TypeError, ValueError):
+            return v
+    try:
+        return abs(v)
+    except TypeError:
+        return v
 
 
 class NumericFunction:
@@ -63,9 +88,11 @@ class NumericFunction:
     :class:`~linecontact_sym.core.errors.LineContactError` (pickle the contact
     and export again)."""
 
-    def __init__(self, derivation, backend, dps, params, stable, domain=None):
+    def __init__(self, derivation, backend, dps, params, stable, domain=None, inputs=None):
         self.derivation, self.backend, self.dps = derivation, backend, dps
         self.params, self.stable, self.domain = params, stable, domain
+        self.inputs = inputs
+        self._fold = inputs is not None and inputs.fold_x
         self.arguments = tuple(s.name for s in derivation.variables_all)
         self.__doc__ = (f"{derivation.quantity} ({backend}); arguments: {', '.join(self.arguments)}.\n"
                         f"Formula: {derivation.expr}\nMethod: {derivation.method}")
@@ -73,6 +100,8 @@ class NumericFunction:
         self._scalar = None   # the scalar fast path, built on the first call
 
     def __call__(self, *args, **kw):
+        if self._fold and "x" in kw:         # an even quantity of x: the closed form holds for x > 0
+            kw["x"] = fold_x(kw["x"])
         if not args:
             fast = self._scalar
             if fast is None:
@@ -84,6 +113,9 @@ class NumericFunction:
         if args:
             raise DomainError(f"{self.derivation.quantity} takes keyword arguments only: "
                               f"fn({', '.join(n + '=...' for n in self.arguments)})")
+        registry = unit = None
+        if self.inputs is not None and (self.inputs.has_units or any(is_quantity(v) for v in kw.values())):
+            kw, registry, unit = self.inputs.strip(kw)    # checked against their units, in SI
         kw = {k: v[()] if isinstance(v, np.ndarray) and v.ndim == 0 else v for k, v in kw.items()}
         if self.backend == "mpmath" and any(isinstance(v, (list, tuple, np.ndarray)) for v in kw.values()):
             raise DomainError(f"the mpmath function of {self.derivation.quantity} takes scalars; use "
@@ -100,6 +132,8 @@ class NumericFunction:
         if outside is not None:              # array points outside the domain (a DomainWarning said so)
             out = np.array(np.broadcast_to(out, np.broadcast_shapes(np.shape(out), outside.shape)), dtype=float)
             out[np.broadcast_to(outside, out.shape)] = np.nan
+        if registry is not None:
+            return with_unit(out, unit, registry)
         return out
 
     def __getstate__(self):

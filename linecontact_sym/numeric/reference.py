@@ -61,7 +61,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "quotient_bound", "compile_acb", "to_acb", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "compile_acb", "to_acb", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -162,9 +162,7 @@ def to_acb(v):
     if isinstance(v, mpmath.mpf):
         if not mpmath.isfinite(v):
             raise ArbUnsupported(f"non-finite number {v}")
-        sign, man, exp, _ = mpmath.mpf(v)._mpf_     # (mpf.man_exp drops the sign: -0.5 became +0.5)
-        man = -int(man) if sign else int(man)
-        return flint.acb(flint.arb(flint.fmpz(man)) * flint.arb(2) ** int(exp)) if man else flint.acb(0)
+        return _acb_of_mpf(v._mpf_)
     try:
         q = number(v)
     except LineContactError as exc:
@@ -174,6 +172,15 @@ def to_acb(v):
     if q.is_number and not q.free_symbols:
         return compile_acb(q, None)(flint.acb(0), False)
     raise ArbUnsupported(f"cannot make a ball of {v!r}")
+
+
+def _acb_of_mpf(t):
+    """The exact ball of an mpf's raw (sign, mantissa, exponent, bits) value
+    (not through mpmath.mpf(), which rounds to mpmath's working precision,
+    nor mpf.man_exp, which drops the sign)."""
+    sign, man, exp, _ = t
+    man = -int(man) if sign else int(man)
+    return flint.acb(flint.arb(flint.fmpz(man)) * flint.arb(2) ** int(exp)) if man else flint.acb(0)
 
 
 # ----------------------------------------------------------------- the compiler
@@ -202,39 +209,31 @@ def _cut(fn, *segments):
     return g
 
 
+def _method(name):
+    return lambda z, an: getattr(z, name)()
+
+
+#: functions holomorphic wherever they are finite (poles give non-finite balls by themselves)
+_MEROMORPHIC = {sp.exp: "exp", sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: "sec",
+                sp.csc: "csc", sp.sinh: "sinh", sp.cosh: "cosh", sp.tanh: "tanh", sp.coth: "coth",
+                sp.sech: "sech", sp.csch: "csch", sp.gamma: "gamma", sp.erf: "erf", sp.erfc: "erfc"}
+
 _UNARY = {
-    sp.exp: lambda z, an: z.exp(),
-    sp.sin: lambda z, an: z.sin(),
-    sp.cos: lambda z, an: z.cos(),
-    sp.tan: lambda z, an: z.tan(),
-    sp.cot: lambda z, an: z.cot(),
-    sp.sec: lambda z, an: z.sec(),
-    sp.csc: lambda z, an: z.csc(),
-    sp.sinh: lambda z, an: z.sinh(),
-    sp.cosh: lambda z, an: z.cosh(),
-    sp.tanh: lambda z, an: z.tanh(),
-    sp.coth: lambda z, an: z.coth(),
-    sp.sech: lambda z, an: z.sech(),
-    sp.csch: lambda z, an: z.csch(),
-    sp.atan: _cut(lambda z: z.atan(), ),      # cuts on the imaginary axis only
-    sp.asinh: _cut(lambda z: z.asinh()),
+    **{f: _method(name) for f, name in _MEROMORPHIC.items()},
     sp.log: lambda z, an: z.log(analytic=an),
     sp.Abs: lambda z, an: z.real_abs(analytic=an),
     sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None)),
     sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None)),
     sp.atanh: _cut(lambda z: z.atanh(), (None, -1), (1, None)),
     sp.acosh: _cut(lambda z: z.acosh(), (None, 1)),
-    sp.gamma: lambda z, an: z.gamma(),
     sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0)),
     sp.elliptic_k: _cut(lambda m: flint.acb.elliptic_k(m), (1, None)),
-    sp.erf: lambda z, an: z.erf(),
-    sp.erfc: lambda z, an: z.erfc(),
     sp.sign: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_sgn(),
     sp.Heaviside: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_heaviside(),
 }
 
-# atan has branch points at +-i, off the real line: a ball near the real
-# segment never reaches them unless it is huge
+# atan and asinh have their branch points at +-i, off the real line: a ball
+# near the real segment never reaches them unless it is huge
 _UNARY[sp.atan] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.atan()
 _UNARY[sp.asinh] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.asinh()
 
@@ -267,12 +266,28 @@ def compile_acb(expr, var):
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
     acb, arb = flint.acb, flint.arb
 
-    def const(c):
-        return lambda z, an: c
-
     def build(e):
         if var is not None and e == var:
             return lambda z, an: z
+        if var is not None and not e.has(var):
+            return constant(build_node(e))
+        return build_node(e)
+
+    def constant(f):
+        """A subexpression free of the variable: its ball computed once per
+        working precision (the rationals and parameter combinations of an
+        integrand are not rebuilt at every node)."""
+        memo = {}
+
+        def g(z, an):
+            prec = flint.ctx.prec
+            v = memo.get(prec)
+            if v is None:
+                v = memo[prec] = f(z, False)
+            return v
+        return g
+
+    def build_node(e):
         if e.is_Integer:
             c = int(e)
             return lambda z, an: acb(flint.fmpz(c))
@@ -280,8 +295,10 @@ def compile_acb(expr, var):
             p_, q_ = int(e.p), int(e.q)
             return lambda z, an: acb(flint.fmpq(p_, q_))
         if e.is_Float:
-            m = mpmath.mpf(e._mpf_)
-            return lambda z, an: to_acb(m)
+            if not mpmath.isfinite(mpmath.mpf(e._mpf_)):
+                raise ArbUnsupported(f"non-finite number {e}")
+            t_ = e._mpf_
+            return lambda z, an: _acb_of_mpf(t_)
         if e is sp.pi:
             return lambda z, an: acb(arb.pi())
         if e is sp.E:
@@ -454,7 +471,9 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
     every point given: a :class:`RefValue`.
 
     ``integrand``: a SymPy expression in ``var`` alone (all parameters
-    already replaced by numbers, exact ones preferably);
+    already replaced by numbers, exact ones preferably), or a list of them,
+    one per piece [points[k], points[k+1]] (a function whose formula
+    differs between pieces, |s| written s or -s: no switch to bisect);
     ``points``: the end points and break points, ascending (SymPy numbers,
     ints, Rationals, mpf); ``dps``: the relative digits asked of the
     enclosure (of the sum; each piece is asked a little more);
@@ -533,6 +552,29 @@ def combine(expr, sym, ref: RefValue, dps: int = 45) -> RefValue:
     return RefValue(+val, mpmath.mpf(0), MPMATH, ref.note or "outer terms not in Arb")
 
 
+def lincomb(terms, dps: int = 45, note: str = "") -> RefValue:
+    """sum(coef * value) for ``terms`` [(coef, value)]: ``coef`` an exact
+    number, ``value`` a :class:`RefValue` or an exact SymPy number (a closed
+    term beside the integrals: mu p(x) outside the stick zone).  Rigorous in
+    Arb when every RefValue is an enclosure, else an mpmath estimate that
+    keeps the first reason why not."""
+    refs = [v for _, v in terms if isinstance(v, RefValue)]
+    why = next((r.note for r in refs if not r.certified), None)
+    if why is None and all(r.ball is not None for r in refs):
+        try:
+            with flint.ctx.workprec(_bits(dps) + 64):
+                b = flint.acb(0)
+                for c, v in terms:
+                    b += to_acb(c) * (v.ball if isinstance(v, RefValue) else to_acb(v))
+            if b.is_finite() and 0 in b.imag:
+                return RefValue(_mpf_of(b.real.mid()), _mpf_of(b.real.rad()), ARB, note, ball=b)
+        except ArbUnsupported as exc:
+            why = str(exc)
+    with workdps(dps + 10):
+        val = mpmath.fsum(to_mpf(c) * (v.mid if isinstance(v, RefValue) else to_mpf(v)) for c, v in terms)
+    return RefValue(val, mpmath.mpf(0), MPMATH, why or note)
+
+
 def _mpf_of(b):
     """An arb with an exact midpoint (mid() or rad()) as an exact mpf."""
     if b.is_zero():
@@ -543,32 +585,57 @@ def _mpf_of(b):
         return mpmath.ldexp(mpmath.mpf(man), exp)
 
 
+def _per_piece(integrand, points):
+    """The integrand of each piece (one expression for all, or a list)."""
+    if isinstance(integrand, (list, tuple)):
+        if len(integrand) != len(points) - 1:
+            raise ValueError(f"{len(integrand)} integrands for {len(points) - 1} pieces")
+        return list(integrand)
+    return [integrand] * (len(points) - 1)
+
+
 def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
-    f = compile_acb(integrand, var)
-    prec = _bits(dps) + 30
     goal = _bits(dps)
-    if crude is not None:
-        main = f
-        prec = 2 * goal + 40
+    prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
+
+    def compiled(expr):
+        main = compile_acb(expr, var)
+        if crude is None:
+            return main
 
         def f(z, an):
             v = main(z, an)
             if an or v.is_finite() or z.imag != 0:
                 return v
             return crude(z)
+        return f
+    fs = {}
+    for e in _per_piece(integrand, points):
+        if e not in fs:
+            fs[e] = compiled(e)
     with flint.ctx.workprec(prec):
-        edges = [to_acb(p) for p in points]
+        exact = [_exact(p) for p in points]
         total = flint.acb(0)
         tol = flint.arb(2) ** -(goal + 8)
-        for lo, hi in zip(edges[:-1], edges[1:]):
+
+        def piece(fn, lo, hi):
+            lo_b, hi_b = to_acb(lo), to_acb(hi)
+            _ends_bounded(fn, lo_b, hi_b)
             try:
-                piece = flint.acb.integral(f, lo, hi, rel_tol=tol, eval_limit=eval_limit)
+                v = flint.acb.integral(fn, lo_b, hi_b, rel_tol=tol, eval_limit=eval_limit)
             except (ZeroDivisionError, ValueError, TypeError) as exc:
                 raise ArbUnsupported(f"Arb could not evaluate the integrand: {exc}") from None
-            if not piece.is_finite():
+            if not v.is_finite():
                 raise ArbUnsupported("Arb could not bound a piece (a singularity at an end point that "
                                      "ball arithmetic cannot enclose, or the evaluation limit)")
-            total += piece
+            return v
+        for e, lo, hi in zip(_per_piece(integrand, points), exact[:-1], exact[1:]):
+            try:
+                total += piece(fs[e], lo, hi)
+            except ArbUnsupported:
+                if crude is not None or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)):
+                    raise
+                total += _substituted(e, var, lo, hi, piece)
         if 0 not in total.imag:
             raise ArbUnsupported(f"the integral is not real: {total}")
         re_ = total.real
@@ -579,12 +646,113 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         return total
 
 
+def _exact(p):
+    """A break point as an exact SymPy number where it is one (an mpf is its
+    binary value); as given where it is not."""
+    try:
+        q = number(p) if not isinstance(p, sp.Basic) else p
+    except LineContactError:
+        return p
+    return q if q.is_number and q.is_real is not False else p
+
+
+#: the substitution variable of an end-point singularity
+_u = sp.Dummy("u", positive=True)
+
+
+def _substituted(integrand, var, lo, hi, piece):
+    """The piece [lo, hi] whose integrand has an algebraic end-point
+    singularity (1/sqrt(a^2 - t^2) at t = a, 1/sqrt(s^2 - b^2) behind a
+    break): split at the middle m and, on each half with a singular end e,
+    t = e + (m - e) u^2, u in [0, 1]: the radicands are factored, so that the
+    u^2 they vanish with comes out of the root and cancels the Jacobian
+    2 (m - e) u exactly (ball arithmetic cannot cancel 0/0 by itself).  A
+    singularity that this does not remove (log, a non-algebraic one)
+    raises :class:`ArbUnsupported` (the fallback runs)."""
+    m = (lo + hi) / 2
+    f = compile_acb(integrand, var)
+    total = flint.acb(0)
+    for e, other in ((lo, m), (m, hi)):
+        try:
+            total += piece(f, e, other)
+            continue
+        except ArbUnsupported:
+            pass
+        total_half = None
+        for end, far in ((e, other), (other, e)):
+            d = far - end
+            g = integrand.xreplace({var: end + d * _u**2}) * 2 * d * _u
+            try:
+                g = _inside_branch(sp.piecewise_fold(g))
+                g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_u),
+                              lambda z: sp.factor(z.base) ** z.exp)
+                v = piece(compile_acb(sp.expand_mul(g), _u), sp.S.Zero, sp.S.One)
+            except ArbUnsupported:
+                continue
+            # t runs from ``end`` to ``far`` as u runs from 0 to 1
+            total_half = v if end == e else -v
+            break
+        if total_half is None:
+            raise ArbUnsupported("an end-point singularity that the substitution t = e + d u^2 does not remove")
+        total += total_half
+    return total
+
+
+def _inside_branch(g):
+    """A Piecewise integrand of a substituted half piece (u in [0, 1], the
+    singular end at u = 0, which is a break point of the caller) replaced
+    by the branch that holds on all of [2**-20, 1] (decided on a ball: the
+    caller's break points are the switch points, so the branch of the open
+    half piece is the branch next to its end); :class:`ArbUnsupported` where
+    no branch is decided there."""
+    if not isinstance(g, sp.Piecewise):
+        if g.has(sp.Piecewise):
+            raise ArbUnsupported("a Piecewise inside the substituted integrand")
+        return g
+    span = flint.acb((flint.arb(2) ** -20).union(flint.arb(1)))
+    for expr, cond in g.args:
+        if cond == sp.true:
+            return expr
+        test = _condition(cond, lambda e: compile_acb(e, _u))
+        dec = test(span)
+        if dec is True:
+            return expr
+        if dec is None:
+            raise ArbUnsupported("the branch of a Piecewise is not decided on the substituted half piece")
+    raise ArbUnsupported("no branch of the Piecewise holds on the substituted half piece")
+
+
+def _ends_bounded(f, lo, hi):
+    """Fail at once where Arb would spend its evaluation limit in vain: the
+    integrand must have a finite ball on a short segment at each end of the
+    piece (an integrable 1/sqrt or log singularity there has none; a
+    removable one with a ``crude`` bound, a sqrt-type branch point, a
+    Piecewise decided next to its switch have one)."""
+    eps = (hi - lo) * flint.arb(2) ** -30
+    for end in ((lo).union(lo + eps), (hi - eps).union(hi)):
+        try:
+            v = f(flint.acb(end.real), False)
+        except (ZeroDivisionError, ValueError, TypeError):
+            v = _nan()
+        if not v.is_finite():
+            raise ArbUnsupported("Arb cannot bound the integrand next to an end point of a piece (an integrable "
+                                 "singularity such as 1/sqrt or log there: ball arithmetic has no finite bound)")
+
+
 def _mpmath_integral(integrand, var, points, dps):
     from .exports import lambdify_mpmath
-    g = lambdify_mpmath(integrand, [var])
     pts = [to_mpf(p) for p in points]
+    pieces = _per_piece(integrand, points)
+    if all(e is pieces[0] for e in pieces):
+        pieces, spans = pieces[:1], [pts]
+    else:
+        spans = [pts[k:k + 2] for k in range(len(pieces))]
+    total = 0
+    for e, span in zip(pieces, spans):
+        g = lambdify_mpmath(e, [var])
 
-    def h(t):
-        v = g(t)
-        return mpmath.re(v) if isinstance(v, mpmath.mpc) and abs(mpmath.im(v)) < mpmath.eps * abs(v) else v
-    return mpmath.quad(h, pts)
+        def h(t, g=g):
+            v = g(t)
+            return mpmath.re(v) if isinstance(v, mpmath.mpc) and abs(mpmath.im(v)) < mpmath.eps * abs(v) else v
+        total += mpmath.quad(h, span)
+    return total

@@ -35,7 +35,7 @@ def test_piecewise_switch_between_the_given_points_is_still_enclosed():
 def test_log_end_point_falls_back_to_mpmath_and_says_why():
     # int_0^1 s acosh(2/s) ds: ball arithmetic cannot bound acosh(2/s) at s = 0
     r = integrate(t * sp.acosh(2 / t), t, [0, 1], dps=30)
-    assert r.method == MPMATH and r.rad == 0 and "end point" in r.note
+    assert r.method == MPMATH and r.rad == 0 and "singularity" in r.note
     with mpmath.workdps(40):
         ref = mpmath.quad(lambda s: s * mpmath.acosh(2 / s), [0, 1])
         assert abs(r - ref) < mpmath.mpf(10)**-28
@@ -84,3 +84,18 @@ def test_negative_numbers_keep_their_sign():
         assert r.method == "arb" and r.contains(2 * (1 - mpmath.exp(-mpmath.mpf("0.5"))))
         r = integrate(t, t, [mpmath.mpf(-1), mpmath.mpf(0)], 30)
         assert r.contains(-mpmath.mpf("0.5"))
+
+
+def test_inverse_sqrt_end_points_are_certified_after_substitution():
+    # both ends of int_{-1}^{1} dt/sqrt(1 - t^2) = pi are integrable 1/sqrt singularities
+    r = integrate(1 / sp.sqrt(1 - t**2), t, [-1, 1], dps=40)
+    assert r.method == ARB and r.digits >= 40
+    with mpmath.workdps(60):
+        assert r.contains(mpmath.pi)
+    # Eq. (9) as printed, for the parabola's force law: gives back f(a) = a^2/(2R)
+    a, R = sp.Rational(3, 2), sp.Rational(21, 10)
+    J = integrate(sp.pi * t**2 / (4 * R) / (t * sp.sqrt(a**2 - t**2)), t, [0, a], dps=40)
+    assert J.method == ARB
+    with mpmath.workdps(60):
+        f_a = 2 * mpmath.mpf(3) / 2 / mpmath.pi * J
+        assert abs(f_a - mpmath.mpf(9) / 4 / (2 * mpmath.mpf(21) / 10)) < mpmath.mpf(10)**-38

@@ -17,8 +17,12 @@ paper's gamma_12) gives Phat = sqrt(2 pi a gamma E*) (Eq. 31).
 The same follows from the compliance of the flat punch, Eq. (3):
 C(a) = (2/(pi E*)) arccosh(L/a) for the displacement at a distant point L,
 so G = (Phat**2/2) |dC/d(2a)| = Phat**2/(2 pi E* a) as L -> oo.
-:func:`phat_energy` evaluates that route numerically (quadrature of the
-punch displacement, numerical differentiation, root finding).
+:func:`phat_energy` evaluates that route numerically: the compliance's slope
+dC/da as the quadrature of Eq. (3) differentiated under the integral sign
+(:func:`compliance_slope`: the log kernel's a-derivative is bounded, so the
+one reference integrator encloses it in Arb; the old route, numerical
+differentiation of the log-singular quadrature :func:`compliance_quad`, is
+its recorded fallback), then the root of G(Phat) = gamma.
 """
 from __future__ import annotations
 
@@ -33,8 +37,9 @@ from ...core.errors import DomainError, NoPullOffError
 from ...core.precision import workdps
 from ...method.derivation import Derivation
 from ...method.rules import Step
-from ...method.transforms import force_quad
 from ...method.verification import verify
+from ...numeric.reference import combine, integrate, lincomb
+from ..normal.reference import force_reference
 from ..base import Quantity
 from . import branches
 from .law import CohesiveLaw, Parameter, on_base
@@ -77,19 +82,55 @@ def compliance_quad(A, E, dps, L):
         return 2 * I / (mpmath.pi * E)
 
 
+_phi = sp.Dummy("phi", real=True)
+_dC = sp.Dummy("dC", negative=True)
+
+
+def _exact(v):
+    """A number as an exact SymPy number (an mpf by its binary value)."""
+    if isinstance(v, mpmath.mpf):
+        sign, man, exp, _ = v._mpf_
+        r = sp.Integer(int(man)) * sp.Integer(2)**int(exp)
+        return -r if sign else r
+    return sp.sympify(v)
+
+
+def compliance_slope(A, E, dps, L):
+    """dC/da of :func:`compliance_quad` (a RefValue): Eq. (3) differentiated
+    under the integral sign, d/da [ln|L - a sin phi| - ln|a sin phi|] =
+    -sin phi/(L - a sin phi) - 1/a (bounded: the log singularity at phi = 0
+    does not depend on a), integrated by the one reference integrator;
+    mpmath.diff of :func:`compliance_quad` is the recorded fallback.
+    ``A, E, L``: exact numbers (SymPy, int, float)."""
+    A, E, L = (_exact(v) for v in (A, E, L))
+    f = 2 / (sp.pi**2 * E) * (-sp.sin(_phi) / (L - A * sp.sin(_phi)) - 1 / A)
+
+    def fallback():
+        Am, Em, Lm = to_mpf(A), to_mpf(E), to_mpf(L)
+        return mpmath.diff(lambda u: compliance_quad(u, Em, dps + 10, Lm), Am)
+    return integrate(f, _phi, [-sp.pi / 2, 0, sp.pi / 2], dps, fallback=fallback)
+
+
 def phat_energy(A, gamma, E, dps, quadrature=True):
     """Phat from the energy balance G = gamma, G = (P^2/2) |dC/d(2a)| with C
-    the punch compliance (Eq. 3, by quadrature or, with ``quadrature=False``,
-    in its closed arccosh form): numerical differentiation + root finding."""
+    the punch compliance (Eq. 3): with ``quadrature`` (default) its slope by
+    :func:`compliance_slope` and the root Phat = sqrt(4 gamma/|dC/da|) as a
+    :class:`~linecontact_sym.numeric.reference.RefValue` (an Arb enclosure
+    where the slope is one); with ``quadrature=False`` the closed arccosh
+    form differentiated numerically and the root by findroot (an mpf)."""
+    if quadrature:
+        g = sp.sympify(gamma)
+        if g == 0:
+            return mpmath.mpf(0)
+        L = sp.sympify(A) * sp.Integer(10)**(dps + 20)
+        slope = compliance_slope(A, E, dps + 5, L)
+        return combine(sp.sqrt(-4 * g / _dC), _dC, slope, dps)
     with workdps(dps + 10):
         A, g, E = to_mpf(A), to_mpf(gamma), to_mpf(E)
         if g == 0:
             return mpmath.mpf(0)
         L = A * mpmath.mpf(10)**(dps + 20)
-        if quadrature:
-            dC = mpmath.diff(lambda u: compliance_quad(u, E, dps + 10, L), A)
-        else:
-            dC = mpmath.diff(lambda u: 2 * mpmath.acosh(L / u) / (mpmath.pi * E), A)
+        dC = mpmath.diff(lambda u: 2 * mpmath.acosh(L / u) / (mpmath.pi * E), A)
         G = lambda Pv: Pv**2 / 4 * abs(dC) - g  # noqa: E731
         guess = mpmath.sqrt(4 * g / abs(dC))
         return mpmath.findroot(G, (guess * mpmath.mpf("0.5"), guess * 2), solver="anderson")
@@ -143,7 +184,7 @@ class JKR(CohesiveLaw):
     # ----------------------------------------------------------- Eqs. (29), (31), (33)
     def derive_flat_punch_force(self, ad) -> Derivation:
         """Eq. (31), verified against the energy balance of the flat-punch
-        compliance (quadrature of Eq. 3, mpmath.diff, findroot); shared by all
+        compliance (its slope by quadrature of Eq. 3, :func:`compliance_slope`); shared by all
         contacts with the same work of adhesion."""
         key = (self.gamma, ad.contact.points, ad.contact.verify)
         if key not in _PHAT_CACHE:
@@ -158,14 +199,13 @@ class JKR(CohesiveLaw):
         prof, gexpr = ad.profile, self.gamma
 
         def reference(vals, dps):
-            with workdps(dps + 10):
-                return force_quad(prof, vals, dps) - phat_energy(
-                    vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
+            return lincomb([(1, force_reference(prof, vals, dps)),
+                            (-1, phat_energy(vals[S.a], gexpr.xreplace(vals), vals[S.E_star], dps))], dps)
         rec = None
         if fd.closed_form and ad.contact.verify:
             rec = verify(expr, reference, ad._sampler(), fd.conditions, n_points=ad.contact.points,
-                         reference_name="quadrature of Eq. (10*) minus Phat from the energy balance of "
-                                        "the flat-punch compliance (Eq. 3, mpmath.diff + findroot)")
+                         reference_name="Eq. (10*) minus Phat from the energy balance of the flat-punch "
+                                        "compliance (Eq. 3 differentiated under the integral sign)")
             ad._require(rec, "force")
         step = Step("jkr_superposition", expr, fd.conditions,
                     (f"Eq. (33): P0(a) of the engine ({fd.method}) minus Phat, Eq. (31)" if fd.closed_form
@@ -182,15 +222,14 @@ class JKR(CohesiveLaw):
         gexpr = self.gamma
 
         def reference(vals, dps):
-            with workdps(dps + 10):
-                A, X = to_mpf(vals[S.a]), to_mpf(vals[S.x])
-                ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps, quadrature=False)
-                return pd.reference(vals, dps) - ph / (mpmath.pi * mpmath.sqrt(A**2 - X**2))
+            A, X = vals[S.a], vals[S.x]
+            ph = phat_energy(A, gexpr.xreplace(vals), vals[S.E_star], dps)
+            return lincomb([(1, pd.reference(vals, dps)), (-1 / (sp.pi * sp.sqrt(A**2 - X**2)), ph)], dps)
         rec, notes = None, list(pd.notes)
         if pd.closed_form and ad.contact.verify:
             rec = verify(expr, reference, ad._sampler("inside"), pd.conditions, n_points=ad.contact.points,
-                         reference_name="Eq. (12) quadrature of p0 minus the flat punch (Eq. 1) with Phat "
-                                        "from the energy balance (mpmath.diff + findroot)")
+                         reference_name="Eq. (12) of p0 minus the flat punch (Eq. 1) with Phat from the energy "
+                                        "balance (Eq. 3 differentiated under the integral sign)")
             ad._require(rec, "pressure")
             eq = branches.equilibrium_digits(ad, expr)
             notes.append(f"equilibrium: 2 int_0^a p dx (quadrature of Eq. 29) = P(a) of Eq. (33) to "
@@ -299,8 +338,8 @@ def check_existence(ad, C, m, vals=None):
 
 def _derive_phat(ad, gamma) -> Derivation:
     """Eq. (31), verified against the energy balance G = gamma computed from
-    the flat-punch compliance by quadrature (Eq. 3), numerical
-    differentiation and root finding."""
+    the flat-punch compliance's slope by quadrature (Eq. 3 differentiated
+    under the integral sign, an Arb enclosure) and its root."""
     expr = flat_punch_force(gamma)
     gsyms = tuple(sorted(gamma.free_symbols, key=lambda s: s.name))
 
@@ -315,8 +354,9 @@ def _derive_phat(ad, gamma) -> Derivation:
     rec = None
     if ad.contact.verify and gamma != 0:
         rec = verify(expr, reference, sampler, (), n_points=ad.contact.points,
-                     reference_name="energy release rate G = (Phat^2/2)|dC/d(2a)| = gamma of the flat punch, "
-                                    "compliance C by quadrature of Eq. (3), mpmath.diff + findroot")
+                     reference_name="the energy release rate G = (Phat^2/2)|dC/d(2a)| = gamma of the flat punch, "
+                                    "the compliance's slope by quadrature of Eq. (3) differentiated under the "
+                                    "integral sign")
         ad._require(rec, "flat_punch_force")
     step = Step("griffith", expr, (), ("Eq. (31): Griffith balance K_I^2/(2 E*) = gamma at the edge, "
                                        "K_I = Phat/sqrt(pi a) (Eq. 30)",))
@@ -327,4 +367,4 @@ def _derive_phat(ad, gamma) -> Derivation:
 
 
 __all__ = ["JKR", "check_existence", "flat_punch_force", "stress_intensity", "energy_release_rate",
-           "compliance_quad", "phat_energy", "GAMMA_RANGE"]
+           "compliance_quad", "compliance_slope", "phat_energy", "GAMMA_RANGE"]

@@ -36,6 +36,7 @@ delta = pi E* w/(4 sigma_0^2) the cohesive-zone length of the JKR limit
 """
 from __future__ import annotations
 
+import contextlib
 import time
 
 import mpmath
@@ -46,6 +47,7 @@ from ...core.conversion import float_values, point_value, rational
 from ...core.errors import DomainError, NoEquilibriumError, NumericValuesRequired
 from ...core.roots import Outside
 from ...core.precision import workdps
+from ...core.ranges import check_positive, check_tolerance
 from ...method.derivation import Derivation, values_by_name
 from ...method.rules import Step
 from ...method.verification import verify
@@ -224,7 +226,11 @@ class MaugisDugdaleContact(ContactOn):
         return new
 
     def _value(self, name):
-        e = self.derivation(name).expr
+        d = self.derivation(name)
+        if not d.closed_form and d.reference is not None and self.values and \
+                all(s in self.values for s in self.variables):
+            return d.reference(self.values, 30)      # a numeric quantity at bound values: the number (as JKR's)
+        e = d.expr
         return e.xreplace(self.values) if self.values else e
 
     # ------------------------------------------------------------ the derivation
@@ -360,6 +366,8 @@ class MaugisDugdaleContact(ContactOn):
 
     # ------------------------------------------------------------ numbers
     def _numeric_values(self, values):
+        from ...core.units import refuse_units
+        refuse_units(values, "the Maugis-Dugdale contact's numeric results", S.UNITS)
         vals = dict(self.values)
         for s in self.variables:
             if s.name in values:
@@ -372,9 +380,8 @@ class MaugisDugdaleContact(ContactOn):
         missing = [s.name for s in self.variables if s not in vals]
         if missing:
             raise NumericValuesRequired(f"values needed for {', '.join(missing)}")
-        for s in self.variables:
-            if not to_sympy(vals[s]).is_number or not to_sympy(vals[s]) > 0:
-                raise DomainError(f"{s.name} = {vals[s]} must be a positive number")
+        for s in self.variables:     # a finite positive real number each (core.ranges)
+            check_positive(s.name, to_sympy(vals[s]), _LIMITS.get(s.name))
         return vals
 
     def numeric_law(self, **values) -> MDLaw:
@@ -394,7 +401,8 @@ class MaugisDugdaleContact(ContactOn):
             A = mpmath.mpf(sp.N(to_sympy(a), dps + 20)) if not isinstance(a, mpmath.mpf) else a
         if not A > 0:
             raise DomainError(f"the half-width must be positive, got a = {a}")
-        return law.state(A, dps)
+        with _real_profile(self, values):
+            return law.state(A, dps)
 
     def pull_off_at(self, dps: int = 30, **values) -> MDPullOff:
         """The load-control pull-off: the global minimum of P(a) over every
@@ -404,7 +412,8 @@ class MaugisDugdaleContact(ContactOn):
         law = self.numeric_law(**values)
         key = ("po", dps, id(law))
         if key not in self._cache:
-            self._cache[key] = law.pull_off(dps)
+            with _real_profile(self, values):
+                self._cache[key] = law.pull_off(dps)
         return self._cache[key]
 
     def branches(self, load, dps: int = 30, **values):
@@ -448,8 +457,9 @@ class MaugisDugdaleContact(ContactOn):
         return maugis_choice.sigma0_for(self, lam, dps, **values)
 
     def model_choice(self, rtol=0.05, dps: int = 15, **values):
-        """'JKR' or 'MD' for a tolerance, see :func:`.maugis_choice.model_choice`."""
-        return maugis_choice.model_choice(self, rtol, dps, **values)
+        """'JKR' or 'MD' for a tolerance (> 0, :func:`~linecontact_sym.core.ranges.check_tolerance`),
+        see :func:`.maugis_choice.model_choice`."""
+        return maugis_choice.model_choice(self, check_tolerance(rtol), dps, **values)
 
     def adhesion_map(self, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), path=None, **kw):
         """The adhesion map (needs the ``[plot]`` extra): P(a) for several
@@ -465,6 +475,26 @@ class MaugisDugdaleContact(ContactOn):
     def report(self, quantities=("zone_force", "cohesive_gap", "pressure")) -> str:
         return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
 
+
+@contextlib.contextmanager
+def _real_profile(md, values):
+    """The numeric law's searches compare real numbers; where the cohesive
+    zone would reach past the profile's real domain (the exact cylinder's
+    |x| > R) they meet complex values: a DomainError saying so, not a
+    TypeError of mpmath."""
+    try:
+        yield
+    except TypeError as exc:
+        if "complex" not in str(exc):
+            raise
+        raise DomainError(f"no Maugis-Dugdale state of f(x) = {md.profile.expr} at {values}: the cohesive zone "
+                          f"would reach where the profile is not real (e.g. |x| > R of the exact cylinder); "
+                          f"a smaller work of adhesion or a larger sigma_0 keeps it inside") from None
+
+
+#: what an infinite value of a parameter stands for (said when one is given)
+_LIMITS = {"sigma_0": "the cohesive stress sigma_0 (sigma_0 -> oo with w fixed is the JKR limit: "
+                      "use contact.adhesive(w) for it)"}
 
 _REFERENCE_NAMES = {
     "zone_force": "Johnson's bounded-solution condition P = (E*/2) int_-a^a s phi'(s)/sqrt(a^2-s^2) ds on the effective "

@@ -83,7 +83,9 @@ def derive_half_width(contact, load=S.P, budget=None) -> Derivation:
     parts = ("half_width", contact.profile.expr, dict(contact.profile.ranges), fd.expr, load, contact.points,
              contact.digits)
     return remembered(parts, lambda: _derive_half_width(contact, load, fd, budget), budget,
-                      lambda d: _half_width_reference(contact, load))
+                      lambda d: _half_width_reference(contact, load),
+                      recheck=lambda d: _inverts(contact, load, fd, d.expr, random.SystemRandom().randrange(2**32),
+                                                 1, 15))
 
 
 def _half_width_reference(contact, load):
@@ -107,19 +109,8 @@ def _derive_half_width(contact, load, fd, budget) -> Derivation:
         except (NotImplementedError, ValueError, TypeError) as exc:
             sols = []
             notes.append(f"sympy.solve: {exc}".splitlines()[0])
-        sample = contact._sampler()
         for cand in sols:
-            rng = random.Random(7)
-            good = 0
-            for _ in range(contact.points):
-                vals = sample(rng)
-                if vals is None:
-                    continue
-                Pv = sp.N(fd.expr.xreplace(vals), 60)
-                av = sp.N(cand.xreplace({**vals, load: Pv}), 60)
-                if av.is_real and abs(av - vals[S.a]) <= abs(vals[S.a]) * sp.Float(10)**(-contact.digits):
-                    good += 1
-            if good == contact.points:
+            if _inverts(contact, load, fd, cand, 7, contact.points, contact.digits):
                 expr = cand
                 break
     reference = _half_width_reference(contact, load)
@@ -132,6 +123,24 @@ def _derive_half_width(contact, load, fd, budget) -> Derivation:
     return Derivation("half_width", expr=sp.Eq(fd.expr, load), closed_form=False,
                       step=fallback_step("numeric root of P(a) = P (no closed-form inverse)"), notes=tuple(notes),
                       reference=reference, variables=variables, attempts=tuple(attempts))
+
+
+def _inverts(contact, load, fd, cand, seed, points, digits) -> bool:
+    """Does ``cand`` = a(P) invert the force law, a(P(a)) = a to ``digits``
+    digits at ``points`` random admissible points (``seed``)?  The check of a
+    candidate found by ``sympy.solve``, and of a closed form read from disk."""
+    sample = contact._sampler()
+    rng = random.Random(seed)
+    good = 0
+    for _ in range(points):
+        vals = sample(rng)
+        if vals is None:
+            continue
+        Pv = sp.N(fd.expr.xreplace(vals), 60)
+        av = sp.N(cand.xreplace({**vals, load: Pv}), 60)
+        if av.is_real and abs(av - vals[S.a]) <= abs(vals[S.a]) * sp.Float(10)**(-digits):
+            good += 1
+    return good == points
 
 
 def _solve_for_a(Pexpr, load):

@@ -63,9 +63,8 @@ def pressure_reference(force_law, breaks, vals: dict, dps: int, fallback):
     dP = sp.diff(force_law, S.a).xreplace(_params(vals))
     sv = sp.sqrt(X**2 + _w**2)
     integrand = dP.xreplace({S.a: sv}) / (sp.pi * sv)
-    with workdps(dps + 30):
-        Xm = to_mpf(X)
-        inner = sorted(mpmath.sqrt(to_mpf(b)**2 - Xm**2) for b in breaks if Xm < to_mpf(b) < to_mpf(A))
+    inner = sorted((sp.sqrt(b**2 - X**2) for b in breaks if (X < b) == sp.true and (b < A) == sp.true),
+                   key=lambda v: to_mpf(v))
     return integrate(integrand, _w, [0, *inner, sp.sqrt(A**2 - X**2)], dps, fallback=fallback)
 
 

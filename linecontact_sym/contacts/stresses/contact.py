@@ -15,8 +15,9 @@ a callable          q(s) vectorised float64 (numeric field only)
 
 The closed forms go through the Cauchy transform of the pressure, G(zeta) =
 int p(s)/(zeta - s) ds = int_0^a P'(t) (zeta^2 - t^2)^(-1/2) dt (Popov's
-flat punches, :mod:`.kolosov`), and are verified against the mpmath
-quadrature of the Flamant integrals of p and q (:mod:`~linecontact_sym.contacts.stresses.reference`).
+flat punches, :mod:`.kolosov`), and are certified against Arb ball
+quadrature of the Flamant integrals of p and q (mpmath where Arb cannot,
+recorded; :mod:`~linecontact_sym.contacts.stresses.reference`).
 """
 from __future__ import annotations
 
@@ -288,6 +289,9 @@ class StressField(ContactOn):
 
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
         name = self.resolve(quantity)
+        if self.stick is not None and "a" in values:     # the stick zone lies in the contact: 0 <= c <= a
+            given = {q: user_value(values[q.name]) for q in self.stick.free_symbols if q.name in values}
+            check_stick(user_value(values["a"]), self.stick.xreplace(given))
         if name in _MAX or name.endswith("_depth") or name.startswith("critical"):
             return self.derivation(name).evalf(dps=dps, **values)
         return super().evaluate_at(name, dps, **values)

@@ -1,5 +1,5 @@
-"""The independent reference of the subsurface stresses: mpmath quadrature of
-the Flamant integrals (Johnson 1985, Eq. 2.23) of the surface tractions
+"""The independent reference of the subsurface stresses: Arb ball quadrature
+(mpmath as the recorded fallback) of the Flamant integrals (Johnson 1985, Eq. 2.23) of the surface tractions
 themselves, and of the Cauchy transform of the pressure.
 
 It shares nothing with the closed forms and the numeric field of
@@ -17,13 +17,32 @@ into a bounded smooth function of u::
 
 so the integrals are taken over u, split where s crosses the ends of the
 contact and the breakpoints of the tractions (where p or q is not smooth:
-s = 0 for power laws, s = +-b for the worn cylinder), by tanh-sinh.
+s = 0 for power laws, s = +-b for the worn cylinder).
+
+:func:`flamant_enclosures` hands these integrands (SymPy, every value exact)
+to the one reference integrator
+(:func:`linecontact_sym.numeric.reference.integrate`): Arb ball quadrature,
+a rigorous enclosure of each component; :func:`flamant_stresses` (tanh-sinh
+in mpmath, of callables) is its recorded fallback and the route of tractions
+that are not SymPy expressions.
 """
 from __future__ import annotations
 
 import mpmath
+import sympy as sp
+
 from ...core.errors import DomainError
 from ...core.precision import workdps
+from ...numeric.reference import estimate, integrate
+
+#: evaluations per piece before Arb gives up: a piece at the contact's edge
+#: (p ~ sqrt(a - s)) takes about 1700 at 45 digits; one that Arb cannot bound
+#: (a log singularity, 2F1 at its branch point) wastes the whole limit
+EVAL_LIMIT = 6000
+
+#: the three components, in the order of :func:`flamant_stresses`
+COMPONENTS = ("sigma_x", "sigma_z", "tau_xz")
+_u = sp.Dummy("u", real=True)
 
 
 def _pieces(x, z, a, breaks):
@@ -85,6 +104,70 @@ def flamant_stresses(p, q, a, x, z, breaks=(), dps: int = 30):
         return tuple(+(2 * v / mpmath.pi) for v in out)
 
 
+def flamant_kernels(P, Q, u):
+    """(2/pi) x the integrands of (sigma_x, sigma_z, tau_xz) in u (module
+    docstring) for the tractions P = p(s), Q = q(s) at s = x + z sinh(u)."""
+    ch, th = sp.cosh(u), sp.tanh(u)
+    c = 2 / sp.pi
+    return (c * (-P * th**2 / ch + Q * th**3),
+            c * (-P / ch**3 + Q * th / ch**2),
+            c * (P * th / ch**2 - Q * th**2 / ch))
+
+
+def _exact_sorted(values):
+    """Distinct exact values, ascending (floats taken as their binary value)."""
+    out = {}
+    for v in values:
+        v = sp.Rational(v) if isinstance(v, float) else sp.nsimplify(v) if isinstance(v, sp.Float) else sp.sympify(v)
+        key = mpmath.mpf(sp.N(v, 60)) if not v.is_Rational else mpmath.mpf(v.p) / v.q
+        with workdps(60):
+            key = +key
+        out.setdefault(key, v)
+    return [out[k] for k in sorted(out)]
+
+
+def flamant_enclosures(tractions, a, x, z, breaks=(), dps: int = 30, fallback=None):
+    """(sigma_x, sigma_z, tau_xz) at (x, z), z > 0, as three
+    :class:`~linecontact_sym.numeric.reference.RefValue` (Arb enclosures where
+    Arb can): Johnson's Eq. (2.23) after s = x + z sinh(u), each component
+    integrated by :func:`~linecontact_sym.numeric.reference.integrate` over
+    the u-pieces of [-a, a] split at s = x and at ``breaks``.
+
+    ``tractions(lo, hi, s)``: (p, q) as SymPy expressions in ``s`` (every
+    parameter exact), valid on the piece lo < s < hi of the surface (q may
+    be 0); ``a, x, z``: exact numbers; ``fallback()``: the three mpmath
+    values (:func:`flamant_stresses`), computed once if Arb cannot.
+
+    >>> import sympy as sp
+    >>> hertz = lambda lo, hi, s: (sp.sqrt(1 - s**2), 0)       # p0 = a = 1
+    >>> r = flamant_enclosures(hertz, 1, 0, 1, dps=30)
+    >>> [v.method for v in r], [mpmath.nstr(v, 12) for v in r[:2]], abs(r[2]) < 1e-35   # tau_xz = 0 on the axis
+    (['arb', 'arb', 'arb'], ['-0.12132034356', '-0.707106781187'], True)
+    """
+    a, x, z = sp.sympify(a), sp.sympify(x), sp.sympify(z)
+    if not z > 0:
+        raise DomainError(f"the Flamant enclosures are taken below the surface (z > 0), got z = {z}")
+    ss = _exact_sorted([-a, a, *(b for b in breaks if -a < b < a), *([x] if -a < x < a else [])])
+    us = [sp.asinh((sv - x) / z) for sv in ss]
+    sv = x + z * sp.sinh(_u)
+    pieces = [flamant_kernels(*tractions(lo, hi, sv), _u) for lo, hi in zip(ss[:-1], ss[1:])]
+    memo = []
+
+    def mp(k):
+        if not memo:
+            memo.append(fallback())
+        return memo[0][k]
+    out = []
+    for k in range(3):
+        if out and not out[0].certified and fallback is not None:
+            # the same tractions: Arb would fail again (and spend its evaluation limit)
+            out.append(estimate(lambda k=k: mp(k), out[0].note, dps))
+        else:
+            out.append(integrate([piece[k] for piece in pieces], _u, us, dps, eval_limit=EVAL_LIMIT,
+                                 fallback=None if fallback is None else (lambda k=k: mp(k))))
+    return tuple(out)
+
+
 def cauchy_quad(p, a, x, z, breaks=(), dps: int = 30):
     """G(zeta) = int_{-a}^{a} p(s)/(zeta - s) ds at zeta = x + i z (z > 0),
     by tanh-sinh after s = x + z sinh(u): p(s) z cosh(u)/(z (i - sinh u)) du."""
@@ -136,4 +219,4 @@ def punch_potentials(dP, a, x, z, breaks=(), dps: int = 30):
         return +G, +dG
 
 
-__all__ = ["flamant_stresses", "cauchy_quad", "punch_potentials"]
+__all__ = ["flamant_stresses", "flamant_enclosures", "flamant_kernels", "COMPONENTS", "cauchy_quad", "punch_potentials"]

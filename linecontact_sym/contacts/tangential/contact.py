@@ -89,6 +89,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ...core import symbols as S
+from ...core.units import refuse_units
 from ...core.errors import DomainError
 from ...method.derivation import Derivation, fallback_step
 from ...method.rules import Step
@@ -363,28 +364,33 @@ class TangentialLineContact(ContactOn):
         >>> bool(abs(t.unload(0.1, -0.1, E_star=1, R=1, mu=0.4, a=0.8).c_r - st.c) < 1e-25)
         True
         """
+        refuse_units({'Q': Q, **values}, 'the tangential state', S.UNITS)
         return history.stick_half_width_at(self, history.to_sympy_number(Q), values)
 
     def unload(self, Q_max, Q, **values):
         """Mindlin-Deresiewicz: the state at Q after loading to Q_max and
         unloading (-Q_max <= Q <= Q_max)."""
+        refuse_units({'Q': Q, 'Q_max': Q_max, **values}, 'the tangential unload', S.UNITS)
         return history.reversal(self, Q_max, Q, values, "unloading")
 
     def reload(self, Q_max, Q, **values):
         """The state at Q on the reloading branch from -Q_max (after a full
         unloading to -Q_max)."""
+        refuse_units({'Q': Q, 'Q_max': Q_max, **values}, 'the tangential reload', S.UNITS)
         return history.reversal(self, Q_max, Q, values, "reloading")
 
     def cycle(self, Q_amplitude, points: int = 41, **values):
         """A full fretting cycle between +-Q_amplitude: the loop (Q, delta),
         the stick half-width at the extremes and the energy dissipated per
         cycle; a :class:`~.history.FrettingCycle`."""
+        refuse_units({'Q': Q_amplitude, **values}, 'the tangential cycle', S.UNITS)
         return history.cycle(self, Q_amplitude, check_points(points), values)
 
     def bem(self, elements: int = 200, **values):
         """The independent direct solution on this contact's normal pressure
         (:class:`~.reference.CoulombBEM`) at numbers (``a`` or
         ``P``, E_star, parameters, mu)."""
+        refuse_units(values, 'the tangential bem', S.UNITS)
         return history.bem(self, elements, values)
 
     def report(self, quantities=("traction", "tangential_force", "slip", "dissipated_energy")) -> str:

@@ -37,6 +37,15 @@ tangential derivations (30 digits):
 * :func:`friction_work` -- the energy dissipated per cycle as the work of the
   friction forces in the slip zones, 8 mu^2 int_c^a p(x; a) g(x; c) dx.
 
+The traction, the force and the friction work are also given as **Arb
+enclosures** (:func:`stick_traction_enclosure`, :func:`tangential_force_enclosure`,
+:func:`friction_work_enclosure`): the same integrals with the normal solutions
+as SymPy expressions (every value exact), integrated by the one reference
+integrator (:func:`linecontact_sym.numeric.reference.integrate`, Arb ball
+quadrature; the mpmath functions above are their recorded fallbacks).  The
+slip and the displacement keep mpmath: their logarithmic kernels are singular
+at end points of the pieces, which ball arithmetic cannot bound.
+
 **A direct numerical solution**, :class:`CoulombBEM`: boundary elements with
 piecewise-constant tractions and analytic influence coefficients of (F),
 collocation at the element midpoints, and a Coulomb active set (stick /
@@ -53,8 +62,10 @@ from dataclasses import dataclass, field
 
 import mpmath
 import numpy as np
+import sympy as sp
 
 from ...core.errors import DomainError, LineContactError
+from ...numeric.reference import integrate
 
 
 # =====================================================================  mpmath
@@ -185,6 +196,78 @@ def friction_work(p, g, a, c, mu, breaks=()):
     a, c, mu = (mpmath.mpf(v) for v in (a, c, mu))
     pts = _split(breaks, c, a)
     return 8 * mu**2 * mpmath.quad(lambda xv: p(xv) * g(xv), pts)
+
+
+# =====================================================================  Arb
+_u = sp.Dummy("u", nonnegative=True)
+_xv = sp.Dummy("x", positive=True)
+
+
+def _exact_pieces(lo, hi, inner):
+    """[lo, *inner in (lo, hi) ascending and distinct, hi] (exact SymPy numbers)."""
+    keep = {}
+    for v in inner:
+        v = sp.nsimplify(v) if isinstance(v, (float, sp.Float)) else sp.sympify(v)
+        if bool(lo < v) and bool(v < hi):
+            keep.setdefault(sp.N(v, 50), v)
+    return [lo, *(keep[k] for k in sorted(keep)), hi]
+
+
+def _inside(c, a, breaks):
+    """The u-points sqrt(b^2 - c^2) of the breakpoints c < b < a."""
+    return [sp.sqrt(b**2 - c**2) for b in breaks if bool(c < b) and bool(b < a)]
+
+
+def _checked(a, c, x=None):
+    a, c = sp.sympify(a), sp.sympify(c)
+    if not (bool(0 <= c) and bool(c <= a)) or (x is not None and not bool(abs(sp.sympify(x)) < c)):
+        raise DomainError(f"the inversion needs |x| < c <= a, got x = {x}, c = {c}, a = {a}")
+    return a, c
+
+
+def stick_traction_enclosure(p, a, c, x, mu, breaks=(), dps: int = 30, fallback=None):
+    """:func:`stick_traction_inversion` with ``p`` a SymPy function of one
+    argument (``sp.Lambda``; the pressure at half-width ``a``, every value
+    exact) and exact ``a, c, x, mu``: the whole traction
+    (2 mu/pi) sqrt(c^2 - x^2) p(sqrt(c^2 + u^2))/(c^2 - x^2 + u^2) integrated
+    over u in [0, sqrt(a^2 - c^2)] (a RefValue).
+
+    >>> import sympy as sp
+    >>> p = sp.Lambda(_xv, sp.sqrt(1 - _xv**2))
+    >>> r = stick_traction_enclosure(p, 1, sp.Rational(1, 2), sp.Rational(3, 10), sp.Rational(1, 5))
+    >>> r.method, abs(r - 0.2 * (mpmath.sqrt(0.91) - mpmath.sqrt(0.16))) < 1e-14
+    ('arb', True)
+    """
+    a, c = _checked(a, c, x)
+    d2 = c**2 - sp.sympify(x)**2
+    f = 2 * mu / sp.pi * sp.sqrt(d2) * p(sp.sqrt(c**2 + _u**2)) / (d2 + _u**2)
+    return integrate(f, _u, _exact_pieces(sp.S.Zero, sp.sqrt(a**2 - c**2), _inside(c, a, breaks)), dps,
+                     fallback=fallback)
+
+
+def tangential_force_enclosure(p, a, c, mu, breaks=(), dps: int = 30, fallback=None):
+    """:func:`tangential_force_inversion` in Arb: 2 mu int_0^U p(sqrt(c^2 + u^2)) du
+    (``p`` as in :func:`stick_traction_enclosure`).
+
+    >>> import sympy as sp
+    >>> p = sp.Lambda(_xv, sp.sqrt(1 - _xv**2))
+    >>> r = tangential_force_enclosure(p, 1, sp.Rational(1, 2), sp.Rational(1, 5), dps=40)
+    >>> with mpmath.workdps(50):                        # Hertz: mu pi (1 - c^2)/2
+    ...     r.method, r.contains(mpmath.mpf(3) / 40 * mpmath.pi)
+    ('arb', True)
+    """
+    a, c = _checked(a, c)
+    f = 2 * mu * p(sp.sqrt(c**2 + _u**2))
+    return integrate(f, _u, _exact_pieces(sp.S.Zero, sp.sqrt(a**2 - c**2), _inside(c, a, breaks)), dps,
+                     fallback=fallback)
+
+
+def friction_work_enclosure(p, g, a, c, mu, breaks=(), dps: int = 30, fallback=None):
+    """:func:`friction_work` in Arb: 8 mu^2 int_c^a p(x) g(x) dx with ``p`` the
+    pressure at a and ``g`` the gap at c as SymPy functions of one argument
+    (``sp.Lambda``, every value exact)."""
+    a, c = _checked(a, c)
+    return integrate(8 * mu**2 * p(_xv) * g(_xv), _xv, _exact_pieces(c, a, breaks), dps, fallback=fallback)
 
 
 # =====================================================================  BEM
@@ -389,5 +472,5 @@ class CoulombBEM:
 
 
 __all__ = ["stick_traction_inversion", "tangential_force_inversion", "slip_flamant", "displacement_flamant",
-           "friction_work",
+           "friction_work", "stick_traction_enclosure", "tangential_force_enclosure", "friction_work_enclosure",
            "element_pressures", "solve_dense", "CoulombBEM", "BEMState"]

@@ -17,6 +17,7 @@ from ...method.derivation import Derivation, fallback_step, remembered, timed
 from ...method.rules import Step
 from ...method.verification import verify
 from ...numeric.functions import make_callable
+from ...numeric.reference import estimate, lincomb
 from . import reference as ref
 from ..normal.equilibria import half_width_at
 from ..normal.force_law import ForceLaw
@@ -75,6 +76,20 @@ def normal_fn(t, name, vals, A):
     return lambda X: T.gap_quad(f, law.dP, brs, {S.a: A, S.x: X, S.E_star: E}, mpmath.mp.dps)
 
 
+_x = sp.Dummy("x", positive=True)
+
+
+def normal_lambda(t, name, vals, A):
+    """The normal closed form ``name`` ('pressure' or 'gap') at the half-width
+    A as a SymPy function of x >= 0 (``sp.Lambda``) with every value of
+    ``vals`` exact, for the Arb references; None without a closed form."""
+    d = t.contact.derivation(name)
+    if not d.closed_form:
+        return None
+    e = d.expr.xreplace({**_fixed(t, vals), S.a: A})
+    return sp.Lambda(_x, e.xreplace({S.x: _x}))
+
+
 def sampler(t, domain, reversal, load, mu_range):
     """Random verification points: the profile's parameters, E_star, mu, a
     beyond the force law's last zero c0, c_s in (c0, a), c_r in (c_s, a), x in
@@ -129,23 +144,45 @@ def references(t, what, terms):
             return mu * sum(k * (pa(xi) - (pc(xi) if xi < c else 0)) for k, c, pc in parts)
         return q, A, [c for _, c, _ in parts]
 
+    def mp_term(vals, C):
+        """The mpmath route of one term at C (the fallback of its enclosure)."""
+        A, mu = num(vals, S.a), friction_at(t, vals)
+        brs = _breaks(t, vals)
+        pa = normal_fn(t, "pressure", vals, A)
+        if what == "traction":
+            X = num(vals, S.x)
+            return ref.stick_traction_inversion(pa, A, num(vals, C), X, mu, brs) if X < num(vals, C) else mu * pa(X)
+        return ref.tangential_force_inversion(pa, A, num(vals, C), mu, brs)
+
     def check(vals, dps):
-        with workdps(dps + 10):
-            A, mu = num(vals, S.a), friction_at(t, vals)
-            brs = _breaks(t, vals)
-            if what == "traction":
-                X = num(vals, S.x)
-                pa = normal_fn(t, "pressure", vals, A)
-                return +sum(k * (ref.stick_traction_inversion(pa, A, num(vals, C), X, mu, brs)
-                                 if X < num(vals, C) else mu * pa(X)) for k, C in terms)
-            if what == "force":
-                pa = normal_fn(t, "pressure", vals, A)
-                return +sum(k * ref.tangential_force_inversion(pa, A, num(vals, C), mu, brs) for k, C in terms)
+        if what in ("traction", "force"):
+            pa = normal_lambda(t, "pressure", vals, vals[S.a])
+            if pa is None:
+                with workdps(dps + 10):
+                    return +sum(k * mp_term(vals, C) for k, C in terms)
+            A, mu, X = vals[S.a], t.mu.xreplace(vals), vals.get(S.x)
+            brs = [bp.xreplace(vals) for bp in t.profile.breakpoints]
+            parts = []
+            for k, C in terms:
+                fb = (lambda C=C: mp_term(vals, C))
+                if what == "force":
+                    parts.append((k, ref.tangential_force_enclosure(pa, A, vals[C], mu, brs, dps, fb)))
+                elif X < vals[C]:
+                    parts.append((k, ref.stick_traction_enclosure(pa, A, vals[C], X, mu, brs, dps, fb)))
+                else:
+                    parts.append((k, mu * pa(X)))       # the slip zone: mu p(x; a), exact
+            return lincomb(parts, dps)
+
+        def flamant():
             q, A, cs = q_superposed(vals)
             E = num(vals, S.E_star)
             if what == "slip":
                 return ref.slip_flamant(q, A, num(vals, S.x), E, cs + brs)
             return ref.displacement_flamant(q, A, E, cs + brs)
+        with workdps(dps + 10):
+            brs = _breaks(t, vals)
+            return estimate(flamant, "the logarithmic Flamant kernel is singular at end points of the pieces "
+                                     "(Arb cannot bound it there)", dps)
 
     def value(vals, dps):
         with workdps(dps + 10):
@@ -166,7 +203,7 @@ def references(t, what, terms):
            "force": "the resultant of the inverted stick traction plus mu p(x; a) in the slip zones",
            "slip": "the Flamant kernel (2/(pi E*)) int q(xi) ln|x - xi|/|xi| dxi applied to the traction",
            "displacement": "the Flamant kernel -(2/(pi E*)) int q(xi) ln(|xi|/a) dxi applied to the traction"}[what]
-    return check, value, how + " (mpmath quadrature)"
+    return check, value, how
 
 
 # =====================================================================  energy and loop
@@ -237,11 +274,19 @@ def energy_references(t):
     def nums(vals):
         return [to_mpf(sp.N(vals[k], mpmath.mp.dps + 5)) for k in (S.a, S.c_s, S.E_star)]
 
+    def mp_check(vals):
+        A, C, _ = nums(vals)
+        pa, gc = normal_fn(t, "pressure", vals, A), normal_fn(t, "gap", vals, C)
+        return ref.friction_work(pa, gc, A, C, friction_at(t, vals), _breaks(t, vals))
+
     def check(vals, dps):
-        with workdps(dps + 10):
-            A, C, _ = nums(vals)
-            pa, gc = normal_fn(t, "pressure", vals, A), normal_fn(t, "gap", vals, C)
-            return ref.friction_work(pa, gc, A, C, friction_at(t, vals), _breaks(t, vals))
+        pa, gc = normal_lambda(t, "pressure", vals, vals[S.a]), normal_lambda(t, "gap", vals, vals[S.c_s])
+        if pa is None or gc is None:
+            with workdps(dps + 10):
+                return mp_check(vals)
+        brs = [bp.xreplace(vals) for bp in t.profile.breakpoints]
+        return ref.friction_work_enclosure(pa, gc, vals[S.a], vals[S.c_s], t.mu.xreplace(vals), brs, dps,
+                                           fallback=lambda: mp_check(vals))
 
     def value(vals, dps):
         with workdps(dps + 10):
@@ -251,8 +296,7 @@ def energy_references(t):
             Pa, Pc = law.P(A), law.P(C)
             W = (Pa + Pc) * _I(law, C, A, 1, brs) - _I(law, C, A, 2, brs) - Pa * Pc * mpmath.log(A / C)
             return 8 * mu**2 / (mpmath.pi * E) * W
-    return check, value, ("the work of the friction forces over a cycle, 8 mu^2 int_c^a p(x; a) g(x; c) dx "
-                          "(mpmath quadrature)")
+    return check, value, "the work of the friction forces over a cycle, 8 mu^2 int_c^a p(x; a) g(x; c) dx"
 
 
 # =====================================================================  stick zone
