@@ -346,8 +346,8 @@ class MDLaw:
                 if s_max is not None and hi >= s_max:
                     where = f" at a = {mpmath.nstr(A, 8)}" if A is not None else " as a -> 0+"
                     raise DomainError(
-                        f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, where the "
-                        f"profile stops being real{where}: the gap there is still below h0 = w/sigma_0 "
+                        f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, beyond which "
+                        f"the profile is not real{where}: the gap there is still below h0 = w/sigma_0 "
                         f"(a larger sigma_0 or a smaller work of adhesion keeps it inside)")
                 lo, hi = hi, hi * 4 if s_max is None else min(hi * 4, s_max)
                 n += 1
