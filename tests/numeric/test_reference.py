@@ -74,6 +74,18 @@ def test_planted_wrong_coefficient_fails_certification():
     assert "outside the enclosure" in str(bad)
 
 
+def test_negative_numbers_keep_their_sign():
+    """A negative Float or mpf (a coefficient, an end point) is enclosed with its sign: mpf.man_exp
+    drops it, and exp(-0.5 t) was integrated as exp(+0.5 t) (a wrong 'certified' enclosure)."""
+    import sympy as sp
+    t = sp.Dummy("t")
+    with mpmath.workdps(40):
+        r = integrate(sp.exp(-sp.Float("0.5", 40) * t), t, [0, 1], 30)
+        assert r.method == "arb" and r.contains(2 * (1 - mpmath.exp(-mpmath.mpf("0.5"))))
+        r = integrate(t, t, [mpmath.mpf(-1), mpmath.mpf(0)], 30)
+        assert r.contains(-mpmath.mpf("0.5"))
+
+
 def test_inverse_sqrt_end_points_are_certified_after_substitution():
     # both ends of int_{-1}^{1} dt/sqrt(1 - t^2) = pi are integrable 1/sqrt singularities
     r = integrate(1 / sp.sqrt(1 - t**2), t, [-1, 1], dps=40)

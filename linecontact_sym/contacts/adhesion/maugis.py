@@ -14,6 +14,13 @@ and adhesionless gap g0(x; a)):
     P(a, c_D)  = P0(a) - 2 sigma_0 sqrt(c_D^2 - a^2)                      (bounded pressure, K_I = 0)
     h0 = w/sigma_0 = g0(c_D; a) + (4 sigma_0/(pi E*)) (sqrt(c_D^2 - a^2) acosh(c_D/a) - c_D log(c_D/a))
 
+Where the engine leaves g0(x; a), P0(a) or p0(x; a) as an unevaluated
+Integral (R (cosh(x/R) - 1), the Gaussian bump, a user's profile), the
+numeric law (:class:`.maugis_law.MDLaw`) evaluates those defining integrals
+by quadrature inside the solve, at the digits asked (``MDState.closed`` says
+which parts were closed); the cohesive zone never leaves the profile's real
+domain (the exact cylinder: c_D < R, else a DomainError).
+
 JKR limit: sigma_0 -> oo gives c_D - a -> pi E* w/(4 sigma_0^2) and
 2 sigma_0 sqrt(c_D^2 - a^2) -> sqrt(2 pi a w E*), Popov's Eq. (31).
 
@@ -37,7 +44,8 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.conversion import float_values, point_value, rational
-from ...core.errors import DomainError, NumericValuesRequired
+from ...core.errors import DomainError, NoEquilibriumError, NumericValuesRequired
+from ...core.roots import Outside
 from ...core.precision import workdps
 from ...core.ranges import check_positive, check_tolerance
 from ...method.derivation import Derivation, values_by_name
@@ -45,6 +53,7 @@ from ...method.rules import Step
 from ...method.verification import verify
 from ...parsing import to_sympy
 from ..base import ContactOn, Quantity
+from ..normal.equilibria import equilibria
 from .law import CohesiveLaw, Parameter, on_base
 from ..sampling import point_sampler
 from . import maugis_choice
@@ -107,15 +116,24 @@ class MaugisDugdale(CohesiveLaw):
             def P(A):
                 if A <= 0:            # the limit a -> 0+: the Dugdale force of the zone c0
                     return law.force_zero_width(mpmath.mp.dps)
-                C, _ = law.c_of(A, mpmath.mp.dps)
+                try:
+                    C, _ = law.c_of(A, mpmath.mp.dps)
+                except DomainError:   # no cohesive zone inside the profile's domain: no state at A
+                    raise Outside
                 return b.P(A) + law._P(A, C) - law._P0(A)
 
             def dP(A):
                 if A <= 0:
                     return mpmath.mpf(0)
-                Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
+                try:
+                    Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
+                except DomainError:
+                    raise Outside
                 return b.dP(A) + dPv - law._dP0(A)
-            return b.on_top(P, dP)
+            out = b.on_top(P, dP)
+            # P(0+) = -2 sigma_0 c0 is not 0: the generic minimum descends towards a -> 0+ (equilibria.descent)
+            out.P_zero = lambda: law.force_zero_width(mpmath.mp.dps)
+            return out
         return on_base(base, build)
 
 
@@ -397,6 +415,24 @@ class MaugisDugdaleContact(ContactOn):
             with _real_profile(self, values):
                 self._cache[key] = law.pull_off(dps)
         return self._cache[key]
+
+    def branches(self, load, dps: int = 30, **values):
+        """The equilibria at the load P (numbers), stable first: ((a, 'stable'|'unstable'), ...),
+        by the generic layer (:func:`~linecontact_sym.contacts.normal.equilibria.equilibria` over the
+        numeric force law of this contact, every extremum of P(a) located first, P(0+) below)."""
+        vals = self._numeric_values(values)
+        law = self._law(vals, "closed")
+        roots = equilibria(law, to_sympy(load), dps)
+        return tuple((r, "stable" if st else "unstable") for r, st in roots)
+
+    def half_width(self, load, dps: int = 30, **values):
+        """Equilibrium half-width(s) at the load P, stable branch first (see :meth:`branches`);
+        below the pull-off force a :class:`NoEquilibriumError`."""
+        out = tuple(a for a, _ in self.branches(load, dps, **values))
+        if not out:
+            raise NoEquilibriumError(f"{self.profile.name!r}: no Maugis-Dugdale equilibrium at the load P = {load} "
+                                     f"(below the pull-off force, or beyond the admissible range)")
+        return out
 
     def displacement_control(self):
         """Not defined for line contacts: raises with the reason."""

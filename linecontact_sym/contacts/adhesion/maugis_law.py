@@ -4,6 +4,14 @@ total derivative dP/da, the state (pressure, gap) and the load-control
 pull-off (global minimum of P(a) over every stationary point, every kink and
 the limit a -> 0+).
 
+Closed or not: the two conditions are lambdified where the engine found P0,
+g0 and p0 in closed form; otherwise P0 and dP0/da come from the normal
+contact's ForceLaw (closed with its quadrature fallback, or Eq. 10* by
+quadrature) and g0(c; a) with its partial derivatives from :class:`QuadGap`
+(the defining integral, by parts, in s = c sin(theta)), at the working
+precision of the solve plus the digits its cancellation costs.  The root
+c_D stays inside the profile's real domain (:func:`profile_end`).
+
 Uniqueness of c_D(a): the Dugdale part of the gap at c_D,
 (4 sigma_0/(pi E*)) (sqrt(c^2 - a^2) acosh(c/a) - c log(c/a)), has the
 c-derivative (4 sigma_0/(pi E*)) (c acosh(c/a)/sqrt(c^2 - a^2) - log(c/a)) > 0
@@ -30,8 +38,10 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.conversion import float_values, number
-from ...core.errors import DomainError, NoPullOffError
+from ...core.errors import DomainError, NoPullOffError, VerificationError
 from ...core.precision import workdps
+from ...core.roots import UNDEFINED, Outside, domain_end, real_value
+from ...method.transforms import inside
 
 #: grid points per decade of a in the pull-off scan
 PER_DECADE = 8
@@ -50,6 +60,12 @@ class MDState:
     m          c_D/a (Baney & Hui's m)
     pressure   x -> p(x) (compressive positive; -sigma_0 in the Dugdale zone, 0 beyond)
     gap        x -> surface separation (0 in the contact, h0 at x = c_D)
+    closed     which non-adhesive parts the engine found in closed form
+               ({'P0(a)': True, 'g0(c_D; a)': False, ...}); the others are
+               evaluated by quadrature inside the solve, at the digits asked
+    gap_check  where g0 is not closed: the gap at c_D recomputed through the one
+               reference integrator (a RefValue: an Arb enclosure where Arb can,
+               ``gap_check.method``), to compare with h0; else None
     """
 
     a: mpmath.mpf
@@ -59,6 +75,8 @@ class MDState:
     h0: mpmath.mpf
     pressure: object = field(repr=False, default=None)
     gap: object = field(repr=False, default=None)
+    closed: dict = field(repr=False, default_factory=dict)
+    gap_check: object = field(repr=False, default=None)
 
     @property
     def m(self):
@@ -108,6 +126,99 @@ def _lam(expr, args):
     return sp.lambdify(args, expr, "mpmath")
 
 
+def _real(fn):
+    """``fn`` returning a finite real mpf, else :class:`~linecontact_sym.core.roots.Outside`."""
+    def g(*args):
+        try:
+            return real_value(fn(*args))
+        except UNDEFINED:
+            raise Outside
+    return g
+
+
+def profile_end(f):
+    """Where the profile f stops being real (mpf at 50 digits; the exact
+    cylinder R - sqrt(R^2 - x^2) at x = R), or None when it is real on
+    (0, 2**200): a cohesive zone cannot reach past it."""
+    with workdps(50):
+        good = None
+        for k in range(-60, 201):
+            X = mpmath.mpf(2)**k
+            try:
+                f(X)
+                good = X
+            except UNDEFINED:
+                if good is None:
+                    continue
+                return domain_end(f, good, X, iters=200)
+        return None
+
+
+class QuadGap:
+    """The adhesionless gap g0(c; a) = f(c) - (2/(pi E*)) int_0^a acosh(c/s) P0'(s) ds
+    (Eqs. 3/5; :func:`~linecontact_sym.method.transforms.gap_integral`) and its
+    partial derivatives at numbers, where the engine has no closed form.  By
+    parts, int_0^a acosh(c/s) P0'(s) ds = acosh(c/a) P0(a) + int_0^a c P0(s)/(s sqrt(c^2 - s^2)) ds,
+    and s = c sin(theta) leaves int_0^theta_a P0(c sin theta)/sin(theta) dtheta:
+    analytic on [0, theta_a] for an analytic profile (P0 ~ s^2 at 0) however close
+    c is to a, so Gauss-Legendre converges fast; likewise
+    dg0/dc = f'(c) - (2/(pi E*)) int_0^theta_a P0'(c sin theta) dtheta.  A profile
+    with breakpoints below a is split there (tanh-sinh on each piece: P0 has a
+    (s - b)^(3/2) point).  Each integral runs at the working precision plus the
+    digits lost to the cancellation f(c) - (...) relative to h0, the size of the
+    gap that matters."""
+
+    def __init__(self, f, f1, P0, dP0, breaks, E, h0):
+        self.f, self.f1, self.P0, self.dP0, self.breaks = f, f1, P0, dP0, list(breaks)
+        self.E, self.h0 = E, h0
+
+    def _pieces(self, A, C):
+        """theta at the breakpoints below A and at A (the last one without asin(A/C) near 1)."""
+        ends = [mpmath.asin(b / C) for b in self.breaks if b < A]
+        ends.append(mpmath.atan2(A, mpmath.sqrt((C - A) * (C + A))))
+        return [mpmath.mpf(0)] + ends
+
+    def _integral(self, g, A, C):
+        """int_0^theta_a g(theta) dtheta, split at the breakpoints."""
+        pts = self._pieces(A, C)
+        if len(pts) == 2:
+            return mpmath.quad(g, pts, method="gauss-legendre")
+        total = mpmath.mpf(0)
+        for lo, hi in zip(pts[:-1], pts[1:]):
+            total += mpmath.quad(inside(g, lo, hi), [lo, hi])
+        return total
+
+    def _extra(self, C):
+        with workdps(15):
+            fC = abs(self.f(mpmath.mpf(C)))
+            h = abs(mpmath.mpf(sp.N(self.h0, 15)))
+            return 6 + (int(mpmath.log10(fC / h)) if fC > h else 0)
+
+    def _E(self):
+        return mpmath.mpf(sp.N(self.E, mpmath.mp.dps + 5))
+
+    def g(self, A, C):
+        """g0(C; A)."""
+        with workdps(mpmath.mp.dps + self._extra(C)):
+            A, C = mpmath.mpf(A), mpmath.mpf(C)
+            I = mpmath.acosh(C / A) * self.P0(A) + self._integral(
+                lambda th: self.P0(C * mpmath.sin(th)) / mpmath.sin(th), A, C)
+            v = self.f(C) - 2 * I / (mpmath.pi * self._E())
+        return +v
+
+    def g_c(self, A, C):
+        """dg0/dc = f'(c) - (2/(pi E*)) int_0^a P0'(s)/sqrt(c^2 - s^2) ds."""
+        with workdps(mpmath.mp.dps + self._extra(C)):
+            A, C = mpmath.mpf(A), mpmath.mpf(C)
+            I = self._integral(lambda th: self.dP0(C * mpmath.sin(th)), A, C)
+            v = self.f1(C) - 2 * I / (mpmath.pi * self._E())
+        return +v
+
+    def g_a(self, A, C):
+        """dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a)."""
+        return -2 / (mpmath.pi * self._E()) * mpmath.acosh(C / A) * self.dP0(A)
+
+
 class MDLaw:
     """P(a, c_D) and the gap condition at numeric values (closed forms
     lambdified for mpmath; their partial derivatives by SymPy)."""
@@ -129,43 +240,116 @@ class MDLaw:
         self.h0expr = w / sig
         E = fixed[S.E_star]
         self.E = E
-        P = md.force_expr.xreplace(fixed)
-        G = md.gap_c_expr.xreplace(fixed) - self.h0expr
-        self.closed = not (P.has(sp.Integral) or G.has(sp.Integral))
-        if not self.closed:
-            raise NotImplementedError("numeric Maugis-Dugdale law without closed forms")
-        self._P = _lam(P, (a, c))
-        P0 = md.contact.derivation("force").expr.xreplace(fixed)
-        self._P0, self._dP0 = _lam(P0, (a,)), _lam(sp.diff(P0, a), (a,))
-        self._Pa = _lam(sp.diff(P, a), (a, c))
-        self._Pc = _lam(sp.diff(P, c), (a, c))
-        self._G = _lam(G, (a, c))
-        self._Ga = _lam(sp.diff(G, a), (a, c))
-        self._Gc = _lam(sp.diff(G, c), (a, c))
+        d = md.dugdale
+        # which parts of the two conditions the engine found in closed form (the rest by quadrature here)
+        fd, gd, pd = (md.contact.derivation(q) for q in ("force", "gap", "pressure"))
+        self.closed_parts = {"P0(a)": fd.closed_form, "g0(c_D; a)": gd.closed_form, "p0(x; a)": pd.closed_form}
+        self.closed = all(self.closed_parts.values())
+        pf = {k: v for k, v in fixed.items() if k != S.E_star}
+        self._f = _real(_lam(md.profile.expr.xreplace(pf), (x,)))
+        self.x_end = profile_end(self._f)
+        if self.closed:
+            P = md.force_expr.xreplace(fixed)
+            G = md.gap_c_expr.xreplace(fixed) - self.h0expr
+            self._P = _lam(P, (a, c))
+            P0 = fd.expr.xreplace(fixed)
+            self._P0, self._dP0 = _lam(P0, (a,)), _lam(sp.diff(P0, a), (a,))
+            self._Pa = _lam(sp.diff(P, a), (a, c))
+            self._Pc = _lam(sp.diff(P, c), (a, c))
+            self._G = _lam(G, (a, c))
+            self._Ga = _lam(sp.diff(G, a), (a, c))
+            self._Gc = _lam(sp.diff(G, c), (a, c))
+            self._p_in = _lam(md.pressure_expr.xreplace(fixed), (x, a, c))
+            self._g0 = _lam(gd.expr.xreplace(fixed), (x, a))
+        else:
+            self._numeric_parts(fixed, fd, gd, pd)
         z0 = md.zero_width_expr.xreplace(fixed) - self.h0expr   # gap condition of a vanishing contact, in c_D
         self._Z0, self._Z0c = _lam(z0, (c,)), _lam(sp.diff(z0, c), (c,))
         self._P0lim = _lam(md.force_zero_width_expr.xreplace(fixed), (c,))
-        self._p_in = _lam(md.pressure_expr.xreplace(fixed), (x, a, c))
-        self._g0 = _lam(md.contact.derivation("gap").expr.xreplace(fixed), (x, a))
-        self._gD_density = _lam(md.dugdale.density.xreplace(fixed), (S.a, c))  # not used in closed paths
-        self._f = _lam(md.profile.expr.xreplace(fixed), (x,))
         self.kinks = profile_kinks(md.profile, fixed)
         self._warm = None
+
+    def _numeric_parts(self, fixed, fd, gd, pd):
+        """P(a, c_D), the gap condition and their partial derivatives where the
+        engine left P0, g0 or p0 as an Integral: the Dugdale parts (always closed)
+        plus the non-adhesive ones at numbers -- P0 and dP0/da from the normal
+        contact's ForceLaw (the closed form, or Eq. 10* by quadrature), the gap
+        g0(c; a) = f(c) - (2/(pi E*)) int_0^a acosh(c/s) P0'(s) ds and its
+        c-derivative f'(c) - (2/(pi E*)) int_0^a P0'(s)/sqrt(c^2 - s^2) ds by
+        quadrature after s = c sin(theta) (both integrands smooth at s = a however
+        close c_D is to a; acosh(c/s) = log(cot(theta/2)) keeps its digits there),
+        and dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a) (closed in P0')."""
+        from ..normal.force_law import ForceLaw
+        from ...method import transforms as T
+        md = self.md
+        a, c, x = S.a, S.c_D, S.x
+        d = md.dugdale
+        pf = {k: v for k, v in fixed.items() if k != S.E_star}
+        base = ForceLaw.from_contact(md.contact, fixed, "closed")
+        self.base = base
+        P0, dP0 = base.P, base.dP
+        self._P0, self._dP0 = P0, dP0
+        D = d.force.xreplace(fixed)
+        fD, fDa, fDc = _lam(D, (a, c)), _lam(sp.diff(D, a), (a, c)), _lam(sp.diff(D, c), (a, c))
+        gD = d.gap_at_c.xreplace(fixed)
+        hDf = _lam(gD - self.h0expr, (a, c))
+        gDa, gDc = _lam(sp.diff(gD, a), (a, c)), _lam(sp.diff(gD, c), (a, c))
+        pD = _lam(d.pressure.xreplace(fixed), (x, a, c))
+        f1 = _real(_lam(sp.diff(md.profile.expr.xreplace(pf), x), (x,)))
+        breaks = [mpmath.mpf(str(sp.N(b, 60))) for b in base.breaks_exact]
+        gap = QuadGap(self._f, f1, P0, dP0, breaks, self.E, self.h0expr)
+        self._P0_expr = fd.expr.xreplace(fixed) if fd.closed_form else None
+        self._gD_expr = gD
+        self.quad_gap = gap
+        self._P = lambda A, C: P0(A) + fD(A, C)
+        self._Pa = lambda A, C: dP0(A) + fDa(A, C)
+        self._Pc = fDc
+        self._G = lambda A, C: gap.g(A, C) + hDf(A, C)
+        self._Ga = lambda A, C: gap.g_a(A, C) + gDa(A, C)
+        self._Gc = lambda A, C: gap.g_c(A, C) + gDc(A, C)
+        if pd.closed_form:
+            p0 = _lam(pd.expr.xreplace(fixed), (x, a))
+        else:
+            def p0(X, A):
+                return T.pressure_quad(dP0, [b for b in breaks if b < A], {S.a: A, S.x: X}, mpmath.mp.dps)
+        self._p_in = lambda X, A, C: p0(X, A) + pD(X, A, C)
+        self._g0 = lambda X, A: gap.g(A, X)
 
     # ------------------------------------------------------------ c_D(a)
     def h0(self):
         return mpmath.mpf(sp.N(self.h0expr, mpmath.mp.dps + 5))
 
-    def _solve_s(self, F, dF, s0, tol):
-        """Root of the increasing F on s > 0 from the guess s0: bracket by
-        doubling / halving, then Newton kept inside the bracket."""
+    def _s_max(self, A):
+        """The largest c_D - a the profile allows (its real domain ends at x_end), or None."""
+        if self.x_end is None:
+            return None
+        if not A < self.x_end:
+            raise DomainError(f"the half-width a = {mpmath.nstr(A, 8)} reaches the end of the profile's real "
+                              f"domain x = {mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
+        return (self.x_end - A) * (1 - mpmath.mpf(10)**-(mpmath.mp.dps - 5))
+
+    def _solve_s(self, F, dF, s0, tol, s_max=None, A=None):
+        """Root of the increasing F on 0 < s < s_max from the guess s0: bracket
+        by doubling / halving (never past s_max, where the profile stops being
+        real: a :class:`DomainError` when F < 0 still there, i.e. the cohesive
+        zone would have to reach past the profile's end), then Newton kept
+        inside the bracket."""
+        F = _real(F)
+        if s_max is not None and not s0 < s_max:
+            s0 = s_max / 2
         lo = hi = s0
         n = 0
         if F(s0) <= 0:
             lo = s0
-            hi = s0 * 2
+            hi = s0 * 2 if s_max is None else min(s0 * 2, s_max)
             while F(hi) <= 0:
-                lo, hi = hi, hi * 4
+                if s_max is not None and hi >= s_max:
+                    where = f" at a = {mpmath.nstr(A, 8)}" if A is not None else " as a -> 0+"
+                    raise DomainError(
+                        f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, beyond which "
+                        f"the profile is not real{where}: the gap there is still below h0 = w/sigma_0 "
+                        f"(a larger sigma_0 or a smaller work of adhesion keeps it inside)")
+                lo, hi = hi, hi * 4 if s_max is None else min(hi * 4, s_max)
                 n += 1
                 if n > 2000:
                     raise DomainError("no cohesive-zone half-width found: the gap never reaches h0")
@@ -184,8 +368,11 @@ class MDLaw:
                 hi = s
             else:
                 lo = s
-            d = dF(s)
-            s_new = s - f / d if d > 0 else None
+            try:
+                d = real_value(dF(s))
+            except UNDEFINED:
+                d = None
+            s_new = s - f / d if d is not None and d > 0 else None
             if s_new is None or not lo < s_new < hi:
                 s_new = mpmath.sqrt(lo * hi) if hi / lo > 4 else (lo + hi) / 2
             if abs(s_new - s) <= tol * s:
@@ -205,7 +392,7 @@ class MDLaw:
             if self._warm is not None and self._warm[1] > A25:     # the last solution: scans move smoothly
                 guess = self._warm[1] - A25
             s_est = self._solve_s(lambda s: self._G(A25, A25 + s), lambda s: self._Gc(A25, A25 + s),
-                                  guess, mpmath.mpf(10)**-12)
+                                  guess, mpmath.mpf(10)**-12, self._s_max(A25), A25)
             self._warm = (A25, A25 + s_est)
             # acosh(c/a) near c = a loses log10(a/s) digits; at small a, terms of size c/a cancel in
             # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
@@ -214,7 +401,7 @@ class MDLaw:
         with workdps(dps + guard):
             A = mpmath.mpf(A)
             s = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
-                              mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4))
+                              mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A)
             return A + s, guard
 
     def _s_guess(self, A):
@@ -224,7 +411,8 @@ class MDLaw:
     def c0(self, dps: int):
         """The cohesive-zone half-width of a vanishing contact (a -> 0+)."""
         with workdps(dps + 15):
-            return self._solve_s(self._Z0, self._Z0c, self._s_guess(1), mpmath.mpf(10)**-(dps + 4))
+            return self._solve_s(self._Z0, self._Z0c, self._s_guess(1), mpmath.mpf(10)**-(dps + 4),
+                                 None if self.x_end is None else self.x_end * (1 - mpmath.mpf(10)**-(dps + 10)))
 
     def force_zero_width(self, dps: int):
         """P(0+), the limit of P(a) as a -> 0+ (the Dugdale force of the zone c0)."""
@@ -241,8 +429,47 @@ class MDLaw:
             dP = self._Pa(A, C) + self._Pc(A, C) * dc
             return +P, +dP, +C
 
-    def state(self, A, dps: int) -> MDState:
+    def certified_gap(self, A, C, dps: int):
+        """The gap at c_D, g0(c_D; a) + (the Dugdale part), where g0 has no closed form, with the
+        integral int_0^theta_a P0(c sin t)/sin(t) dt (see :class:`QuadGap`) through the one reference
+        integrator: an Arb enclosure where P0 is closed and Arb can (RefValue, method 'arb'), else
+        its mpmath estimate; None where the engine's g0 is closed (no integral to certify)."""
+        if self.closed_parts["g0(c_D; a)"] or self._P0_expr is None:
+            return None
+        from ...numeric.reference import RefValue, integrate
+        th = sp.Dummy("theta", positive=True)
+        with workdps(dps + 20):
+            A, C = mpmath.mpf(A), mpmath.mpf(C)
+            Cs = sp.Float(mpmath.nstr(C, dps + 20), dps + 20)
+            top = mpmath.atan2(A, mpmath.sqrt((C - A) * (C + A)))
+            pts = [mpmath.mpf(0)] + sorted(mpmath.asin(b / C) for b in self.quad_gap.breaks if b < A) + [top]
+            integrand = self._P0_expr.xreplace({S.a: Cs * sp.sin(th)}) / sp.sin(th)
+            r = integrate(integrand, th, pts, dps + 5)
+            E = mpmath.mpf(sp.N(self.E, dps + 20))
+            rest = self.quad_gap.f(C) - 2 * mpmath.acosh(C / A) * self._P0(A) / (mpmath.pi * E) \
+                + sp.lambdify((S.a, S.c_D), self._gD_expr, "mpmath")(A, C)
+            k = 2 / (mpmath.pi * E)
+            return RefValue(rest - k * r.mid, k * r.rad, r.method, r.note)
+
+    def checked_P_and_slope(self, A, dps: int):
+        """:meth:`P_and_slope` confirmed at 10 more digits (and 10 more, up to 4 times) until two
+        levels agree to dps + 1 digits in P (relative to |P| + |P0|) and c_D: a closed form that
+        cancels where the guard digits do not foresee it (the rounded punch at a = b lost 5.6 of
+        30 digits) is caught here and answered from the higher level."""
         P, dP, C = self.P_and_slope(A, dps)
+        for k in range(1, 5):
+            P2, dP2, C2 = self.P_and_slope(A, dps + 10 * k)
+            with workdps(dps + 10 * k + 5):
+                scale = abs(P2) + abs(self._P0(mpmath.mpf(A)))
+                tol = mpmath.mpf(10)**-(dps + 1)
+                if abs(P - P2) <= tol * scale and abs(C - C2) <= tol * abs(C2):
+                    return P2, dP2, C2
+            P, dP, C = P2, dP2, C2
+        raise VerificationError(f"the Maugis-Dugdale state at a = {mpmath.nstr(A, 10)} does not settle to {dps} digits "
+                          f"(two levels of working precision up to {dps + 40} disagree)")
+
+    def state(self, A, dps: int) -> MDState:
+        P, dP, C = self.checked_P_and_slope(A, dps)
         with workdps(dps + 10):
             A = mpmath.mpf(A)
             h0 = self.h0()
@@ -268,7 +495,7 @@ class MDLaw:
                 I = mpmath.quad(lambda ph: mpmath.acosh(x / (C * mpmath.sin(ph))) * (-2 * sig * C * mpmath.sin(ph)),
                                 [lo, hi])
                 return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
-        return MDState(A, C, P, dP, h0, pressure, gap)
+        return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts), self.certified_gap(A, C, dps))
 
     # ------------------------------------------------------------ pull-off
     def pull_off(self, dps: int) -> MDPullOff:
@@ -280,7 +507,23 @@ class MDLaw:
             # upper end: double from c0 until P > 0 and rising
             top = c0
             for _ in range(200):
-                P, dP, _c = slope(top)
+                try:
+                    P, dP, _c = slope(top)
+                except DomainError:   # past the profile's end (or no zone inside it): the scan stops below
+                    if top == c0:
+                        raise
+                    lo_ok, hi_bad = top / 10, top
+                    for _ in range(40):       # the largest half-width with a state, to 1e-12
+                        mid = mpmath.sqrt(lo_ok * hi_bad)
+                        try:
+                            slope(mid)
+                            lo_ok = mid
+                        except DomainError:
+                            hi_bad = mid
+                    top = lo_ok
+                    notes.append(f"the states end at a = {mpmath.nstr(top, 8)} (the cohesive zone would reach "
+                                 f"past the end of the profile beyond)")
+                    break
                 if P > 0 and dP > 0:
                     break
                 top *= 10

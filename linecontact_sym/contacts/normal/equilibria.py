@@ -462,6 +462,40 @@ def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
     return Landscape(lo, hi_eval, end, tuple(ext), "convex", tuple(notes) + (how,), rising)
 
 
+# ---------------------------------------------------------------- below the search range
+#: decades followed below the landscape's lower end before a -> 0+ is declared (at most)
+MAX_DECADES = 400
+
+
+def descent(law, lo, dps: int):
+    """Below the landscape's lower end ``lo``, for a law whose limit P(0+) is
+    not 0 (``law.P_zero``, Maugis-Dugdale's -2 sigma_0 c0): follow dP/da down
+    in quarter decades; a sign change - (below) to + (above) brackets a
+    minimum; stop where a |dP/da| < 10**-(dps + 6) |P(0+)| (what P can still
+    change below).  Returns (brackets, infimum, a_end): ``infimum`` when dP/da
+    is still positive there (P decreases to P(0+) as a -> 0+, approached, not
+    attained).  The scale of a 'decade' search is the law's own: no minimum
+    hides between grid points below a quarter decade, since the minima of a
+    law on top of a smooth P0 are separated by more (a law with finer
+    structure near a = 0 needs a finer step)."""
+    with workdps(20):
+        Pz = abs(law.P_zero())
+        step = mpmath.mpf(10)**(-mpmath.mpf(1) / 4)
+        tol = Pz * mpmath.mpf(10)**-(dps + 6)
+        prev = (lo, law.dP(lo))
+        brackets = []
+        for _ in range(4 * MAX_DECADES):
+            _check_deadline("the descent of dP/da towards a -> 0+")
+            A = prev[0] * step
+            d = law.dP(A)
+            if d < 0 < prev[1]:
+                brackets.append((A, prev[0]))
+            prev = (A, d)
+            if A * abs(d) <= tol:
+                return brackets, d > 0, A
+        return brackets, False, prev[0]
+
+
 # ---------------------------------------------------------------- minimum (method A)
 def _refine(law, e, dps):
     """An extremum at the working precision (dps + GUARD)."""
@@ -490,8 +524,15 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
             f"P(a) is still decreasing at a = {mpmath.nstr(land.hi, 6)} (the end of the search range): P(a) "
             f"has no finite minimum, no finite pull-off (the profile grows no faster than sqrt(x) there, "
             f"so the adhesive term dominates)")
+    below = None
+    if getattr(scan_law, "P_zero", None) is not None:
+        brackets, infimum, a_end = descent(scan_law, land.lo, dps)
+        below = ([Extremum(mpmath.sqrt(l * r), None, "stationary", True, (l, r)) for l, r in brackets],
+                 infimum, a_end)
     with workdps(dps + GUARD):
-        mins = [_refine(law, e, dps) for e in land.minima]
+        mins = [_refine(law, e, dps) for e in land.minima + (tuple(below[0]) if below else ())]
+        if below is not None and below[1]:
+            mins.append(Extremum(mpmath.mpf(0), +law.P_zero(), "infimum", True, ()))
         neg = [e for e in mins if e.force < 0]
         if law.geometry.closes_at_end:      # a periodic array: the end is full contact, not a separation
             return _first_minimum(law, land, mins)
@@ -501,6 +542,12 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
                 "reached only as a -> 0); no finite pull-off")
         best = min(neg, key=lambda e: e.force)
         note = land.describe()
+        if below is not None:
+            note += (f"; dP/da followed down in quarter decades below a = {mpmath.nstr(land.lo, 4)} to a = "
+                     f"{mpmath.nstr(below[2], 3)}, where a |dP/da| < 1e-{dps + 6} |P(0+)|"
+                     + (": P(a) decreases to its limit P(0+) as a -> 0+ there" if below[1] else ""))
+        if best.kind == "infimum":
+            note += "; the pull-off is the infimum P(0+) (approached as a -> 0+, not attained)"
         if best.kind == "end":
             note += ("; the global minimum is at the end of the admissible range: the lowest load the "
                      "frictionless adhesive solution describes, not a proven separation load")
@@ -556,10 +603,11 @@ def equilibria_at(law, load, dps: int, scan_law=None):
         nodes = [land.lo] + [e.half_width for e in sorted(land.extrema, key=lambda e: e.half_width)
                              if e.kind != "end"] + [land.hi]
         vals = [sl.P(A) for A in nodes]
-        # below lo: P(0+) = 0 and P is monotone there
+        # below lo: P(0+) (0, or the law's P_zero) and P is monotone there
         a0, p0 = nodes[0], vals[0]
+        Pz = sl.P_zero() if getattr(sl, "P_zero", None) is not None else 0
         k = 0
-        while L20 != 0 and (p0 - L20 > 0) != (0 - L20 > 0) and k < 200:
+        while L20 != Pz and (p0 - L20 > 0) != (Pz - L20 > 0) and k < 200:
             a0 = a0 / 16
             p0 = sl.P(a0)
             k += 1
@@ -605,6 +653,7 @@ def half_width_at(law, load, dps: int = 30):
     return roots[0]
 
 
-__all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings", "real_range", "admissible_range", "landscape",
-           "minimum", "equilibria", "equilibria_at", "half_width_at",
+__all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings",
+           "real_range", "admissible_range", "landscape",
+           "minimum", "equilibria", "equilibria_at", "half_width_at", "descent", "MAX_DECADES",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]

@@ -52,8 +52,9 @@ class PullOff:
     force          P_min < 0 (the pull-off *load*)
     adhesion_force P_adh = -P_min > 0 (the paper's P_adh)
     half_width     a at the minimum
-    kind           'stationary' (dP/da = 0), 'kink' (at a profile breakpoint)
-                   or 'end' (the end of the admissible range)
+    kind           'stationary' (dP/da = 0), 'kink' (at a profile breakpoint),
+                   'end' (the end of the admissible range) or 'infimum' (a law
+                   with P(0+) < 0 decreasing to it as a -> 0+: half-width 0)
     digits         agreement of two independent methods (None if not run)
     minima         every local minimum of P over the admissible range, as
                    :class:`~.equilibria.Extremum` (half-width, force, kind)
@@ -87,6 +88,10 @@ class ForceLaw:
         self.fallback = fallback   # a quadrature law used where the closed form does not hold
         self.float_P = float_P     # float_P(P0f) -> P(a) in float64 from P0 in float64 (adhesive laws; optional)
         self.inactive = inactive   # an adhesive law that exerts no adhesion (JKR with gamma = 0)
+        # P(0+) = lim_{a->0+} P(a) as a callable at the working precision, where it is not 0
+        # (Maugis-Dugdale: the Dugdale force of the zone of a vanishing contact): the minimum
+        # then follows dP/da down in decades below the search range (equilibria.descent)
+        self.P_zero = None
         self.expr = expr           # P(a) as a SymPy expression in a (closed form), else None
         self.conditions = tuple(conditions)   # where ``expr`` holds (relations in a)
         self.base = self           # the non-adhesive law P0 (admissibility is read from it)
