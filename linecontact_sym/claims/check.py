@@ -63,10 +63,10 @@ def _symbolic_work(printed, derived: Derived, vals, budget) -> str:
 
     def work(p, d):
         if p.has(sp.Integral):
-            # SymPy's table, Meijer G and manual rules, without the heuristic Risch
-            # search (heurisch), which spends the whole budget on the printed
-            # integrals of Eqs. (9), (10), (12) and closes none of them there
-            p = p.doit(heurisch=False)
+            # SymPy's table, Meijer G and manual rules (manualintegrate), without
+            # the heuristic Risch search (heurisch), which spent the whole budget
+            # on the printed integrals of Eqs. (9), (10), (12) and closed none there
+            p = p.doit(heurisch=False, manual=True)
             if p.has(sp.Integral):
                 return "not decided (SymPy leaves the printed integral unevaluated)"
             p = sp.piecewise_fold(p)
