@@ -63,7 +63,7 @@ WALL_GUARD_FACTOR = 10.0
 WALL_GUARD_EXTRA = 60.0
 
 
-def checked_budget(seconds):
+def checked_budget(seconds, text: bool = False):
     """A budget as given by a user: ``None`` or ``math.inf`` (no limit, returned
     as None) or a real number of CPU seconds > 0 (returned as float), read by the
     one reader of numeric settings (:func:`~linecontact_sym.core.options.read_number`:
@@ -73,13 +73,17 @@ def checked_budget(seconds):
     every budget while ``$LINECONTACT_SYM_BUDGET`` holds a value that is not
     one (:func:`check_environment`).
 
-    >>> checked_budget(5), checked_budget(None), checked_budget(float("inf")), checked_budget(" 2.5 ")
+    >>> checked_budget(5), checked_budget(None), checked_budget(float("inf")), checked_budget(" 2.5 ", text=True)
     (5.0, None, None, 2.5)
     """
     check_environment()
     if seconds is None:
         return None
-    v = read_number(seconds, "the budget (seconds)", low=0, low_open=True, allow_inf=True, error=BudgetError)
+    if isinstance(seconds, (str, bytes)) and not text:     # the API takes numbers; text is the CLI's (text=True)
+        raise BudgetError(f"the CPU-time budget must be a number of seconds > 0 (or None / math.inf for no "
+                          f"limit), got the text {seconds!r}")
+    v = read_number(seconds, "the CPU-time budget", low=0, low_open=True, allow_inf=True, error=BudgetError,
+                    what="a number of seconds")
     return None if math.isinf(v) else float(v)
 
 
@@ -93,19 +97,15 @@ def _budget_from_environment(default: float):
     None) replaces the default budget of a derivation, for a slow machine
     (or to allow a hard integral more time); a machine's load does not
     matter, the budget being CPU time.
-    A value that is not a budget is not raised at import (a command line
-    could not report it): it is remembered, and :func:`check_environment`
-    (called by every budget check and first by the command line) raises
-    :class:`BudgetError` naming the variable."""
+    A value that is not a budget raises :class:`BudgetError` naming the
+    variable; at import it is not raised (a command line could not report
+    it) but remembered, and :func:`check_environment` (called by every
+    budget check and first by the command line) raises it."""
     text = os.environ.get(BUDGET_ENV, "")
     if not text.strip():
         return default
-    try:
-        value = read_number(text, BUDGET_ENV + " (seconds)", low=0, low_open=True, allow_inf=True,
-                            error=BudgetError)
-    except BudgetError as exc:
-        _ENV["problem"] = exc
-        return default
+    value = read_number(text, BUDGET_ENV + " (CPU seconds)", low=0, low_open=True, allow_inf=True,
+                        error=BudgetError, what="a number of seconds")
     return None if math.isinf(value) else value
 
 
@@ -115,7 +115,10 @@ def check_environment() -> None:
         raise BudgetError(str(_ENV["problem"]))
 
 
-DEFAULT_BUDGET = _budget_from_environment(DEFAULT_BUDGET)
+try:
+    DEFAULT_BUDGET = _budget_from_environment(DEFAULT_BUDGET)
+except BudgetError as _exc:        # not raised at import: check_environment() raises it where a budget is used
+    _ENV["problem"] = _exc
 
 
 def children_cpu_time() -> float:
