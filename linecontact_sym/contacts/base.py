@@ -388,8 +388,11 @@ class Contact:
         Values may be pint quantities (as in :meth:`evaluate_at`): the
         Evaluation's numbers stay SI numbers, its ``unit`` says which, and
         ``.quantity_value()`` is the value as a pint quantity."""
-        from ..numeric.evaluate import evaluate
-        values, registry, unit = self._strip_units(quantity, values)
+        evaluate = _numeric_evaluate()
+        if _PLAIN_NUMBERS.issuperset(map(type, values.values())):   # no pint quantity among them
+            registry = None
+        else:
+            values, registry, unit = self._strip_units(quantity, values)
         try:
             r = evaluate(self, self.resolve(quantity), rtol=rtol, certified=certified, dps=dps, **values)
         except (ZeroDivisionError, OverflowError) as exc:
@@ -418,6 +421,22 @@ class Contact:
         names = quantities or [n for n, q in type(self).quantities().items() if not q.method]
         return "\n".join(self.derivation(q).summary() for q in names)
 
+
+def _numeric_evaluate():
+    """:func:`linecontact_sym.numeric.evaluate.evaluate`, imported at the first
+    call (not with the contacts: a plain import stays light), then looked up
+    once per call in this module's globals, not through the import system."""
+    fn = _NUMERIC.get("evaluate")
+    if fn is None:
+        from ..numeric.evaluate import evaluate as fn
+        _NUMERIC["evaluate"] = fn
+    return fn
+
+
+_NUMERIC: dict = {}
+
+#: the types of plain SI numbers (no unit to strip: the common, fast case of evaluate)
+_PLAIN_NUMBERS = frozenset((float, int))
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
 #: mirrored, f(-x) = f(x))
@@ -511,14 +530,17 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
             return self.check_domain(quantity, values)
         vals["x"] = xv
     if adm is not None and "a" in vals:
-        key = tuple(vals.get(n) for n in adm)
-        seen = self._caches().setdefault(("_admissible", adm), {})
+        key = tuple([vals.get(n) for n in adm])
+        caches = self._caches()
+        seen = caches.get(("_admissible", adm))
+        if seen is None:
+            seen = caches[("_admissible", adm)] = {}
         if key not in seen:
             self._check_admissible(vals)          # raises where inadmissible
             if len(seen) > 100000:
                 seen.clear()
             seen[key] = True
-    if cond_fn is not None and all(n in vals for n in cond_names):
+    if cond_fn is not None and known.issubset(vals.keys()):          # cond_names: the names of known
         try:
             ok = bool(cond_fn(*[float(vals[n]) for n in cond_names]))
         except (TypeError, ValueError):
@@ -548,7 +570,7 @@ def scalar_domain_plan(self, quantity):
                 if fprime is not None or slope is not None:
                     adm = ("a", "E_star", *names)
             plan = (frozenset(known), positive, frozenset(q.nonnegative), domain, tuple(known),
-                    cond_fn if conds else None, adm)
+                    _scalar_test(self, name, known, cond_fn) if conds else None, adm)
         cache[key] = plan
     return cache[key]
 
@@ -605,6 +627,16 @@ class ExportInputs:
         """``(values in SI, registry or None, unit)`` of a call's keywords."""
         plain, registry, unit = self.contact._strip_units(self.quantity, {**self.given, **kw})
         return {k: plain[k] for k in kw}, registry, unit
+
+
+def _scalar_test(contact, name, known, cond_fn):
+    """The derivation's point test for plain floats: compiled for the math
+    module (a comparison of floats, not a NumPy call), else ``cond_fn``."""
+    try:
+        test = sp.And(*contact.derivation(name).point_test)
+        return lambdify(list(known.values()), test, "math")
+    except Exception:   # noqa: BLE001 -- a function the math module lacks: the NumPy test
+        return cond_fn
 
 
 class DomainCheck:

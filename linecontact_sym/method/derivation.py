@@ -200,6 +200,9 @@ class Derivation:
             what = f"closed form, FAILED verification ({v.min_digits:.1f} digits)"
         else:
             what = f"closed form, verified at {len(v.points)} points (>= {v.min_digits:.0f} digits)"
+            if v.certified_points:
+                what += (f", certified by Arb enclosures at {v.certified_points} of them "
+                         f"(>= {min(g for g in v.guaranteed if g > 0):.0f} digits guaranteed)")
         return f"{what}; rule {self.rule}"
 
     def _timing(self) -> str:
@@ -237,6 +240,8 @@ class Derivation:
             status = r"\text{no closed form (quadrature)}"
         elif v is not None and v.passed:
             status = rf"\text{{verified at {len(v.points)} points, }}\geq {v.min_digits:.0f}\text{{ digits}}"
+            if v.certified_points:
+                status += rf"\text{{ (Arb-certified at {v.certified_points})}}"
         elif v is not None and v.points:
             status = rf"\text{{FAILED verification, {v.min_digits:.1f} digits}}"
         else:

@@ -74,11 +74,14 @@ class ScalarKit:
     def __init__(self, d):
         syms = d.variables_all
         self.names = tuple(s.name for s in syms)
+        self.name_set = frozenset(self.names)
         e = d.expr
         self.expensive = (not d.closed_form or e.has(sp.Integral) or e.has(sp.elliptic_k)
                           or e.has(sp.elliptic_e) or e.has(sp.hyper)
                           or any(g.args[0].free_symbols for g in e.atoms(sp.gamma)))
-        self.f = self.probe = None
+        self.f = self.probe = self.rest = None
+        self.exponents = ()        # the monomial factor's exponent of each argument (see _split_monomial)
+        self.rest_index = ()       # the arguments the rest depends on
         if not d.closed_form:
             return
         expr = stable_form(d).expr
@@ -92,6 +95,21 @@ class ScalarKit:
                 self.probe = lambdify(syms, tup, modules=[_scalar_funcs(), "math"], cse=True)
         except Exception:          # a function the math module does not have
             self.f = self.probe = None
+            return
+        exponents, rest = _split_monomial(expr, syms)
+        if exponents is not None:
+            try:
+                self.rest = None if rest == 1 else \
+                    lambdify(syms, to_scipy_names(fold_constants(rest)), modules=[_scalar_funcs(), "math"])
+                self.exponents = exponents
+                self.rest_index = tuple(i for i, s in enumerate(syms) if rest.has(s))
+            except Exception:      # the rest does not compile alone: kappa by differences of f
+                self.rest, self.exponents = None, ()
+
+    @property
+    def differences(self) -> bool:
+        """Does :meth:`kappa` take differences (then its step matters)?"""
+        return not self.exponents or self.rest is not None
 
     def value(self, vals):
         """f at the floats ``vals`` (positional), or None where it fails."""
@@ -102,30 +120,70 @@ class ScalarKit:
         return v if math.isfinite(v) else None
 
     def kappa(self, vals, f0, step=None):
-        """Componentwise relative condition number by central differences
-        (relative step ``step``, default :data:`STEP`; smaller where a
-        breakpoint lies within the default step)."""
+        """Componentwise relative condition number sum_i |x_i df/dx_i| / |f|.
+
+        Where f = c x_1^e_1 ... x_n^e_n * rest(x) (:func:`_split_monomial`,
+        found once per export), x_i df/dx_i / f = e_i + x_i d(rest)/dx_i / rest:
+        exact for the arguments only in the monomial (the parabola's force
+        law: kappa = 4 with no evaluation at all), by central differences of
+        the rest for the others (relative step ``step``, default :data:`STEP`;
+        smaller where a breakpoint lies within the default step).  Otherwise
+        central differences of f, as for every argument before."""
         STEP_ = STEP if step is None else step
         if f0 == 0:
             return math.inf
+        exps = self.exponents
+        if not exps:
+            return self._differences(self.value, vals, f0, STEP_, range(len(vals))) / abs(f0)
         total = 0.0
         for i, v in enumerate(vals):
+            if v != 0 and i not in self.rest_index:
+                total += abs(exps[i])
+        if self.rest is None:
+            return total
+        r0 = self._rest(vals)
+        if r0 is None or r0 == 0:          # the rest alone fails here: differences of f, as before
+            return self._differences(self.value, vals, f0, STEP_, range(len(vals))) / abs(f0)
+        for i in self.rest_index:
+            v = vals[i]
             if v == 0:
                 continue
-            up = self._at(vals, i, v * (1 + STEP_))
-            dn = self._at(vals, i, v * (1 - STEP_))
-            if up is not None and dn is not None:
-                total += abs((up - dn) / (2 * STEP_))
-            elif up is not None:
-                total += abs((up - f0) / STEP_)
-            elif dn is not None:
-                total += abs((f0 - dn) / STEP_)
-        return total / abs(f0)
+            total += abs(exps[i] + self._differences(self._rest, vals, r0, STEP_, (i,), signed=True) / r0)
+        return total
 
-    def _at(self, vals, i, vi):
-        shifted = list(vals)
-        shifted[i] = vi
-        return self.value(shifted)
+    @staticmethod
+    def _differences(fn, vals, f0, step, which, signed=False):
+        """sum over i in ``which`` of |x_i dfn/dx_i| (``signed``: the one
+        term with its sign) by central differences, one-sided where one
+        side fails, 0 where both do."""
+        total = 0.0
+        for i in which:
+            v = vals[i]
+            if v == 0:
+                continue
+            shifted = list(vals)
+            shifted[i] = v * (1 + step)
+            up = fn(shifted)
+            shifted[i] = v * (1 - step)
+            dn = fn(shifted)
+            if up is not None and dn is not None:
+                t = (up - dn) / (2 * step)
+            elif up is not None:
+                t = (up - f0) / step
+            elif dn is not None:
+                t = (f0 - dn) / step
+            else:
+                continue
+            total += t if signed else abs(t)
+        return total
+
+    def _rest(self, vals):
+        """The rest of f beyond its monomial factor at the floats ``vals``, or None where it fails."""
+        try:
+            v = float(self.rest(*vals))
+        except _FAIL:
+            return None
+        return v if math.isfinite(v) else None
 
     def cancellation(self, vals):
         if self.probe is None:
@@ -140,6 +198,26 @@ class ScalarKit:
             if math.isfinite(A) and math.isfinite(Sm) and A > 0:
                 worst = max(worst, A / abs(Sm) if Sm != 0 else math.inf)   # inf: cancelled to 0
         return worst
+
+
+def _split_monomial(expr, syms):
+    """``(exponents, rest)`` with expr = constant * prod(s_i**exponents[i]) * rest,
+    the exponents real numbers (a symbolic exponent, a**n, stays in the rest),
+    or ``(None, expr)`` where expr is not a product."""
+    if not isinstance(expr, sp.Mul) and not (isinstance(expr, (sp.Pow, sp.Symbol))):
+        return None, expr
+    index = {s: i for i, s in enumerate(syms)}
+    exps = [0.0] * len(syms)
+    rest = []
+    for fac in sp.Mul.make_args(expr):
+        if fac.is_number:
+            continue
+        base, e = fac.as_base_exp()
+        if base in index and e.is_number and e.is_real:
+            exps[index[base]] += float(e)
+        else:
+            rest.append(fac)
+    return tuple(exps), sp.Mul(*rest)
 
 
 def scalar_kit(d) -> ScalarKit:

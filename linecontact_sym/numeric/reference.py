@@ -209,39 +209,31 @@ def _cut(fn, *segments):
     return g
 
 
+def _method(name):
+    return lambda z, an: getattr(z, name)()
+
+
+#: functions holomorphic wherever they are finite (poles give non-finite balls by themselves)
+_MEROMORPHIC = {sp.exp: "exp", sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: "sec",
+                sp.csc: "csc", sp.sinh: "sinh", sp.cosh: "cosh", sp.tanh: "tanh", sp.coth: "coth",
+                sp.sech: "sech", sp.csch: "csch", sp.gamma: "gamma", sp.erf: "erf", sp.erfc: "erfc"}
+
 _UNARY = {
-    sp.exp: lambda z, an: z.exp(),
-    sp.sin: lambda z, an: z.sin(),
-    sp.cos: lambda z, an: z.cos(),
-    sp.tan: lambda z, an: z.tan(),
-    sp.cot: lambda z, an: z.cot(),
-    sp.sec: lambda z, an: z.sec(),
-    sp.csc: lambda z, an: z.csc(),
-    sp.sinh: lambda z, an: z.sinh(),
-    sp.cosh: lambda z, an: z.cosh(),
-    sp.tanh: lambda z, an: z.tanh(),
-    sp.coth: lambda z, an: z.coth(),
-    sp.sech: lambda z, an: z.sech(),
-    sp.csch: lambda z, an: z.csch(),
-    sp.atan: _cut(lambda z: z.atan(), ),      # cuts on the imaginary axis only
-    sp.asinh: _cut(lambda z: z.asinh()),
+    **{f: _method(name) for f, name in _MEROMORPHIC.items()},
     sp.log: lambda z, an: z.log(analytic=an),
     sp.Abs: lambda z, an: z.real_abs(analytic=an),
     sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None)),
     sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None)),
     sp.atanh: _cut(lambda z: z.atanh(), (None, -1), (1, None)),
     sp.acosh: _cut(lambda z: z.acosh(), (None, 1)),
-    sp.gamma: lambda z, an: z.gamma(),
     sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0)),
     sp.elliptic_k: _cut(lambda m: flint.acb.elliptic_k(m), (1, None)),
-    sp.erf: lambda z, an: z.erf(),
-    sp.erfc: lambda z, an: z.erfc(),
     sp.sign: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_sgn(),
     sp.Heaviside: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_heaviside(),
 }
 
-# atan has branch points at +-i, off the real line: a ball near the real
-# segment never reaches them unless it is huge
+# atan and asinh have their branch points at +-i, off the real line: a ball
+# near the real segment never reaches them unless it is huge
 _UNARY[sp.atan] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.atan()
 _UNARY[sp.asinh] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.asinh()
 

@@ -88,9 +88,11 @@ def test_deadline_counts_in_process_cpu_too():
 def test_environment_budget_is_cpu_seconds(monkeypatch):
     monkeypatch.setenv("LINECONTACT_SYM_BUDGET", "7.5")
     assert B._budget_from_environment(20.0) == 7.5
+    monkeypatch.setitem(B._ENV, "problem", None)
     monkeypatch.setenv("LINECONTACT_SYM_BUDGET", "soon")
-    with pytest.raises(B.BudgetError, match="CPU seconds"):
-        B._budget_from_environment(20.0)
+    assert B._budget_from_environment(20.0) == 20.0       # remembered, raised where it can be reported
+    with pytest.raises(B.BudgetError, match="LINECONTACT_SYM_BUDGET.*CPU seconds"):
+        B.check_environment()
 
 
 # ------------------------------------------------------- quiet and loaded

@@ -2,6 +2,8 @@
 former O(N^2) scan: same N, partial sum, bound and ratio on random term lists."""
 import random
 
+import pytest
+
 from linecontact_sym.numeric.evaluate import SeriesModel
 
 
@@ -69,3 +71,63 @@ def test_scalar_calls_take_the_scalar_path(monkeypatch):
     with mpmath.workdps(30):                          # P = E* R (K(m) - E(m)), m = (a/R)^2
         ref = mpmath.ellipk(mpmath.mpf(1) / 4) - mpmath.ellipe(mpmath.mpf(1) / 4)
     assert abs(f(a=0.5, R=1.0, E_star=1.0) - float(ref)) <= 4e-16 * float(ref)
+
+
+@pytest.mark.slow
+def test_condition_number_from_the_monomial_factor_equals_the_differences():
+    """kappa found once per export from f = c x^e * rest (exact for the
+    monomial's arguments, differences of the rest) equals the central
+    differences of f (the former way) at random points: the parabola's force
+    law needs no evaluation at all (kappa = 4), the cylinder's differences
+    of its Carlson factor only, the power law's of a**n * gamma_ratio."""
+    import linecontact_sym as lcs
+    from linecontact_sym.numeric.fastpath import STEP, scalar_kit
+
+    rng = random.Random(5)
+    for law, q in (("parabola", "force"), ("exact_cylinder", "force"), ("power_law", "force"),
+                   ("parabola", "pressure"), ("exact_cylinder", "pressure"), ("worn_cylinder", "force")):
+        kit = scalar_kit(getattr(lcs, law)().derivation(q))
+        if law == "parabola" and q == "force":
+            assert kit.rest is None and not kit.differences and kit.exponents
+        if law == "exact_cylinder" and q == "force":
+            assert kit.rest is not None and {kit.names[i] for i in kit.rest_index} == {"a", "R"}
+        for _ in range(20):
+            vals = {"a": rng.uniform(0.05, 0.95), "R": rng.uniform(1.0, 3.0), "E_star": rng.uniform(0.5, 2),
+                    "n": rng.uniform(0.5, 4), "c": rng.uniform(0.5, 2), "b": rng.uniform(0.01, 0.04)}
+            vals["x"] = vals["a"] * rng.uniform(-0.9, 0.9)
+            v = [vals[n] for n in kit.names]
+            f0 = kit.value(v)
+            ref = kit._differences(kit.value, v, f0, STEP, range(len(v))) / abs(f0)
+            got = kit.kappa(v, f0)
+            assert abs(got - ref) <= 1e-5 * ref + 1e-8, (law, q, got, ref)
+
+
+@pytest.mark.slow
+def test_model_ratio_plan_chooses_as_the_general_scan():
+    """The exact cylinder's series model: its term ratios are q_j (a/R)^2,
+    found once; the choice of N at a point (and the value, to a few ulps,
+    and the bound) is the one of the general scan over 40 computed terms."""
+    import linecontact_sym as lcs
+    from linecontact_sym.numeric.evaluate import _model, _try_model
+
+    c = lcs.exact_cylinder()
+    c.derivation("force")
+    m = _model(c)
+    assert m._ratios is not None and str(m._ratios.rho(2.0, 1.0, 4.0)) in ("0.25", "4.0")
+    plan = m._ratios
+    rng = random.Random(3)
+    for _ in range(60):
+        vals = dict(a=10 ** rng.uniform(-7, -0.05), R=rng.uniform(0.5, 2.0), E_star=rng.uniform(0.5, 2.0))
+        vals["a"] *= vals["R"]
+        rtol = 10 ** rng.uniform(-13.5, -2)
+        fast = _try_model(m, "force", vals, rtol, 0.0)
+        m._ratios = None
+        try:
+            slow = _try_model(m, "force", vals, rtol, 0.0)
+        finally:
+            m._ratios = plan
+        assert (fast is None) == (slow is None), vals
+        if fast is not None:
+            assert fast.details["terms"] == slow.details["terms"]
+            assert abs(fast.value - slow.value) <= 8 * 2.2e-16 * abs(slow.value)
+            assert slow.error * (1 - 1e-9) <= fast.error <= 1.01 * slow.error + 1e-15 * abs(slow.value)
