@@ -97,15 +97,19 @@ def _budget_from_environment(default: float):
     None) replaces the default budget of a derivation, for a slow machine
     (or to allow a hard integral more time); a machine's load does not
     matter, the budget being CPU time.
-    A value that is not a budget raises :class:`BudgetError` naming the
-    variable; at import it is not raised (a command line could not report
-    it) but remembered, and :func:`check_environment` (called by every
-    budget check and first by the command line) raises it."""
+    A value that is not a budget is not raised at import (a command line
+    could not report it): it is remembered, and :func:`check_environment`
+    (called by every budget check and first by the command line) raises
+    :class:`BudgetError` naming the variable."""
     text = os.environ.get(BUDGET_ENV, "")
     if not text.strip():
         return default
-    value = read_number(text, BUDGET_ENV + " (CPU seconds)", low=0, low_open=True, allow_inf=True,
-                        error=BudgetError, what="a number of seconds")
+    try:
+        value = read_number(text, BUDGET_ENV + " (CPU seconds)", low=0, low_open=True, allow_inf=True,
+                            error=BudgetError, what="a number of seconds")
+    except BudgetError as exc:
+        _ENV["problem"] = exc
+        return default
     return None if math.isinf(value) else value
 
 
@@ -115,10 +119,7 @@ def check_environment() -> None:
         raise BudgetError(str(_ENV["problem"]))
 
 
-try:
-    DEFAULT_BUDGET = _budget_from_environment(DEFAULT_BUDGET)
-except BudgetError as _exc:        # not raised at import: check_environment() raises it where a budget is used
-    _ENV["problem"] = _exc
+DEFAULT_BUDGET = _budget_from_environment(DEFAULT_BUDGET)
 
 
 def children_cpu_time() -> float:
