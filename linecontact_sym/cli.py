@@ -70,9 +70,9 @@ def _budget(text):
     """--budget: CPU seconds > 0, or 'inf' / 'none' for no limit (the one reader
     of numeric settings, :func:`~linecontact_sym.core.options.read_number`)."""
     try:
-        return checked_budget(text)
-    except LineContactError as exc:
-        raise argparse.ArgumentTypeError(str(exc)) from None
+        return checked_budget(text, text=True)
+    except LineContactError:
+        raise argparse.ArgumentTypeError(f"expected seconds > 0 or 'inf', got {text!r}") from None
 
 
 def _jobs(text):

@@ -258,8 +258,9 @@ def test_item4_one_reader_for_budgets_jobs_tolerances():
     from linecontact_sym.core.errors import BudgetError
     from linecontact_sym.core.parallel import capped_jobs, jobs_count
     from linecontact_sym.core.ranges import check_tolerance
-    assert checked_budget(" 2.5 ") == 2.5 and checked_budget(np.float32(4)) == 4.0
-    assert checked_budget("inf") is None and checked_budget(10**400) is None    # larger than any float: no limit
+    assert checked_budget(" 2.5 ", text=True) == 2.5 and checked_budget(np.float32(4)) == 4.0
+    assert checked_budget("inf", text=True) is None
+    assert checked_budget(10**400) is None    # larger than any float: no limit
     for bad in ("abc", "nan", 0, -1, True, 1j, "1e-400x"):
         with pytest.raises(BudgetError):
             checked_budget(bad)

@@ -63,7 +63,7 @@ WALL_GUARD_FACTOR = 10.0
 WALL_GUARD_EXTRA = 60.0
 
 
-def checked_budget(seconds):
+def checked_budget(seconds, text: bool = False):
     """A budget as given by a user: ``None`` or ``math.inf`` (no limit, returned
     as None) or a real number of CPU seconds > 0 (returned as float), read by the
     one reader of numeric settings (:func:`~linecontact_sym.core.options.read_number`:
@@ -73,13 +73,17 @@ def checked_budget(seconds):
     every budget while ``$LINECONTACT_SYM_BUDGET`` holds a value that is not
     one (:func:`check_environment`).
 
-    >>> checked_budget(5), checked_budget(None), checked_budget(float("inf")), checked_budget(" 2.5 ")
+    >>> checked_budget(5), checked_budget(None), checked_budget(float("inf")), checked_budget(" 2.5 ", text=True)
     (5.0, None, None, 2.5)
     """
     check_environment()
     if seconds is None:
         return None
-    v = read_number(seconds, "the budget (CPU seconds)", low=0, low_open=True, allow_inf=True, error=BudgetError)
+    if isinstance(seconds, (str, bytes)) and not text:     # the API takes numbers; text is the CLI's (text=True)
+        raise BudgetError(f"the CPU-time budget must be a number of seconds > 0 (or None / math.inf for no "
+                          f"limit), got the text {seconds!r}")
+    v = read_number(seconds, "the CPU-time budget", low=0, low_open=True, allow_inf=True, error=BudgetError,
+                    what="a number of seconds")
     return None if math.isinf(v) else float(v)
 
 
@@ -102,7 +106,7 @@ def _budget_from_environment(default: float):
         return default
     try:
         value = read_number(text, BUDGET_ENV + " (CPU seconds)", low=0, low_open=True, allow_inf=True,
-                            error=BudgetError)
+                            error=BudgetError, what="a number of seconds")
     except BudgetError as exc:
         _ENV["problem"] = exc
         return default

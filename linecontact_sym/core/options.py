@@ -33,8 +33,8 @@ __all__ = ["read_number"]
 _NO_LIMIT = ("inf", "+inf", "infinity", "+infinity", "none", "unlimited")
 
 
-def _describe(integer, low, low_open, high, allow_inf):
-    what = "a whole number" if integer else "a number"
+def _describe(integer, low, low_open, high, allow_inf, what=None):
+    what = what or ("a whole number" if integer else "a number")
     if low is not None:
         what += f" {'>' if low_open else '>='} {low:g}" if not integer else f" {'>' if low_open else '>='} {low}"
     if high is not None:
@@ -45,13 +45,13 @@ def _describe(integer, low, low_open, high, allow_inf):
 
 
 def read_number(value, name: str, *, integer: bool = False, low=None, low_open: bool = False, high=None,
-                allow_inf: bool = False, error=DomainError):
+                allow_inf: bool = False, error=DomainError, what: str | None = None):
     """``value`` read as the setting ``name`` (see the module docstring):
     a float (``math.inf`` for "no limit" when ``allow_inf``), or an int
     when ``integer``.  ``low`` (excluded when ``low_open``) and ``high``
-    bound it."""
+    bound it; ``what`` names the kind of value in messages ("a number of seconds")."""
     def bad(why=""):
-        return error(f"{name} must be {_describe(integer, low, low_open, high, allow_inf)}, got {value!r}{why}")
+        return error(f"{name} must be {_describe(integer, low, low_open, high, allow_inf, what)}, got {value!r}{why}")
 
     v = value
     if isinstance(v, bool) or v is None:
