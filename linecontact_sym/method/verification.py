@@ -29,7 +29,7 @@ from ..core.precision import workdps
 REQUIRED_DIGITS = 30
 #: working precision of the reference quadratures
 VERIFY_DPS = 45
-#: wall-clock budget of one verification (quadratures at all points), seconds
+#: budget of one verification (quadratures at all points), CPU seconds (core.budget)
 VERIFY_BUDGET = 120.0
 
 
@@ -148,7 +148,7 @@ def verify_many(exprs: dict, reference, sampler, conditions=(), n_points: int = 
         return run_with_budget(_verify, exprs, reference, sampler, conditions, n_points, seed, dps,
                                name, seconds=budget)
     except BudgetExceeded:
-        return {k: VerificationRecord((), (), dps, name(k) + f" (did not finish in {budget:g} s)")
+        return {k: VerificationRecord((), (), dps, name(k) + f" (did not finish in {budget:g} CPU s)")
                 for k in exprs}
 
 
