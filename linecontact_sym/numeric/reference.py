@@ -228,6 +228,7 @@ _UNARY = {
     sp.acosh: _cut(lambda z: z.acosh(), (None, 1)),
     sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0)),
     sp.elliptic_k: _cut(lambda m: flint.acb.elliptic_k(m), (1, None)),
+    sp.elliptic_e: _cut(lambda m: flint.acb.elliptic_e(m), (1, None)),     # complete E(m) (one argument)
     sp.sign: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_sgn(),
     sp.Heaviside: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_heaviside(),
 }
@@ -349,8 +350,6 @@ def compile_acb(expr, var):
             return _piecewise(e, build)
         if isinstance(e, (sp.Min, sp.Max)):
             return build(e.rewrite(sp.Piecewise))
-        if isinstance(e, sp.elliptic_e) and len(e.args) == 1:
-            return _cut_build(build(e.args[0]), lambda m: acb.elliptic_e(m), (1, None))
         if isinstance(e, sp.elliptic_pi) and len(e.args) == 2:
             fn, fm = build(e.args[0]), build(e.args[1])
 
@@ -391,15 +390,6 @@ def compile_acb(expr, var):
         raise ArbUnsupported(f"no acb counterpart for {type(e).__name__}: {e}")
 
     return build(expr)
-
-
-def _cut_build(fx, fn, *segments):
-    def g(z, an):
-        w = fx(z, an)
-        if an and any(_touches(w, lo, hi) for lo, hi in segments):
-            return _nan()
-        return fn(w)
-    return g
 
 
 def _piecewise(e, build):
