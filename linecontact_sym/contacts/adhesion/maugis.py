@@ -54,6 +54,7 @@ from ...method.verification import verify
 from ...parsing import to_sympy
 from ..base import ContactOn, Quantity
 from ..normal.equilibria import equilibria
+from ..normal.force_law import ScanHint
 from .law import CohesiveLaw, Parameter, on_base
 from ..sampling import point_sampler
 from . import maugis_choice
@@ -113,26 +114,37 @@ class MaugisDugdale(CohesiveLaw):
         law = md.numeric_law(**{k.name: v for k, v in values.items() if k in set(md.variables)})
 
         def build(b):
+            memo = {}
+
+            def PdP(A):
+                """(P - P0, dP/da - dP0/da) of the Dugdale zone at A: one inner solve for both."""
+                key = (A, mpmath.mp.dps)
+                if key not in memo:
+                    try:
+                        Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
+                    except DomainError:   # no cohesive zone inside the profile's domain: no state at A
+                        raise Outside
+                    if len(memo) > 4096:
+                        memo.clear()
+                    memo[key] = (Pv - law._P0(A), dPv - law._dP0(A))
+                return memo[key]
+
             def P(A):
                 if A <= 0:            # the limit a -> 0+: the Dugdale force of the zone c0
                     return law.force_zero_width(mpmath.mp.dps)
-                try:
-                    C, _ = law.c_of(A, mpmath.mp.dps)
-                except DomainError:   # no cohesive zone inside the profile's domain: no state at A
-                    raise Outside
-                return b.P(A) + law._P(A, C) - law._P0(A)
+                return b.P(A) + PdP(A)[0]
 
             def dP(A):
                 if A <= 0:
                     return mpmath.mpf(0)
-                try:
-                    Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
-                except DomainError:
-                    raise Outside
-                return b.dP(A) + dPv - law._dP0(A)
+                return b.dP(A) + PdP(A)[1]
             out = b.on_top(P, dP)
             # P(0+) = -2 sigma_0 c0 is not 0: the generic minimum descends towards a -> 0+ (equilibria.descent)
             out.P_zero = lambda: law.force_zero_width(mpmath.mp.dps)
+            out.scan = ScanHint(lambda: law.c0(15) / 1000, 8,
+                                "no Maugis-Dugdale extremum lies within 1/8 decade of another, nor above the first "
+                                "a past every kink with P > 0 and dP/da > 0 (the Dugdale term's slope tends to 0 "
+                                "from below as a grows, dP0/da >= 0); below c0/1000 the descent follows dP/da")
             return out
         return on_base(base, build)
 
