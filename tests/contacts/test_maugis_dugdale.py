@@ -226,7 +226,7 @@ def test_worn_cylinder_two_minima(mds):
     vals = dict(E_star=1, R=1, gamma=1, b="3/10", sigma_0=20)
     po = md.pull_off_at(15, **vals)
     assert len(po.minima) == 2
-    assert po.force == min(m[1] for m in po.minima)
+    assert po.force == min(m.force for m in po.minima)     # the generic layer's Extremum s
     # independent: a dense scan of P(a) at low precision shows both local minima
     law = md.numeric_law(**vals)
     with mpmath.workdps(15):
@@ -234,7 +234,7 @@ def test_worn_cylinder_two_minima(mds):
         Ps = [law.P_and_slope(g, 12)[0] for g in grid]
     mins = [grid[i] for i in range(1, len(Ps) - 1) if Ps[i] < Ps[i - 1] and Ps[i] < Ps[i + 1]]
     assert len(mins) == 2
-    for m, (A, _, _) in zip(mins, sorted(po.minima)):
+    for m, A in zip(mins, sorted(e.half_width for e in po.minima)):
         assert abs(m - A) < 0.01
 
 

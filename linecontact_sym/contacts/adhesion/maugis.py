@@ -5,7 +5,8 @@ Popov's 2017 flat-punch superposition, see :mod:`.maugis_derive`).
     md = contact.maugis_dugdale(w, sigma0)
     md.conditions            # (bounded pressure, gap at c_D = h0) as SymPy equations
     md.state(a, **values)    # c_D, P, pressure and gap profiles at a half-width
-    md.pull_off_at(**values) # load-control pull-off (global minimum or infimum P(0+))
+    md.pull_off_at(**values) # load-control pull-off (global minimum or infimum P(0+)): the generic layer's
+    md.half_width(P, **values), md.branches(P, **values), md.jump_in_half_width   # likewise
     md.model_choice(rtol, **values)   # JKR or MD, with the Maugis parameter
 
 The two conditions (derived per profile from the engine's force law P0(a)
@@ -52,15 +53,15 @@ from ...method.derivation import Derivation, values_by_name
 from ...method.rules import Step
 from ...method.verification import verify
 from ...parsing import to_sympy
-from ..base import ContactOn, Quantity
-from ..normal.equilibria import equilibria
+from ..base import Quantity
+from .contact import AdhesiveContact
 from ..normal.force_law import ScanHint
 from .law import CohesiveLaw, Parameter, on_base
 from ..sampling import point_sampler
 from . import maugis_choice
 from .maugis_choice import ModelChoice
 from .maugis_derive import dugdale_parts
-from .maugis_law import MDLaw, MDPullOff, MDState
+from .maugis_law import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
 SIGMA0_RANGE = (0.05, 3.0)
@@ -84,6 +85,9 @@ class MaugisDugdale(CohesiveLaw):
 
     name = "maugis_dugdale"
     kind = "maugis_dugdale"
+    # its quadrature twin shares the inner solve c_D(a): no independent method B on it (the
+    # independent checks are Johnson's condition and the Flamant kernel, maugis_check and the tests)
+    independent_minimum = False
     title = "Maugis-Dugdale (cohesive zone; Baney & Hui 1997 for the parabola, any profile here)"
     label = "Maugis-Dugdale"
     parameters = (Parameter("work_of_adhesion", S.gamma, "positive", "the work of adhesion w", (0.05, 1.0)),
@@ -157,7 +161,7 @@ def _numeric(ad, name, expr, fn, what, args):
                              variables=args + ad.variables)
 
 
-class MaugisDugdaleContact(ContactOn):
+class MaugisDugdaleContact(AdhesiveContact):
     """Maugis-Dugdale adhesive form of a frictionless line contact; see the
     module docstring.
 
@@ -200,19 +204,9 @@ class MaugisDugdaleContact(ContactOn):
     law_class = MaugisDugdale
 
     def __init__(self, contact, w=S.gamma, sigma0=S.sigma_0, values=None):
-        self.contact = contact
-        self.law = MaugisDugdale(w, sigma0)     # the parameters checked against their domains
-        self.law.on_contact = self
+        super().__init__(contact, MaugisDugdale(w, sigma0), values)   # the parameters checked
+        self.law.on_contact = self      # the law's numbers need this contact's closed forms
         self.w, self.sigma0 = self.law["work_of_adhesion"], self.law["sigma0"]
-        self._esyms = tuple(sorted((self.w.free_symbols | self.sigma0.free_symbols) - set(contact.params)
-                                   - {S.E_star}, key=lambda s: s.name))
-        self._cache: dict = {}
-        self._laws: dict = {}
-        self.values = values_by_name(self.variables, dict(values)) if values else {}
-
-    @classmethod
-    def from_frictionless(cls, contact):
-        return cls(contact)
 
     @classmethod
     def with_law(cls, contact, law, values=None):
@@ -223,27 +217,18 @@ class MaugisDugdaleContact(ContactOn):
         return f"MaugisDugdaleContact({self.contact.profile.expr}, w={self.w}, sigma0={self.sigma0})"
 
     @property
-    def variables(self):
-        return (S.E_star,) + tuple(self.params) + self._esyms
-
-    @property
     def h0(self):
         """The range of the Dugdale law, h0 = w/sigma_0 (w = sigma_0 h0)."""
         return self.w / self.sigma0
 
-    def at(self, **values):
-        new = MaugisDugdaleContact(self.contact, self.w, self.sigma0,
-                                   {**{k.name: v for k, v in self.values.items()}, **values})
-        new._cache, new._laws = self._cache, self._laws
-        return new
-
     def _value(self, name):
+        if name in ("pull_off_force", "adhesion_force", "pull_off_half_width", "jump_in_half_width"):
+            return super()._value(name)
         d = self.derivation(name)
         if not d.closed_form and d.reference is not None and self.values and \
                 all(s in self.values for s in self.variables):
             return d.reference(self.values, 30)      # a numeric quantity at bound values: the number (as JKR's)
-        e = d.expr
-        return e.xreplace(self.values) if self.values else e
+        return self._bind(d.expr)
 
     # ------------------------------------------------------------ the derivation
     @property
@@ -279,7 +264,7 @@ class MaugisDugdaleContact(ContactOn):
         return (sp.Eq(S.P, self.zone_force), sp.Eq(self.cohesive_gap, self.h0))
 
     def _sampler(self, domain="any"):
-        base = point_sampler(self.profile, domain, {s: SIGMA0_RANGE for s in self._esyms})
+        base = point_sampler(self.profile, domain, {s: SIGMA0_RANGE for s in self._lsyms})
 
         def sample(rng):
             v = base(rng)
@@ -304,15 +289,6 @@ class MaugisDugdaleContact(ContactOn):
 
     def _derive_force(self):
         return self.law.derive_force(self)
-
-    def _law(self, vals: dict, mode: str):
-        """The numeric force law P(a) of the generic layer ('closed' or 'quad' P0 underneath)."""
-        from ..normal.force_law import ForceLaw
-        fixed = float_values({k: to_sympy(v) for k, v in vals.items() if k in set(self.variables)}, 80)
-        key = (mode, tuple(sorted((k.name, v) for k, v in fixed.items())))
-        if key not in self._laws:
-            self._laws[key] = self.law.numeric(ForceLaw.from_contact(self.contact, fixed, mode), fixed)
-        return self._laws[key]
 
     def _derive_zone_force(self):
         from . import maugis_check as chk
@@ -359,19 +335,6 @@ class MaugisDugdaleContact(ContactOn):
                                  reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
                                  variables=self.variables)
 
-    def _derive_pull_off_force(self):
-        return self._numeric_derivation("pull_off_force", lambda v, d: self.pull_off_at(d, **v).force,
-                                        "numeric: global minimum of P(a) over every stationary point and kink, "
-                                        "or the infimum P(0+) (maugis_law.MDLaw.pull_off)")
-
-    def _derive_adhesion_force(self):
-        return self._numeric_derivation("adhesion_force", lambda v, d: self.pull_off_at(d, **v).adhesion_force,
-                                        "numeric: minus the load-control pull-off")
-
-    def _derive_pull_off_half_width(self):
-        return self._numeric_derivation("pull_off_half_width", lambda v, d: self.pull_off_at(d, **v).half_width,
-                                        "numeric: the half-width of the pull-off")
-
     def _derive_maugis_lambda(self):
         return self._numeric_derivation("maugis_lambda", lambda v, d: self.maugis_parameter(d, **v),
                                         "numeric: from the JKR pull-off half-width of the profile")
@@ -415,36 +378,6 @@ class MaugisDugdaleContact(ContactOn):
             raise DomainError(f"the half-width must be positive, got a = {a}")
         with _real_profile(self, values):
             return law.state(A, dps)
-
-    def pull_off_at(self, dps: int = 30, **values) -> MDPullOff:
-        """The load-control pull-off: the global minimum of P(a) over every
-        stationary point and kink, or, where P(a) decreases to its limit as
-        a -> 0+, the infimum P(0+) (kind 'infimum').  Displacement control
-        is not defined for line contacts (:data:`DISPLACEMENT_CONTROL`)."""
-        law = self.numeric_law(**values)
-        key = ("po", dps, id(law))
-        if key not in self._cache:
-            with _real_profile(self, values):
-                self._cache[key] = law.pull_off(dps)
-        return self._cache[key]
-
-    def branches(self, load, dps: int = 30, **values):
-        """The equilibria at the load P (numbers), stable first: ((a, 'stable'|'unstable'), ...),
-        by the generic layer (:func:`~linecontact_sym.contacts.normal.equilibria.equilibria` over the
-        numeric force law of this contact, every extremum of P(a) located first, P(0+) below)."""
-        vals = self._numeric_values(values)
-        law = self._law(vals, "closed")
-        roots = equilibria(law, to_sympy(load), dps)
-        return tuple((r, "stable" if st else "unstable") for r, st in roots)
-
-    def half_width(self, load, dps: int = 30, **values):
-        """Equilibrium half-width(s) at the load P, stable branch first (see :meth:`branches`);
-        below the pull-off force a :class:`NoEquilibriumError`."""
-        out = tuple(a for a, _ in self.branches(load, dps, **values))
-        if not out:
-            raise NoEquilibriumError(f"{self.profile.name!r}: no Maugis-Dugdale equilibrium at the load P = {load} "
-                                     f"(below the pull-off force, or beyond the admissible range)")
-        return out
 
     def displacement_control(self):
         """Not defined for line contacts: raises with the reason."""
@@ -521,4 +454,4 @@ _REFERENCE_NAMES = {
 }
 
 
-__all__ = ["MaugisDugdale", "MaugisDugdaleContact", "ModelChoice", "MDState", "MDPullOff", "DISPLACEMENT_CONTROL"]
+__all__ = ["MaugisDugdale", "MaugisDugdaleContact", "ModelChoice", "MDState", "DISPLACEMENT_CONTROL"]

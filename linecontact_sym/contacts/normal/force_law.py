@@ -205,6 +205,15 @@ class ForceLaw:
 
         def guard(fn):
             def g(A):
+                # the integrands take f'(t) for 0 < t < a: where the slope at the edge is not
+                # real (the exact cylinder past x = R) the law is not either -- said at once,
+                # not after a quadrature of complex values
+                try:
+                    edge = f1(A)
+                except UNDEFINED:
+                    edge = None    # infinite at the edge (a = R): the quadrature decides
+                if isinstance(edge, mpmath.mpc) and abs(edge.imag) > abs(edge.real) * mpmath.mpf(10)**(5 - mpmath.mp.dps):
+                    raise Outside
                 try:
                     return fn(A)
                 except UNDEFINED:
