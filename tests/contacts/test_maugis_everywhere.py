@@ -21,8 +21,8 @@ import sympy as sp
 import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
 from linecontact_sym.core.errors import DomainError
-from linecontact_sym.contacts.adhesion import maugis_check as chk
-from linecontact_sym.contacts.adhesion.maugis_law import fixed_values
+from linecontact_sym.contacts.adhesion.maugis import check as chk
+from linecontact_sym.contacts.adhesion.maugis.numbers import fixed_values
 
 x, R = S.x, S.R
 W = sp.Rational(1, 10000)

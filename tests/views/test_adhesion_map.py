@@ -5,7 +5,7 @@ import pytest
 
 import linecontact_sym as lcs
 from linecontact_sym.views.adhesion_map import adhesion_map_data, plot_adhesion_map
-from linecontact_sym.contacts.adhesion.maugis_check import rigid_limit
+from linecontact_sym.contacts.adhesion.maugis.check import rigid_limit
 
 
 @pytest.fixture(scope="module")

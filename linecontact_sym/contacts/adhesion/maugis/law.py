@@ -1,6 +1,6 @@
 """Maugis-Dugdale adhesion of line contacts of any profile: the JKR-to-rigid
 transition (Baney & Hui 1997 for the parabola; here for any profile through
-Popov's 2017 flat-punch superposition, see :mod:`.maugis_derive`).
+Popov's 2017 flat-punch superposition, see :mod:`.derive`).
 
     md = contact.maugis_dugdale(w, sigma0)
     md.conditions            # (bounded pressure, gap at c_D = h0) as SymPy equations
@@ -17,7 +17,7 @@ and adhesionless gap g0(x; a)):
 
 Where the engine leaves g0(x; a), P0(a) or p0(x; a) as an unevaluated
 Integral (R (cosh(x/R) - 1), the Gaussian bump, a user's profile), the
-numeric law (:class:`.maugis_law.MDLaw`) evaluates those defining integrals
+numeric law (:class:`.numbers.MDLaw`) evaluates those defining integrals
 by quadrature inside the solve, at the digits asked (``MDState.closed`` says
 which parts were closed); the cohesive zone never leaves the profile's real
 domain (the exact cylinder: c_D < R, else a DomainError).
@@ -43,25 +43,25 @@ import time
 import mpmath
 import sympy as sp
 
-from ...core import symbols as S
-from ...core.conversion import float_values, point_value, rational
-from ...core.errors import DomainError, NoEquilibriumError, NumericValuesRequired
-from ...core.roots import Outside
-from ...core.precision import workdps
-from ...core.ranges import check_positive, check_tolerance
-from ...method.derivation import Derivation, values_by_name
-from ...method.rules import Step
-from ...method.verification import verify
-from ...parsing import to_sympy
-from ..base import Quantity
-from .contact import AdhesiveContact
-from ..normal.force_law import ScanHint
-from .law import CohesiveLaw, Parameter, on_base
-from ..sampling import point_sampler
-from . import maugis_choice
-from .maugis_choice import ModelChoice
-from .maugis_derive import dugdale_parts
-from .maugis_law import MDLaw, MDState
+from ....core import symbols as S
+from ....core.conversion import float_values, point_value, rational
+from ....core.errors import DomainError, NoEquilibriumError, NumericValuesRequired
+from ....core.roots import Outside
+from ....core.precision import workdps
+from ....core.ranges import check_positive, check_tolerance
+from ....method.derivation import Derivation, values_by_name
+from ....method.rules import Step
+from ....method.verification import verify
+from ....parsing import to_sympy
+from ...base import Quantity
+from ..contact import AdhesiveContact
+from ...normal.force_law import ScanHint
+from ..law import CohesiveLaw, Parameter, on_base
+from ...sampling import point_sampler
+from . import choice as maugis_choice
+from .choice import ModelChoice
+from .derive import dugdale_parts
+from .numbers import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
 SIGMA0_RANGE = (0.05, 3.0)
@@ -77,7 +77,7 @@ class MaugisDugdale(CohesiveLaw):
     tension sigma_0 on a < |x| < c_D while the gap is below h0 = w/sigma_0.
     Its balance is a system in (a, c_D, P): bounded pressure at x = +-a and
     gap(c_D) = h0 (:attr:`conditions` of the contact); P(a) needs the inner
-    solve for c_D(a) (:mod:`.maugis_law`).
+    solve for c_D(a) (:mod:`.numbers`).
 
     >>> MaugisDugdale().balance
     'bounded pressure at x = +-a (K_I = 0) and gap(c_D) = gamma/sigma_0'
@@ -86,7 +86,7 @@ class MaugisDugdale(CohesiveLaw):
     name = "maugis_dugdale"
     kind = "maugis_dugdale"
     # its quadrature twin shares the inner solve c_D(a): no independent method B on it (the
-    # independent checks are Johnson's condition and the Flamant kernel, maugis_check and the tests)
+    # independent checks are Johnson's condition and the Flamant kernel, maugis.check and the tests)
     independent_minimum = False
     title = "Maugis-Dugdale (cohesive zone; Baney & Hui 1997 for the parabola, any profile here)"
     label = "Maugis-Dugdale"
@@ -100,7 +100,7 @@ class MaugisDugdale(CohesiveLaw):
     def derive_force(self, ad) -> Derivation:
         """P(a): the two conditions as equations (no closed P(a): c_D(a) is an inner solve)."""
         return _numeric(ad, "force", sp.Tuple(*ad.conditions), lambda v, d: ad.state(v.pop("a"), d, **v).force,
-                        "P(a) by the inner solve of the gap condition for c_D (maugis_law)", (S.a,))
+                        "P(a) by the inner solve of the gap condition for c_D (maugis.numbers)", (S.a,))
 
     def derive_pressure(self, ad) -> Derivation:
         return _numeric(ad, "pressure", sp.Tuple(sp.Eq(sp.Symbol("p"), ad.derivation("pressure").expr),
@@ -154,7 +154,7 @@ class MaugisDugdale(CohesiveLaw):
 
 
 def _numeric(ad, name, expr, fn, what, args):
-    from .pull_off import NumericDerivation
+    from ..pull_off import NumericDerivation
     step = Step("numeric", expr, (), (what,))
     return NumericDerivation(name, expr=expr, closed_form=False, step=step, seconds=0.0, notes=(what,),
                              reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
@@ -280,7 +280,7 @@ class MaugisDugdaleContact(AdhesiveContact):
             rec = verify(expr, reference, self._sampler("inside" if name == "pressure" else "any"), conditions,
                          n_points=self.contact.points, reference_name=_REFERENCE_NAMES[name])
             if not rec.passed:
-                from ...core.errors import VerificationError
+                from ....core.errors import VerificationError
                 raise VerificationError(f"{name} of the Maugis-Dugdale contact of {self.profile.name!r}: {rec}")
         step = Step("maugis_dugdale", expr, tuple(conditions), tuple(steps))
         return Derivation(name, expr=expr, closed_form=closed, step=step, conditions=tuple(conditions),
@@ -291,7 +291,7 @@ class MaugisDugdaleContact(AdhesiveContact):
         return self.law.derive_force(self)
 
     def _derive_zone_force(self):
-        from . import maugis_check as chk
+        from . import check as chk
         t0 = time.perf_counter()
         fd = self.contact.derivation("force")
         d = self.dugdale
@@ -306,7 +306,7 @@ class MaugisDugdaleContact(AdhesiveContact):
         return self._record("dugdale_force", d.force, True, d.steps[:1], None, t0)
 
     def _derive_cohesive_gap(self):
-        from . import maugis_check as chk
+        from . import check as chk
         t0 = time.perf_counter()
         gd = self.contact.derivation("gap")
         d = self.dugdale
@@ -316,7 +316,7 @@ class MaugisDugdaleContact(AdhesiveContact):
         return self._record("cohesive_gap", expr, gd.closed_form, steps, chk.gap_reference(self), t0, conds)
 
     def _derive_pressure(self):
-        from . import maugis_check as chk
+        from . import check as chk
         t0 = time.perf_counter()
         pd = self.contact.derivation("pressure")
         d = self.dugdale
@@ -327,7 +327,7 @@ class MaugisDugdaleContact(AdhesiveContact):
 
     def _numeric_derivation(self, name, fn, what):
         """A Derivation without closed form whose evalf is ``fn(values, dps)``."""
-        from .pull_off import NumericDerivation
+        from ..pull_off import NumericDerivation
         stat = sp.Function(name)(*self.variables)     # a number of the variables, no closed form
         step = Step("numeric", stat, (), (what,))
         return NumericDerivation(name, expr=stat, closed_form=False, step=step, seconds=0.0,
@@ -341,7 +341,7 @@ class MaugisDugdaleContact(AdhesiveContact):
 
     # ------------------------------------------------------------ numbers
     def _numeric_values(self, values):
-        from ...core.units import refuse_units
+        from ....core.units import refuse_units
         refuse_units(values, "the Maugis-Dugdale contact's numeric results", S.UNITS)
         vals = dict(self.values)
         for s in self.variables:
@@ -394,16 +394,16 @@ class MaugisDugdaleContact(AdhesiveContact):
         return keep
 
     def maugis_parameter(self, dps: int = 20, **values):
-        """lambda at values, see :func:`.maugis_choice.maugis_parameter`."""
+        """lambda at values, see :func:`.choice.maugis_parameter`."""
         return maugis_choice.maugis_parameter(self, dps, **values)
 
     def sigma0_for(self, lam, dps: int = 20, **values):
-        """sigma_0 giving the Maugis parameter ``lam``, see :func:`.maugis_choice.sigma0_for`."""
+        """sigma_0 giving the Maugis parameter ``lam``, see :func:`.choice.sigma0_for`."""
         return maugis_choice.sigma0_for(self, lam, dps, **values)
 
     def model_choice(self, rtol=0.05, dps: int = 15, **values):
         """'JKR' or 'MD' for a tolerance (> 0, :func:`~linecontact_sym.core.ranges.check_tolerance`),
-        see :func:`.maugis_choice.model_choice`."""
+        see :func:`.choice.model_choice`."""
         return maugis_choice.model_choice(self, check_tolerance(rtol), dps, **values)
 
     def adhesion_map(self, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), path=None, **kw):
@@ -411,8 +411,8 @@ class MaugisDugdaleContact(AdhesiveContact):
         Maugis parameters with the JKR law, and the pull-off against lambda
         with its JKR and rigid limits; see :mod:`~linecontact_sym.views.adhesion_map`.
         ``values``: E_star, the work of adhesion, the profile's parameters."""
-        from ...views.adhesion_map import adhesion_map_data, plot_adhesion_map
-        from .maugis_check import rigid_limit
+        from ....views.adhesion_map import adhesion_map_data, plot_adhesion_map
+        from .check import rigid_limit
         rigid = lambda s0: rigid_limit(self, 15, **values, **{self.sigma0.name: s0})  # noqa: E731
         data = adhesion_map_data(self, values, lambdas, rigid=rigid, **kw)
         return plot_adhesion_map(data, path, title=f"Maugis-Dugdale line contact, f(x) = {self.profile.expr}")

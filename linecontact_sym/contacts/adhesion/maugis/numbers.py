@@ -22,7 +22,7 @@ the bracket, so never a wrong branch).
 
 The pull-off, the equilibria and the jump-in are the generic layer's
 (:mod:`~linecontact_sym.contacts.normal.equilibria` over the ForceLaw that
-:meth:`.maugis.MaugisDugdale.numeric` builds on this law, with its scan hint).
+:meth:`.law.MaugisDugdale.numeric` builds on this law, with its scan hint).
 """
 from __future__ import annotations
 
@@ -31,12 +31,12 @@ from dataclasses import dataclass, field
 import mpmath
 import sympy as sp
 
-from ...core import symbols as S
-from ...core.conversion import float_values, number
-from ...core.errors import DomainError, NoPullOffError, VerificationError
-from ...core.precision import workdps
-from ...core.roots import UNDEFINED, Outside, domain_end, real_value
-from ...method.transforms import inside
+from ....core import symbols as S
+from ....core.conversion import float_values, number
+from ....core.errors import DomainError, NoPullOffError, VerificationError
+from ....core.precision import workdps
+from ....core.roots import UNDEFINED, Outside, domain_end, real_value
+from ....method.transforms import inside
 
 @dataclass
 class MDState:
@@ -246,8 +246,8 @@ class MDLaw:
         quadrature after s = c sin(theta) (both integrands smooth at s = a however
         close c_D is to a; acosh(c/s) = log(cot(theta/2)) keeps its digits there),
         and dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a) (closed in P0')."""
-        from ..normal.force_law import ForceLaw
-        from ...method import transforms as T
+        from ...normal.force_law import ForceLaw
+        from ....method import transforms as T
         md = self.md
         a, c, x = S.a, S.c_D, S.x
         d = md.dugdale
@@ -403,7 +403,7 @@ class MDLaw:
         its mpmath estimate; None where the engine's g0 is closed (no integral to certify)."""
         if self.closed_parts["g0(c_D; a)"] or self._P0_expr is None:
             return None
-        from ...numeric.reference import RefValue, integrate
+        from ....numeric.reference import RefValue, integrate
         th = sp.Dummy("theta", positive=True)
         with workdps(dps + 20):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
