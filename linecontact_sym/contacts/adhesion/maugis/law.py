@@ -45,11 +45,11 @@ import sympy as sp
 
 from ....core import symbols as S
 from ....core.conversion import float_values, point_value, rational
-from ....core.errors import DomainError, NoEquilibriumError, NumericValuesRequired
+from ....core.errors import DomainError, NumericValuesRequired
 from ....core.roots import Outside
 from ....core.precision import workdps
 from ....core.ranges import check_positive, check_tolerance
-from ....method.derivation import Derivation, values_by_name
+from ....method.derivation import Derivation
 from ....method.rules import Step
 from ....method.verification import verify
 from ....parsing import to_sympy
@@ -163,7 +163,11 @@ def _numeric(ad, name, expr, fn, what, args):
 
 class MaugisDugdaleContact(AdhesiveContact):
     """Maugis-Dugdale adhesive form of a frictionless line contact; see the
-    module docstring.
+    module docstring.  The generic :class:`~..contact.AdhesiveContact` (its
+    pull-off, ``half_width(P)``, ``branches``, jump-in, ``force_at``, ``at``)
+    plus what only this law has: its conditions and their closed parts, the
+    state at a half-width, the numeric law, the Maugis parameter and the
+    model choice.
 
     >>> import linecontact_sym as lcs
     >>> md = lcs.parabola().maugis_dugdale()
