@@ -399,13 +399,14 @@ def landscape(law) -> Landscape:
     docstring), at 20 digits; cached on the law."""
     if law._landscape is not None:
         return law._landscape
+    if law.expr is None and getattr(law, "scan", None) is not None:
+        # the law's own grid reads dP0/da at its points too: no search of the whole range first
+        law._landscape = _scanned_landscape(law, *_scan_range(law))
+        return law._landscape
     lo, hi, end, note = admissible_range(law)
     notes = [note] if note else []
     if law.base.convex and (law is law.base or law.monotone_term):
         law._landscape = _convex_landscape(law, lo, hi, end, notes)
-        return law._landscape
-    if law.expr is None and getattr(law, "scan", None) is not None:
-        law._landscape = _scanned_landscape(law, lo, hi, end, notes)
         return law._landscape
     with workdps(20):
         balls = _Balls(law)
@@ -466,6 +467,17 @@ def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
     return Landscape(lo, hi_eval, end, tuple(ext), "convex", tuple(notes) + (how,), rising)
 
 
+def _scan_range(law):
+    """(lo, hi, end, notes) for :func:`_scanned_landscape`: the admissible range
+    where it is known (cached on the base law), else the search span, the scan
+    reading dP0/da >= 0 at its own grid points (``admissible`` there)."""
+    cached = getattr(law.base, "_admissible", None)
+    if cached is not None:
+        lo, hi, end, note = cached
+        return lo, hi, end, [note] if note else []
+    return law.scale * SPAN[0], law.scale * SPAN[1], "search", []
+
+
 def _scanned_landscape(law, lo, hi, end, notes) -> Landscape:
     """The landscape of a law without closed form that supplies a
     :class:`~.force_law.ScanHint` (``law.scan``): dP/da on the law's log grid
@@ -490,6 +502,11 @@ def _scanned_landscape(law, lo, hi, end, notes) -> Landscape:
                 cache[A] = (law.P(A), law.dP(A))
             return cache[A]
         pts, A, top_end = [], start, None
+        check_base = getattr(law.base, "_admissible", None) is None   # the range is not known: read dP0/da
+        base_dP = reliable(law.base.dP) if law.base.expr is not None else law.base.dP
+        if check_base and base_dP(start) < 0:
+            raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(start, 6)}: no admissible "
+                                           f"half-width (tensile edge pressure)")
         pending = sorted([b * (1 - KINK_GAP) for b in kinks] + [b * (1 + KINK_GAP) for b in kinks])
         while True:
             _check_deadline("the scan of dP/da on the law's grid")
@@ -509,6 +526,17 @@ def _scanned_landscape(law, lo, hi, end, notes) -> Landscape:
                     pts.append((good,) + PdP(good))
                 top_end = "domain"
                 notes.append(f"P(a) is real up to a = {mpmath.nstr(good, 10)} (the law's own domain ends there)")
+                break
+            if check_base and pts and base_dP(A) < 0:
+                # dP0/da turns negative between the last point and A: the admissible range ends there
+                a_star = root_in_log(base_dP, pts[-1][0], A)
+                notes.append(f"admissible for a <= a* = {mpmath.nstr(a_star, 12)}: dP0/da turns negative there "
+                             f"(read on the law's grid; tensile pressure at the edges of the non-adhesive "
+                             f"contact beyond)")
+                A = a_star * (1 - KINK_GAP)
+                P, d = PdP(A)
+                pts.append((A, P, d))
+                top_end = "admissible"
                 break
             pts.append((A, P, d))
             if A >= hi_eval:

@@ -88,9 +88,10 @@ class ScanHint:
 
     The grid walks up from ``start`` until P > 0 and dP/da > 0 beyond every
     breakpoint (the law's promise: P(a) keeps rising there), the end of the
-    admissible range, or the end of the law's own real domain (found by
-    bisection where P stops being real, e.g. a cohesive zone that would reach
-    past the end of the profile)."""
+    admissible range (dP0/da read at the grid points, its sign change refined:
+    no search of the whole range first), or the end of the law's own real
+    domain (found by bisection where P stops being real, e.g. a cohesive zone
+    that would reach past the end of the profile)."""
 
     start: object
     per_decade: int = 8

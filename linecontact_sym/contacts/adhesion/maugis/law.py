@@ -124,8 +124,9 @@ class MaugisDugdale(CohesiveLaw):
                 """(P - P0, dP/da - dP0/da) of the Dugdale zone at A: one inner solve for both."""
                 key = (A, mpmath.mp.dps)
                 if key not in memo:
+                    # at 3 digits below the working precision: c_of resolves dps + 4 (its tolerance, guard digits above)
                     try:
-                        Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
+                        Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps - 3)
                     except DomainError:   # no cohesive zone inside the profile's domain: no state at A
                         raise Outside
                     if len(memo) > 4096:
