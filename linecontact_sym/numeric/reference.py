@@ -623,7 +623,8 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
             try:
                 total += piece(fs[e], lo, hi)
             except ArbUnsupported:
-                if crude is not None or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)):
+                # ``crude`` bounds the integrand next to t = 0 only: a piece from 0 has no other remedy
+                if (crude is not None and lo == 0) or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)):
                     raise
                 total += _substituted(e, var, lo, hi, piece)
         if 0 not in total.imag:
