@@ -447,7 +447,7 @@ def compile_acb(expr, var, holomorphic: bool = True):
         if isinstance(e, sp.Piecewise):
             return _piecewise(e, build, several)
         if isinstance(e, (sp.Min, sp.Max)):
-            return build(e.rewrite(sp.Piecewise))
+            return _extremum([build(t) for t in e.args], isinstance(e, sp.Max))
         key = _several_key(e)
         if key is not None and key in _SEVERAL:
             handler, known = _SEVERAL[key]
@@ -500,6 +500,35 @@ def compile_acb(expr, var, holomorphic: bool = True):
         raise ArbUnsupported(f"no acb counterpart for {type(e).__name__}: {e}")
 
     return build(expr)
+
+
+def _extremum(fs, largest):
+    """Max (``largest``) or Min of real arguments on balls, decided as a
+    Piecewise is (not through SymPy's rewrite, which recurses without end on
+    three radicals): the argument whose real part is certainly >= (<=) every
+    other one is taken (its continuation: holomorphic where it is); where none
+    is, not holomorphic (non-finite when ``analytic``), else the union of the
+    arguments that may be the extremum."""
+    def g(z, an):
+        vals = [f(z, an) for f in fs]
+        if any(0 not in v.imag for v in vals):
+            return _nan()
+        re_ = [v.real for v in vals]
+        if largest:
+            maybe = [i for i, r in enumerate(re_) if not any(o > r for o in re_)]
+            sure = [i for i in maybe if all(r <= re_[i] for r in re_)]
+        else:
+            maybe = [i for i, r in enumerate(re_) if not any(o < r for o in re_)]
+            sure = [i for i in maybe if all(r >= re_[i] for r in re_)]
+        if sure:
+            return vals[sure[0]]
+        if an == ANALYTIC:
+            return _nan()
+        acc = vals[maybe[0]]
+        for i in maybe[1:]:
+            acc = acc.union(vals[i])
+        return acc
+    return g
 
 
 def _root(b, an, name):
@@ -644,23 +673,34 @@ def estimate(fallback, reason: str, dps: int = 45) -> RefValue:
     return RefValue(val, mpmath.mpf(0), MPMATH, reason)
 
 
-def combine(expr, sym, ref: RefValue, dps: int = 45) -> RefValue:
-    """``expr`` (SymPy, in the one symbol ``sym``; every other value exact)
-    at ``sym`` = the reference ``ref``: rigorous in Arb when ``ref`` is an
-    enclosure (the terms of a reference outside its integral: the gap's
-    f(x) - (2/(pi E*)) [P(a) acosh(x/a) + x J]), else in mpmath."""
-    if ref.certified and ref.ball is not None:
+def combine(expr, sym, ref, dps: int = 45) -> RefValue:
+    """``expr`` (SymPy, in the symbol ``sym``, or in the list of symbols
+    ``sym``; every other value exact) at ``sym`` = the reference ``ref`` (a
+    :class:`RefValue`, or a list of them matching the list of symbols):
+    rigorous in Arb when every reference is an enclosure (the terms of a
+    reference outside its integral: the gap's f(x) - (2/(pi E*)) [P(a)
+    acosh(x/a) + x J]; a stress made from the three Flamant components, von
+    Mises or the principal shear), else in mpmath, with the first reason a
+    reference gives why not."""
+    several = isinstance(sym, (list, tuple))
+    syms, refs = (list(sym), list(ref)) if several else ([sym], [ref])
+    if len(syms) != len(refs):
+        raise ValueError(f"{len(refs)} references for {len(syms)} symbols")
+    why = next((r.note for r in refs if not r.certified), None)
+    note = why if why is not None else next((r.note for r in refs if r.note), "")
+    if why is None and all(r.ball is not None for r in refs):
         try:
             with flint.ctx.workprec(_bits(dps) + 64):
-                b = compile_acb(expr, sym)(ref.ball, False)
+                f = compile_acb(expr, syms if several else sym)
+                b = f(tuple(r.ball for r in refs) if several else ref.ball, False)
                 if b.is_finite() and 0 in b.imag:
-                    return RefValue(mpf_of_arb(b.real.mid()), mpf_of_arb(b.real.rad()), ARB, ref.note, ball=b)
+                    return RefValue(mpf_of_arb(b.real.mid()), mpf_of_arb(b.real.rad()), ARB, note, ball=b)
         except ArbUnsupported:
             pass
     from .exports import lambdify_mpmath
     with workdps(dps + 10):
-        val = mpmath.re(lambdify_mpmath(expr, [sym])(ref.mid))
-    return RefValue(+val, mpmath.mpf(0), MPMATH, ref.note or "outer terms not in Arb")
+        val = mpmath.re(lambdify_mpmath(expr, syms)(*[r.mid for r in refs]))
+    return RefValue(+val, mpmath.mpf(0), MPMATH, note or "outer terms not in Arb")
 
 
 def lincomb(terms, dps: int = 45, note: str = "") -> RefValue:
