@@ -299,7 +299,7 @@ _SEVERAL = {
     "carlson_rd": (_several(flint.acb.elliptic_rd, (_NEG, _NEG, _NEG)), True),
     "carlson_rg": (_several(flint.acb.elliptic_rg, (_NEG, _NEG, _NEG)), True),
     "carlson_rj": (_several(flint.acb.elliptic_rj, (_NEG, _NEG, _NEG, _NEG)), True),
-    "gamma_ratio": (_several(lambda u, v: u.gamma() * v.rgamma(), ((), ())), True),
+    "gamma_ratio": (_several(lambda u, v: v.rgamma() * u.gamma(), ((), ())), True),   # order: see mul
     "elliptic_pi2": (_several(flint.acb.elliptic_pi, (_ABOVE_ONE, _ABOVE_ONE)), True),
     "elliptic_f": (_several(flint.acb.elliptic_f, ((), ())), False),
     "elliptic_e2": (_several(flint.acb.elliptic_e_inc, ((), ())), False),
@@ -415,9 +415,12 @@ def compile_acb(expr, var, holomorphic: bool = True):
                 return add
 
             def mul(z, an):
+                # f * p: Arb's acb_mul(f, p) on real balls is arb_mul(p, f),
+                # the real product in the order of the factors (its radius
+                # rounding is not symmetric)
                 p_ = fs[0](z, an)
                 for f in fs[1:]:
-                    p_ = p_ * f(z, an)
+                    p_ = f(z, an) * p_
                 return p_
             return mul
         if e.is_Pow:
