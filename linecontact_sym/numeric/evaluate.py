@@ -35,6 +35,12 @@ picks the cheapest evaluation that meets it:
 The returned :class:`Evaluation` says which path was taken, with the error
 estimate (or the enclosure) and a note on why.
 
+``contact.evaluate(...)`` at a point of plain Python numbers runs the same
+steps from a plan found once per quantity (:func:`scalar_evaluator`: the
+derivation, its scalar function, the series model, the domain check's plan,
+a monomial's exact condition number), with no per-call look-ups; the note
+is formatted when it is read.
+
     >>> import linecontact_sym as lcs
     >>> from linecontact_sym.numeric.evaluate import evaluate
     >>> c = lcs.exact_cylinder()
