@@ -186,7 +186,7 @@ SLOW_TESTS = {
 }
 #: doctests of the package (by their name) that take more than about 1 s
 SLOW_DOCTESTS = {"linecontact_sym.claims.references.flamant_relative_displacement",
-                 "linecontact_sym.contacts.adhesion.maugis.MaugisDugdaleContact",
+                 "linecontact_sym.contacts.adhesion.maugis.law.MaugisDugdaleContact",
                  "linecontact_sym.contacts.normal.inverse.periodic_profile_from_force",
                  "linecontact_sym.numeric.evaluate"}
 
