@@ -372,13 +372,25 @@ def _solve_for_a(cond):
     return cond
 
 
+def _simple_relation(c):
+    """``sp.simplify(c)``; for a relation between two symbols whose order the
+    assumptions do not decide (x < a) its canonical form at once, which is
+    what ``simplify`` returns after a costly search (``equals``, linear
+    coefficients): a > x."""
+    if isinstance(c, sp.core.relational.Relational) and c.lhs.is_Symbol and c.rhs.is_Symbol:
+        d = c.lhs - c.rhs
+        if d.is_positive is None and d.is_negative is None and d.is_zero is None:
+            return c.canonical
+    return sp.simplify(c)
+
+
 def tidy_conditions(conds) -> tuple:
     """Simplify convergence conditions, solve monomials in a for a, drop the
     true ones; a condition that never holds means the integral diverges."""
     out = []
     for c in conds:
         try:
-            c2 = _solve_for_a(sp.simplify(c))
+            c2 = _solve_for_a(_simple_relation(c))
         except Exception:
             c2 = c
         if c2 == sp.true:
@@ -391,6 +403,18 @@ def tidy_conditions(conds) -> tuple:
 
 
 # ------------------------------------------------------------------ dispatch
+@functools.cache
+def _build_sympy_tables():
+    """Build once in this process what SymPy builds on first use and the
+    forked children of :func:`integrate` all use: ``hyperexpand``'s formula
+    collection (with its imports, about 0.3 CPU s).  Built here, before the
+    forks, every child inherits it; built in a child, it is lost with the
+    child and the next child builds it again (issue 26: 2 CPU s of the 18
+    seed derivations)."""
+    z = sp.Dummy("z")
+    sp.hyperexpand(sp.hyper([sp.S.Half], [sp.Rational(3, 2)], -z))
+
+
 def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = None):
     """Try the rules of ``problem.transform`` in order, each under what
     remains of ``budget`` CPU seconds (or of ``deadline``, shared with the rest
@@ -401,6 +425,7 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
     is left the result is returned as the rule gave it.
     :class:`~linecontact_sym.core.errors.DivergentIntegralError` propagates."""
     attempts = []
+    _build_sympy_tables()
     deadline = Deadline(budget) if deadline is None else deadline
     shown = "no limit" if deadline.budget is None else f"{deadline.budget:g} CPU s"
     for rule in (RULES[problem.transform] if rules is None else rules):

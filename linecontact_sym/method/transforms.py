@@ -36,6 +36,8 @@ checked against.
 """
 from __future__ import annotations
 
+import functools
+
 import mpmath
 import sympy as sp
 
@@ -119,13 +121,24 @@ class NumericProfile:
         if e.has(sp.Piecewise):
             e = sp.piecewise_fold(e)
         self.expr = e
-        self.f = sp.lambdify(S.x, e, "mpmath")
-        self.f1 = sp.lambdify(S.x, sp.diff(e, S.x), "mpmath")
-        self.f2 = sp.lambdify(S.x, sp.diff(e, S.x, 2), "mpmath")
         rels = {r for r in e.atoms(sp.Rel) if r.has(S.x)}
         self._switches = [sp.lambdify(S.x, r.lhs - r.rhs, "mpmath") for r in rels]
         self._found: list = []
         self._searched = mpmath.mpf(0)
+
+    # f, f', f'' as mpmath callables, made on first use (the certified force
+    # reference needs none of them: a derivative and a lambdify per point)
+    @functools.cached_property
+    def f(self):
+        return sp.lambdify(S.x, self.expr, "mpmath")
+
+    @functools.cached_property
+    def f1(self):
+        return sp.lambdify(S.x, sp.diff(self.expr, S.x), "mpmath")
+
+    @functools.cached_property
+    def f2(self):
+        return sp.lambdify(S.x, sp.diff(self.expr, S.x, 2), "mpmath")
 
     def kinks(self, lo, hi):
         """The breakpoints in (lo, hi), ascending, at the working precision
