@@ -92,6 +92,12 @@ def profile_integral(P: sp.Expr) -> sp.Expr:
 _mpf = to_mpf      # the one converter (core.conversion)
 
 
+@functools.lru_cache(maxsize=128)
+def _slope(expr: sp.Expr) -> sp.Expr:
+    """d expr / dx, once per expression (a verification asks at every point)."""
+    return sp.diff(expr, S.x)
+
+
 class NumericProfile:
     """The profile at numeric parameter values, read from its expression and
     *not* from the engine's pieces: f, f' and f'' as mpmath callables of x,
@@ -121,6 +127,7 @@ class NumericProfile:
         if e.has(sp.Piecewise):
             e = sp.piecewise_fold(e)
         self.expr = e
+        self._source, self._pv = expr, pv
         rels = {r for r in e.atoms(sp.Rel) if r.has(S.x)}
         self._switches = [sp.lambdify(S.x, r.lhs - r.rhs, "mpmath") for r in rels]
         self._found: list = []
@@ -133,8 +140,15 @@ class NumericProfile:
         return sp.lambdify(S.x, self.expr, "mpmath")
 
     @functools.cached_property
+    def slope(self) -> sp.Expr:
+        """f' at these parameters: the profile's derivative (taken once per
+        profile, :func:`_slope`) with the parameters' values put in."""
+        d = _slope(self._source).xreplace(self._pv)
+        return sp.piecewise_fold(d) if d.has(sp.Piecewise) else d
+
+    @functools.cached_property
     def f1(self):
-        return sp.lambdify(S.x, sp.diff(self.expr, S.x), "mpmath")
+        return sp.lambdify(S.x, self.slope, "mpmath")
 
     @functools.cached_property
     def f2(self):
