@@ -391,6 +391,18 @@ class Contact:
         Values may be pint quantities (as in :meth:`evaluate_at`): the
         Evaluation's numbers stay SI numbers, its ``unit`` says which, and
         ``.quantity_value()`` is the value as a pint quantity."""
+        if not certified and dps is None:
+            # a point of plain numbers: the scalar plan of this quantity (numeric.evaluate.scalar_evaluator)
+            fast = self._caches().get(("_evaluate", quantity))
+            if fast is None:
+                fast = self._scalar_evaluator(quantity, rtol, values)
+            if fast:
+                try:
+                    r = fast(self, rtol, values)
+                except (ZeroDivisionError, OverflowError) as exc:
+                    raise singular_point(quantity, values, exc) from None
+                if r is not None:
+                    return r
         evaluate = _numeric_evaluate()
         if _PLAIN_NUMBERS.issuperset(map(type, values.values())):   # no pint quantity among them
             registry = None
@@ -403,6 +415,25 @@ class Contact:
         if registry is not None:
             r.unit = registry.Unit(unit or "dimensionless")
         return r
+
+    def _scalar_evaluator(self, quantity, rtol, values):
+        """The scalar plan of :meth:`evaluate` for ``quantity`` (cached; False:
+        none), built at the first call that may use it (a tolerance in range,
+        plain numbers), so that any other call meets its errors where it
+        always did."""
+        if not (rtol is None or rtol.__class__ is float and 1e-14 <= rtol < 1) or \
+                not _PLAIN_NUMBERS.issuperset(map(type, values.values())):
+            return None
+        name = self.resolve(quantity)
+        fast = False
+        if not type(self)._registry[name].method:
+            plan = scalar_domain_plan(self, name)
+
+            def domain(contact, vals):      # the contact passed per call: a copy's cache holds no other contact
+                return check_domain_scalar(contact, name, vals, plan)
+            fast = _numeric_evaluate("scalar_evaluator")(self, name, domain) or False
+        self._caches()[("_evaluate", quantity)] = fast
+        return fast
 
     def plot(self, what: str = "force", **kw):
         """A matplotlib figure of the contact in the literature's normalised
@@ -425,14 +456,15 @@ class Contact:
         return "\n".join(self.derivation(q).summary() for q in names)
 
 
-def _numeric_evaluate():
-    """:func:`linecontact_sym.numeric.evaluate.evaluate`, imported at the first
+def _numeric_evaluate(name="evaluate"):
+    """:func:`linecontact_sym.numeric.evaluate.evaluate` (or another function
+    ``name`` of that module), imported at the first
     call (not with the contacts: a plain import stays light), then looked up
     once per call in this module's globals, not through the import system."""
-    fn = _NUMERIC.get("evaluate")
+    fn = _NUMERIC.get(name)
     if fn is None:
-        from ..numeric.evaluate import evaluate as fn
-        _NUMERIC["evaluate"] = fn
+        from ..numeric import evaluate as module
+        fn = _NUMERIC[name] = getattr(module, name)
     return fn
 
 
@@ -520,11 +552,15 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
     plan = plan or scalar_domain_plan(self, quantity)
     if not plan:
         return self.check_domain(quantity, values)
-    known, positive, nonneg, domain, cond_names, cond_fn, adm = plan
+    known, lower, domain, cond_names, cond_fn, adm = plan
+    inf = math.inf
     for k, v in values.items():
-        if type(v) not in (float, int) or k not in known or not math.isfinite(v) or \
-                (k in positive and not v > 0 and not (v == 0 and may_be_zero(k))) or \
-                (k in nonneg and v < 0):
+        # lower[k]: "any" (finite), "positive" (0 < v), "nonnegative" (0 <= v: a
+        # nonnegative quantity, or a positive symbol that may be 0)
+        low = lower.get(k)
+        if low is None or v.__class__ not in _PLAIN_NUMBERS or \
+                not (0 < v < inf if low == "positive" else (0 <= v < inf if low == "nonnegative"
+                                                            else -inf < v < inf)):
             return self.check_domain(quantity, values)
     vals = dict(values)
     if domain is not None and "x" in vals and "a" in vals:
@@ -533,7 +569,7 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
             return self.check_domain(quantity, values)
         vals["x"] = xv
     if adm is not None and "a" in vals:
-        key = tuple([vals.get(n) for n in adm])
+        key = tuple(map(vals.get, adm))
         caches = self._caches()
         seen = caches.get(("_admissible", adm))
         if seen is None:
@@ -572,7 +608,9 @@ def scalar_domain_plan(self, quantity):
                 fprime, slope, names = base._admissibility_fns()
                 if fprime is not None or slope is not None:
                     adm = ("a", "E_star", *names)
-            plan = (frozenset(known), positive, frozenset(q.nonnegative), domain, tuple(known),
+            lower = {k: ("positive" if k in positive and not may_be_zero(k) else
+                         "nonnegative" if k in positive or k in q.nonnegative else "any") for k in known}
+            plan = (frozenset(known), lower, domain, tuple(known),
                     _scalar_test(self, name, known, cond_fn) if conds else None, adm)
         cache[key] = plan
     return cache[key]

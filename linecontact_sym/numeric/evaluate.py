@@ -35,6 +35,12 @@ picks the cheapest evaluation that meets it:
 The returned :class:`Evaluation` says which path was taken, with the error
 estimate (or the enclosure) and a note on why.
 
+``contact.evaluate(...)`` at a point of plain Python numbers runs the same
+steps from a plan found once per quantity (:func:`scalar_evaluator`: the
+derivation, its scalar function, the series model, the domain check's plan,
+a monomial's exact condition number), with no per-call look-ups; the note
+is formatted when it is read.
+
     >>> import linecontact_sym as lcs
     >>> from linecontact_sym.numeric.evaluate import evaluate
     >>> c = lcs.exact_cylinder()
@@ -74,6 +80,23 @@ FLOAT64_FACTOR_QUAD = 16.0
 MODEL_TERMS = 40
 
 
+class _Note:
+    """The ``note`` of an :class:`Evaluation`: a str, or ``(format, *args)``
+    formatted when first read (on the float64 path, formatting the note's
+    floats cost as much as the evaluation itself)."""
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return ""                   # the dataclass field's default
+        v = obj.__dict__["_note"]
+        if v.__class__ is not str:
+            v = obj.__dict__["_note"] = v[0].format(*v[1:])
+        return v
+
+    def __set__(self, obj, value):
+        obj.__dict__["_note"] = value
+
+
 @dataclass
 class Evaluation:
     """The result of :func:`evaluate`.
@@ -97,7 +120,7 @@ class Evaluation:
     rtol: float | None = None
     certified: bool = False
     enclosure: tuple | None = None
-    note: str = ""
+    note: str = _Note()
     seconds: float = 0.0
     details: dict = field(default_factory=dict, repr=False)
     unit: object = None
@@ -330,24 +353,25 @@ class _RatioPlan:
         rb = rho * self.q_bound
         if not (math.isfinite(rb) and t0 != 0 and math.isfinite(t0)):
             return False
-        C, rising = self.C, self.rising
+        C, rising, isfinite = self.C, self.rising, math.isfinite
         t = [t0]
+        append = t.append
+        slack = 1 - rb
         partial, last, weighted = 0.0, t0, 0.0      # weighted: sum of j |t_j| over the terms summed
         for N in range(1, self.n_terms - 2):
             tN = C[N] * rho**N * t0
-            if tN == 0 or not math.isfinite(tN):
+            if tN == 0 or not isfinite(tN):
                 return False
-            t.append(tN)
+            append(tN)
             partial += last
             weighted += (N - 1) * abs(last)
             last = tN
-            if not rising[N]:
-                continue
-            if rb >= 1:
-                return None
-            bound = abs(tN) / (1 - rb)
-            if bound <= tol * abs(partial):
-                return N, partial, bound, rb, t, 2 * EPS * weighted
+            if rising[N]:
+                if rb >= 1:
+                    return None
+                bound = abs(tN) / slack
+                if bound <= tol * abs(partial):
+                    return N, partial, bound, rb, t, 2 * EPS * weighted
         return None
 
 
@@ -460,25 +484,9 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
     notes = []
     kappa = 1.0
     if rtol >= 4 * EPS:
-        vals = [_as_float(values[n]) for n in names]
-        v, kappa, cancel, why_not = _float64_value(d, kit, names, vals)
-        if math.isfinite(v):
-            factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
-            est = factor * EPS * max(1.0, kappa, cancel) * abs(v)
-            qerr = 0.0
-            if not d.closed_form:
-                qerr = _quad_error(d, dict(zip(names, vals)))
-                est += qerr
-            if est <= rtol * abs(v) or (v == 0 and est == 0):
-                note = (f"stable float64 export; estimate {factor:g} eps max(1, kappa, cancellation) "
-                        f"|value| with kappa = {kappa:.3g}, cancellation = {cancel:.3g}") + \
-                    (f" + quadrature {qerr:.1e}" if qerr else "")
-                return Evaluation(quantity, v, "float64", est, rtol, note=note,
-                                  seconds=time.perf_counter() - t0,
-                                  details={"kappa": kappa, "cancellation": cancel})
-            notes.append(f"float64 estimate {est / abs(v) if v else est:.1e} > rtol")
-        else:
-            notes.append(why_not or f"float64 gave {v}")
+        res, kappa = _float64_step(d, kit, quantity, [_as_float(values[n]) for n in names], rtol, t0, notes)
+        if res is not None:
+            return res
     else:
         notes.append("rtol below float64 resolution")
     # 3. mpmath, precision from rtol and kappa, confirmed at +10 digits
@@ -490,23 +498,123 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         return _reference_path(d, quantity, values, rtol, t0, f"no mpmath export ({type(exc).__name__}); ")
 
 
+#: the note of the float64 path (formatted when read: :class:`_Note`)
+_FLOAT64_NOTE = ("stable float64 export; estimate {:g} eps max(1, kappa, cancellation) |value| with "
+                 "kappa = {:.3g}, cancellation = {:.3g}{}")
+
+
+def _float64_result(quantity, v, est, rtol, factor, kappa, cancel, qerr, t0):
+    return Evaluation(quantity, v, "float64", est, rtol,
+                      note=(_FLOAT64_NOTE, factor, kappa, cancel, f" + quadrature {qerr:.1e}" if qerr else ""),
+                      seconds=time.perf_counter() - t0, details={"kappa": kappa, "cancellation": cancel})
+
+
+def _float64_step(d, kit, quantity, vals, rtol, t0, notes):
+    """``(Evaluation or None, kappa)``: the float64 path at the floats
+    ``vals`` (``kit.names`` order) when its estimate meets ``rtol``, else
+    None with the reason appended to ``notes``."""
+    v, kappa, cancel, why_not = _float64_value(d, kit, kit.names, vals)
+    if v == v and v - v == 0:          # finite
+        factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
+        est = factor * EPS * max(1.0, kappa, cancel) * abs(v)
+        qerr = 0.0
+        if not d.closed_form:
+            qerr = _quad_error(d, dict(zip(kit.names, vals)))
+            est += qerr
+        if est <= rtol * abs(v) or (v == 0 and est == 0):
+            return _float64_result(quantity, v, est, rtol, factor, kappa, cancel, qerr, t0), kappa
+        notes.append(f"float64 estimate {est / abs(v) if v else est:.1e} > rtol")
+    else:
+        notes.append(why_not or f"float64 gave {v}")
+    return None, kappa
+
+
+def scalar_evaluator(contact, quantity: str, domain):
+    """:func:`evaluate` of one quantity at a point of plain Python numbers,
+    planned once per quantity: ``fast(contact, rtol, values)`` returns the
+    same :class:`Evaluation` as ``evaluate(contact, quantity, rtol=rtol,
+    **values)``, or None where the call is not such a point (then the caller
+    takes :func:`evaluate`); None where the quantity has no scalar path (no
+    closed form, no scalar function).  The plan holds no reference to the
+    contact (a copy of the contact, whose caches are copied, uses it as its
+    own).
+
+    Found here once, not per call: the derivation and its
+    :class:`~.fastpath.ScalarKit` (the argument names, the scalar function,
+    the exact kappa of a monomial), the series model of the force (or that
+    there is none), and the domain check (the contact's scalar check with its
+    plan, ``domain(contact, values) -> values``).  Per call, the same steps as
+    :func:`evaluate`: the domain check, the model where the closed form is
+    expensive, the float64 estimate, and mpmath where float64 cannot meet
+    rtol.  Tolerances below 1e-14 (the model's mpmath terms), arrays,
+    units and other number types take :func:`evaluate`."""
+    d = contact.derivation(quantity)
+    kit = scalar_kit(d)
+    if not d.closed_form or kit.f is None:
+        return None
+    names, name_set = kit.names, kit.name_set
+    m = None
+    if quantity == "force" and kit.expensive:
+        m = _model(contact)
+        if m is not None and m.name_set != name_set:
+            m = None
+    plain, clock = _PLAIN, time.perf_counter
+    # a monomial with no sums to probe (the parabola's pi E* a^2/(4 R)): kappa
+    # (sum of |exponents|, every argument nonzero) and the cancellation (1) are
+    # numbers, so the float64 estimate is c |value| with c found here
+    value = kit.value
+    kappa0 = kit.monomial_kappa if kit.probe is None else None
+    c0 = FLOAT64_FACTOR * EPS * max(1.0, kappa0, 1.0) if kappa0 is not None else None
+
+    def fast(contact, rtol, values):
+        if rtol is None:
+            rtol = 1e-12
+        elif rtol.__class__ is not float or not 1e-14 <= rtol < 1:
+            return None
+        if values.keys() != name_set:
+            return None
+        for v in values.values():
+            if v.__class__ not in plain:
+                return None
+        t0 = clock()
+        values = domain(contact, values)
+        if m is not None:
+            res = _try_model(m, quantity, values, rtol, t0)
+            if res is not None:
+                return res
+        notes = []
+        vals = [v if v.__class__ is float else _as_float(v) for v in map(values.__getitem__, names)]
+        if c0 is not None and 0 not in vals:
+            v = value(vals)
+            if v:                       # finite and nonzero (at 0 kappa is infinite)
+                est = c0 * abs(v)
+                if est <= rtol * abs(v) or (v == 0 and est == 0):
+                    return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
+        res, kappa = _float64_step(d, kit, quantity, vals, rtol, t0, notes)
+        if res is not None:
+            return res
+        return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
+    return fast
+
+
 def _float64_value(d, kit, names, vals):
     """``(v, kappa, cancellation, why_not)`` at a point in float64: the
     scalar fast path where it compiles, else the NumPy export; kappa and the
     cancellation ratio where v is finite (else 1).  ``why_not`` says why v is
     NaN when float64 is not to be used here (an integrand switching next to
     an endpoint; no float64 export), else None."""
-    point = dict(zip(names, vals))
+    point = None
     if not d.closed_form:
+        point = dict(zip(names, vals))
         near = switch_near_end(d, point)
         if near is not None:
             return math.nan, 1.0, 1.0, near
     v = kit.value(vals) if kit.f is not None else None
-    if v is not None:                                   # the scalar path (fastpath)
-        if not math.isfinite(v):
-            return v, 1.0, 1.0, None
-        step = safe_step(d, point) if kit.differences else None   # kappa exact: no step to choose
+    if v is not None:                                   # the scalar path (fastpath): v is finite
+        # kappa exact for a monomial: no step to choose
+        step = safe_step(d, point or dict(zip(names, vals))) if kit.differences else None
         return v, kit.kappa(vals, v, step=step), kit.cancellation(vals), None
+    point = point or dict(zip(names, vals))
     try:                                                # the NumPy export
         f64 = _float64_fn(d)
     except Exception as exc:  # noqa: BLE001 -- a SymPy printer gap: take the mpmath path
@@ -568,6 +676,11 @@ def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0, outsid
                       details={"paths": paths, "kappa": kappa, "cancellation": cancel})
 
 
+#: the note of the model path (formatted when read: :class:`_Note`)
+_MODEL_NOTE = ("series of P(a) from the profile's Taylor series, {} term(s) (the force law of the profile {}); "
+               "tail <= |next term|/(1 - r) = {:.2e} with term ratio bound r = {:.3g}")
+
+
 def _try_model(m, quantity, values, rtol, t0):
     choice, growth = False, 0.0
     if rtol >= 1e-14 and m._ratios is not None:     # the ratios' structure found once per model
@@ -594,10 +707,8 @@ def _try_model(m, quantity, values, rtol, t0):
             val = +mpmath.fsum(m.term_values(values, dps=digits)[:N])
         err = bound
     name = m.model_name(N)
-    note = (f"series of P(a) from the profile's Taylor series, {N} term(s) (the force law of the "
-            f"profile {name}); tail <= |next term|/(1 - r) = {float(bound):.2e} with term ratio "
-            f"bound r = {rb:.3g}")
-    return Evaluation(quantity, val, f"model:{name}", err, rtol, note=note,
+    note = (_MODEL_NOTE, N, name, float(bound), rb)      # formatted when read
+    return Evaluation(quantity, val, "model:" + name, err, rtol, note=note,
                       seconds=time.perf_counter() - t0, details={"terms": N, "ratio_bound": rb})
 
 

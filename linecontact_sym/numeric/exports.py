@@ -191,12 +191,21 @@ def _removable_limit(expr, sym):
         return None
     if not (e0.has(sp.nan) or e0 is sp.nan):
         return None
+    # a limit that SymPy cannot find costs its whole budget (E* R (K(a^2/R^2) - E(a^2/R^2))
+    # at R -> 0+: 10 CPU s): the failure is remembered (in this process and on
+    # disk), so no export waits for it twice.  Only the failure is kept: a
+    # record can at most withhold a patch (NaN at sym = 0), never plant a value.
     from ..core.budget import run_with_budget
+    from ..method import store
+    key = store.make_key("removable limit fails", expr, sym)
+    if store.get(key) is not None:
+        return None
     try:
         lim = run_with_budget(sp.limit, expr, sym, 0, "+", seconds=10.0)
     except Exception:
-        return None
-    if lim.has(sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Limit, sp.AccumBounds) or sym in lim.free_symbols:
+        lim = None
+    if lim is None or lim.has(sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Limit, sp.AccumBounds) or sym in lim.free_symbols:
+        store.put(key, {"fails": True})
         return None
     return lim
 

@@ -81,6 +81,7 @@ class ScalarKit:
                           or any(g.args[0].free_symbols for g in e.atoms(sp.gamma)))
         self.f = self.probe = self.rest = None
         self.exponents = ()        # the monomial factor's exponent of each argument (see _split_monomial)
+        self.monomial_kappa = None
         self.rest_index = ()       # the arguments the rest depends on
         if not d.closed_form:
             return
@@ -103,8 +104,10 @@ class ScalarKit:
                     lambdify(syms, to_scipy_names(fold_constants(rest)), modules=[_scalar_funcs(), "math"])
                 self.exponents = exponents
                 self.rest_index = tuple(i for i, s in enumerate(syms) if rest.has(s))
+                # kappa of a pure monomial with no argument 0: a number, found here once
+                self.monomial_kappa = sum(abs(e) for e in exponents) if self.rest is None else None
             except Exception:      # the rest does not compile alone: kappa by differences of f
-                self.rest, self.exponents = None, ()
+                self.rest, self.exponents, self.monomial_kappa = None, (), None
 
     @property
     def differences(self) -> bool:
@@ -129,9 +132,11 @@ class ScalarKit:
         the rest for the others (relative step ``step``, default :data:`STEP`;
         smaller where a breakpoint lies within the default step).  Otherwise
         central differences of f, as for every argument before."""
-        STEP_ = STEP if step is None else step
         if f0 == 0:
             return math.inf
+        if self.monomial_kappa is not None and 0 not in vals:
+            return self.monomial_kappa
+        STEP_ = STEP if step is None else step
         exps = self.exponents
         if not exps:
             return self._differences(self.value, vals, f0, STEP_, range(len(vals))) / abs(f0)

@@ -61,7 +61,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "compile_acb", "to_acb", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -170,7 +170,13 @@ def to_acb(v):
     if q.is_Rational:
         return flint.acb(flint.fmpq(int(q.p), int(q.q)))
     if q.is_number and not q.free_symbols:
-        return compile_acb(q, None)(flint.acb(0), False)
+        f = compile_acb(q, None)
+        if q.is_extended_real:
+            # the real functions where they apply (tighter: asin, atanh ...)
+            z = f(flint.acb(0), REAL)
+            if z.is_finite():
+                return z
+        return f(flint.acb(0), False)
     raise ArbUnsupported(f"cannot make a ball of {v!r}")
 
 
@@ -184,6 +190,18 @@ def _acb_of_mpf(t):
 
 
 # ----------------------------------------------------------------- the compiler
+#: the modes of a compiled function's second argument ``an``: ``False`` plain
+#: complex balls; ``True`` (:data:`ANALYTIC`) holomorphy signalled for
+#: ``acb.integral`` (a ball touching a branch cut gives a non-finite ball);
+#: :data:`REAL` the real function (a ball that reaches beyond the real domain
+#: of a function gives a non-finite ball, as Arb's real functions do; inside
+#: it, the real Arb function where it is tighter than its complex twin).
+#: ``REAL`` is what :func:`~linecontact_sym.numeric.certified.compile_arb`
+#: evaluates with.
+ANALYTIC = True
+REAL = 2
+
+
 def _nan():
     return flint.acb("nan")
 
@@ -200,11 +218,30 @@ def _touches(z, lo=None, hi=None) -> bool:
     return True
 
 
-def _cut(fn, *segments):
-    """``fn(z)`` guarded by its branch cuts (real segments)."""
+def _beyond(z, lo=None, hi=None) -> bool:
+    """Does the real part of ``z`` reach into the open segment (lo, hi) (a
+    cut: outside the function's real domain, whose end points are its
+    branch points)?"""
+    re_ = z.real
+    return (lo is None or not re_ <= lo) and (hi is None or not re_ >= hi)
+
+
+def _guarded(z, an, segments) -> bool:
+    """Must a function with branch cuts ``segments`` give a non-finite ball
+    at ``z`` in mode ``an``?"""
+    if an == REAL:
+        return any(_beyond(z, lo, hi) for lo, hi in segments)
+    return bool(an) and any(_touches(z, lo, hi) for lo, hi in segments)
+
+
+def _cut(fn, *segments, real=None):
+    """``fn(z)`` guarded by its branch cuts (real segments); ``real``: the
+    name of Arb's real function, used in mode :data:`REAL` on a real ball."""
     def g(z, an):
-        if an and any(_touches(z, lo, hi) for lo, hi in segments):
+        if _guarded(z, an, segments):
             return _nan()
+        if real is not None and an == REAL and z.imag.is_zero():
+            return flint.acb(getattr(z.real, real)())
         return fn(z)
     return g
 
@@ -220,23 +257,65 @@ _MEROMORPHIC = {sp.exp: "exp", sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.c
 
 _UNARY = {
     **{f: _method(name) for f, name in _MEROMORPHIC.items()},
-    sp.log: lambda z, an: z.log(analytic=an),
-    sp.Abs: lambda z, an: z.real_abs(analytic=an),
-    sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None)),
-    sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None)),
-    sp.atanh: _cut(lambda z: z.atanh(), (None, -1), (1, None)),
-    sp.acosh: _cut(lambda z: z.acosh(), (None, 1)),
-    sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0)),
+    sp.log: lambda z, an: _nan() if an == REAL and _beyond(z, None, 0) else z.log(analytic=an == ANALYTIC),
+    sp.Abs: lambda z, an: z.real_abs(analytic=an == ANALYTIC),
+    sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None), real="asin"),
+    sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None), real="acos"),
+    sp.atanh: _cut(lambda z: z.atanh(), (None, -1), (1, None), real="atanh"),
+    sp.acosh: _cut(lambda z: z.acosh(), (None, 1), real="acosh"),
+    sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0), real="lgamma"),
     sp.elliptic_k: _cut(lambda m: flint.acb.elliptic_k(m), (1, None)),
     sp.elliptic_e: _cut(lambda m: flint.acb.elliptic_e(m), (1, None)),     # complete E(m) (one argument)
-    sp.sign: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_sgn(),
-    sp.Heaviside: lambda z, an: _nan() if an and _touches(z, 0, 0) else z.real_heaviside(),
+    sp.sign: lambda z, an: _nan() if an == ANALYTIC and _touches(z, 0, 0) else z.real_sgn(),
+    sp.Heaviside: lambda z, an: _nan() if an == ANALYTIC and _touches(z, 0, 0) else z.real_heaviside(),
 }
 
 # atan and asinh have their branch points at +-i, off the real line: a ball
 # near the real segment never reaches them unless it is huge
-_UNARY[sp.atan] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.atan()
-_UNARY[sp.asinh] = lambda z, an: _nan() if an and z.imag.abs_upper() >= 1 else z.asinh()
+_UNARY[sp.atan] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else z.atan()
+_UNARY[sp.asinh] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else z.asinh()
+
+
+def _several(method, cuts):
+    """A function of several balls (``method(*balls)``), the k-th guarded by
+    the branch cuts ``cuts[k]`` (a tuple of segments; () for none)."""
+    def g(args, an):
+        if an and any(_guarded(w, an, c) for w, c in zip(args, cuts) if c):
+            return _nan()
+        return method(*args)
+    return g
+
+
+#: functions of several arguments: (handler(args, an), holomorphy known).
+#: The package's own stable primitives (numeric/special.py) are here, so a
+#: stable form compiles as its plain form does.  Carlson's integrals are
+#: holomorphic with every argument off (-oo, 0] (DLMF 19.2(i)); 2F1 off its
+#: cut [1, oo) in z.  The incomplete elliptic integrals' cuts in (phi, m)
+#: are not encoded: real evaluation only (``holomorphic=False``).
+_NEG = ((None, 0),)
+_ABOVE_ONE = ((1, None),)
+_SEVERAL = {
+    "carlson_rf": (_several(flint.acb.elliptic_rf, (_NEG, _NEG, _NEG)), True),
+    "carlson_rd": (_several(flint.acb.elliptic_rd, (_NEG, _NEG, _NEG)), True),
+    "carlson_rg": (_several(flint.acb.elliptic_rg, (_NEG, _NEG, _NEG)), True),
+    "carlson_rj": (_several(flint.acb.elliptic_rj, (_NEG, _NEG, _NEG, _NEG)), True),
+    "gamma_ratio": (_several(lambda u, v: v.rgamma() * u.gamma(), ((), ())), True),   # order: see mul
+    "elliptic_pi2": (_several(flint.acb.elliptic_pi, (_ABOVE_ONE, _ABOVE_ONE)), True),
+    "elliptic_f": (_several(flint.acb.elliptic_f, ((), ())), False),
+    "elliptic_e2": (_several(flint.acb.elliptic_e_inc, ((), ())), False),
+    "elliptic_pi3": (_several(flint.acb.elliptic_pi_inc, ((), (), ())), False),
+}
+
+
+def _several_key(e):
+    """The key of ``e`` in :data:`_SEVERAL` (None: not there)."""
+    name = type(e).__name__
+    if isinstance(e, (sp.elliptic_pi, sp.elliptic_e)):
+        return f"{name}{len(e.args)}" if len(e.args) > 1 else None
+    if isinstance(e, sp.elliptic_f):
+        return name
+    from . import special
+    return name if isinstance(e, sp.Function) and getattr(special, name, None) is type(e) else None
 
 
 def _relation(rel):
@@ -255,36 +334,53 @@ def _relation(rel):
     raise ArbUnsupported(f"no ball test for the relation {rel}")
 
 
-def compile_acb(expr, var):
-    """``f(z, analytic) -> acb``: ``expr`` (SymPy, in the one symbol ``var``;
-    ``var=None`` for a number) evaluated on the complex ball ``z`` at the
-    current python-flint precision, holomorphy signalled as ``acb.integral``
-    expects (module docstring).  :class:`ArbUnsupported` for a function
-    without an acb counterpart or a symbol other than ``var``."""
+def compile_acb(expr, var, holomorphic: bool = True):
+    """``f(z, analytic) -> acb``: ``expr`` (SymPy) evaluated on complex
+    balls at the current python-flint precision, holomorphy signalled as
+    ``acb.integral`` expects (module docstring).
+
+    ``var``: the one symbol (``z`` is a ball), ``None`` for a number, or a
+    list of symbols (``z`` is a tuple of balls, in that order).  The second
+    argument is a mode: ``False``, ``True`` (:data:`ANALYTIC`) or
+    :data:`REAL` (the real function, as :func:`~linecontact_sym.numeric.
+    certified.compile_arb` asks).  ``holomorphic=False``: the function will
+    not be asked for holomorphy, so functions whose branch cuts are not
+    encoded (incomplete elliptic integrals) are allowed.
+    :class:`ArbUnsupported` for a function without an acb counterpart or a
+    symbol not in ``var``."""
     expr = sp.sympify(expr, strict=True)
-    extra = expr.free_symbols - ({var} if var is not None else set())
+    if var is None:
+        index, several = {}, False
+    elif isinstance(var, (list, tuple)):
+        index, several = {s: i for i, s in enumerate(var)}, True
+    else:
+        index, several = {var: None}, False
+    extra = expr.free_symbols - set(index)
     if extra:
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
     acb, arb = flint.acb, flint.arb
+    symbols = tuple(index)
 
     def build(e):
-        if var is not None and e == var:
-            return lambda z, an: z
-        if var is not None and not e.has(var):
+        if e in index:
+            i = index[e]
+            return (lambda z, an: z) if i is None else (lambda z, an: z[i])
+        if symbols and not e.has(*symbols):
             return constant(build_node(e))
         return build_node(e)
 
     def constant(f):
-        """A subexpression free of the variable: its ball computed once per
+        """A subexpression free of the variables: its ball computed once per
         working precision (the rationals and parameter combinations of an
-        integrand are not rebuilt at every node)."""
+        integrand are not rebuilt at every node), in the real mode or the
+        complex one."""
         memo = {}
 
         def g(z, an):
-            prec = flint.ctx.prec
-            v = memo.get(prec)
+            key = (flint.ctx.prec, an == REAL)
+            v = memo.get(key)
             if v is None:
-                v = memo[prec] = f(z, False)
+                v = memo[key] = f(z, REAL if an == REAL else False)
             return v
         return g
 
@@ -319,9 +415,12 @@ def compile_acb(expr, var):
                 return add
 
             def mul(z, an):
+                # f * p: Arb's acb_mul(f, p) on real balls is arb_mul(p, f),
+                # the real product in the order of the factors (its radius
+                # rounding is not symmetric)
                 p_ = fs[0](z, an)
                 for f in fs[1:]:
-                    p_ = p_ * f(z, an)
+                    p_ = f(z, an) * p_
                 return p_
             return mul
         if e.is_Pow:
@@ -331,43 +430,57 @@ def compile_acb(expr, var):
                 k = int(ex)
                 return lambda z, an: fb(z, an) ** k if k >= 0 else 1 / fb(z, an) ** (-k)
             if ex == sp.S.Half:
-                return lambda z, an: fb(z, an).sqrt(analytic=an)
+                return lambda z, an: _root(fb(z, an), an, "sqrt")
             if ex == -sp.S.Half:
-                return lambda z, an: fb(z, an).rsqrt(analytic=an)
+                return lambda z, an: _root(fb(z, an), an, "rsqrt")
             fe = build(ex)
             positive = ex.is_number and ex.is_positive
 
             def power(z, an):
                 b, y = fb(z, an), fe(z, an)
-                if not an and positive and 0 in b:
+                if an == REAL and _beyond(b, None, 0):
+                    return _nan()           # a negative base: no real power
+                if an != ANALYTIC and positive and 0 in b:
                     # a ball around the branch point 0 of b**y, y > 0: |b**y| <= |b|**y there
                     # (a crude bound of the whole piece, which acb's pow leaves as nan)
                     m = b.abs_upper() ** y.real
                     return acb(arb(0, m), arb(0, m))
-                return b.pow(y, analytic=an)
+                return b.pow(y, analytic=an == ANALYTIC)
             return power
         if isinstance(e, sp.Piecewise):
-            return _piecewise(e, build)
+            return _piecewise(e, build, several)
         if isinstance(e, (sp.Min, sp.Max)):
-            return build(e.rewrite(sp.Piecewise))
-        if isinstance(e, sp.elliptic_pi) and len(e.args) == 2:
-            fn, fm = build(e.args[0]), build(e.args[1])
-
-            def epi(z, an):
-                n_, m_ = fn(z, an), fm(z, an)
-                if an and (_touches(n_, 1, None) or _touches(m_, 1, None)):
-                    return _nan()
-                return acb.elliptic_pi(n_, m_)
-            return epi
+            return _extremum([build(t) for t in e.args], isinstance(e, sp.Max))
+        key = _several_key(e)
+        if key is not None and key in _SEVERAL:
+            handler, known = _SEVERAL[key]
+            if holomorphic and not known:
+                raise ArbUnsupported(f"the branch cuts of {type(e).__name__} are not encoded (real evaluation only)")
+            fx = [build(t) for t in e.args]
+            return lambda z, an: handler([f(z, an) for f in fx], an)
         if isinstance(e, sp.hyper) and len(e.ap) == 2 and len(e.bq) == 1:
             fa, fb_, fc, fz = build(e.ap[0]), build(e.ap[1]), build(e.bq[0]), build(e.argument)
 
             def h2(z, an):
                 w = fz(z, an)
-                if an and _touches(w, 1, None):
+                if _guarded(w, an, _ABOVE_ONE):
                     return _nan()
                 return w.hypgeom_2f1(fa(z, an), fb_(z, an), fc(z, an))
             return h2
+        if key == "hyp2f1c":
+            # 2F1 at z given also its complement zc = 1 - z: at z > 1/2 the
+            # argument is taken as 1 - zc (both are rigorous balls of it; zc
+            # is the one computed without cancellation)
+            fa, fb_, fc, fz, fzc = [build(t) for t in e.args]
+
+            def h2c(z, an):
+                w = fz(z, an)
+                if w.real > 0.5:
+                    w = 1 - fzc(z, an)
+                if _guarded(w, an, _ABOVE_ONE):
+                    return _nan()
+                return w.hypgeom_2f1(fa(z, an), fb_(z, an), fc(z, an))
+            return h2c
         if isinstance(e, (sp.besselj, sp.besseli, sp.besselk, sp.bessely)):
             order = e.args[0]
             fo, fz = build(order), build(e.args[1])
@@ -377,7 +490,7 @@ def compile_acb(expr, var):
 
             def bes(z, an):
                 w = fz(z, an)
-                if an and not entire and _touches(w, None, 0):
+                if not entire and _guarded(w, an, _NEG):
                     return _nan()
                 return getattr(w, meth)(fo(z, an))
             return bes
@@ -386,13 +499,53 @@ def compile_acb(expr, var):
             op = _UNARY[type(e)]
             return lambda z, an: op(fx(z, an), an)
         if isinstance(e, sp.Integral):
-            raise ArbUnsupported("an unevaluated integral inside the integrand")
+            raise ArbUnsupported("an unevaluated integral inside the integrand (no closed form)")
         raise ArbUnsupported(f"no acb counterpart for {type(e).__name__}: {e}")
 
     return build(expr)
 
 
-def _piecewise(e, build):
+def _extremum(fs, largest):
+    """Max (``largest``) or Min of real arguments on balls, decided as a
+    Piecewise is (not through SymPy's rewrite, which recurses without end on
+    three radicals): the argument whose real part is certainly >= (<=) every
+    other one is taken (its continuation: holomorphic where it is); where none
+    is, not holomorphic (non-finite when ``analytic``), else the union of the
+    arguments that may be the extremum."""
+    def g(z, an):
+        vals = [f(z, an) for f in fs]
+        if any(0 not in v.imag for v in vals):
+            return _nan()
+        re_ = [v.real for v in vals]
+        if largest:
+            maybe = [i for i, r in enumerate(re_) if not any(o > r for o in re_)]
+            sure = [i for i in maybe if all(r <= re_[i] for r in re_)]
+        else:
+            maybe = [i for i, r in enumerate(re_) if not any(o < r for o in re_)]
+            sure = [i for i in maybe if all(r >= re_[i] for r in re_)]
+        if sure:
+            return vals[sure[0]]
+        if an == ANALYTIC:
+            return _nan()
+        acc = vals[maybe[0]]
+        for i in maybe[1:]:
+            acc = acc.union(vals[i])
+        return acc
+    return g
+
+
+def _root(b, an, name):
+    """sqrt or rsqrt of the ball ``b`` in mode ``an``."""
+    if an == REAL and _beyond(b, None, 0):
+        return _nan()
+    return getattr(b, name)(analytic=an == ANALYTIC)
+
+
+def _real_parts(z, several):
+    return tuple(flint.acb(w.real) for w in z) if several else flint.acb(z.real)
+
+
+def _piecewise(e, build, several=False):
     """A Piecewise on balls: a branch whose condition holds on the whole ball
     (real part) is taken; a ball where a condition is undecided is not
     holomorphic (non-finite when ``analytic``; otherwise the union of the
@@ -402,13 +555,13 @@ def _piecewise(e, build):
         branches.append((build(ex_), None if cond == sp.true else _condition(cond, build)))
 
     def pw(z, an):
-        zr = flint.acb(z.real)
+        zr = z if an == REAL else _real_parts(z, several)
         acc = None
         for fb_, fc in branches:
             dec = True if fc is None else fc(zr)
             if dec is False:
                 continue
-            if dec is None and an:
+            if dec is None and an == ANALYTIC:
                 return _nan()
             val = fb_(z, an)
             acc = val if acc is None else acc.union(val)
@@ -481,7 +634,7 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
         ball, reason = None, str(exc)
     if ball is not None:
         with flint.ctx.workprec(_bits(dps) + 64):
-            mid, rad = _mpf_of(ball.real.mid()), _mpf_of(ball.real.rad())
+            mid, rad = mpf_of_arb(ball.real.mid()), mpf_of_arb(ball.real.rad())
         return RefValue(mid, rad, ARB, ball=ball)
     if fallback is None:
         def fallback():
@@ -523,23 +676,34 @@ def estimate(fallback, reason: str, dps: int = 45) -> RefValue:
     return RefValue(val, mpmath.mpf(0), MPMATH, reason)
 
 
-def combine(expr, sym, ref: RefValue, dps: int = 45) -> RefValue:
-    """``expr`` (SymPy, in the one symbol ``sym``; every other value exact)
-    at ``sym`` = the reference ``ref``: rigorous in Arb when ``ref`` is an
-    enclosure (the terms of a reference outside its integral: the gap's
-    f(x) - (2/(pi E*)) [P(a) acosh(x/a) + x J]), else in mpmath."""
-    if ref.certified and ref.ball is not None:
+def combine(expr, sym, ref, dps: int = 45) -> RefValue:
+    """``expr`` (SymPy, in the symbol ``sym``, or in the list of symbols
+    ``sym``; every other value exact) at ``sym`` = the reference ``ref`` (a
+    :class:`RefValue`, or a list of them matching the list of symbols):
+    rigorous in Arb when every reference is an enclosure (the terms of a
+    reference outside its integral: the gap's f(x) - (2/(pi E*)) [P(a)
+    acosh(x/a) + x J]; a stress made from the three Flamant components, von
+    Mises or the principal shear), else in mpmath, with the first reason a
+    reference gives why not."""
+    several = isinstance(sym, (list, tuple))
+    syms, refs = (list(sym), list(ref)) if several else ([sym], [ref])
+    if len(syms) != len(refs):
+        raise ValueError(f"{len(refs)} references for {len(syms)} symbols")
+    why = next((r.note for r in refs if not r.certified), None)
+    note = why if why is not None else next((r.note for r in refs if r.note), "")
+    if why is None and all(r.ball is not None for r in refs):
         try:
             with flint.ctx.workprec(_bits(dps) + 64):
-                b = compile_acb(expr, sym)(ref.ball, False)
+                f = compile_acb(expr, syms if several else sym)
+                b = f(tuple(r.ball for r in refs) if several else ref.ball, False)
                 if b.is_finite() and 0 in b.imag:
-                    return RefValue(_mpf_of(b.real.mid()), _mpf_of(b.real.rad()), ARB, ref.note, ball=b)
+                    return RefValue(mpf_of_arb(b.real.mid()), mpf_of_arb(b.real.rad()), ARB, note, ball=b)
         except ArbUnsupported:
             pass
     from .exports import lambdify_mpmath
     with workdps(dps + 10):
-        val = mpmath.re(lambdify_mpmath(expr, [sym])(ref.mid))
-    return RefValue(+val, mpmath.mpf(0), MPMATH, ref.note or "outer terms not in Arb")
+        val = mpmath.re(lambdify_mpmath(expr, syms)(*[r.mid for r in refs]))
+    return RefValue(+val, mpmath.mpf(0), MPMATH, note or "outer terms not in Arb")
 
 
 def lincomb(terms, dps: int = 45, note: str = "") -> RefValue:
@@ -557,7 +721,7 @@ def lincomb(terms, dps: int = 45, note: str = "") -> RefValue:
                 for c, v in terms:
                     b += to_acb(c) * (v.ball if isinstance(v, RefValue) else to_acb(v))
             if b.is_finite() and 0 in b.imag:
-                return RefValue(_mpf_of(b.real.mid()), _mpf_of(b.real.rad()), ARB, note, ball=b)
+                return RefValue(mpf_of_arb(b.real.mid()), mpf_of_arb(b.real.rad()), ARB, note, ball=b)
         except ArbUnsupported as exc:
             why = str(exc)
     with workdps(dps + 10):
@@ -565,8 +729,9 @@ def lincomb(terms, dps: int = 45, note: str = "") -> RefValue:
     return RefValue(val, mpmath.mpf(0), MPMATH, why or note)
 
 
-def _mpf_of(b):
-    """An arb with an exact midpoint (mid() or rad()) as an exact mpf."""
+def mpf_of_arb(b):
+    """An exact arb (a midpoint, radius or end point: ``mid()``, ``rad()``,
+    ``lower()``) as the mpf that holds it exactly."""
     if b.is_zero():
         return mpmath.mpf(0)
     man, exp = b.man_exp()
@@ -623,7 +788,8 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
             try:
                 total += piece(fs[e], lo, hi)
             except ArbUnsupported:
-                if crude is not None or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)):
+                # ``crude`` bounds the integrand next to t = 0 only: a piece from 0 has no other remedy
+                if (crude is not None and lo == 0) or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)):
                     raise
                 total += _substituted(e, var, lo, hi, piece)
         if 0 not in total.imag:

@@ -49,6 +49,27 @@ def test_flamant_enclosures_of_hertz_contain_mcewens_field(x, z):
 
 
 @pytest.mark.slow
+def test_von_mises_and_principal_shear_references_are_enclosures_of_mcewens_field():
+    """Quantities made from the three components (von Mises, principal
+    shear) are combined on the components' Arb balls
+    (numeric.reference.combine with several symbols): enclosures that
+    contain McEwen's field combined in mpmath, and not a value 1e-35 off it."""
+    sf = lcs.parabola(verify=False).stresses(verify=False)
+    nu = R(3, 10)
+    vals = {S.R: 1, S.E_star: 2, S.a: 1, S.x: R(3, 10), S.z: R(1, 2), sf.nu: nu}     # p0 = a = 1
+    with workdps(70):
+        sx, sz, txz = mcewen_mp(mpmath.mpf(3) / 10, mpmath.mpf(1) / 2)
+        sy = mpmath.mpf(3) / 10 * (sx + sz)
+        expected = {"von_mises": mpmath.sqrt(((sx - sy)**2 + (sy - sz)**2 + (sz - sx)**2) / 2 + 3 * txz**2),
+                    "principal_shear": mpmath.sqrt((sx - sz)**2 / 4 + txz**2)}
+    for q, ref in expected.items():
+        v = sf.derivation(q).reference(vals, 40)
+        assert v.method == "arb" and v.digits >= 40, (q, v.method, v.note)
+        with workdps(70):
+            assert v.contains(ref) and not v.contains(ref * (1 + mpmath.mpf(10) ** -35)), q
+
+
+@pytest.mark.slow
 def test_stress_verification_reference_is_certified_and_contains_the_mpmath_route():
     """The field's reference at random points (sliding: q = mu p): three Arb
     enclosures containing the mpmath Flamant quadrature (to its ~50 digits)."""

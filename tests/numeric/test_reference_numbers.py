@@ -55,3 +55,21 @@ def test_lincomb_of_enclosures_and_exact_terms():
     m = lincomb([(1, a), (1, est)], dps=40)
     with mpmath.workdps(50):
         assert m.method == MPMATH and m.note == "an estimate" and abs(m - (mpmath.pi / 4 + 1)) < mpmath.mpf(10) ** -38
+
+
+def test_max_and_min_of_several_balls():
+    """Max/Min on balls (compile_acb with several symbols): the certain
+    extremum where one is, the union of the candidates where none is, not
+    holomorphic there; a Max of three radicals compiles (SymPy's rewrite
+    to Piecewise recursed without end on it)."""
+    x, y = sp.symbols("x y", real=True)
+    f = compile_acb(sp.Max(sp.sqrt(x), sp.Abs(y - 1), 2 * sp.sqrt(x) - sp.sqrt(y)), [x, y])
+    with flint.ctx.workprec(100):
+        v = f((flint.acb(flint.fmpq(1, 4)), flint.acb(flint.fmpq(1, 9))), False)       # 1/2, 8/9, 2/3
+        assert v.real.contains(flint.arb(flint.fmpq(8, 9))) and v.real.rad() < flint.arb(2) ** -90
+        g = compile_acb(sp.Min(x, y), [x, y])
+        wide = (flint.acb(flint.arb("0.3 +/- 0.1")), flint.acb(flint.arb("0.35")))
+        u = g(wide, False)
+        assert u.real.contains(flint.arb("0.2")) and u.real.contains(flint.arb("0.35"))
+        assert not g(wide, True).is_finite()
+        assert g((flint.acb(1), flint.acb(2)), True).real == 1

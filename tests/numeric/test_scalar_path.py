@@ -131,3 +131,46 @@ def test_model_ratio_plan_chooses_as_the_general_scan():
             assert fast.details["terms"] == slow.details["terms"]
             assert abs(fast.value - slow.value) <= 8 * 2.2e-16 * abs(slow.value)
             assert slow.error * (1 - 1e-9) <= fast.error <= 1.01 * slow.error + 1e-15 * abs(slow.value)
+
+
+@pytest.mark.slow
+def test_contact_evaluate_plan_is_the_general_path(monkeypatch):
+    """``contact.evaluate`` at plain numbers runs the scalar plan found once
+    per quantity (numeric.evaluate.scalar_evaluator); it returns what
+    numeric.evaluate.evaluate returns (path, value, error, note: the model,
+    float64 and mpmath switches alike), raises the same domain errors, and
+    leaves the general function alone when it applies."""
+    import linecontact_sym as lcs
+    from linecontact_sym.contacts import base
+    from linecontact_sym.core.errors import DomainError
+    from linecontact_sym.numeric.evaluate import evaluate
+
+    rng = random.Random(11)
+    cases = [(lcs.parabola(), "force", {}), (lcs.parabola(), "pressure", {}),
+             (lcs.exact_cylinder(), "force", {}), (lcs.worn_cylinder(), "force", {"b": 0.02})]
+    for c, q, extra in cases:
+        for rtol in (1e-3, 1e-12, 1e-14, None):
+            for _ in range(3):
+                a = rng.uniform(0.05, 0.9)
+                vals = dict(a=a, R=rng.choice([1, 1.5]), E_star=rng.uniform(0.5, 2.0), **extra)
+                if q == "pressure":
+                    vals["x"] = a * rng.uniform(-0.95, 0.95)
+                got = c.evaluate(q, rtol=rtol, **vals)
+                ref = evaluate(c, q, rtol=1e-12 if rtol is None else rtol, **vals)
+                assert (got.path, got.value, got.error, got.rtol, got.note) == \
+                    (ref.path, ref.value, ref.error, ref.rtol, ref.note), (q, rtol, vals)
+        with pytest.raises(DomainError) as e1:
+            c.evaluate(q, rtol=1e-12, **dict(vals, a=-0.5))
+        with pytest.raises(DomainError) as e2:
+            evaluate(c, q, rtol=1e-12, **dict(vals, a=-0.5))
+        assert str(e1.value) == str(e2.value)
+    # the plan alone serves a float call: the general function is not called
+    c = lcs.exact_cylinder()
+    c.evaluate("force", rtol=1e-12, a=0.3, E_star=1.7, R=1.0)
+
+    def no(*a, **k):
+        raise AssertionError("the scalar call took the general path")
+    monkeypatch.setitem(base._NUMERIC, "evaluate", no)
+    r = c.evaluate("force", rtol=1e-12, a=0.31, E_star=1.7, R=1.0)
+    assert r.path.startswith("model:") and r.rel_error <= 1e-12
+    assert c.evaluate("force", rtol=1e-12, a=0.31, E_star=1.7, R=1.0).note.startswith("series of P(a)")

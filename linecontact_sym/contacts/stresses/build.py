@@ -19,7 +19,7 @@ from . import field as F
 from .kolosov import density_breakpoints, symbolic_stresses, t
 from ..sampling import point_sampler
 from .reference import COMPONENTS, flamant_enclosures, flamant_stresses, punch_potentials
-from ...numeric.reference import estimate
+from ...numeric.reference import RefValue, combine, estimate
 from ...core.precision import workdps
 
 
@@ -194,17 +194,27 @@ def _punch_reference(sf):
     return reference
 
 
+#: the three components as symbols of a quantity made from them
+_PARTS = tuple(sp.Dummy(k, real=True) for k in COMPONENTS)
+
+
 def combine_reference(ref, make):
-    """The reference of a quantity made from the three components."""
+    """The reference of a quantity made from the three components
+    (``make(sigma_x, sigma_z, tau_xz)``: von Mises, the principal shear,
+    sigma_y): the expression evaluated on the components' references by
+    :func:`~linecontact_sym.numeric.reference.combine`, an Arb enclosure
+    where the three are (the Flamant integrals of closed tractions), else an
+    mpmath estimate that says why."""
     full = getattr(ref, "full", None)
     if full is None:
         return ref
 
     def reference(vals, dps):
         c = full(vals, dps)
-        with workdps(dps + 10):
-            sx, sz, txz = (sp.Float(c[k], dps + 10) for k in ("sigma_x", "sigma_z", "tau_xz"))
-            return real_mpf(make(sx, sz, txz).xreplace(vals))
+        parts = [c[k] if isinstance(c[k], RefValue) else
+                 estimate(lambda v=c[k]: v, "Popov's punch superposition in mpmath (no closed pressure)", dps)
+                 for k in COMPONENTS]
+        return combine(make(*_PARTS).xreplace(vals), list(_PARTS), parts, dps)
     return reference
 
 
