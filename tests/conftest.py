@@ -31,16 +31,27 @@ def paper_contacts():
 
 # The derivation cache (linecontact_sym.method.store) of a test session lives in
 # a temporary directory of its own: tests never read or write the user's cache,
-# and every session starts from an empty one.
+# and every session starts from an empty one (one directory for all the
+# session's xdist workers).
 def _session_cache():
     import atexit
     import os
     import shutil
     import tempfile
+    # pytest-xdist's workers inherit the controller's environment: they share
+    # its directory (records are written atomically), so a law one worker
+    # derived is read, and re-checked, by the other instead of derived twice
+    inherited = os.environ.get(_SHARED_ENV)
+    if os.environ.get("PYTEST_XDIST_WORKER") and inherited and os.path.isdir(inherited):
+        os.environ["LINECONTACT_SYM_CACHE"] = inherited
+        return inherited
     path = tempfile.mkdtemp(prefix="linecontact_sym-test-cache-")
-    os.environ["LINECONTACT_SYM_CACHE"] = path
+    os.environ["LINECONTACT_SYM_CACHE"] = os.environ[_SHARED_ENV] = path
     atexit.register(shutil.rmtree, path, ignore_errors=True)
     return path
+
+
+_SHARED_ENV = "LINECONTACT_SYM_TEST_SESSION_CACHE"
 
 
 TEST_CACHE = _session_cache()
@@ -59,7 +70,8 @@ SLOW_TESTS = {
                               "test_printed_eq10_holds_only_where_slope_at_origin_vanishes",
                               "test_flat_punch_from_first_principles",
                               "test_pull_off_force_is_the_negative_minimum_and_adhesion_force_its_opposite",
-                              "test_hertz_force_holds_symbolically", "test_pressure_claim_with_flamant_check"],
+                              "test_hertz_force_holds_symbolically", "test_pressure_claim_with_flamant_check",
+                              "test_printed_inverse_map_integral_is_an_arb_enclosure"],
     "claims/test_flat_claims.py": ["test_published_rounded_punch_and_wedge_pressures_hold",
                                    "test_flamant_checks_split_at_the_flat_and_report_their_resolution"],
     "claims/test_paper_results.py": ["test_gap_is_nonnegative_and_vanishes_at_edge",
