@@ -302,9 +302,16 @@ def tidy(expr: sp.Expr) -> sp.Expr:
     return compact(expr)
 
 
+@functools.lru_cache(maxsize=4096)
+def _ops(expr) -> int:
+    """``count_ops`` of an expression, counted once (:func:`compact` weighs
+    the same candidates again and again)."""
+    return sp.count_ops(expr)
+
+
 def _shortest(*choices):
     """The choice with the fewest operations (``count_ops``); the first on a tie."""
-    return min(choices, key=sp.count_ops)
+    return min(choices, key=_ops)
 
 
 #: a product of a number and a sum, which ``factor_terms`` leaves "hollow": multiplied out
