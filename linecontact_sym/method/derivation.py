@@ -17,6 +17,11 @@ from dataclasses import KW_ONLY, dataclass, field
 from typing import Callable
 
 import sympy as sp
+from sympy.core.rules import Transform
+from sympy.core.traversal import bottom_up
+from sympy.functions.elementary.hyperbolic import HyperbolicFunction
+from sympy.functions.elementary.trigonometric import TrigonometricFunction
+from sympy.functions.special.bessel import BesselBase
 
 from ..core import symbols as S
 from ..core.budget import Deadline, checked_budget, run_with_budget
@@ -285,7 +290,8 @@ def values_by_name(symbols, values):
 
 # ------------------------------------------------------------------ tidy
 def tidy(expr: sp.Expr) -> sp.Expr:
-    """hyperexpand, then a moderate simplification (gamma functions, powers)."""
+    """hyperexpand, then a moderate simplification (gamma functions, powers,
+    :func:`compact`)."""
     expr = sp.hyperexpand(expr)
     if expr.has(sp.Piecewise):
         expr = sp.piecewise_fold(expr)
@@ -293,10 +299,73 @@ def tidy(expr: sp.Expr) -> sp.Expr:
             return sp.Piecewise(*[(tidy(e), c) for e, c in expr.args])
     if expr.has(sp.gamma):
         expr = sp.gammasimp(expr)
-    cand = sp.simplify(expr)
-    if sp.count_ops(cand) <= sp.count_ops(expr):
-        expr = cand
-    return expr
+    return compact(expr)
+
+
+@functools.lru_cache(maxsize=4096)
+def _ops(expr) -> int:
+    """``count_ops`` of an expression, counted once (:func:`compact` weighs
+    the same candidates again and again)."""
+    return sp.count_ops(expr)
+
+
+def _shortest(*choices):
+    """The choice with the fewest operations (``count_ops``); the first on a tie."""
+    return min(choices, key=_ops)
+
+
+#: a product of a number and a sum, which ``factor_terms`` leaves "hollow": multiplied out
+_HOLLOW_MUL = Transform(lambda w: sp.Mul(*w.args),
+                        lambda w: w.is_Mul and len(w.args) == 2 and w.args[0].is_Number and w.args[1].is_Add)
+_HANDLED = (sp.Add, sp.Mul, sp.Pow)
+
+
+def compact(expr: sp.Expr) -> sp.Expr:
+    """The shortest (``count_ops``) of a fixed set of rewritings of ``expr``:
+    SymPy's ``simplify`` without its passes that do nothing on what the rules
+    return, repeated at every level.  The arguments of every function first
+    (recursively, as ``simplify`` does), then per node ``normal``, ``powsimp``
+    (sqrt(a - x) sqrt(a + x) -> sqrt(a^2 - x^2)), ``cancel``, ``together``,
+    ``factor_terms``, ``expand_mul``, ``logcombine`` where there is a log,
+    ``trigsimp``/``exptrigsimp`` only where there is a (hyperbolic)
+    trigonometric function or exp, ``besselsimp`` where there is a Bessel
+    function.  Left out: ``hyperexpand`` and ``gammasimp`` (:func:`tidy` runs
+    them once, not at every level of the argument recursion) and
+    ``simplify``'s other passes (sums, products, Kronecker deltas, units).
+    Every candidate equals ``expr`` (each rewriting is an identity for
+    positive symbols); never longer than ``expr``.  About half of ``simplify``'s CPU time
+    on the seed derivations, as short or shorter (issue 26)."""
+    if not isinstance(expr, sp.Expr) or expr.is_Atom or not expr.args:
+        return expr
+    original = expr
+    expr = expr.replace(lambda w: isinstance(w, sp.Expr) and w.args and not isinstance(w, _HANDLED),
+                        lambda w: w.func(*[compact(i) for i in w.args]), simultaneous=False)
+    if not isinstance(expr, _HANDLED):
+        return expr
+    expr = bottom_up(expr, lambda w: getattr(w, "normal", lambda: w)())
+    expr = sp.Mul(*sp.powsimp(expr).as_content_primitive())
+    canc = sp.cancel(expr)
+    expr1 = _shortest(canc, sp.expand_mul(sp.expand_multinomial(canc)).cancel())
+    expr = _shortest(sp.together(expr, deep=True), sp.together(expr1, deep=True), expr1, expr)
+    expr = _shortest(sp.factor_terms(expr, sign=False), sp.factor_terms(canc, sign=False))
+    if expr.has(sp.log):
+        expr = _shortest(sp.expand_log(expr, deep=True), sp.logcombine(expr))
+    if expr.has(BesselBase):
+        expr = sp.besselsimp(expr)
+    if expr.has(TrigonometricFunction, HyperbolicFunction):
+        expr = sp.trigsimp(expr, deep=True)
+    short = _shortest(sp.powsimp(expr, combine="exp", deep=True), sp.powsimp(expr), expr) \
+        if expr.has(sp.exp) else _shortest(sp.powsimp(expr), expr)
+    short = _shortest(short, sp.cancel(short))
+    short = _shortest(short, sp.factor_terms(short), sp.expand_power_exp(sp.expand_mul(short)))
+    if short.has(TrigonometricFunction, HyperbolicFunction, sp.exp):
+        short = sp.exptrigsimp(short)
+    expr = short.xreplace(_HOLLOW_MUL)
+    if expr.could_extract_minus_sign():
+        n, d = sp.fraction(expr)
+        if d != 0:
+            expr = sp.signsimp(-n / (-d))
+    return _shortest(expr, original)
 
 
 def _solve_for_a(cond):
@@ -310,13 +379,25 @@ def _solve_for_a(cond):
     return cond
 
 
+def _simple_relation(c):
+    """``sp.simplify(c)``; for a relation between two symbols whose order the
+    assumptions do not decide (x < a) its canonical form at once, which is
+    what ``simplify`` returns after a costly search (``equals``, linear
+    coefficients): a > x."""
+    if isinstance(c, sp.core.relational.Relational) and c.lhs.is_Symbol and c.rhs.is_Symbol:
+        d = c.lhs - c.rhs
+        if d.is_positive is None and d.is_negative is None and d.is_zero is None:
+            return c.canonical
+    return sp.simplify(c)
+
+
 def tidy_conditions(conds) -> tuple:
     """Simplify convergence conditions, solve monomials in a for a, drop the
     true ones; a condition that never holds means the integral diverges."""
     out = []
     for c in conds:
         try:
-            c2 = _solve_for_a(sp.simplify(c))
+            c2 = _solve_for_a(_simple_relation(c))
         except Exception:
             c2 = c
         if c2 == sp.true:
@@ -329,6 +410,18 @@ def tidy_conditions(conds) -> tuple:
 
 
 # ------------------------------------------------------------------ dispatch
+@functools.cache
+def _build_sympy_tables():
+    """Build once in this process what SymPy builds on first use and the
+    forked children of :func:`integrate` all use: ``hyperexpand``'s formula
+    collection (with its imports, about 0.3 CPU s).  Built here, before the
+    forks, every child inherits it; built in a child, it is lost with the
+    child and the next child builds it again (issue 26: 2 CPU s of the 18
+    seed derivations)."""
+    z = sp.Dummy("z")
+    sp.hyperexpand(sp.hyper([sp.S.Half], [sp.Rational(3, 2)], -z))
+
+
 def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = None):
     """Try the rules of ``problem.transform`` in order, each under what
     remains of ``budget`` CPU seconds (or of ``deadline``, shared with the rest
@@ -339,6 +432,7 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
     is left the result is returned as the rule gave it.
     :class:`~linecontact_sym.core.errors.DivergentIntegralError` propagates."""
     attempts = []
+    _build_sympy_tables()
     deadline = Deadline(budget) if deadline is None else deadline
     shown = "no limit" if deadline.budget is None else f"{deadline.budget:g} CPU s"
     for rule in (RULES[problem.transform] if rules is None else rules):

@@ -36,6 +36,8 @@ checked against.
 """
 from __future__ import annotations
 
+import functools
+
 import mpmath
 import sympy as sp
 
@@ -90,6 +92,12 @@ def profile_integral(P: sp.Expr) -> sp.Expr:
 _mpf = to_mpf      # the one converter (core.conversion)
 
 
+@functools.lru_cache(maxsize=128)
+def _slope(expr: sp.Expr) -> sp.Expr:
+    """d expr / dx, once per expression (a verification asks at every point)."""
+    return sp.diff(expr, S.x)
+
+
 class NumericProfile:
     """The profile at numeric parameter values, read from its expression and
     *not* from the engine's pieces: f, f' and f'' as mpmath callables of x,
@@ -119,13 +127,32 @@ class NumericProfile:
         if e.has(sp.Piecewise):
             e = sp.piecewise_fold(e)
         self.expr = e
-        self.f = sp.lambdify(S.x, e, "mpmath")
-        self.f1 = sp.lambdify(S.x, sp.diff(e, S.x), "mpmath")
-        self.f2 = sp.lambdify(S.x, sp.diff(e, S.x, 2), "mpmath")
+        self._source, self._pv = expr, pv
         rels = {r for r in e.atoms(sp.Rel) if r.has(S.x)}
         self._switches = [sp.lambdify(S.x, r.lhs - r.rhs, "mpmath") for r in rels]
         self._found: list = []
         self._searched = mpmath.mpf(0)
+
+    # f, f', f'' as mpmath callables, made on first use (the certified force
+    # reference needs none of them: a derivative and a lambdify per point)
+    @functools.cached_property
+    def f(self):
+        return sp.lambdify(S.x, self.expr, "mpmath")
+
+    @functools.cached_property
+    def slope(self) -> sp.Expr:
+        """f' at these parameters: the profile's derivative (taken once per
+        profile, :func:`_slope`) with the parameters' values put in."""
+        d = _slope(self._source).xreplace(self._pv)
+        return sp.piecewise_fold(d) if d.has(sp.Piecewise) else d
+
+    @functools.cached_property
+    def f1(self):
+        return sp.lambdify(S.x, self.slope, "mpmath")
+
+    @functools.cached_property
+    def f2(self):
+        return sp.lambdify(S.x, sp.diff(self.expr, S.x, 2), "mpmath")
 
     def kinks(self, lo, hi):
         """The breakpoints in (lo, hi), ascending, at the working precision

@@ -48,7 +48,7 @@ def force_reference(profile, vals: dict, dps: int):
     A = vals[S.a]
     E = vals.get(S.E_star, 1)
     npf = T.NumericProfile(profile, vals)
-    f1 = sp.diff(npf.expr, S.x)
+    f1 = npf.slope
     integrand = E * A * sp.sin(_phi) * f1.xreplace({S.x: A * sp.sin(_phi)})
     with workdps(dps + 30):
         Am = to_mpf(A)
