@@ -24,7 +24,8 @@ import sympy as sp
 from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
-from ..numeric.reference import ArbUnsupported, integrate, quotient_bound
+from ..core.errors import LineContactError
+from ..numeric.reference import ArbUnsupported, RefValue, integrate, lincomb, log_point_integral, quotient_bound
 
 #: working precision of the comparisons (digits)
 DPS = 45
@@ -200,19 +201,24 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
         u_z(0) - u_z(x) = (2/(pi E*)) int_0^a p(s) ln|x^2/s^2 - 1| ds
 
     For a rigid indenter in contact on |x| < a this equals the profile f(x);
-    outside it is d - u_z(x), the quantity of Eq. (3).  Evaluated with
-    s = a sin(phi) (removes the inverse-square-root edge singularity of
-    flat-punch-like pressures), split at the logarithmic point s = x and at
-    ``breaks`` (the profile's breakpoints: the pressure of a rounded punch
-    has a logarithmic singularity of its slope at the end of the flat,
-    where a quadrature across it keeps 7 digits).  ``p`` is an mpmath
-    callable; a, x, E* exact numbers or mpf.
+    outside it is d - u_z(x), the quantity of Eq. (3).
 
-    ``with_error``: returns ``(value, error, magnitude)``: mpmath's error
-    estimate of the quadrature and (2/(pi E*)) int |p ln|x^2/s^2 - 1|| ds,
-    the size of the terms that cancel to the value (the scale of an
-    absolute comparison where the value is 0, inside a flat; a scale, so it
-    is integrated at 20 digits).
+    ``p``: a SymPy expression in one symbol (the pressure, every parameter a
+    number), or an mpmath callable; a, x, E* exact numbers or mpf.  A SymPy
+    ``p`` goes to the one reference integrator first (:func:`_flamant_arb`:
+    ln|x^2/s^2 - 1| = ln|x - s| + ln(x + s) - 2 ln s, each logarithmic
+    point removed by :func:`~linecontact_sym.numeric.reference.
+    log_point_integral`; a certified enclosure).  Where Arb cannot enclose
+    it (or ``p`` is a callable), tanh-sinh: s = a sin(phi) (removes the
+    inverse-square-root edge singularity of flat-punch-like pressures),
+    split at the logarithmic point s = x and at ``breaks`` (the profile's
+    breakpoints: the pressure of a rounded punch has a logarithmic
+    singularity of its slope at the end of the flat, where a quadrature
+    across it keeps 7 digits).
+
+    ``with_error``: returns ``(value, error)``: the enclosure's radius (Arb)
+    or mpmath's error estimate of the quadrature (see
+    :func:`flamant_magnitude` for the scale of an absolute comparison).
 
     The flat punch P/(pi sqrt(a^2 - s^2)) leaves the surface flat under it:
 
@@ -220,22 +226,104 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     >>> with workdps(30):
     ...     print(abs(flamant_relative_displacement(p, 1, sp.Rational(1, 2), 1, 20)) < 1e-25)
     True
+    >>> s = sp.Symbol("s")
+    >>> v, err = flamant_relative_displacement(1 / (sp.pi * sp.sqrt(1 - s**2)), 1, sp.Rational(1, 2), 1, 40,
+    ...                                        with_error=True)
+    >>> print(abs(v) <= err < 1e-40, v.method)
+    True arb
     """
+    if isinstance(p, sp.Expr):
+        ref = _flamant_arb(p, a, xv, E, dps, breaks)
+        if ref is not None:
+            return (ref, ref.rad) if with_error else ref
+        p = _callable(p)
     with workdps(quad_dps(dps)):
         a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
-        pr = EndpointGuard(p, mpmath.mpf(0), a)
-
-        def h(ph):
-            sv = a * mpmath.sin(ph)
-            return pr(sv) * mpmath.log(abs(xv**2 / sv**2 - 1)) * a * mpmath.cos(ph)
-        pts = _split_points(a, [xv] + [to_mpf(b) for b in breaks])
+        h, pts = _flamant_integrand(p, a, xv, breaks)
         val, err = mpmath.quad(h, pts, maxdegree=10, error=True)
-        if not with_error:
-            return +(2 * val / (mpmath.pi * E))
         k = 2 / (mpmath.pi * E)
-        with workdps(20):   # a scale, not a value: a few digits are all it needs
-            mag = mpmath.quad(lambda ph: abs(h(ph)), pts, maxdegree=6)
-        return +(k * val), +(k * err), +(k * mag)
+        return (+(k * val), +(k * err)) if with_error else +(k * val)
+
+
+def flamant_magnitude(p, a, xv, E, breaks=()):
+    """(2/(pi E*)) int_0^a |p(s) ln|x^2/s^2 - 1|| ds: the size of the terms that
+    cancel to :func:`flamant_relative_displacement` (the scale of an
+    absolute comparison where that value is 0, inside a flat).  A scale,
+    not a value: tanh-sinh at 20 digits (``p`` SymPy or an mpmath callable).
+
+    >>> p = lambda s: 1 / (mpmath.pi * mpmath.sqrt(1 - s**2))
+    >>> print(mpmath.nstr(flamant_magnitude(p, 1, sp.Rational(1, 2), 1), 5))
+    0.36026
+    """
+    if isinstance(p, sp.Expr):
+        p = _callable(p)
+    with workdps(20):
+        a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
+        h, pts = _flamant_integrand(p, a, xv, breaks)
+        return +(2 / (mpmath.pi * E) * mpmath.quad(lambda ph: abs(h(ph)), pts, maxdegree=6))
+
+
+def _flamant_integrand(p, a, xv, breaks):
+    """The tanh-sinh route's integrand of phi (s = a sin(phi)) and its pieces."""
+    pr = EndpointGuard(p, mpmath.mpf(0), a)
+
+    def h(ph):
+        sv = a * mpmath.sin(ph)
+        return pr(sv) * mpmath.log(abs(xv**2 / sv**2 - 1)) * a * mpmath.cos(ph)
+    return h, _split_points(a, [xv] + [to_mpf(b) for b in breaks])
+
+
+def _callable(p):
+    """An mpmath callable of a SymPy pressure in (at most) one symbol."""
+    syms = sorted(p.free_symbols, key=lambda z: z.name)
+    if len(syms) > 1:
+        raise Undefined(f"the pressure {p} has free symbols {syms}")
+    f = sp.lambdify(syms or [sp.Dummy()], p, "mpmath")
+    return f
+
+
+def _arb_points(a, inner):
+    """0, the points strictly inside (0, a), a, and the middle of every piece
+    (so that no piece joins a logarithmic point to the end a, where the
+    pressure may have an inverse-square-root singularity)."""
+    pts = sorted({sp.S.Zero, a} | {b for b in inner if (0 < b) == sp.true and (b < a) == sp.true})
+    out = [pts[0]]
+    for lo, hi in zip(pts[:-1], pts[1:]):
+        out += [(lo + hi) / 2, hi]
+    return out
+
+
+def _pressure_symbol(p):
+    syms = p.free_symbols
+    if len(syms) > 1:
+        return None
+    return next(iter(syms)) if syms else sp.Dummy("s")
+
+
+def _flamant_arb(p, a, xv, E, dps, breaks):
+    """The Flamant displacement by Arb (see :func:`flamant_relative_displacement`):
+    a certified RefValue, or None (the tanh-sinh route runs)."""
+    s = _pressure_symbol(p)
+    if s is None:
+        return None
+    try:
+        a, xv, E = to_basic(a), abs(to_basic(xv)), to_basic(E)
+        inner = [to_basic(b) for b in breaks]
+        if xv == 0:
+            return RefValue(mpmath.mpf(0), mpmath.mpf(0), "arb")
+        k = 2 / (sp.pi * E)
+        inside = (xv < a) == sp.true
+        pts = _arb_points(a, inner + ([xv] if inside else []))
+        if inside:
+            terms = [(k, integrate(p * sp.log(xv + s), s, pts, dps, fallback=lambda: mpmath.nan)),
+                     (k, log_point_integral(p, s, xv, pts, dps))]
+        else:
+            terms = [(k, integrate(p * sp.log(xv**2 - s**2), s, pts, dps, fallback=lambda: mpmath.nan))]
+        terms.append((-2 * k, log_point_integral(p, s, sp.S.Zero, pts, dps)))
+        ref = lincomb(terms, dps)
+    except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+        return None
+    return ref if ref.certified else None
 
 
 def _split_points(a, inner):
@@ -245,14 +333,32 @@ def _split_points(a, inner):
 
 
 def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
-    """The resultant int_{-a}^{a} p(s) ds of an even pressure (s = a sin(phi)),
-    split at ``breaks`` (see :func:`flamant_relative_displacement`);
-    ``with_error``: ``(value, error)`` with mpmath's error estimate.
+    """The resultant int_{-a}^{a} p(s) ds of an even pressure, split at
+    ``breaks`` (see :func:`flamant_relative_displacement`: a SymPy ``p``
+    goes to Arb, an mpmath callable or what Arb cannot enclose to
+    tanh-sinh with s = a sin(phi)); ``with_error``: ``(value, error)``,
+    the enclosure's radius or mpmath's error estimate.
 
     >>> with workdps(30):
     ...     print(mpmath.nstr(flamant_resultant(lambda s: 1 / (mpmath.pi * mpmath.sqrt(4 - s**2)), 2, 20), 15))
     1.0
+    >>> s = sp.Symbol("s")
+    >>> r = flamant_resultant(1 / (sp.pi * sp.sqrt(4 - s**2)), 2, 40)
+    >>> print(r.method, r.contains(1), r.digits > 40)
+    arb True True
     """
+    if isinstance(p, sp.Expr):
+        s = _pressure_symbol(p)
+        if s is not None:
+            try:
+                a_b = to_basic(a)
+                ref = integrate(2 * p, s, _arb_points(a_b, [to_basic(b) for b in breaks]), dps,
+                                fallback=lambda: mpmath.nan)
+            except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+                ref = None
+            if ref is not None and ref.certified:
+                return (ref, ref.rad) if with_error else ref
+        p = _callable(p)
     with workdps(quad_dps(dps)):
         a = to_mpf(a)
         pr = EndpointGuard(p, mpmath.mpf(0), a)
@@ -360,5 +466,5 @@ class Comparison:
 
 
 __all__ = ["DPS", "Undefined", "Divergent", "DerivedUndefined", "finite_real", "quad_integral", "num_eval",
-           "flamant_relative_displacement", "flamant_resultant", "resolution", "numeric_minimum", "griffith_punch_force",
+           "flamant_relative_displacement", "flamant_resultant", "flamant_magnitude", "resolution", "numeric_minimum", "griffith_punch_force",
            "Comparison"]

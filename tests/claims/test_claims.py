@@ -276,6 +276,15 @@ def test_flamant_kernel_reproduces_the_hertz_profile():
         D = REF.flamant_relative_displacement(p, av, xv, E, 45)
         assert abs(D - mpmath.mpf(xv)**2 / 2) < mpmath.mpf(10) ** -40
         assert abs(REF.flamant_resultant(p, av, 45) - mpmath.pi * E * mpmath.mpf(av)**2 / 4) < mpmath.mpf(10) ** -40
+        # the same pressure as a SymPy expression: Arb enclosures (certified), which a value 1e-35 off leaves out
+        s = sp.Symbol("s")
+        ps = E / (2 * R) * sp.sqrt(av**2 - s**2)
+        Da, err = REF.flamant_relative_displacement(ps, av, xv, E, 45, with_error=True)
+        want = mpmath.mpf(xv)**2 / 2
+        assert Da.method == "arb" and Da.contains(want) and not Da.contains(want + mpmath.mpf(10)**-35)
+        assert err < mpmath.mpf(10) ** -44 and abs(Da - D) < mpmath.mpf(10) ** -40
+        Ra = REF.flamant_resultant(ps, av, 45)
+        assert Ra.method == "arb" and Ra.contains(mpmath.pi * E * mpmath.mpf(av)**2 / 4)
 
 
 def test_result_serialises_to_json():
