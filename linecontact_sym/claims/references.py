@@ -125,6 +125,10 @@ def _arb_integral(f, var, lo, hi, dps):
             lo_b, hi_b, sign = hi_b, lo_b, -1
         with workdps(quad_dps(dps)):
             pts = [lo_b] + relational_breakpoints(f, var, to_mpf(lo_b), to_mpf(hi_b)) + [hi_b]
+        if lo_b == 0 and len(pts) == 2:
+            r = _power_end(f, var, hi_b, dps)
+            if r is not None:
+                return r if sign == 1 else -r
         crude = _removable_quotient(f, var) if lo_b == 0 else None
         if crude is not None and len(pts) == 2:
             pts = [lo_b, hi_b / 2, hi_b]    # the bound next to 0 on one piece, an end singularity on the other
@@ -136,24 +140,72 @@ def _arb_integral(f, var, lo, hi, dps):
     return r if sign == 1 else -r
 
 
+def _power_end(f, var, hi, dps):
+    """int_0^hi of an integrand t^beta g(t) with a non-integer power
+    -1 < beta < 0 of t as a factor (a power law's t^(n-2) with n < 1 in
+    Eq. (10)/(16)), by Arb: on [0, hi/2], t = (hi/2) u^q with the integer
+    q >= 4/(1 + beta), which turns t^beta dt into u^(q (1 + beta) - 1) du,
+    a power >= 3 that ball arithmetic bounds next to u = 0 (a Float
+    exponent is its exact binary value, as the integrator reads every
+    Float); [hi/2, hi] as it stands.  A certified RefValue, or None (no
+    such factor, a divergent power, or Arb cannot enclose it)."""
+    f = f.xreplace({e: sp.Rational(e) for e in f.atoms(sp.Float)
+                    if any(pw.exp == e and pw.base == var for pw in f.atoms(sp.Pow))})
+    betas = [d.exp for d in sp.Mul.make_args(f) if d.is_Pow and d.base == var and d.exp.is_Rational
+             and not d.exp.is_Integer]
+    if len(betas) != 1 or not (-1 < betas[0] < 0):
+        return None
+    beta = betas[0]
+    q = int(sp.ceiling(4 / (1 + beta)))
+    if q > 2000:
+        return None
+    m = hi / 2
+    u = sp.Dummy("u", positive=True)
+    g = sp.powsimp(sp.expand_power_base(f.xreplace({var: m * u**q}) * q * m * u**(q - 1), force=False))
+    if g.has(var):
+        return None
+    try:
+        near = integrate(g, u, [sp.S.Zero, sp.S.One], dps + 2, fallback=lambda: mpmath.nan)
+        if not near.certified:
+            return None
+        far = integrate(f, var, [m, hi], dps + 2, fallback=lambda: mpmath.nan)
+        if not far.certified:
+            return None
+        r = lincomb([(1, near), (1, far)], dps)
+    except (ArbUnsupported, TypeError, ValueError, ZeroDivisionError):
+        return None
+    return r if r.certified else None
+
+
 def _removable_quotient(f, var):
-    """For an integrand N(t)/(t D(t)) with N(0) = 0 (the printed Eq. (9):
-    P(t)/(t sqrt(a^2 - t^2))), the reference integrator's bound next to
-    t = 0 (:func:`~linecontact_sym.numeric.reference.quotient_bound`); None
-    for any other integrand."""
-    num, den = sp.fraction(f)
-    if var not in sp.Mul.make_args(den) or not num.has(var):
-        return None
-    try:
-        at0 = num.xreplace({var: sp.S.Zero})
-    except (TypeError, ValueError, ZeroDivisionError):
-        return None
-    if at0 != 0:
-        return None
-    try:
-        return quotient_bound(num, var, var / den)
-    except ArbUnsupported:
-        return None
+    """For an integrand N(t)/(t^k D(t)) with a zero of order >= k of N at
+    t = 0 (the printed Eq. (9): P(t)/(t sqrt(a^2 - t^2)); Eq. (10) of the
+    exact cylinder: (f'(t)/t ...)/t^2 over a common denominator), the
+    reference integrator's bound next to t = 0
+    (:func:`~linecontact_sym.numeric.reference.quotient_bound`; the order
+    is checked exactly: N(0) = ... = N^(k-1)(0) = 0); None for any other
+    integrand."""
+    for form in (f, None):
+        if form is None:
+            try:
+                form = sp.together(f)
+            except (TypeError, ValueError):
+                return None
+        num, den = sp.fraction(form)
+        k = next((int(d.exp) if d.is_Pow else 1 for d in sp.Mul.make_args(den)
+                  if d == var or (d.is_Pow and d.base == var and d.exp.is_Integer and d.exp > 0)), 0)
+        if k == 0 or k > 4 or not num.has(var):
+            continue
+        try:
+            if any(sp.diff(num, var, j).xreplace({var: sp.S.Zero}) != 0 for j in range(k)):
+                continue
+        except (TypeError, ValueError, ZeroDivisionError):
+            continue
+        try:
+            return quotient_bound(num, var, var**k / den, order=k)
+        except ArbUnsupported:
+            continue
+    return None
 
 
 def num_eval(expr: sp.Expr, vals: dict, dps: int = DPS, what: str = "the printed formula", exc=Undefined):

@@ -642,7 +642,7 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
     return estimate(fallback, reason or "", dps)
 
 
-def quotient_bound(numerator, var, rest):
+def quotient_bound(numerator, var, rest, order: int = 1):
     """``crude(z)`` for :func:`integrate`: a bound of numerator(t)/t * rest(t)
     on a real ball z next to t = 0, where numerator(0) = 0 and the quotient
     has a removable singularity (the gap's P(s)/s).  By the mean value
@@ -650,7 +650,12 @@ def quotient_bound(numerator, var, rest):
     estimate |numerator'(xi)| <= M/(rho - |xi|) with M = max |numerator| on
     the disk |w| <= rho = 2|z| (evaluated on that disk with Arb's
     holomorphy check: a numerator that is not holomorphic there gives no
-    bound).  The caller must know that numerator(0) = 0."""
+    bound).  The caller must know that numerator(0) = 0.
+
+    ``order`` k > 1: a bound of numerator(t)/t^k * rest(t), where the
+    numerator has a zero of order >= k at t = 0 (the caller must know it):
+    numerator(w)/w^k is then holomorphic on the disk |w| <= rho, and by the
+    maximum modulus principle at most M/rho^k on it."""
     fn, fr = compile_acb(numerator, var), compile_acb(rest, var)
 
     def crude(z):
@@ -662,7 +667,7 @@ def quotient_bound(numerator, var, rest):
         M = fn(disk, True)
         if not M.is_finite():
             return _nan()
-        b = M.abs_upper() / (rho - r)
+        b = M.abs_upper() / (rho - r) if order == 1 else M.abs_upper() / rho**order
         return flint.acb(flint.arb(0, b), flint.arb(0, b)) * fr(z, False)
     return crude
 
