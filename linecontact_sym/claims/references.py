@@ -288,6 +288,13 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
         ref = _flamant_arb(p, a, xv, E, dps, breaks)
         if ref is not None:
             return (ref, ref.rad) if with_error else ref
+        s = _pressure_symbol(p)
+        xb = abs(to_basic(xv))
+        est = None if s is None else _tanh_sinh_sym(p * sp.log(sp.Abs(xb**2 / s**2 - 1)), s, a, [xb] + list(breaks), dps)
+        if est is not None:
+            with workdps(quad_dps(dps)):
+                k = 2 / (mpmath.pi * to_mpf(E))
+                return (+(k * est[0]), +(k * est[1])) if with_error else +(k * est[0])
         p = _callable(p)
     with workdps(quad_dps(dps)):
         a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
@@ -378,6 +385,45 @@ def _flamant_arb(p, a, xv, E, dps, breaks):
     return ref if ref.certified else None
 
 
+def _tanh_sinh_sym(g, s, a, inner, dps):
+    """(value, error) of int_0^a g(s) ds by tanh-sinh for a SymPy integrand
+    whose pressure may have an inverse-square-root singularity at s = a:
+    split as :func:`_arb_points`, the last piece in s = a - d u^2 with the
+    radicands factored (the u^2 they vanish with leaves the root exactly, so
+    no digits cancel in a^2 - s^2, as they do in a sin(phi)); logarithmic
+    points (s = 0, x) are piece ends, where tanh-sinh converges.  None
+    where the integrand cannot be prepared (the a sin(phi) route runs)."""
+    try:
+        a = to_basic(a)
+        pts = _arb_points(a, [to_basic(b) for b in inner])
+        u = sp.Dummy("u", positive=True)
+        pieces = []
+        for lo, hi in zip(pts[:-1], pts[1:]):
+            if hi == a:
+                d = a - lo
+                h = sp.piecewise_fold(g.xreplace({s: a - d * u**2}) * 2 * d * u)
+                h = h.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(u),
+                              lambda z: sp.factor(z.base) ** z.exp)
+                pieces.append((sp.lambdify(u, h, "mpmath"), [sp.S.Zero, sp.S.One]))
+            else:
+                pieces.append((sp.lambdify(s, g, "mpmath"), [lo, hi]))
+    except (TypeError, ValueError, ZeroDivisionError, LineContactError):
+        return None
+    with workdps(quad_dps(dps)):
+        total, err = mpmath.mpf(0), mpmath.mpf(0)
+        try:
+            for f, (lo, hi) in pieces:
+                lo_v, hi_v = to_mpf(lo), to_mpf(hi)
+                gf = EndpointGuard(f, lo_v, hi_v)
+                v, e = mpmath.quad(gf, [lo_v, hi_v], maxdegree=10, error=True)
+                if gf.complex_at is not None or isinstance(v, mpmath.mpc):
+                    return None
+                total, err = total + v, err + e
+        except (TypeError, ValueError, ZeroDivisionError):
+            return None
+        return +total, +err
+
+
 def _split_points(a, inner):
     """0, the angles asin(s/a) of the points s strictly inside (0, a), pi/2."""
     angles = sorted({mpmath.asin(s / a) for s in inner if 0 < s < a})
@@ -410,6 +456,9 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
                 ref = None
             if ref is not None and ref.certified:
                 return (ref, ref.rad) if with_error else ref
+            est = _tanh_sinh_sym(2 * p, s, a, list(breaks), dps) if s is not None else None
+            if est is not None:
+                return est if with_error else est[0]
         p = _callable(p)
     with workdps(quad_dps(dps)):
         a = to_mpf(a)
