@@ -285,12 +285,14 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     True arb
     """
     if isinstance(p, sp.Expr):
-        ref = _flamant_arb(p, a, xv, E, dps, breaks)
+        s = _pressure_symbol(p)
+        # Arb needs p(0) (the log point s = 0 is removed by subtracting it)
+        ref = _flamant_arb(p, a, xv, E, dps, breaks) if s is not None and _finite_at(p, s, 0) else None
         if ref is not None:
             return (ref, ref.rad) if with_error else ref
-        s = _pressure_symbol(p)
         xb = abs(to_basic(xv))
-        est = None if s is None else _tanh_sinh_sym(p * sp.log(sp.Abs(xb**2 / s**2 - 1)), s, a, [xb] + list(breaks), dps)
+        est = None if s is None or _finite_at(p, s, a) else \
+            _tanh_sinh_sym(p * sp.log(sp.Abs(xb**2 / s**2 - 1)), s, a, [xb] + list(breaks), dps)
         if est is not None:
             with workdps(quad_dps(dps)):
                 k = 2 / (mpmath.pi * to_mpf(E))
@@ -385,6 +387,17 @@ def _flamant_arb(p, a, xv, E, dps, breaks):
     return ref if ref.certified else None
 
 
+def _finite_at(p, s, v):
+    """Is the SymPy pressure p finite at s = v (False where it is not or
+    SymPy cannot tell)?  A pressure unbounded at s = a (1/sqrt) goes to
+    tanh-sinh in s with that end substituted (:func:`_tanh_sinh_sym`), a
+    bounded one in a sin(phi), which is faster for it."""
+    try:
+        return bool(to_basic(p.xreplace({s: to_basic(v)})).is_finite)
+    except (TypeError, ValueError, ZeroDivisionError, LineContactError):
+        return False
+
+
 def _tanh_sinh_sym(g, s, a, inner, dps):
     """(value, error) of int_0^a g(s) ds by tanh-sinh for a SymPy integrand
     whose pressure may have an inverse-square-root singularity at s = a:
@@ -456,7 +469,7 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
                 ref = None
             if ref is not None and ref.certified:
                 return (ref, ref.rad) if with_error else ref
-            est = _tanh_sinh_sym(2 * p, s, a, list(breaks), dps) if s is not None else None
+            est = _tanh_sinh_sym(2 * p, s, a, list(breaks), dps) if s is not None and not _finite_at(p, s, a) else None
             if est is not None:
                 return est if with_error else est[0]
         p = _callable(p)
