@@ -10,8 +10,12 @@ critical force of a pulled punch is derived by two physical routes
 (:func:`numeric_minimum`).  :class:`Comparison` measures agreeing digits.
 
 Integrals of printed formulas go to the one reference integrator first
-(:func:`linecontact_sym.numeric.reference.integrate`: an Arb enclosure);
-where Arb cannot enclose one, the tanh-sinh route runs, with the generic
+(:func:`linecontact_sym.numeric.reference.integrate`: an Arb enclosure;
+a power t^beta, -1 < beta < 0, at t = 0 after t = (hi/2) u^q, a removable
+0/0 N(t)/t^k with its maximum-modulus bound); so do the Flamant integrals
+of a pressure given as a SymPy expression (the kernel's logarithmic points
+removed by :func:`~linecontact_sym.numeric.reference.log_point_integral`).
+Where Arb cannot enclose one, the tanh-sinh route runs, with the generic
 quadrature helpers of :mod:`linecontact_sym.core.quadrature`.
 """
 from __future__ import annotations
