@@ -392,7 +392,9 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
                 return sign * pull_off_reference(ad, vals, dps).force
             except LineContactError as exc:
                 raise DerivedUndefined(f"P(a) has no minimum over a > 0: {exc}")
-        return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr)
+        label = None if ad.law.independent_minimum else \
+            "numeric, grid search on the quadrature P0 (shares the law's inner solve: not independent)"
+        return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr, label)
     dPexpr = sp.diff(Pexpr, S.a)
 
     def minimum(vals, dps):
@@ -406,12 +408,13 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
     return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr)
 
 
-def _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr) -> Derived:
+def _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr, label=None) -> Derived:
     what = "min_a P(a)" if sign == 1 else "-min_a P(a)"
+    label = label or "numeric (independent)"
 
     def comparer(vals, printed_expr, dps):
         printed = num_eval(printed_expr, vals, dps)
-        comps = [Comparison(f"{what}, numeric (independent)", printed, minimum(vals, dps))]
+        comps = [Comparison(f"{what}, {label}", printed, minimum(vals, dps))]
         try:
             ev = engine.value(vals, dps)
         except (Undefined, LineContactError) as exc:

@@ -5,7 +5,7 @@ import pytest
 
 import linecontact_sym as lcs
 from linecontact_sym.views.adhesion_map import adhesion_map_data, plot_adhesion_map
-from linecontact_sym.contacts.adhesion.maugis_check import rigid_limit
+from linecontact_sym.contacts.adhesion.maugis.check import rigid_limit
 
 
 @pytest.fixture(scope="module")
@@ -34,3 +34,21 @@ def test_adhesion_map_figure(data, tmp_path):
     fig = plot_adhesion_map(data, tmp_path / "map.png")
     assert (tmp_path / "map.png").stat().st_size > 10000
     assert len(fig.axes) == 2
+
+
+@pytest.mark.slow
+def test_generic_adhesive_plot_of_maugis_dugdale():
+    """The generic adhesive plot (views.contact_plots, what='adhesive') of a Maugis-Dugdale contact:
+    P(a) from the law's inner solve (no expression to export); no sample lies below the pull-off,
+    the jump-in half-width is a root of P(a) = 0 on the rising branch, and a sample equals the
+    contact's state there (the state's own solve, confirmed at 10 more digits)."""
+    from linecontact_sym.views.contact_plots import adhesive_data
+    md = lcs.parabola().maugis_dugdale()
+    vals = {"R": 1, "gamma": 1e-4, "sigma_0": 0.025}
+    d = adhesive_data(md, vals, points=21)
+    assert len(d["X"]) == 21 and min(d["Y"]) >= -1 - 1e-12 and min(d["Y"]) < -0.5
+    a_in = d["jump_in"][0] * d["a_po"]
+    assert abs(md.force_at(a_in, 20, E_star=1, **vals)) < 1e-15 * d["P_adh"]
+    assert d["stable"][-1] and not d["stable"][0]
+    st = md.state(d["X"][10] * d["a_po"], 15, E_star=1, **vals)
+    assert abs(float(st.force) / d["P_adh"] - d["Y"][10]) < 1e-12

@@ -16,9 +16,9 @@ P(a), plots, claims and the CLI.
 * :mod:`.pull_off`    -- the pull-off (symbolic attempt and numeric minimum);
 * :mod:`.branches`    -- jump-in half-width, the branches of P(a), the equilibrium check of p;
 * :mod:`.brute_force` -- the independent second pull-off method;
-* :mod:`.maugis`      -- the Maugis-Dugdale (cohesive-zone) law of any profile, :class:`MaugisDugdale`
-  and :class:`MaugisDugdaleContact` (:mod:`.maugis_derive` the derivation, :mod:`.maugis_law` the
-  numbers, :mod:`.maugis_check` the independent checks, :mod:`.maugis_choice` JKR or MD).
+* :mod:`.maugis`      -- the folder of the Maugis-Dugdale (cohesive-zone) law of any profile,
+  :class:`MaugisDugdale` and :class:`MaugisDugdaleContact` (the generic contact plus its state and
+  conditions; its map in its docstring).
 
 The registered laws (a new law: its module, and one line here):
 """

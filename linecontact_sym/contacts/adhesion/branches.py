@@ -73,7 +73,10 @@ def derive_jump_in(ad) -> Derivation:
     method = "sympy.solve of P(a) = 0, stable root"
 
     def reference(vals, dps):
-        po = ad._pull_off_reference(vals, dps)
+        # the pull-off half-width that separates the branches: method B's, or (a law without an
+        # independent method B, CohesiveLaw.independent_minimum) the law's own minimum
+        po = ad._pull_off_reference(vals, dps) if ad.law.independent_minimum else \
+            minimum(ad._law(vals, "closed"), dps)
         roots = [r for r, st in equilibria(ad._law(vals, "quad"), 0, dps, scan_law=ad._law(vals, "closed"))
                  if st and r > po.half_width]
         if not roots:

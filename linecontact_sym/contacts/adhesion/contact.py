@@ -35,7 +35,8 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.budget import checked_budget
-from ...core.conversion import float_values, point_value
+from ...core.conversion import float_values, point_value, to_mpf
+from ...core.precision import workdps
 from ...core.errors import (DomainError, NoEquilibriumError, NoPullOffError, NumericValuesRequired,
                            VerificationError)
 from ...method.derivation import Derivation, values_by_name
@@ -303,6 +304,15 @@ class AdhesiveContact(ContactOn):
 
     def _derive_half_width(self) -> Derivation:
         return self._half_width(S.P)[0]
+
+    def force_at(self, a, dps: int = 15, **values):
+        """P(a) at a numeric half-width and numeric values (by name), from the
+        law's numeric force law: the closed P(a) evaluated, or the law's inner
+        solve where P(a) is a system (Maugis-Dugdale's c_D(a)); what the
+        adhesive plot samples where ``to_numeric('force')`` has no expression."""
+        law = self._law(self._numeric_values(values), "closed")
+        with workdps(dps + 5):
+            return +law.P(to_mpf(to_sympy(a)))
 
     def branches(self, load, dps: int = 30, **values):
         """Like :meth:`half_width` with the stability: ((a, 'stable'|'unstable'), ...)."""

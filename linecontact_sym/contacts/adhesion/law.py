@@ -110,6 +110,12 @@ class CohesiveLaw:
     parameters: tuple = ()
     #: extra quantities of the law's contact: name -> Quantity, each derived by ``derive_<name>(ad)``
     quantities: dict = {}
+    #: is the grid search of :mod:`.brute_force` on the quadrature twin (``numeric`` on the quadrature
+    #: P0) independent of the law's own P(a)?  True where the adhesive term is closed (JKR).  A law
+    #: whose P(a) is an inner solve that its quadrature twin shares (Maugis-Dugdale's c_D(a)) says
+    #: False: its numeric pull-offs are then one method's (``PullOff.digits`` None, the note says
+    #: so), checked by the law's own independent tests, never reported as agreeing with themselves
+    independent_minimum = True
 
     def __init__(self, *args, **kw):
         names = [p.name for p in self.parameters]

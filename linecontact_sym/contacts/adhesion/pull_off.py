@@ -251,7 +251,11 @@ def numeric_derivations(ad, P, notes):
         "kinks and the range's end included, then the global minimum; method B = dense grid + "
         "golden section + parabolic polish on the quadrature force law (10*) with the cohesive law on top"]
     rec = None
-    if ad.contact.verify and not ad.law.inactive:
+    if not ad.law.independent_minimum:
+        notes.append(f"method B is not run: the {ad.law.name} law's quadrature twin shares its inner solve "
+                     f"(CohesiveLaw.independent_minimum), so the two methods would not be independent; "
+                     f"not verified here")
+    elif ad.contact.verify and not ad.law.inactive:
         sample, n_points = ad._sampler(), ad.contact.points
 
         def work():  # in a budgeted child, like the engine's verify
@@ -361,6 +365,12 @@ def checked(ad, vals, dps) -> PullOff:
     checked by method B (:func:`reference`), cached.  ``digits``: their
     agreement (force; and half-width at a stationary minimum)."""
     key = ("po_checked", dps, _key(ad, vals))
+    if key not in ad._cache and not ad.law.independent_minimum:
+        po = minimum(ad._law(vals, "closed"), dps)
+        ad._cache[key] = PullOff(po.force, po.adhesion_force, po.half_width, po.kind, None, po.minima,
+                                 po.note + f"; method A only (digits None): the {ad.law.name} law's quadrature "
+                                           f"twin shares its inner solve, a second minimisation on it would not "
+                                           f"be independent")
     if key not in ad._cache:
         law = ad._law(vals, "closed")
         po = minimum(law, dps)
@@ -402,8 +412,11 @@ def at_values(ad, vals, dps) -> PullOff:
 
 def checked_or_fail(ad, vals, dps) -> PullOff:
     """:func:`checked`, raising :class:`VerificationError` when the two
-    methods agree to fewer than ``dps`` digits."""
+    methods agree to fewer than ``dps`` digits (a law without an independent
+    second method: method A's pull-off, ``digits`` None)."""
     po = checked(ad, vals, dps)
+    if po.digits is None:      # one method only (CohesiveLaw.independent_minimum): nothing to compare
+        return po
     if po.digits < dps and po.kind == "end" and reference(ad, vals, dps).kind == "end":
         # both methods: P(a) still decreases where the admissible range ends (dP0/da < 0 beyond: the
         # compact-contact solution ends there), their ends differ; no minimum inside the range

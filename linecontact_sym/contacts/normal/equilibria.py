@@ -147,7 +147,8 @@ class Landscape:
         how = {"convex": "the convexity of P0 (dP/da increasing: one sign change at most)",
                "ball": "ball arithmetic on dP/da (python-flint): no stationary point missed",
                "ball+adaptive": "ball arithmetic on dP/da, with the sampled bound where the balls were "
-                                "inconclusive"}.get(self.method, "adaptive subdivision of dP/da with a sampled "
+                                "inconclusive",
+               "scan": "the law's log grid of dP/da (its ScanHint)"}.get(self.method, "adaptive subdivision of dP/da with a sampled "
                                                                  "error bound")
         return (f"searched a in [{mpmath.nstr(self.lo, 4)}, {mpmath.nstr(self.hi, 8)}] up to {end}, by {how}; "
                 f"{len(self.minima)} local minimum(s): "
@@ -398,6 +399,10 @@ def landscape(law) -> Landscape:
     docstring), at 20 digits; cached on the law."""
     if law._landscape is not None:
         return law._landscape
+    if law.expr is None and getattr(law, "scan", None) is not None:
+        # the law's own grid reads dP0/da at its points too: no search of the whole range first
+        law._landscape = _scanned_landscape(law, *_scan_range(law))
+        return law._landscape
     lo, hi, end, note = admissible_range(law)
     notes = [note] if note else []
     if law.base.convex and (law is law.base or law.monotone_term):
@@ -460,6 +465,111 @@ def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
         how = ("P0 convex on (0, oo) (h2 = 2 f2 + t f3 >= 0 for t > 0, proven by the assumptions of SymPy): "
                "dP/da increasing, one sign change at most, bracketed on a factor-4 grid")
     return Landscape(lo, hi_eval, end, tuple(ext), "convex", tuple(notes) + (how,), rising)
+
+
+def _scan_range(law):
+    """(lo, hi, end, notes) for :func:`_scanned_landscape`: the admissible range
+    where it is known (cached on the base law), else the search span, the scan
+    reading dP0/da >= 0 at its own grid points (``admissible`` there)."""
+    cached = getattr(law.base, "_admissible", None)
+    if cached is not None:
+        lo, hi, end, note = cached
+        return lo, hi, end, [note] if note else []
+    return law.scale * SPAN[0], law.scale * SPAN[1], "search", []
+
+
+def _scanned_landscape(law, lo, hi, end, notes) -> Landscape:
+    """The landscape of a law without closed form that supplies a
+    :class:`~.force_law.ScanHint` (``law.scan``): dP/da on the law's log grid
+    from ``scan.start()`` up (the breakpoints' one-sided points included,
+    never bracketed across), each sign change between neighbours refined by
+    :func:`~linecontact_sym.core.roots.root_in_log`; the walk stops where
+    P > 0 and dP/da > 0 beyond every breakpoint (end 'scan'), at the end of
+    the admissible range, or where the law stops being real (its own domain,
+    bisected: end 'domain').  One inner solve per grid point, instead of the
+    subdivision's thousands."""
+    hint = law.scan
+    with workdps(20):
+        start = max(to_mpf(hint.start()), lo)
+        step = mpmath.mpf(10)**(mpmath.mpf(1) / hint.per_decade)
+        hi_eval = hi * (1 - KINK_GAP) if end != "search" else hi
+        kinks = [b for b in law.breaks() if start < b * (1 - KINK_GAP) and b * (1 + KINK_GAP) < hi_eval]
+        last_kink = max(kinks, default=mpmath.mpf(0))
+        cache = {}
+
+        def PdP(A):
+            if A not in cache:
+                cache[A] = (law.P(A), law.dP(A))
+            return cache[A]
+        pts, A, top_end = [], start, None
+        check_base = getattr(law.base, "_admissible", None) is None   # the range is not known: read dP0/da
+        base_dP = reliable(law.base.dP) if law.base.expr is not None else law.base.dP
+        if check_base and base_dP(start) < 0:
+            raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(start, 6)}: no admissible "
+                                           f"half-width (tensile edge pressure)")
+        pending = sorted([b * (1 - KINK_GAP) for b in kinks] + [b * (1 + KINK_GAP) for b in kinks])
+        while True:
+            _check_deadline("the scan of dP/da on the law's grid")
+            while pending and pending[0] <= A:
+                X = pending.pop(0)
+                try:
+                    pts.append((X,) + PdP(X))
+                except UNDEFINED:
+                    break
+            try:
+                P, d = PdP(A)
+            except UNDEFINED:
+                if not pts:
+                    raise DomainError(f"the force law is not real at the start of its scan, a = {mpmath.nstr(A, 8)}")
+                good = domain_end(lambda v: PdP(v), pts[-1][0], A, iters=40)
+                if good > pts[-1][0]:
+                    pts.append((good,) + PdP(good))
+                top_end = "domain"
+                notes.append(f"P(a) is real up to a = {mpmath.nstr(good, 10)} (the law's own domain ends there)")
+                break
+            if check_base and pts and base_dP(A) < 0:
+                # dP0/da turns negative between the last point and A: the admissible range ends there
+                a_star = root_in_log(base_dP, pts[-1][0], A)
+                notes.append(f"admissible for a <= a* = {mpmath.nstr(a_star, 12)}: dP0/da turns negative there "
+                             f"(read on the law's grid; tensile pressure at the edges of the non-adhesive "
+                             f"contact beyond)")
+                A = a_star * (1 - KINK_GAP)
+                P, d = PdP(A)
+                pts.append((A, P, d))
+                top_end = "admissible"
+                break
+            pts.append((A, P, d))
+            if A >= hi_eval:
+                top_end = end
+                break
+            if P > 0 and d > 0 and A > last_kink * (1 + KINK_GAP):
+                top_end = "scan"
+                break
+            A = min(A * step, hi_eval)
+        ext = []
+        for (A0, P0_, d0), (A1, P1_, d1) in zip(pts, pts[1:]):
+            across = any(A0 < b < A1 for b in kinks)
+            if not across and (d0 < 0) != (d1 < 0):
+                r = root_in_log(law.dP, A0, A1)
+                ext.append(Extremum(r, law.P(r), "stationary", d0 < 0, (A0, A1)))
+        for b in kinks:
+            try:
+                left, right = PdP(b * (1 - KINK_GAP))[1], PdP(b * (1 + KINK_GAP))[1]
+            except (UNDEFINED + (KeyError,)):
+                continue
+            if (left < 0) != (right < 0):
+                ext.append(Extremum(b, law.P(b), "kink", left < 0, (b * (1 - KINK_GAP), b * (1 + KINK_GAP))))
+        top, d_top = pts[-1][0], pts[-1][2]
+        rising = d_top >= 0
+        if not rising and top_end in ("admissible", "domain"):
+            ext.append(Extremum(top, pts[-1][1], "end", True, (top, top)))
+        how = (f"dP/da on the law's log grid ({hint.per_decade} per decade) from a = {mpmath.nstr(start, 4)} "
+               f"to {mpmath.nstr(top, 6)} ({len(pts)} points)"
+               + ("; P > 0 and rising there" if top_end == "scan" else "")
+               + (f": {hint.why}" if hint.why else ""))
+    ext.sort(key=lambda e: e.half_width)
+    return Landscape(start, top, "search" if top_end == "scan" else top_end, tuple(ext), "scan",
+                     tuple(notes) + (how,), rising)
 
 
 # ---------------------------------------------------------------- below the search range

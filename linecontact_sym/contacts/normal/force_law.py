@@ -71,6 +71,33 @@ class PullOff:
     note: str = ""
 
 
+@dataclass(frozen=True)
+class ScanHint:
+    """How the searches of :mod:`.equilibria` scan a law without a closed form
+    (an inner solve per value, no ball arithmetic): instead of the adaptive
+    subdivision of the whole range (thousands of inner solves), dP/da on a
+    log grid, supplied by the law (every law with an inner solve may give one).
+
+    start       () -> mpf: the half-width the grid starts at; below it the
+                descent (:func:`~.equilibria.descent`, a law with P(0+) != 0)
+                or the monotone tail of P(a) (P(0+) = 0) takes over
+    per_decade  grid points per decade: the law's promise that two extrema of
+                P(a) are never closer than that (a sign change of dP/da
+                between neighbours brackets each)
+    why         the law's reason for both, said in the landscape's notes
+
+    The grid walks up from ``start`` until P > 0 and dP/da > 0 beyond every
+    breakpoint (the law's promise: P(a) keeps rising there), the end of the
+    admissible range (dP0/da read at the grid points, its sign change refined:
+    no search of the whole range first), or the end of the law's own real
+    domain (found by bisection where P stops being real, e.g. a cohesive zone
+    that would reach past the end of the profile)."""
+
+    start: object
+    per_decade: int = 8
+    why: str = ""
+
+
 class ForceLaw:
     """P(a) and dP/da at fixed numeric parameters (see the module docstring).
 
@@ -92,6 +119,8 @@ class ForceLaw:
         # (Maugis-Dugdale: the Dugdale force of the zone of a vanishing contact): the minimum
         # then follows dP/da down in decades below the search range (equilibria.descent)
         self.P_zero = None
+        # a law without closed form may say how to scan it (:class:`ScanHint`, equilibria.landscape)
+        self.scan = None
         self.expr = expr           # P(a) as a SymPy expression in a (closed form), else None
         self.conditions = tuple(conditions)   # where ``expr`` holds (relations in a)
         self.base = self           # the non-adhesive law P0 (admissibility is read from it)
@@ -177,6 +206,15 @@ class ForceLaw:
 
         def guard(fn):
             def g(A):
+                # the integrands take f'(t) for 0 < t < a: where the slope at the edge is not
+                # real (the exact cylinder past x = R) the law is not either -- said at once,
+                # not after a quadrature of complex values
+                try:
+                    edge = f1(A)
+                except UNDEFINED:
+                    edge = None    # infinite at the edge (a = R): the quadrature decides
+                if isinstance(edge, mpmath.mpc) and abs(edge.imag) > abs(edge.real) * mpmath.mpf(10)**(5 - mpmath.mp.dps):
+                    raise Outside
                 try:
                     return fn(A)
                 except UNDEFINED:
@@ -333,4 +371,4 @@ def to_basic_number(v):
     return v
 
 
-__all__ = ["ForceLaw", "PullOff", "GUARD", "convex_profile", "flat_end"]
+__all__ = ["ForceLaw", "PullOff", "ScanHint", "GUARD", "convex_profile", "flat_end"]

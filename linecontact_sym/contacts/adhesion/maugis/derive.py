@@ -30,13 +30,13 @@ density of punch forces dP/dt over the half-widths t.
 
 Everything below is computed by SymPy from these definitions; nothing is
 typed in from the literature (Baney & Hui 1997 are the check, in
-:mod:`.maugis_check`).
+:mod:`.check`).
 """
 from __future__ import annotations
 
 import sympy as sp
 
-from ...core import symbols as S
+from ....core import symbols as S
 
 _y = sp.Symbol("y", positive=True)     # lower end of the Abel inversion
 _s = sp.Symbol("s", positive=True)     # traction coordinate

@@ -1,5 +1,5 @@
 """Independent checks of the Maugis-Dugdale line contact, sharing nothing
-with the flat-punch derivation of :mod:`.maugis_derive`:
+with the flat-punch derivation of :mod:`.derive`:
 
 * force: Johnson's condition for a pressure bounded at both edges of a 2-D
   rigid punch (Contact Mechanics 1985, Sec. 2.8), P_c = (E*/2) int_-a^a
@@ -21,11 +21,11 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from ...core import symbols as S
-from ...core.conversion import to_mpf
-from ...core.errors import VerificationError
-from ...core.precision import workdps
-from ...method import transforms as T
+from ....core import symbols as S
+from ....core.conversion import to_mpf
+from ....core.errors import VerificationError
+from ....core.precision import workdps
+from ....method import transforms as T
 
 
 def _mp(v):

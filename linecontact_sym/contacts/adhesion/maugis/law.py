@@ -1,11 +1,12 @@
 """Maugis-Dugdale adhesion of line contacts of any profile: the JKR-to-rigid
 transition (Baney & Hui 1997 for the parabola; here for any profile through
-Popov's 2017 flat-punch superposition, see :mod:`.maugis_derive`).
+Popov's 2017 flat-punch superposition, see :mod:`.derive`).
 
     md = contact.maugis_dugdale(w, sigma0)
     md.conditions            # (bounded pressure, gap at c_D = h0) as SymPy equations
     md.state(a, **values)    # c_D, P, pressure and gap profiles at a half-width
-    md.pull_off_at(**values) # load-control pull-off (global minimum or infimum P(0+))
+    md.pull_off_at(**values) # load-control pull-off (global minimum or infimum P(0+)): the generic layer's
+    md.half_width(P, **values), md.branches(P, **values), md.jump_in_half_width   # likewise
     md.model_choice(rtol, **values)   # JKR or MD, with the Maugis parameter
 
 The two conditions (derived per profile from the engine's force law P0(a)
@@ -16,7 +17,7 @@ and adhesionless gap g0(x; a)):
 
 Where the engine leaves g0(x; a), P0(a) or p0(x; a) as an unevaluated
 Integral (R (cosh(x/R) - 1), the Gaussian bump, a user's profile), the
-numeric law (:class:`.maugis_law.MDLaw`) evaluates those defining integrals
+numeric law (:class:`.numbers.MDLaw`) evaluates those defining integrals
 by quadrature inside the solve, at the digits asked (``MDState.closed`` says
 which parts were closed); the cohesive zone never leaves the profile's real
 domain (the exact cylinder: c_D < R, else a DomainError).
@@ -42,24 +43,25 @@ import time
 import mpmath
 import sympy as sp
 
-from ...core import symbols as S
-from ...core.conversion import float_values, point_value, rational
-from ...core.errors import DomainError, NoEquilibriumError, NumericValuesRequired
-from ...core.roots import Outside
-from ...core.precision import workdps
-from ...core.ranges import check_positive, check_tolerance
-from ...method.derivation import Derivation, values_by_name
-from ...method.rules import Step
-from ...method.verification import verify
-from ...parsing import to_sympy
-from ..base import ContactOn, Quantity
-from ..normal.equilibria import equilibria
-from .law import CohesiveLaw, Parameter, on_base
-from ..sampling import point_sampler
-from . import maugis_choice
-from .maugis_choice import ModelChoice
-from .maugis_derive import dugdale_parts
-from .maugis_law import MDLaw, MDPullOff, MDState
+from ....core import symbols as S
+from ....core.conversion import float_values, point_value, rational
+from ....core.errors import DomainError, NumericValuesRequired
+from ....core.roots import Outside
+from ....core.precision import workdps
+from ....core.ranges import check_positive, check_tolerance
+from ....method.derivation import Derivation
+from ....method.rules import Step
+from ....method.verification import verify
+from ....parsing import to_sympy
+from ...base import Quantity
+from ..contact import AdhesiveContact
+from ...normal.force_law import ScanHint
+from ..law import CohesiveLaw, Parameter, on_base
+from ...sampling import point_sampler
+from . import choice as maugis_choice
+from .choice import ModelChoice
+from .derive import dugdale_parts
+from .numbers import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
 SIGMA0_RANGE = (0.05, 3.0)
@@ -75,7 +77,7 @@ class MaugisDugdale(CohesiveLaw):
     tension sigma_0 on a < |x| < c_D while the gap is below h0 = w/sigma_0.
     Its balance is a system in (a, c_D, P): bounded pressure at x = +-a and
     gap(c_D) = h0 (:attr:`conditions` of the contact); P(a) needs the inner
-    solve for c_D(a) (:mod:`.maugis_law`).
+    solve for c_D(a) (:mod:`.numbers`).
 
     >>> MaugisDugdale().balance
     'bounded pressure at x = +-a (K_I = 0) and gap(c_D) = gamma/sigma_0'
@@ -83,6 +85,9 @@ class MaugisDugdale(CohesiveLaw):
 
     name = "maugis_dugdale"
     kind = "maugis_dugdale"
+    # its quadrature twin shares the inner solve c_D(a): no independent method B on it (the
+    # independent checks are Johnson's condition and the Flamant kernel, maugis.check and the tests)
+    independent_minimum = False
     title = "Maugis-Dugdale (cohesive zone; Baney & Hui 1997 for the parabola, any profile here)"
     label = "Maugis-Dugdale"
     parameters = (Parameter("work_of_adhesion", S.gamma, "positive", "the work of adhesion w", (0.05, 1.0)),
@@ -95,7 +100,7 @@ class MaugisDugdale(CohesiveLaw):
     def derive_force(self, ad) -> Derivation:
         """P(a): the two conditions as equations (no closed P(a): c_D(a) is an inner solve)."""
         return _numeric(ad, "force", sp.Tuple(*ad.conditions), lambda v, d: ad.state(v.pop("a"), d, **v).force,
-                        "P(a) by the inner solve of the gap condition for c_D (maugis_law)", (S.a,))
+                        "P(a) by the inner solve of the gap condition for c_D (maugis.numbers)", (S.a,))
 
     def derive_pressure(self, ad) -> Derivation:
         return _numeric(ad, "pressure", sp.Tuple(sp.Eq(sp.Symbol("p"), ad.derivation("pressure").expr),
@@ -113,41 +118,57 @@ class MaugisDugdale(CohesiveLaw):
         law = md.numeric_law(**{k.name: v for k, v in values.items() if k in set(md.variables)})
 
         def build(b):
+            memo = {}
+
+            def PdP(A):
+                """(P - P0, dP/da - dP0/da) of the Dugdale zone at A: one inner solve for both."""
+                key = (A, mpmath.mp.dps)
+                if key not in memo:
+                    # at 3 digits below the working precision: c_of resolves dps + 4 (its tolerance, guard digits above)
+                    try:
+                        Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps - 3)
+                    except DomainError:   # no cohesive zone inside the profile's domain: no state at A
+                        raise Outside
+                    if len(memo) > 4096:
+                        memo.clear()
+                    memo[key] = (Pv - law._P0(A), dPv - law._dP0(A))
+                return memo[key]
+
             def P(A):
                 if A <= 0:            # the limit a -> 0+: the Dugdale force of the zone c0
                     return law.force_zero_width(mpmath.mp.dps)
-                try:
-                    C, _ = law.c_of(A, mpmath.mp.dps)
-                except DomainError:   # no cohesive zone inside the profile's domain: no state at A
-                    raise Outside
-                return b.P(A) + law._P(A, C) - law._P0(A)
+                return b.P(A) + PdP(A)[0]
 
             def dP(A):
                 if A <= 0:
                     return mpmath.mpf(0)
-                try:
-                    Pv, dPv, C = law.P_and_slope(A, mpmath.mp.dps)
-                except DomainError:
-                    raise Outside
-                return b.dP(A) + dPv - law._dP0(A)
+                return b.dP(A) + PdP(A)[1]
             out = b.on_top(P, dP)
             # P(0+) = -2 sigma_0 c0 is not 0: the generic minimum descends towards a -> 0+ (equilibria.descent)
             out.P_zero = lambda: law.force_zero_width(mpmath.mp.dps)
+            out.scan = ScanHint(lambda: law.c0(15) / 1000, 8,
+                                "no Maugis-Dugdale extremum lies within 1/8 decade of another, nor above the first "
+                                "a past every kink with P > 0 and dP/da > 0 (the Dugdale term's slope tends to 0 "
+                                "from below as a grows, dP0/da >= 0); below c0/1000 the descent follows dP/da")
             return out
         return on_base(base, build)
 
 
 def _numeric(ad, name, expr, fn, what, args):
-    from .pull_off import NumericDerivation
+    from ..pull_off import NumericDerivation
     step = Step("numeric", expr, (), (what,))
     return NumericDerivation(name, expr=expr, closed_form=False, step=step, seconds=0.0, notes=(what,),
                              reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
                              variables=args + ad.variables)
 
 
-class MaugisDugdaleContact(ContactOn):
+class MaugisDugdaleContact(AdhesiveContact):
     """Maugis-Dugdale adhesive form of a frictionless line contact; see the
-    module docstring.
+    module docstring.  The generic :class:`~..contact.AdhesiveContact` (its
+    pull-off, ``half_width(P)``, ``branches``, jump-in, ``force_at``, ``at``)
+    plus what only this law has: its conditions and their closed parts, the
+    state at a half-width, the numeric law, the Maugis parameter and the
+    model choice.
 
     >>> import linecontact_sym as lcs
     >>> md = lcs.parabola().maugis_dugdale()
@@ -188,19 +209,9 @@ class MaugisDugdaleContact(ContactOn):
     law_class = MaugisDugdale
 
     def __init__(self, contact, w=S.gamma, sigma0=S.sigma_0, values=None):
-        self.contact = contact
-        self.law = MaugisDugdale(w, sigma0)     # the parameters checked against their domains
-        self.law.on_contact = self
+        super().__init__(contact, MaugisDugdale(w, sigma0), values)   # the parameters checked
+        self.law.on_contact = self      # the law's numbers need this contact's closed forms
         self.w, self.sigma0 = self.law["work_of_adhesion"], self.law["sigma0"]
-        self._esyms = tuple(sorted((self.w.free_symbols | self.sigma0.free_symbols) - set(contact.params)
-                                   - {S.E_star}, key=lambda s: s.name))
-        self._cache: dict = {}
-        self._laws: dict = {}
-        self.values = values_by_name(self.variables, dict(values)) if values else {}
-
-    @classmethod
-    def from_frictionless(cls, contact):
-        return cls(contact)
 
     @classmethod
     def with_law(cls, contact, law, values=None):
@@ -211,27 +222,18 @@ class MaugisDugdaleContact(ContactOn):
         return f"MaugisDugdaleContact({self.contact.profile.expr}, w={self.w}, sigma0={self.sigma0})"
 
     @property
-    def variables(self):
-        return (S.E_star,) + tuple(self.params) + self._esyms
-
-    @property
     def h0(self):
         """The range of the Dugdale law, h0 = w/sigma_0 (w = sigma_0 h0)."""
         return self.w / self.sigma0
 
-    def at(self, **values):
-        new = MaugisDugdaleContact(self.contact, self.w, self.sigma0,
-                                   {**{k.name: v for k, v in self.values.items()}, **values})
-        new._cache, new._laws = self._cache, self._laws
-        return new
-
     def _value(self, name):
+        if name in ("pull_off_force", "adhesion_force", "pull_off_half_width", "jump_in_half_width"):
+            return super()._value(name)
         d = self.derivation(name)
         if not d.closed_form and d.reference is not None and self.values and \
                 all(s in self.values for s in self.variables):
             return d.reference(self.values, 30)      # a numeric quantity at bound values: the number (as JKR's)
-        e = d.expr
-        return e.xreplace(self.values) if self.values else e
+        return self._bind(d.expr)
 
     # ------------------------------------------------------------ the derivation
     @property
@@ -267,7 +269,7 @@ class MaugisDugdaleContact(ContactOn):
         return (sp.Eq(S.P, self.zone_force), sp.Eq(self.cohesive_gap, self.h0))
 
     def _sampler(self, domain="any"):
-        base = point_sampler(self.profile, domain, {s: SIGMA0_RANGE for s in self._esyms})
+        base = point_sampler(self.profile, domain, {s: SIGMA0_RANGE for s in self._lsyms})
 
         def sample(rng):
             v = base(rng)
@@ -283,7 +285,7 @@ class MaugisDugdaleContact(ContactOn):
             rec = verify(expr, reference, self._sampler("inside" if name == "pressure" else "any"), conditions,
                          n_points=self.contact.points, reference_name=_REFERENCE_NAMES[name])
             if not rec.passed:
-                from ...core.errors import VerificationError
+                from ....core.errors import VerificationError
                 raise VerificationError(f"{name} of the Maugis-Dugdale contact of {self.profile.name!r}: {rec}")
         step = Step("maugis_dugdale", expr, tuple(conditions), tuple(steps))
         return Derivation(name, expr=expr, closed_form=closed, step=step, conditions=tuple(conditions),
@@ -293,17 +295,8 @@ class MaugisDugdaleContact(ContactOn):
     def _derive_force(self):
         return self.law.derive_force(self)
 
-    def _law(self, vals: dict, mode: str):
-        """The numeric force law P(a) of the generic layer ('closed' or 'quad' P0 underneath)."""
-        from ..normal.force_law import ForceLaw
-        fixed = float_values({k: to_sympy(v) for k, v in vals.items() if k in set(self.variables)}, 80)
-        key = (mode, tuple(sorted((k.name, v) for k, v in fixed.items())))
-        if key not in self._laws:
-            self._laws[key] = self.law.numeric(ForceLaw.from_contact(self.contact, fixed, mode), fixed)
-        return self._laws[key]
-
     def _derive_zone_force(self):
-        from . import maugis_check as chk
+        from . import check as chk
         t0 = time.perf_counter()
         fd = self.contact.derivation("force")
         d = self.dugdale
@@ -318,7 +311,7 @@ class MaugisDugdaleContact(ContactOn):
         return self._record("dugdale_force", d.force, True, d.steps[:1], None, t0)
 
     def _derive_cohesive_gap(self):
-        from . import maugis_check as chk
+        from . import check as chk
         t0 = time.perf_counter()
         gd = self.contact.derivation("gap")
         d = self.dugdale
@@ -328,7 +321,7 @@ class MaugisDugdaleContact(ContactOn):
         return self._record("cohesive_gap", expr, gd.closed_form, steps, chk.gap_reference(self), t0, conds)
 
     def _derive_pressure(self):
-        from . import maugis_check as chk
+        from . import check as chk
         t0 = time.perf_counter()
         pd = self.contact.derivation("pressure")
         d = self.dugdale
@@ -339,7 +332,7 @@ class MaugisDugdaleContact(ContactOn):
 
     def _numeric_derivation(self, name, fn, what):
         """A Derivation without closed form whose evalf is ``fn(values, dps)``."""
-        from .pull_off import NumericDerivation
+        from ..pull_off import NumericDerivation
         stat = sp.Function(name)(*self.variables)     # a number of the variables, no closed form
         step = Step("numeric", stat, (), (what,))
         return NumericDerivation(name, expr=stat, closed_form=False, step=step, seconds=0.0,
@@ -347,26 +340,13 @@ class MaugisDugdaleContact(ContactOn):
                                  reference=lambda vals, dps: fn({k.name: v for k, v in vals.items()}, dps),
                                  variables=self.variables)
 
-    def _derive_pull_off_force(self):
-        return self._numeric_derivation("pull_off_force", lambda v, d: self.pull_off_at(d, **v).force,
-                                        "numeric: global minimum of P(a) over every stationary point and kink, "
-                                        "or the infimum P(0+) (maugis_law.MDLaw.pull_off)")
-
-    def _derive_adhesion_force(self):
-        return self._numeric_derivation("adhesion_force", lambda v, d: self.pull_off_at(d, **v).adhesion_force,
-                                        "numeric: minus the load-control pull-off")
-
-    def _derive_pull_off_half_width(self):
-        return self._numeric_derivation("pull_off_half_width", lambda v, d: self.pull_off_at(d, **v).half_width,
-                                        "numeric: the half-width of the pull-off")
-
     def _derive_maugis_lambda(self):
         return self._numeric_derivation("maugis_lambda", lambda v, d: self.maugis_parameter(d, **v),
                                         "numeric: from the JKR pull-off half-width of the profile")
 
     # ------------------------------------------------------------ numbers
     def _numeric_values(self, values):
-        from ...core.units import refuse_units
+        from ....core.units import refuse_units
         refuse_units(values, "the Maugis-Dugdale contact's numeric results", S.UNITS)
         vals = dict(self.values)
         for s in self.variables:
@@ -404,36 +384,6 @@ class MaugisDugdaleContact(ContactOn):
         with _real_profile(self, values):
             return law.state(A, dps)
 
-    def pull_off_at(self, dps: int = 30, **values) -> MDPullOff:
-        """The load-control pull-off: the global minimum of P(a) over every
-        stationary point and kink, or, where P(a) decreases to its limit as
-        a -> 0+, the infimum P(0+) (kind 'infimum').  Displacement control
-        is not defined for line contacts (:data:`DISPLACEMENT_CONTROL`)."""
-        law = self.numeric_law(**values)
-        key = ("po", dps, id(law))
-        if key not in self._cache:
-            with _real_profile(self, values):
-                self._cache[key] = law.pull_off(dps)
-        return self._cache[key]
-
-    def branches(self, load, dps: int = 30, **values):
-        """The equilibria at the load P (numbers), stable first: ((a, 'stable'|'unstable'), ...),
-        by the generic layer (:func:`~linecontact_sym.contacts.normal.equilibria.equilibria` over the
-        numeric force law of this contact, every extremum of P(a) located first, P(0+) below)."""
-        vals = self._numeric_values(values)
-        law = self._law(vals, "closed")
-        roots = equilibria(law, to_sympy(load), dps)
-        return tuple((r, "stable" if st else "unstable") for r, st in roots)
-
-    def half_width(self, load, dps: int = 30, **values):
-        """Equilibrium half-width(s) at the load P, stable branch first (see :meth:`branches`);
-        below the pull-off force a :class:`NoEquilibriumError`."""
-        out = tuple(a for a, _ in self.branches(load, dps, **values))
-        if not out:
-            raise NoEquilibriumError(f"{self.profile.name!r}: no Maugis-Dugdale equilibrium at the load P = {load} "
-                                     f"(below the pull-off force, or beyond the admissible range)")
-        return out
-
     def displacement_control(self):
         """Not defined for line contacts: raises with the reason."""
         raise DomainError(DISPLACEMENT_CONTROL)
@@ -449,16 +399,16 @@ class MaugisDugdaleContact(ContactOn):
         return keep
 
     def maugis_parameter(self, dps: int = 20, **values):
-        """lambda at values, see :func:`.maugis_choice.maugis_parameter`."""
+        """lambda at values, see :func:`.choice.maugis_parameter`."""
         return maugis_choice.maugis_parameter(self, dps, **values)
 
     def sigma0_for(self, lam, dps: int = 20, **values):
-        """sigma_0 giving the Maugis parameter ``lam``, see :func:`.maugis_choice.sigma0_for`."""
+        """sigma_0 giving the Maugis parameter ``lam``, see :func:`.choice.sigma0_for`."""
         return maugis_choice.sigma0_for(self, lam, dps, **values)
 
     def model_choice(self, rtol=0.05, dps: int = 15, **values):
         """'JKR' or 'MD' for a tolerance (> 0, :func:`~linecontact_sym.core.ranges.check_tolerance`),
-        see :func:`.maugis_choice.model_choice`."""
+        see :func:`.choice.model_choice`."""
         return maugis_choice.model_choice(self, check_tolerance(rtol), dps, **values)
 
     def adhesion_map(self, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), path=None, **kw):
@@ -466,8 +416,8 @@ class MaugisDugdaleContact(ContactOn):
         Maugis parameters with the JKR law, and the pull-off against lambda
         with its JKR and rigid limits; see :mod:`~linecontact_sym.views.adhesion_map`.
         ``values``: E_star, the work of adhesion, the profile's parameters."""
-        from ...views.adhesion_map import adhesion_map_data, plot_adhesion_map
-        from .maugis_check import rigid_limit
+        from ....views.adhesion_map import adhesion_map_data, plot_adhesion_map
+        from .check import rigid_limit
         rigid = lambda s0: rigid_limit(self, 15, **values, **{self.sigma0.name: s0})  # noqa: E731
         data = adhesion_map_data(self, values, lambdas, rigid=rigid, **kw)
         return plot_adhesion_map(data, path, title=f"Maugis-Dugdale line contact, f(x) = {self.profile.expr}")
@@ -509,4 +459,4 @@ _REFERENCE_NAMES = {
 }
 
 
-__all__ = ["MaugisDugdale", "MaugisDugdaleContact", "ModelChoice", "MDState", "MDPullOff", "DISPLACEMENT_CONTROL"]
+__all__ = ["MaugisDugdale", "MaugisDugdaleContact", "ModelChoice", "MDState", "DISPLACEMENT_CONTROL"]

@@ -14,12 +14,12 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 
-from ...core import symbols as S
-from ...core.conversion import to_mpf
-from ...core.errors import DomainError
-from ...parsing import user_value
-from ...core.precision import workdps
-from .maugis_law import fixed_values
+from ....core import symbols as S
+from ....core.conversion import to_mpf
+from ....core.errors import DomainError
+from ....parsing import user_value
+from ....core.precision import workdps
+from .numbers import fixed_values
 
 
 @dataclass

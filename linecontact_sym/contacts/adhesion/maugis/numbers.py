@@ -1,8 +1,7 @@
 """Numbers of a Maugis-Dugdale line contact at given parameter values: the
 cohesive-zone half-width c_D(a) (unique, bracketed), the load P(a), its
-total derivative dP/da, the state (pressure, gap) and the load-control
-pull-off (global minimum of P(a) over every stationary point, every kink and
-the limit a -> 0+).
+total derivative dP/da, the state (pressure, gap) and the limit a -> 0+
+(the zone c0 of a vanishing contact, P(0+) = -2 sigma_0 c0).
 
 Closed or not: the two conditions are lambdified where the engine found P0,
 g0 and p0 in closed form; otherwise P0 and dP0/da come from the normal
@@ -21,13 +20,9 @@ the adhesionless gap g0(c; a) rises from 0 wherever the profile is admissible
 gap(s_lo) < h0 < gap(s_hi) by safeguarded Newton in s = c_D - a (never leaves
 the bracket, so never a wrong branch).
 
-The pull-off: dP/da at log-spaced half-widths (8 per decade) from where
-P > 0 and rising down to the zero-width cohesive zone c0; a sign change
-- -> + is a minimum, refined by a bracketed root of dP/da; the profile's
-kinks are candidates; below the grid, dP/da is followed down decade by
-decade while it stays positive until P(a) equals its limit P(0+) = G at
-a = 0 (-2 sigma_0 c0) to the working precision: then P(a) has no minimum
-there and the infimum P(0+) is reported (kind 'infimum', half-width 0).
+The pull-off, the equilibria and the jump-in are the generic layer's
+(:mod:`~linecontact_sym.contacts.normal.equilibria` over the ForceLaw that
+:meth:`.law.MaugisDugdale.numeric` builds on this law, with its scan hint).
 """
 from __future__ import annotations
 
@@ -36,18 +31,12 @@ from dataclasses import dataclass, field
 import mpmath
 import sympy as sp
 
-from ...core import symbols as S
-from ...core.conversion import float_values, number
-from ...core.errors import DomainError, NoPullOffError, VerificationError
-from ...core.precision import workdps
-from ...core.roots import UNDEFINED, Outside, domain_end, real_value
-from ...method.transforms import inside
-
-#: grid points per decade of a in the pull-off scan
-PER_DECADE = 8
-#: decades followed below the grid before the limit a -> 0+ is declared (at most)
-MAX_DECADES = 400
-
+from ....core import symbols as S
+from ....core.conversion import float_values, number
+from ....core.errors import DomainError, NoPullOffError, VerificationError
+from ....core.precision import workdps
+from ....core.roots import UNDEFINED, Outside, domain_end, real_value
+from ....method.transforms import inside
 
 @dataclass
 class MDState:
@@ -81,28 +70,6 @@ class MDState:
     @property
     def m(self):
         return self.c_D / self.a
-
-
-@dataclass
-class MDPullOff:
-    """Load-control pull-off of a Maugis-Dugdale line contact.
-
-    force          P_min < 0 (or the infimum P(0+) where P has no minimum)
-    adhesion_force -force
-    half_width     a at the minimum (0 for the infimum)
-    c_D            cohesive-zone half-width there
-    kind           'stationary', 'kink' or 'infimum' (P(a) decreases to its limit as a -> 0+)
-    minima         every local minimum found, (a, P, kind)
-    note           what the search covered
-    """
-
-    force: mpmath.mpf
-    adhesion_force: mpmath.mpf
-    half_width: mpmath.mpf
-    c_D: mpmath.mpf
-    kind: str
-    minima: tuple = ()
-    note: str = ""
 
 
 def fixed_values(vals, digits=80):
@@ -279,8 +246,8 @@ class MDLaw:
         quadrature after s = c sin(theta) (both integrands smooth at s = a however
         close c_D is to a; acosh(c/s) = log(cot(theta/2)) keeps its digits there),
         and dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a) (closed in P0')."""
-        from ..normal.force_law import ForceLaw
-        from ...method import transforms as T
+        from ...normal.force_law import ForceLaw
+        from ....method import transforms as T
         md = self.md
         a, c, x = S.a, S.c_D, S.x
         d = md.dugdale
@@ -436,7 +403,7 @@ class MDLaw:
         its mpmath estimate; None where the engine's g0 is closed (no integral to certify)."""
         if self.closed_parts["g0(c_D; a)"] or self._P0_expr is None:
             return None
-        from ...numeric.reference import RefValue, integrate
+        from ....numeric.reference import RefValue, integrate
         th = sp.Dummy("theta", positive=True)
         with workdps(dps + 20):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
@@ -497,130 +464,5 @@ class MDLaw:
                 return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
         return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts), self.certified_gap(A, C, dps))
 
-    # ------------------------------------------------------------ pull-off
-    def pull_off(self, dps: int) -> MDPullOff:
-        notes = []
-        with workdps(20):
-            c0 = self.c0(15)
-            P0lim = self.force_zero_width(15)
-            slope = lambda A: self.P_and_slope(A, 15)  # noqa: E731
-            # upper end: double from c0 until P > 0 and rising
-            top = c0
-            for _ in range(200):
-                try:
-                    P, dP, _c = slope(top)
-                except DomainError:   # past the profile's end (or no zone inside it): the scan stops below
-                    if top == c0:
-                        raise
-                    lo_ok, hi_bad = top / 10, top
-                    for _ in range(40):       # the largest half-width with a state, to 1e-12
-                        mid = mpmath.sqrt(lo_ok * hi_bad)
-                        try:
-                            slope(mid)
-                            lo_ok = mid
-                        except DomainError:
-                            hi_bad = mid
-                    top = lo_ok
-                    notes.append(f"the states end at a = {mpmath.nstr(top, 8)} (the cohesive zone would reach "
-                                 f"past the end of the profile beyond)")
-                    break
-                if P > 0 and dP > 0:
-                    break
-                top *= 10
-            else:
-                raise NoPullOffError("P(a) stays negative or falling up to a = 1e200 c0: no pull-off found")
-            bottom = c0 * mpmath.mpf(10)**-3
-            n = int(PER_DECADE * mpmath.log10(top / bottom)) + 1
-            grid = [bottom * (top / bottom)**(mpmath.mpf(k) / n) for k in range(n + 1)]
-            ks = [k for k in self.kinks if bottom < k < top]
-            grid = sorted(set(grid) | {k * (1 - mpmath.mpf(10)**-12) for k in ks} |
-                          {k * (1 + mpmath.mpf(10)**-12) for k in ks})
-            vals = [(A,) + slope(A) for A in grid]
-            brackets = []
-            for (A0, P0_, d0, _), (A1, P1_, d1, _) in zip(vals, vals[1:]):
-                if d0 < 0 < d1 and not any(A0 < k < A1 for k in ks):
-                    brackets.append((A0, A1))
-            # follow dP/da down, 4 points per decade, below the grid until P(a) has reached its
-            # limit P(0+); every sign change of dP/da on the way brackets a minimum or a maximum
-            A_low = vals[0][0]
-            infimum = False
-            decades = 0
-            prev = vals[0]
-            step = mpmath.mpf(10)**(-mpmath.mpf(1) / 4)
-            while decades < 4 * MAX_DECADES:
-                A_new = prev[0] * step
-                P_new, d_new, _c = slope(A_new)
-                decades += 1
-                if d_new < 0 < prev[2]:
-                    brackets.append((A_new, prev[0]))
-                prev = (A_new, P_new, d_new, _c)
-                # what P(a) can still change below A_new is of the order A |dP/da|
-                if A_new * abs(d_new) <= abs(P0lim) * mpmath.mpf(10)**-(dps + 6):
-                    infimum = d_new > 0      # approached from above: P(0+) is an infimum
-                    break
-            notes.append(f"dP/da followed down {decades / 4:g} decade(s) below a = {mpmath.nstr(A_low, 5)}, "
-                         f"to a = {mpmath.nstr(prev[0], 3)} where a |dP/da| < 1e-{dps + 6} |P(0+)| (a minimum below would differ "
-                         f"from P(0+) by less than that)")
-        cands = []
-        for A0, A1 in brackets:
-            with workdps(dps + 10):
-                f = lambda A: self.P_and_slope(A, dps + 5)[1]  # noqa: E731
-                A = _bracketed_root(f, mpmath.mpf(A0), mpmath.mpf(A1), dps + 3)
-                P, dP, C = self.P_and_slope(A, dps)
-            cands.append((A, P, C, "stationary"))
-        for k in ks:   # a kink is a minimum where P falls to its left and rises to its right
-            with workdps(20):
-                eps = mpmath.mpf(10)**-12
-                left = self.P_and_slope(k * (1 - eps), 15)[1]
-                right = self.P_and_slope(k * (1 + eps), 15)[1]
-            if left < 0 < right:
-                with workdps(dps + 10):
-                    P, dP, C = self.P_and_slope(mpmath.mpf(k), dps)
-                cands.append((mpmath.mpf(k), P, C, "kink"))
-        note = (f"scan of dP/da at {len(grid)} half-widths from {mpmath.nstr(bottom, 5)} to {mpmath.nstr(top, 5)} "
-                f"(8 per decade), kinks {[mpmath.nstr(k, 8) for k in ks]}; " + "; ".join(notes))
-        minima = tuple((A, P, kind) for A, P, C, kind in cands)
-        with workdps(dps + 10):
-            P0lim = self.force_zero_width(dps)
-            c0 = self.c0(dps)
-        best = min(cands, key=lambda r: r[1], default=None)
-        if best is None or (infimum and P0lim < best[1]):
-            if not infimum:
-                raise NoPullOffError("P(a) has no minimum in the scanned range and does not fall to its "
-                                     "limit as a -> 0+")
-            note += ("; P(a) has no minimum below that: it decreases to its limit P(0+) = -2 sigma_0 c0 as "
-                     "a -> 0+, the pull-off is this infimum (approached, not attained)")
-            return MDPullOff(P0lim, -P0lim, mpmath.mpf(0), c0, "infimum", minima, note)
-        A, P, C, kind = best
-        if infimum:
-            note += f"; P(0+) = {mpmath.nstr(P0lim, 10)} lies above the minimum"
-        return MDPullOff(P, -P, A, C, kind, minima, note)
 
-
-def _bracketed_root(f, lo, hi, dps):
-    """Root of f on [lo, hi] with f(lo) < 0 < f(hi): Illinois (regula falsi) on log a."""
-    with workdps(dps + 5):
-        u0, u1 = mpmath.log(lo), mpmath.log(hi)
-        f0, f1 = f(lo), f(hi)
-        side = 0
-        for _ in range(300):
-            u = (u0 * f1 - u1 * f0) / (f1 - f0)
-            fu = f(mpmath.exp(u))
-            if fu == 0:
-                return mpmath.exp(u)
-            if (fu > 0) == (f1 > 0):
-                u1, f1 = u, fu
-                if side == -1:
-                    f0 /= 2
-                side = -1
-            else:
-                u0, f0 = u, fu
-                if side == 1:
-                    f1 /= 2
-                side = 1
-            if abs(u1 - u0) < mpmath.mpf(10)**-(dps + 1) * max(1, abs(u)):
-                break
-        return mpmath.exp(u)
-
-
-__all__ = ["MDLaw", "MDState", "MDPullOff"]
+__all__ = ["MDLaw", "MDState"]
