@@ -21,8 +21,8 @@ from ..core import symbols as S
 from ..core.budget import run_with_budget
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import ClaimError, DomainError, LineContactError
-from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_relative_displacement,
-                         flamant_resultant, griffith_punch_force, num_eval, numeric_minimum, resolution)
+from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_magnitude,
+                         flamant_relative_displacement, flamant_resultant, griffith_punch_force, num_eval, numeric_minimum, resolution)
 from .memo import point_key, remember, remembered
 from .results import REQUIRED_DIGITS, PointResult
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
@@ -201,19 +201,32 @@ def _pressure_physics(profile, force_fn, bps=()):
     the displacement integral's terms."""
     def physics(vals, printed_expr, dps):
         fixed = {k: v for k, v in vals.items() if k != S.x}
-        p = sp.lambdify(S.x, printed_expr.xreplace(fixed), "mpmath")
+        p = _pressure_of(printed_expr, fixed)
         E, av, xv = vals[S.E_star], vals[S.a], vals[S.x]
         with workdps(dps + 10):
-            breaks = [to_mpf(sp.N(b.xreplace(fixed), dps + 20)) for b in bps]
-            D, errD, mag = flamant_relative_displacement(p, av, xv, E, dps, breaks, with_error=True)
+            breaks = [_break_value(b.xreplace(fixed), dps) for b in bps]
+            D, errD = flamant_relative_displacement(p, av, xv, E, dps, breaks, with_error=True)
             fx = num_eval(profile, {**vals}, dps, what="the profile", exc=DerivedUndefined)
             res, errR = flamant_resultant(p, av, dps, breaks, with_error=True)
             Pa = force_fn(vals, dps)
-            scale = abs(fx) if fx != 0 else mag
+            scale = abs(fx) if fx != 0 else flamant_magnitude(p, av, xv, E, breaks)
         return [Comparison("Flamant: u_z(0) - u_z(x) = f(x) under the contact", D, fx, scale,
                            resolution(errD, scale)),
                 Comparison("Flamant: resultant = P(a)", res, Pa, None, resolution(errR, Pa))]
     return physics
+
+
+def _pressure_of(printed_expr, fixed):
+    """The printed pressure at the point's parameters: a SymPy expression in
+    x alone (the Flamant references integrate it in Arb where they can, and
+    lambdify it for tanh-sinh where they cannot)."""
+    return printed_expr.xreplace(fixed)
+
+
+def _break_value(b, dps):
+    """A breakpoint as an exact number where it is one (Arb splits there
+    exactly), else an mpf of dps + 20 digits."""
+    return b if b.is_Rational else to_mpf(sp.N(b, dps + 20))
 
 
 def _where(claim):
@@ -424,7 +437,7 @@ def _flat_punch_pressure() -> Derived:
     (resultant P) and leave the surface flat under the punch (Flamant)."""
     def comparer(vals, printed_expr, dps):
         fixed = {k: v for k, v in vals.items() if k != S.x}
-        p = sp.lambdify(S.x, printed_expr.xreplace(fixed), "mpmath")
+        p = _pressure_of(printed_expr, fixed)
         av, xv, E, Pv = (vals[s] for s in (S.a, S.x, S.E_star, S.P))
         with workdps(dps + 10):
             res = flamant_resultant(p, av, dps)
@@ -441,12 +454,9 @@ def _flat_punch_displacement() -> Derived:
     """d - u_z(x) outside the punch from the Flamant kernel applied to the
     flat-punch pressure P/(pi sqrt(a^2 - x^2)) (whose correctness is claim Eq. (1))."""
     def evaluator(vals, dps):
-        av, xv, E, Pv = (vals[s] for s in (S.a, S.x, S.E_star, S.P))
-
-        def p(sv):
-            A = to_mpf(av)
-            return to_mpf(Pv) / (mpmath.pi * mpmath.sqrt(A**2 - sv**2))
-        return flamant_relative_displacement(p, av, xv, E, dps)
+        av, xv, E, Pv = (to_basic(vals[s]) for s in (S.a, S.x, S.E_star, S.P))
+        s_ = sp.Dummy("s")
+        return flamant_relative_displacement(Pv / (sp.pi * sp.sqrt(av**2 - s_**2)), av, xv, E, dps)
     return Derived(None, "Flamant kernel applied to the flat-punch pressure P/(pi sqrt(a^2 - x^2))",
                    closed_form=False, evaluator=evaluator)
 

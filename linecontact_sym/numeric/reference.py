@@ -61,7 +61,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -642,7 +642,7 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
     return estimate(fallback, reason or "", dps)
 
 
-def quotient_bound(numerator, var, rest):
+def quotient_bound(numerator, var, rest, order: int = 1):
     """``crude(z)`` for :func:`integrate`: a bound of numerator(t)/t * rest(t)
     on a real ball z next to t = 0, where numerator(0) = 0 and the quotient
     has a removable singularity (the gap's P(s)/s).  By the mean value
@@ -650,7 +650,12 @@ def quotient_bound(numerator, var, rest):
     estimate |numerator'(xi)| <= M/(rho - |xi|) with M = max |numerator| on
     the disk |w| <= rho = 2|z| (evaluated on that disk with Arb's
     holomorphy check: a numerator that is not holomorphic there gives no
-    bound).  The caller must know that numerator(0) = 0."""
+    bound).  The caller must know that numerator(0) = 0.
+
+    ``order`` k > 1: a bound of numerator(t)/t^k * rest(t), where the
+    numerator has a zero of order >= k at t = 0 (the caller must know it):
+    numerator(w)/w^k is then holomorphic on the disk |w| <= rho, and by the
+    maximum modulus principle at most M/rho^k on it."""
     fn, fr = compile_acb(numerator, var), compile_acb(rest, var)
 
     def crude(z):
@@ -662,9 +667,65 @@ def quotient_bound(numerator, var, rest):
         M = fn(disk, True)
         if not M.is_finite():
             return _nan()
-        b = M.abs_upper() / (rho - r)
+        b = M.abs_upper() / (rho - r) if order == 1 else M.abs_upper() / rho**order
         return flint.acb(flint.arb(0, b), flint.arb(0, b)) * fr(z, False)
     return crude
+
+
+def log_point_integral(p, var, c, points, dps: int = 45) -> RefValue:
+    """int over [points[0], points[-1]] of p(t) ln|t - c| dt for a point c of
+    that interval (an end or a break point in ``points``) where p is C^1
+    next to c: the logarithmic singularity that ball arithmetic cannot
+    bound is removed by subtraction,
+
+        int p(t) ln|t - c| dt = int (p(t) - p(c)) ln|t - c| dt + p(c) [(t - c) ln|t - c| - t],
+
+    and the remainder, which vanishes at c, is bounded on a real ball next
+    to c by the mean value theorem: |(p(t) - p(c)) ln|t - c|| <= M d |ln d|
+    with M = max |p'| on the hull of the ball and c (an Arb enclosure of p')
+    and d = the largest |t - c| on the ball (d <= 1/e, where d |ln d|
+    increases).  Arb's bisection then converges on those crude bounds.
+    ``p``: SymPy in ``var`` alone; a certified :class:`RefValue`, or
+    :class:`ArbUnsupported` (p(c) not finite, p' not bounded next to c, any
+    piece Arb cannot enclose): the caller's own route runs.
+
+    >>> t = sp.Dummy("t")
+    >>> r = log_point_integral(1 + t, t, sp.Rational(1, 3), [0, sp.Rational(1, 3), 1], 40)
+    >>> exact = sp.integrate((1 + t) * sp.log(sp.Abs(t - sp.Rational(1, 3))), (t, 0, 1))
+    >>> with mpmath.workdps(60):
+    ...     print(r.method, r.contains(to_mpf(sp.N(exact, 60))), r.digits > 40)
+    arb True True
+    """
+    c = sp.sympify(c, strict=True)
+    pc = p.xreplace({var: c})
+    if not pc.is_finite:
+        raise ArbUnsupported(f"the integrand has no finite value at its logarithmic point {c}")
+    g = (p - pc) * sp.log(sp.Abs(var - c))
+    fdp = compile_acb(sp.diff(p, var), var)
+    c_ball = to_acb(c)
+
+    def crude(z):
+        with flint.ctx.workprec(flint.ctx.prec):
+            re_ = z.real
+            d = max((re_.lower() - c_ball.real).abs_upper(), (re_.upper() - c_ball.real).abs_upper())
+            if d == 0:
+                return flint.acb(0)          # t = c exactly: the limit 0
+            if not d < flint.arb(1) / flint.arb.const_e():
+                return _nan()
+            hull = re_.union(c_ball.real)
+            M = fdp(flint.acb(hull), False)
+            if not M.is_finite():
+                return _nan()
+            b = M.abs_upper() * (d * -flint.arb(d).log()).abs_upper()
+            return flint.acb(flint.arb(0, b))
+    ref = integrate(g, var, points, dps, fallback=lambda: mpmath.nan, crude=crude)
+    if not ref.certified:
+        raise ArbUnsupported(ref.note or "Arb could not enclose the remainder of the logarithmic point")
+    lo, hi = sp.sympify(points[0], strict=True), sp.sympify(points[-1], strict=True)
+
+    def F(t):
+        return -t if t == c else (t - c) * sp.log(sp.Abs(t - c)) - t
+    return lincomb([(1, ref), (pc, F(hi) - F(lo))], dps)
 
 
 def estimate(fallback, reason: str, dps: int = 45) -> RefValue:

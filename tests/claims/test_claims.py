@@ -276,6 +276,15 @@ def test_flamant_kernel_reproduces_the_hertz_profile():
         D = REF.flamant_relative_displacement(p, av, xv, E, 45)
         assert abs(D - mpmath.mpf(xv)**2 / 2) < mpmath.mpf(10) ** -40
         assert abs(REF.flamant_resultant(p, av, 45) - mpmath.pi * E * mpmath.mpf(av)**2 / 4) < mpmath.mpf(10) ** -40
+        # the same pressure as a SymPy expression: Arb enclosures (certified), which a value 1e-35 off leaves out
+        s = sp.Symbol("s")
+        ps = E / (2 * R) * sp.sqrt(av**2 - s**2)
+        Da, err = REF.flamant_relative_displacement(ps, av, xv, E, 45, with_error=True)
+        want = mpmath.mpf(xv)**2 / 2
+        assert Da.method == "arb" and Da.contains(want) and not Da.contains(want + mpmath.mpf(10)**-35)
+        assert err < mpmath.mpf(10) ** -44 and abs(Da - D) < mpmath.mpf(10) ** -40
+        Ra = REF.flamant_resultant(ps, av, 45)
+        assert Ra.method == "arb" and Ra.contains(mpmath.pi * E * mpmath.mpf(av)**2 / 4)
 
 
 def test_result_serialises_to_json():
@@ -315,3 +324,20 @@ def test_pressure_counterexample_shows_the_pressure():
         E, R, a, x = (mpmath.mpf(sp.Rational(v[s]).p) / sp.Rational(v[s]).q for s in (lcs.E_star, lcs.R, lcs.a, lcs.x))
         hertz = E * mpmath.sqrt(a**2 - x**2) / (2 * R)
         assert mpmath.nstr(hertz, 20) in text and mpmath.nstr(2 * hertz, 20) in text
+
+
+@pytest.mark.slow
+def test_printed_integrals_with_end_point_powers_go_to_arb():
+    """A negative non-integer power of t at 0 (t = (hi/2) u^q) and a removable
+    0/0 of order 2 (N(t)/t^2 with N(0) = N'(0) = 0): certified enclosures of
+    the exact values, which a value 1e-35 off leaves out."""
+    t = sp.Symbol("t", positive=True)
+    v = REF.quad_integral(sp.Integral(t**sp.Rational(-3, 5) / sp.sqrt(1 - t**2), (t, 0, 1)))
+    with mpmath.workdps(60):
+        exact = mpmath.beta(mpmath.mpf(1) / 5, mpmath.mpf(1) / 2) / 2
+        assert v.method == "arb" and v.contains(exact) and not v.contains(exact * (1 + mpmath.mpf(10)**-35))
+    w = REF.quad_integral(sp.Integral((1 - sp.sqrt(1 - t**2)) / (t**2 * sp.sqrt(1 - t**2)), (t, 0, 1)))
+    with mpmath.workdps(60):
+        assert w.method == "arb" and w.contains(1) and not w.contains(1 + mpmath.mpf(10)**-35)
+    with pytest.raises(REF.Divergent):     # t^(-1.2): no enclosure, the tanh-sinh route's divergence test
+        REF.quad_integral(sp.Integral(t**sp.Float("-1.2") / sp.sqrt(1 - t**2), (t, 0, 1)))
