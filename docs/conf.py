@@ -7,6 +7,7 @@ outputs stored in it) with nbformat; nothing is executed.
 """
 import base64
 import os
+import shutil
 import sys
 from pathlib import Path
 
@@ -21,6 +22,11 @@ extensions = ["sphinx.ext.autodoc", "sphinx.ext.autosummary", "sphinx.ext.napole
               "myst_parser"]
 # the API reference: one page per module of the package, generated from the docstrings at build time
 autosummary_generate = True
+# autosummary writes a page per module but never removes one: a renamed module
+# (maugis_check.py -> maugis/check.py) left its old page behind, an import
+# warning in every later build of that checkout; the folder is generated
+# (git-ignored), so every build starts it afresh
+shutil.rmtree(DOCS / "reference", ignore_errors=True)
 autosummary_imported_members = False
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 myst_enable_extensions = ["dollarmath"]
