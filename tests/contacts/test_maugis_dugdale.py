@@ -283,5 +283,5 @@ def test_state_refuses_a_half_width_that_is_not_one_real_number():
     vals = dict(E_star=1, R=1, gamma="1e-4", sigma_0="1/40")
     with pytest.raises(DomainError, match="one a per branch"):
         md.state((sp.Rational(7, 100),), 20, **vals)
-    with pytest.raises(DomainError, match="one real number"):
+    with pytest.raises(DomainError, match="must be a real number"):
         md.state("1 + 2*I", 20, **vals)

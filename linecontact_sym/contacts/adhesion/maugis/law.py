@@ -377,20 +377,16 @@ class MaugisDugdaleContact(AdhesiveContact):
         condition, bracketed), P, dP/da, h0 and the pressure and gap
         profiles (callables of x), to ``dps`` digits."""
         law = self.numeric_law(**values)
-        if not isinstance(a, mpmath.mpf):
-            e = to_sympy(a)
-            if not (isinstance(e, sp.Expr) and e.is_number and e.is_real is not False):
-                hint = " (half_width(P) gives a tuple: one a per branch)" if isinstance(e, sp.Tuple) else ""
-                raise DomainError(f"the half-width a must be one real number, got {a!r}{hint}")
-            with workdps(dps + 10):
-                a_ = sp.N(e, dps + 20)
-                if not a_.is_real:
-                    raise DomainError(f"the half-width a must be one real number, got {a!r}")
-                A = mpmath.mpf(a_)
+        e = a if isinstance(a, mpmath.mpf) else to_sympy(a)
+        if isinstance(e, sp.Tuple):
+            raise DomainError(f"the half-width a must be one real number, got {a!r} "
+                              f"(half_width(P) gives a tuple: one a per branch)")
+        check_positive("a", e, "the half-width a")
+        if isinstance(e, mpmath.mpf):
+            A = e
         else:
-            A = a
-        if not A > 0:
-            raise DomainError(f"the half-width must be positive, got a = {a}")
+            with workdps(dps + 10):
+                A = mpmath.mpf(sp.N(e, dps + 20))
         with _real_profile(self, values):
             return law.state(A, dps)
 
