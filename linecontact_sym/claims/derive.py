@@ -147,8 +147,7 @@ class Context:
             params[sym] = ranges(sym)
         key = (profile, tuple(sorted((k.name, v) for k, v in params.items())), period)
         if key not in self.contacts:
-            self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget) if period is None \
-                else LineContact(profile, params=params or None, budget=self.budget, period=period)
+            self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget, period=period)
         return self.contacts[key]
 
     def adhesive(self, profile, ranges: Callable, kind: str = "adhesive", period=None):
@@ -201,7 +200,7 @@ def _pressure_physics(profile, force_fn, bps=()):
     the displacement integral's terms."""
     def physics(vals, printed_expr, dps):
         fixed = {k: v for k, v in vals.items() if k != S.x}
-        p = _pressure_of(printed_expr, fixed)
+        p = printed_expr.xreplace(fixed)   # SymPy, in x alone: Arb where it can, tanh-sinh where not
         E, av, xv = vals[S.E_star], vals[S.a], vals[S.x]
         with workdps(dps + 10):
             breaks = [_break_value(b.xreplace(fixed), dps) for b in bps]
@@ -214,13 +213,6 @@ def _pressure_physics(profile, force_fn, bps=()):
                            resolution(errD, scale)),
                 Comparison("Flamant: resultant = P(a)", res, Pa, None, resolution(errR, Pa))]
     return physics
-
-
-def _pressure_of(printed_expr, fixed):
-    """The printed pressure at the point's parameters: a SymPy expression in
-    x alone (the Flamant references integrate it in Arb where they can, and
-    lambdify it for tanh-sinh where they cannot)."""
-    return printed_expr.xreplace(fixed)
 
 
 def _break_value(b, dps):
@@ -437,7 +429,7 @@ def _flat_punch_pressure() -> Derived:
     (resultant P) and leave the surface flat under the punch (Flamant)."""
     def comparer(vals, printed_expr, dps):
         fixed = {k: v for k, v in vals.items() if k != S.x}
-        p = _pressure_of(printed_expr, fixed)
+        p = printed_expr.xreplace(fixed)   # SymPy, in x alone: Arb where it can, tanh-sinh where not
         av, xv, E, Pv = (vals[s] for s in (S.a, S.x, S.E_star, S.P))
         with workdps(dps + 10):
             res = flamant_resultant(p, av, dps)
