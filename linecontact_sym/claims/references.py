@@ -291,7 +291,7 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     if isinstance(p, sp.Expr):
         s = _pressure_symbol(p)
         # Arb needs p(0) (the log point s = 0 is removed by subtracting it)
-        ref = _flamant_arb(p, a, xv, E, dps, breaks) if s is not None and _finite_at(p, s, 0) else None
+        ref = _flamant_arb(p, a, xv, E, dps, breaks) if s is not None else None
         if ref is not None:
             return (ref, ref.rad) if with_error else ref
         xb = abs(to_basic(xv))
@@ -379,15 +379,29 @@ def _flamant_arb(p, a, xv, E, dps, breaks):
         k = 2 / (sp.pi * E)
         inside = (xv < a) == sp.true
         pts = _arb_points(a, inner + ([xv] if inside else []))
-        if inside:
-            terms = [(k, integrate(p * sp.log(xv + s), s, pts, dps, fallback=lambda: mpmath.nan)),
-                     (k, log_point_integral(p, s, xv, pts, dps))]
+    except (LineContactError, TypeError, ValueError, ZeroDivisionError):
+        return None
+
+    def integral(g):
+        r = integrate(g, s, pts, dps, fallback=lambda: mpmath.nan)
+        if not r.certified:
+            raise ArbUnsupported(r.note)
+        return r
+    try:
+        if inner or not _finite_at(p, s, 0):
+            # a break point (the end of a flat, where the pressure's slope
+            # has a logarithm) or p(0) not finite (the wedge's acosh(a/s)):
+            # the kernel as it stands, its logarithms and the pressure's
+            # taken by the integrator's logarithmic end points, one integral
+            terms = [(k, integral(p * sp.log(sp.Abs(xv**2 / s**2 - 1))))]
+        elif inside:
+            terms = [(k, integral(p * sp.log(xv + s))), (k, log_point_integral(p, s, xv, pts, dps)),
+                     (-2 * k, log_point_integral(p, s, sp.S.Zero, pts, dps))]
         else:
-            terms = [(k, integrate(p * sp.log(xv**2 - s**2), s, pts, dps, fallback=lambda: mpmath.nan))]
-        terms.append((-2 * k, log_point_integral(p, s, sp.S.Zero, pts, dps)))
-        ref = lincomb(terms, dps)
+            terms = [(k, integral(p * sp.log(xv**2 - s**2))), (-2 * k, log_point_integral(p, s, sp.S.Zero, pts, dps))]
     except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
         return None
+    ref = lincomb(terms, dps)
     return ref if ref.certified else None
 
 

@@ -498,6 +498,13 @@ def compile_acb(expr, var, holomorphic: bool = True):
             fx = build(e.args[0])
             op = _UNARY[type(e)]
             return lambda z, an: op(fx(z, an), an)
+        if isinstance(e, _RealAbs):
+            fx = build(e.args[0])
+            return lambda z, an: _UNARY[sp.Abs](fx(z, an), an)
+        if isinstance(e, _Slope):
+            if e.args[2] not in index:
+                raise ArbUnsupported("a mean-value quotient in a variable that is not the integrand's one")
+            return _slope(build(e.args[0]), build(e.args[1]), index[e.args[2]])
         if isinstance(e, sp.Integral):
             raise ArbUnsupported("an unevaluated integral inside the integrand (no closed form)")
         raise ArbUnsupported(f"no acb counterpart for {type(e).__name__}: {e}")
@@ -698,7 +705,7 @@ def log_point_integral(p, var, c, points, dps: int = 45) -> RefValue:
     """
     c = sp.sympify(c, strict=True)
     pc = p.xreplace({var: c})
-    if not pc.is_finite:
+    if not (pc.is_finite or (pc.is_finite is None and _finite_number(pc))):
         raise ArbUnsupported(f"the integrand has no finite value at its logarithmic point {c}")
     g = (p - pc) * sp.log(sp.Abs(var - c))
     fdp = compile_acb(sp.diff(p, var), var)
@@ -726,6 +733,15 @@ def log_point_integral(p, var, c, points, dps: int = 45) -> RefValue:
     def F(t):
         return -t if t == c else (t - c) * sp.log(sp.Abs(t - c)) - t
     return lincomb([(1, ref), (pc, F(hi) - F(lo))], dps)
+
+
+def _finite_number(v) -> bool:
+    """Is the SymPy number ``v`` (SymPy could not tell) a finite ball?"""
+    try:
+        with flint.ctx.workprec(128):
+            return not v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) and to_acb(v).is_finite()
+    except (ArbUnsupported, ZeroDivisionError, ValueError, TypeError):
+        return False
 
 
 def estimate(fallback, reason: str, dps: int = 45) -> RefValue:
@@ -884,8 +900,9 @@ def _substituted(integrand, var, lo, hi, piece):
     t = e + (m - e) u^2, u in [0, 1]: the radicands are factored, so that the
     u^2 they vanish with comes out of the root and cancels the Jacobian
     2 (m - e) u exactly (ball arithmetic cannot cancel 0/0 by itself).  A
-    singularity that this does not remove (log, a non-algebraic one)
-    raises :class:`ArbUnsupported` (the fallback runs)."""
+    logarithmic end point (a log singularity, or logarithms whose infinities
+    cancel there) goes to :func:`_log_end`.  A singularity that neither
+    removes raises :class:`ArbUnsupported` (the fallback runs)."""
     m = (lo + hi) / 2
     f = compile_acb(integrand, var)
     total = flint.acb(0)
@@ -896,22 +913,269 @@ def _substituted(integrand, var, lo, hi, piece):
         except ArbUnsupported:
             pass
         total_half = None
-        for end, far in ((e, other), (other, e)):
+        # only an end where the integrand has no finite ball is substituted
+        ends = [(end, far) for end, far in ((e, other), (other, e)) if not _bounded_next_to(f, end, far)]
+
+        def root_end(end, far):
             d = far - end
             g = integrand.xreplace({var: end + d * _u**2}) * 2 * d * _u
-            try:
-                g = _inside_branch(sp.piecewise_fold(g))
-                g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_u),
-                              lambda z: sp.factor(z.base) ** z.exp)
-                v = piece(compile_acb(sp.expand_mul(g), _u), sp.S.Zero, sp.S.One)
-            except ArbUnsupported:
-                continue
-            # t runs from ``end`` to ``far`` as u runs from 0 to 1
-            total_half = v if end == e else -v
-            break
+            g = _inside_branch(sp.piecewise_fold(g))
+            g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_u),
+                          lambda z: sp.factor(z.base) ** z.exp)
+            return piece(compile_acb(sp.expand_mul(g), _u), sp.S.Zero, sp.S.One)
+
+        def log_end(end, far):
+            return _log_end(integrand, var, end, far, piece)
+        # an integrand with logarithms tries their subtraction first
+        ways = (log_end, root_end) if integrand.has(sp.log, sp.acosh, sp.asinh, sp.atanh) else (root_end, log_end)
+        for way in ways:
+            for end, far in ends:
+                try:
+                    v = way(end, far)
+                except ArbUnsupported:
+                    continue
+                # t runs from ``end`` to ``far`` as u runs from 0 to 1
+                total_half = v if end == e else -v
+                break
+            if total_half is not None:
+                break
         if total_half is None:
-            raise ArbUnsupported("an end-point singularity that the substitution t = e + d u^2 does not remove")
+            raise ArbUnsupported("an end-point singularity that neither the substitution t = e + d u^2 nor the "
+                                 "subtraction of its logarithms removes")
         total += total_half
+    return total
+
+
+class _Slope(sp.Function):
+    """F(u)/u for a real F with F(0) = 0 exactly (the argument of a
+    logarithm that vanishes at a logarithmic end point, divided by the
+    distance to it): ``_Slope(F, F', u)``.  On balls
+    (:func:`compile_acb`): F(z)/z where z excludes 0; on a real ball that
+    reaches 0 the mean value theorem, F(u)/u = F'(xi) with xi between 0
+    and u, enclosed by F' on the hull of the ball and 0; non-finite on a
+    complex ball around 0 (holomorphy is not claimed there)."""
+    nargs = 3
+
+
+class _RealAbs(sp.Function):
+    """|x| of a real x, whose derivative is sign(x) x' (SymPy's Abs of an
+    expression not known to be real differentiates into re and im): only in
+    the derivative that bounds a coefficient of a logarithmic end point
+    (:func:`_log_end`; its integrand is real)."""
+    nargs = 1
+
+    def fdiff(self, argindex=1):
+        return sp.sign(self.args[0])
+
+
+def _slope(F, dF, i):
+    """The ball of _Slope(F, F', u), u the variable (``i`` None) or the i-th
+    of several."""
+    def g(z, an):
+        w = z if i is None else z[i]
+        # next to 0 (|w| < 2^(-prec/2)) F(z)/w would lose more bits to the
+        # cancellation in F than the enclosure by F' is wide
+        if (0 in w.real and 0 in w.imag) or w.abs_upper() < flint.arb(2) ** (-flint.ctx.prec // 2):
+            # F(w)/w = int_0^1 F'(s w) ds lies in the ball F'(hull of w and 0),
+            # F holomorphic there (checked: finite with the analytic flag)
+            hull = w.union(flint.acb(0))
+            at = hull if i is None else z[:i] + (hull,) + z[i + 1:]
+            if not F(at, ANALYTIC).is_finite():
+                return _nan()
+            return dF(at, an)
+        return F(z, an) / w
+    return g
+
+
+#: the powers of ln u a logarithmic end point may carry (ln^k, k <= 3)
+_LOG_POWERS = 3
+#: u = v^q at a logarithmic end point
+_LOG_END_POWER = 8
+
+
+def _order_at_zero(F, u):
+    """The power m of u with which F vanishes (m > 0) or blows up (m < 0) at
+    u = 0+, read from two values at 60 digits (a hint only: whatever m is,
+    ln|F| = m ln u + ln|F u^-m| holds; a wrong m leaves a quotient that
+    ball arithmetic cannot bound, and the route fails)."""
+    f = sp.lambdify(u, F, "mpmath")      # a plain one: the values are a hint
+    with workdps(60):
+        try:
+            v1, v2 = abs(f(mpmath.mpf(10) ** -12)), abs(f(mpmath.mpf(10) ** -24))
+        except (ZeroDivisionError, ValueError, TypeError):
+            return None
+        if not (mpmath.isfinite(v1) and mpmath.isfinite(v2)) or v1 == 0 or v2 == 0:
+            return None
+        m = -mpmath.log10(v2 / v1) / 12
+    k = int(mpmath.nint(m))
+    return k if abs(m - k) < 0.05 else None
+
+
+def _split_log(arg, absolute, u, L):
+    """ln|arg| (``absolute``) or ln(arg) as m L + ln of a quotient that is
+    finite at u = 0 (L stands for ln u), factor by factor under ln|.| (ln|x
+    y| = ln|x| + ln|y|); None where a factor's order or quotient is not
+    found."""
+    factors = sp.Mul.make_args(arg) if absolute else (arg,)
+    out = sp.S.Zero
+    for fac in factors:
+        base, ex = (fac.base, fac.exp) if fac.is_Pow and fac.exp.is_Integer else (fac, sp.S.One)
+        if not base.has(u):
+            out += ex * (sp.log(sp.Abs(base)) if absolute else sp.log(base))
+            continue
+        m = _order_at_zero(base, u)
+        if m is None:
+            return None
+        if m == 0:
+            out += ex * (sp.log(sp.Abs(base)) if absolute else sp.log(base))
+            continue
+        if base == u:
+            out += ex * L
+            continue
+        q = sp.expand(base * u**-m)
+        if not _finite_next_to_zero(q, u):
+            q = sp.cancel(sp.together(q))
+        if not _finite_next_to_zero(q, u):
+            # a simple zero: F(u)/u by the mean value theorem
+            if m != 1 or base.xreplace({u: sp.S.Zero}) != 0 or \
+                    base.has(sp.Abs, sp.sign, sp.Heaviside, sp.Piecewise, sp.Min, sp.Max):
+                return None
+            q = _Slope(base, sp.diff(base, u), u)
+            if not _finite_next_to_zero(q, u):
+                return None
+        out += ex * (m * L + (sp.log(sp.Abs(q)) if absolute else sp.log(q)))
+    return out
+
+
+def _unsigned(f):
+    """A factor |x|**k or |x| of a logarithm's argument as x**k or x (under
+    ln|.| the sign does not matter)."""
+    if f.is_Pow and isinstance(f.base, sp.Abs):
+        return f.base.args[0] ** f.exp
+    return f.args[0] if isinstance(f, sp.Abs) else f
+
+
+def _finite_next_to_zero(expr, u) -> bool:
+    try:
+        f = compile_acb(expr, u)
+        with flint.ctx.workprec(128):
+            return f(flint.acb(flint.arb(0).union(flint.arb(2) ** -40)), False).is_finite()
+    except (ArbUnsupported, ZeroDivisionError, ValueError, TypeError):
+        return False
+
+
+def _normal_radicands(e, u):
+    """Radicands over a common denominator, the positive powers of u taken
+    out of the root (u > 0): sqrt(a^2/u^2 - 1) -> sqrt(a^2 - u^2)/u."""
+    return e.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(u),
+                     lambda z: sp.expand_power_base(sp.together(z.base) ** z.exp, force=False))
+
+
+def _log_end(integrand, var, end, far, piece):
+    """int from ``end`` to ``far`` of an integrand with logarithmic
+    singularities at ``end`` (an unbounded ln^k, or logarithms whose
+    infinities cancel there: the rounded punch's pressure at the end of its
+    flat, which ball arithmetic meets as oo - oo).  With t = end + (far -
+    end) u, every logarithm (acosh, asinh, atanh written as logarithms)
+    is split symbolically as ln|F| = m ln u + ln|F u^-m|, with the
+    quotient finite at u = 0 (simplified, or F(u)/u by the mean value
+    theorem: :class:`_Slope`), so that the integrand is exactly
+    sum_k A_k(u) ln^k u with every A_k finite next to 0.  The integral is
+
+        int_0^1 [g - sum_{k>=1} c_k ln^k u] du + sum_{k>=1} c_k int_0^1 ln^k u du,
+
+    c_k = A_k(0) exact, int_0^1 ln^k u du = (-1)^k k!; next to u = 0 the
+    bracket is bounded on a real ball [0, d] (d <= e^-k) by
+    sum_k max|A_k'| d |ln d|^k + |A_0| (the ball of A_0), which Arb's
+    bisection refines.  :class:`ArbUnsupported` where the integrand does
+    not take that form."""
+    d = far - end
+    L = sp.Dummy("L")
+    try:
+        g = _inside_branch(sp.piecewise_fold(integrand.xreplace({var: end + d * _u}) * d))
+        g = g.replace(lambda z: isinstance(z, (sp.acosh, sp.asinh, sp.atanh)), lambda z: z.rewrite(sp.log))
+        g = _normal_radicands(g, _u)
+        logs = {}
+        for lg in g.atoms(sp.log):
+            arg = lg.args[0]
+            absolute = all(isinstance(b, sp.Abs) or (b.is_number and b.is_positive)
+                           for b in (f.base if f.is_Pow and f.exp.is_Integer else f for f in sp.Mul.make_args(arg)))
+            inner = sp.Mul(*[_unsigned(f) for f in sp.Mul.make_args(arg)]) if absolute else arg
+            if not inner.has(_u):
+                continue
+            split = _split_log(inner, absolute, _u, L)
+            if split is None:
+                raise ArbUnsupported(f"the logarithm {lg} has no quotient finite at the end point")
+            logs[lg] = split
+        if not logs:
+            raise ArbUnsupported("no logarithm at the end point")
+        expanded = sp.expand_mul(g.xreplace(logs))
+        parts = sp.collect(expanded, L, evaluate=False)
+    except (TypeError, ValueError, ZeroDivisionError, sp.PolynomialError) as exc:
+        raise ArbUnsupported(f"the logarithmic end point could not be split: {exc}") from None
+    coef = {}
+    for key, val in parts.items():
+        k = 0 if key == 1 else (1 if key == L else (int(key.exp) if key.is_Pow and key.base == L and key.exp.is_Integer else -1))
+        if not 0 <= k <= _LOG_POWERS or val.has(L):
+            raise ArbUnsupported("the integrand is not a polynomial in the logarithm at the end point")
+        coef[k] = coef.get(k, sp.S.Zero) + val
+    consts, bounds = {}, []
+    for k, A in coef.items():
+        if k == 0:
+            continue
+        if A.has(_Slope):
+            raise ArbUnsupported("a coefficient of the logarithm needs a mean-value quotient")
+        c = A.xreplace({_u: sp.S.Zero})
+        if c.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or not c.is_number:
+            raise ArbUnsupported("a coefficient of the logarithm has no value at the end point")
+        consts[k] = c
+        bounds.append((k, compile_acb(sp.diff(A.replace(lambda z: isinstance(z, sp.Abs), lambda z: _RealAbs(z.args[0])),
+                                              _u), _u)))
+    f0 = compile_acb(coef.get(0, sp.S.Zero), _u)
+    kmax = max(consts, default=0)
+    # the split form, A_k(u) - c_k and ln u = L apart: composed with u = v^q
+    # below, no function's cut is met by a ball that winds around u = 0
+    split = compile_acb(coef.get(0, sp.S.Zero) + sum((A - consts[k]) * L**k for k, A in coef.items() if k),
+                        [_u, L])
+    q = _LOG_END_POWER
+
+    def crude(w):
+        """The split integrand on a real ball w of u that reaches 0."""
+        dd = w.real.upper()
+        if not dd < flint.arb(-kmax).exp():
+            return _nan()
+        hull = flint.acb(w.real.union(flint.arb(0)))
+        b = f0(hull, False)
+        if not b.is_finite():
+            return _nan()
+        rad = flint.arb(0)
+        if dd > 0:
+            lnd = -dd.log()
+            for k, fd in bounds:
+                M = fd(hull, False)
+                if not M.is_finite():
+                    return _nan()
+                rad += M.abs_upper() * (dd * lnd ** k).abs_upper()
+        r = rad.abs_upper()
+        return b + flint.acb(flint.arb(0, r), flint.arb(0, r))
+
+    def h(z, an):
+        # u = v^q on [0, u0]: the integrand vanishes like v^(q-1) |ln v|^k at
+        # v = 0, so few bisections reach the tolerance there
+        w = z ** q
+        if not an and z.imag.is_zero() and 0 in z.real:
+            v = crude(w)
+        else:
+            v = split((w, q * z.log(analytic=an == ANALYTIC)), an)
+        return v * q * z ** (q - 1)
+    u0 = sp.Rational(1, 2**q)
+    total = piece(h, sp.S.Zero, sp.Rational(1, 2)) + piece(compile_acb(g, _u), u0, sp.S.One)
+    ln_u0 = flint.arb(2).log() * -q
+    for k, c in consts.items():
+        # int_0^u0 ln^k u du = u0 sum_j (-1)^(k-j) k!/j! ln^j u0
+        closed = sum(flint.arb((-1) ** (k - j) * math.factorial(k) // math.factorial(j)) * ln_u0 ** j
+                     for j in range(k + 1))
+        total += to_acb(c) * to_acb(u0) * closed
     return total
 
 
@@ -937,6 +1201,16 @@ def _inside_branch(g):
         if dec is None:
             raise ArbUnsupported("the branch of a Piecewise is not decided on the substituted half piece")
     raise ArbUnsupported("no branch of the Piecewise holds on the substituted half piece")
+
+
+def _bounded_next_to(f, end, far) -> bool:
+    """Has ``f`` a finite ball on a short segment at ``end`` towards ``far``?"""
+    try:
+        e_b, f_b = to_acb(end), to_acb(far)
+        seg = e_b.real.union((e_b + (f_b - e_b) * flint.arb(2) ** -30).real)
+        return f(flint.acb(seg), False).is_finite()
+    except (ZeroDivisionError, ValueError, TypeError, ArbUnsupported):
+        return False
 
 
 def _ends_bounded(f, lo, hi):

@@ -32,13 +32,35 @@ def test_piecewise_switch_between_the_given_points_is_still_enclosed():
             assert r.contains(mpmath.mpf(exact.p) / exact.q)
 
 
-def test_log_end_point_falls_back_to_mpmath_and_says_why():
-    # int_0^1 s acosh(2/s) ds: ball arithmetic cannot bound acosh(2/s) at s = 0
+def test_log_end_point_is_certified_and_a_planted_value_is_left_out():
+    # int_0^1 s acosh(2/s) ds: acosh(2/s) = -ln s + ln(2 + sqrt(4 - s^2)) has no finite ball at
+    # s = 0; the integrator splits the logarithm symbolically and integrates ln s in closed form
     r = integrate(t * sp.acosh(2 / t), t, [0, 1], dps=30)
+    assert r.method == ARB and r.digits >= 30
+    with mpmath.workdps(60):
+        ref = mpmath.quad(lambda s: s * mpmath.acosh(2 / s), [0, mpmath.mpf(1) / 2**40, 1])
+        assert r.contains(ref, mpmath.mpf(10)**-45)
+        assert not r.contains(ref + mpmath.mpf(10)**-35)
+    # ln^2 at 0 (the wedge's pressure under the Flamant kernel's ln s), and oo - oo at an inner
+    # point where two logarithms cancel (the rounded punch's pressure at the end of its flat)
+    third = sp.Rational(1, 3)
+    for f, pts in ((sp.acosh(2 / t) * sp.log(t), [0, 1]),
+                   (t * sp.log(sp.Abs(sp.sin(t + third) / sp.sin(t - third)))
+                    + third * sp.log(sp.Abs(sp.tan(t / 2 - third / 2))), [0, third, 1])):
+        r = integrate(f, t, pts, dps=40)
+        assert r.method == ARB and r.digits >= 40
+        with mpmath.workdps(60):
+            g = sp.lambdify(t, f, "mpmath")
+            ref = mpmath.quad(g, [mpmath.mpf(p) for p in pts])
+            assert r.contains(ref, mpmath.mpf(10)**-48) and not r.contains(ref + mpmath.mpf(10)**-35)
+
+
+def test_singular_end_neither_route_removes_falls_back_to_mpmath_and_says_why():
+    # t^(-1/3) ln t: neither t = u^2 nor the subtraction of the logarithm leaves a finite ball
+    r = integrate(t ** sp.Rational(-1, 3) * sp.log(t), t, [0, 1], dps=30)
     assert r.method == MPMATH and r.rad == 0 and "singularity" in r.note
     with mpmath.workdps(40):
-        ref = mpmath.quad(lambda s: s * mpmath.acosh(2 / s), [0, 1])
-        assert abs(r - ref) < mpmath.mpf(10)**-28
+        assert abs(r - mpmath.mpf(-9) / 4) < mpmath.mpf(10)**-20
 
 
 def test_refvalue_is_a_number_and_pickles():
