@@ -360,6 +360,13 @@ def compile_acb(expr, var, holomorphic: bool = True):
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
     acb, arb = flint.acb, flint.arb
     symbols = tuple(index)
+    # subexpressions in the variables that occur more than once (the
+    # pressure's asin(x/a) in four places) are evaluated once per ball
+    seen: dict = {}
+    for node in sp.preorder_traversal(expr):
+        if not node.is_Atom and node.has(*symbols):
+            seen[node] = seen.get(node, 0) + 1
+    built: dict = {}
 
     def build(e):
         if e in index:
@@ -367,7 +374,26 @@ def compile_acb(expr, var, holomorphic: bool = True):
             return (lambda z, an: z) if i is None else (lambda z, an: z[i])
         if symbols and not e.has(*symbols):
             return constant(build_node(e))
+        if seen.get(e, 0) > 1:
+            if e not in built:
+                built[e] = shared(build_node(e))
+            return built[e]
         return build_node(e)
+
+    def shared(f):
+        """A repeated subexpression: its ball for the last (ball, mode,
+        precision) it was asked for is kept (the ball itself is held, so
+        its identity names it)."""
+        last = [None, None, None, None]
+
+        def g(z, an):
+            prec = flint.ctx.prec
+            if last[0] is z and last[1] == an and last[2] == prec:
+                return last[3]
+            v = f(z, an)
+            last[:] = [z, an, prec, v]
+            return v
+        return g
 
     def constant(f):
         """A subexpression free of the variables: its ball computed once per
@@ -500,7 +526,11 @@ def compile_acb(expr, var, holomorphic: bool = True):
             return lambda z, an: op(fx(z, an), an)
         if isinstance(e, _RealAbs):
             fx = build(e.args[0])
-            return lambda z, an: _UNARY[sp.Abs](fx(z, an), an)
+
+            def real_abs(z, an):
+                v = fx(z, an)
+                return _UNARY[sp.Abs](v, an) if v.imag.is_zero() else _nan()
+            return real_abs
         if isinstance(e, _Slope):
             if e.args[2] not in index:
                 raise ArbUnsupported("a mean-value quotient in a variable that is not the integrand's one")
@@ -961,11 +991,13 @@ class _RealAbs(sp.Function):
     """|x| of a real x, whose derivative is sign(x) x' (SymPy's Abs of an
     expression not known to be real differentiates into re and im): only in
     the derivative that bounds a coefficient of a logarithmic end point
-    (:func:`_log_end`; its integrand is real)."""
+    (:func:`_log_end`).  On balls it is non-finite unless x is real (its
+    ball's imaginary part exactly 0), so the rule holds wherever it gives
+    a bound."""
     nargs = 1
 
     def fdiff(self, argindex=1):
-        return sp.sign(self.args[0])
+        return self.args[0] / self
 
 
 def _slope(F, dF, i):
@@ -995,19 +1027,19 @@ _LOG_END_POWER = 8
 
 def _order_at_zero(F, u):
     """The power m of u with which F vanishes (m > 0) or blows up (m < 0) at
-    u = 0+, read from two values at 60 digits (a hint only: whatever m is,
-    ln|F| = m ln u + ln|F u^-m| holds; a wrong m leaves a quotient that
-    ball arithmetic cannot bound, and the route fails)."""
-    f = sp.lambdify(u, F, "mpmath")      # a plain one: the values are a hint
-    with workdps(60):
-        try:
-            v1, v2 = abs(f(mpmath.mpf(10) ** -12)), abs(f(mpmath.mpf(10) ** -24))
-        except (ZeroDivisionError, ValueError, TypeError):
-            return None
-        if not (mpmath.isfinite(v1) and mpmath.isfinite(v2)) or v1 == 0 or v2 == 0:
-            return None
-        m = -mpmath.log10(v2 / v1) / 12
-    k = int(mpmath.nint(m))
+    u = 0+, read from its balls at u = 2^-40 and 2^-80 (a hint only:
+    whatever m is, ln|F| = m ln u + ln|F u^-m| holds; a wrong m leaves a
+    quotient that ball arithmetic cannot bound, and the route fails)."""
+    try:
+        f = compile_acb(F, u)
+        with flint.ctx.workprec(320):
+            v1, v2 = (f(flint.acb(flint.arb(2) ** -e), False).abs_lower() for e in (40, 80))
+            if not (v1 > 0 and v2 > 0 and v1.is_finite() and v2.is_finite()):
+                return None
+            m = float((v1 / v2).log() / (flint.arb(2).log() * 40))
+    except (ArbUnsupported, ZeroDivisionError, ValueError, TypeError):
+        return None
+    k = round(m)
     return k if abs(m - k) < 0.05 else None
 
 
@@ -1036,6 +1068,8 @@ def _split_log(arg, absolute, u, L):
         if not _finite_next_to_zero(q, u):
             q = sp.cancel(sp.together(q))
         if not _finite_next_to_zero(q, u):
+            q = _conjugate_quotient(base, u, m)
+        if q is None or not _finite_next_to_zero(q, u):
             # a simple zero: F(u)/u by the mean value theorem
             if m != 1 or base.xreplace({u: sp.S.Zero}) != 0 or \
                     base.has(sp.Abs, sp.sign, sp.Heaviside, sp.Piecewise, sp.Min, sp.Max):
@@ -1045,6 +1079,21 @@ def _split_log(arg, absolute, u, L):
                 return None
         out += ex * (m * L + (sp.log(sp.Abs(q)) if absolute else sp.log(q)))
     return out
+
+
+def _conjugate_quotient(base, u, m):
+    """F u^-m for F = P + Q sqrt(R) (one square root in u) rationalised:
+    (P^2 - Q^2 R) u^-m / (P - Q sqrt(R)), whose numerator cancels the power
+    of u (1 - sqrt(1 - u^2) = u^2/(1 + sqrt(1 - u^2))); None for another F."""
+    roots = {z for z in base.atoms(sp.Pow) if z.exp == sp.S.Half and z.base.has(u)}
+    if len(roots) != 1:
+        return None
+    r = roots.pop()
+    conj = base.xreplace({r: -r})
+    num = sp.expand(base * conj)
+    if num.has(r):
+        return None
+    return sp.cancel(num * u**-m) / conj
 
 
 def _unsigned(f):
@@ -1090,23 +1139,25 @@ def _log_end(integrand, var, end, far, piece):
     bisection refines.  :class:`ArbUnsupported` where the integrand does
     not take that form."""
     d = far - end
-    L = sp.Dummy("L")
+    L, w = sp.Dummy("L"), sp.Dummy("w")
     try:
-        g = _inside_branch(sp.piecewise_fold(integrand.xreplace({var: end + d * _u}) * d))
+        # the integrand in a variable without assumptions (SymPy's sign
+        # queries on a positive one cost more than the integral); only the
+        # logarithms' arguments are analysed with u > 0
+        g = _inside_branch(sp.piecewise_fold(integrand.xreplace({var: end + d * w}) * d), w)
         g = g.replace(lambda z: isinstance(z, (sp.acosh, sp.asinh, sp.atanh)), lambda z: z.rewrite(sp.log))
-        g = _normal_radicands(g, _u)
         logs = {}
         for lg in g.atoms(sp.log):
             arg = lg.args[0]
             absolute = all(isinstance(b, sp.Abs) or (b.is_number and b.is_positive)
                            for b in (f.base if f.is_Pow and f.exp.is_Integer else f for f in sp.Mul.make_args(arg)))
             inner = sp.Mul(*[_unsigned(f) for f in sp.Mul.make_args(arg)]) if absolute else arg
-            if not inner.has(_u):
+            if not inner.has(w):
                 continue
-            split = _split_log(inner, absolute, _u, L)
+            split = _split_log(_normal_radicands(inner.xreplace({w: _u}), _u), absolute, _u, L)
             if split is None:
                 raise ArbUnsupported(f"the logarithm {lg} has no quotient finite at the end point")
-            logs[lg] = split
+            logs[lg] = split.xreplace({_u: w})
         if not logs:
             raise ArbUnsupported("no logarithm at the end point")
         expanded = sp.expand_mul(g.xreplace(logs))
@@ -1125,26 +1176,26 @@ def _log_end(integrand, var, end, far, piece):
             continue
         if A.has(_Slope):
             raise ArbUnsupported("a coefficient of the logarithm needs a mean-value quotient")
-        c = A.xreplace({_u: sp.S.Zero})
+        c = A.xreplace({w: sp.S.Zero})
         if c.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or not c.is_number:
             raise ArbUnsupported("a coefficient of the logarithm has no value at the end point")
         consts[k] = c
         bounds.append((k, compile_acb(sp.diff(A.replace(lambda z: isinstance(z, sp.Abs), lambda z: _RealAbs(z.args[0])),
-                                              _u), _u)))
-    f0 = compile_acb(coef.get(0, sp.S.Zero), _u)
+                                              w), w)))
+    f0 = compile_acb(coef.get(0, sp.S.Zero), w)
     kmax = max(consts, default=0)
     # the split form, A_k(u) - c_k and ln u = L apart: composed with u = v^q
     # below, no function's cut is met by a ball that winds around u = 0
     split = compile_acb(coef.get(0, sp.S.Zero) + sum((A - consts[k]) * L**k for k, A in coef.items() if k),
-                        [_u, L])
+                        [w, L])
     q = _LOG_END_POWER
 
-    def crude(w):
-        """The split integrand on a real ball w of u that reaches 0."""
-        dd = w.real.upper()
+    def crude(ub):
+        """The split integrand on a real ball ub of u that reaches 0."""
+        dd = ub.real.upper()
         if not dd < flint.arb(-kmax).exp():
             return _nan()
-        hull = flint.acb(w.real.union(flint.arb(0)))
+        hull = flint.acb(ub.real.union(flint.arb(0)))
         b = f0(hull, False)
         if not b.is_finite():
             return _nan()
@@ -1162,14 +1213,14 @@ def _log_end(integrand, var, end, far, piece):
     def h(z, an):
         # u = v^q on [0, u0]: the integrand vanishes like v^(q-1) |ln v|^k at
         # v = 0, so few bisections reach the tolerance there
-        w = z ** q
+        ub = z ** q
         if not an and z.imag.is_zero() and 0 in z.real:
-            v = crude(w)
+            v = crude(ub)
         else:
-            v = split((w, q * z.log(analytic=an == ANALYTIC)), an)
+            v = split((ub, q * z.log(analytic=an == ANALYTIC)), an)
         return v * q * z ** (q - 1)
     u0 = sp.Rational(1, 2**q)
-    total = piece(h, sp.S.Zero, sp.Rational(1, 2)) + piece(compile_acb(g, _u), u0, sp.S.One)
+    total = piece(h, sp.S.Zero, sp.Rational(1, 2)) + piece(compile_acb(g, w), u0, sp.S.One)
     ln_u0 = flint.arb(2).log() * -q
     for k, c in consts.items():
         # int_0^u0 ln^k u du = u0 sum_j (-1)^(k-j) k!/j! ln^j u0
@@ -1179,7 +1230,7 @@ def _log_end(integrand, var, end, far, piece):
     return total
 
 
-def _inside_branch(g):
+def _inside_branch(g, u=_u):
     """A Piecewise integrand of a substituted half piece (u in [0, 1], the
     singular end at u = 0, which is a break point of the caller) replaced
     by the branch that holds on all of [2**-20, 1] (decided on a ball: the
@@ -1194,7 +1245,7 @@ def _inside_branch(g):
     for expr, cond in g.args:
         if cond == sp.true:
             return expr
-        test = _condition(cond, lambda e: compile_acb(e, _u))
+        test = _condition(cond, lambda e: compile_acb(e, u))
         dec = test(span)
         if dec is True:
             return expr
