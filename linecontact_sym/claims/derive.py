@@ -22,7 +22,8 @@ from ..core.budget import run_with_budget
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import ClaimError, DomainError, LineContactError
 from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_magnitude,
-                         flamant_relative_displacement, flamant_resultant, griffith_punch_force, num_eval, numeric_minimum, resolution)
+                         flamant_relative_displacement, flamant_resultant, frozen_lambdify, griffith_punch_force, num_eval,
+                         numeric_minimum, resolution)
 from .memo import point_key, remember, remembered
 from .results import REQUIRED_DIGITS, PointResult
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
@@ -392,7 +393,7 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
     def minimum(vals, dps):
         fixed = {k: v for k, v in vals.items() if k != S.a}
         Pf = sp.lambdify(S.a, Pexpr.xreplace(fixed), "mpmath")
-        dPf = sp.lambdify(S.a, dPexpr.xreplace(fixed), "mpmath")
+        dPf = frozen_lambdify(dPexpr.xreplace(fixed), S.a, dps + 10)     # thousands of calls in the scan
         m = numeric_minimum(Pf, dPf, 1, dps)
         if m is None:
             raise DerivedUndefined("P(a) of Eq. (33) has no minimum over a > 0: no pull-off force exists")

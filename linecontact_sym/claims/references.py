@@ -20,6 +20,7 @@ quadrature helpers of :mod:`linecontact_sym.core.quadrature`.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import mpmath
@@ -499,15 +500,49 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
         return (+(2 * val), +(2 * err)) if with_error else +(2 * val)
 
 
+def frozen_lambdify(expr, var, dps):
+    """An mpmath callable of ``expr`` in ``var`` whose subexpressions free of
+    ``var`` (Z_n's gamma(n/2 - 1/2)/gamma(n/2), sqrt(pi), sqrt(2 pi gamma E*))
+    are evaluated once, at ``dps`` digits, not at each of the thousands of
+    calls a scan makes."""
+    consts = {}
+
+    def fold(e):
+        if not e.has(var):
+            if e.is_Atom or e.is_Rational:
+                return e
+            d = consts.get(e)
+            if d is None:
+                d = consts[e] = sp.Dummy()
+            return d
+        if e.is_Atom or not e.args:
+            return e
+        return e.func(*[fold(t) for t in e.args])
+    folded = fold(expr)
+    dummies = list(consts.values())
+    with workdps(dps):
+        values = [sp.lambdify([], c, "mpmath")() for c in consts]
+    f = sp.lambdify([var] + dummies, folded, "mpmath")
+    return lambda x: f(x, *values)
+
+
+@functools.lru_cache(maxsize=8)
+def _quarter_decades(scale, dps):
+    """scale * 10^(k/4), k = -1200..1200, at ``dps`` digits: quarter decades
+    from 1e-300 to 1e300 (near an existence bound, n -> 1/2 for a power law,
+    the minimum moves out to astronomically small or large a).  Built once
+    per (scale, digits): 2,401 powers cost more than a scan."""
+    with workdps(dps):
+        return tuple(scale * mpmath.mpf(10) ** (k / mpmath.mpf(4)) for k in range(-1200, 1201))
+
+
 # TODO(registry): use contacts.force_law (the integrator replaces this third copy of a 1-D minimum finder)
 def numeric_minimum(P, dP, scale, dps=DPS):
     """(a*, P(a*)) of the smallest local minimum of P(a) for a > 0, located
     from the sign change of dP/da (- to +) on a logarithmic grid; None when
     P has no minimum (the pull-off does not exist)."""
     with workdps(dps + 10):
-        # quarter decades from 1e-300 to 1e300: near an existence bound (n -> 1/2
-        # for a power law) the minimum moves out to astronomically small or large a
-        grid = [mpmath.mpf(scale) * mpmath.mpf(10) ** (k / mpmath.mpf(4)) for k in range(-1200, 1201)]
+        grid = _quarter_decades(mpmath.mpf(scale), dps + 10)
         prev = None
         for av in grid:
             try:
@@ -598,5 +633,5 @@ class Comparison:
 
 
 __all__ = ["DPS", "Undefined", "Divergent", "DerivedUndefined", "finite_real", "quad_integral", "num_eval",
-           "flamant_relative_displacement", "flamant_resultant", "flamant_magnitude", "resolution", "numeric_minimum", "griffith_punch_force",
+           "flamant_relative_displacement", "flamant_resultant", "flamant_magnitude", "resolution", "numeric_minimum", "frozen_lambdify", "griffith_punch_force",
            "Comparison"]
