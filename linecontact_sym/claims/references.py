@@ -10,9 +10,9 @@ critical force of a pulled punch is derived by two physical routes
 (:func:`numeric_minimum`).  :class:`Comparison` measures agreeing digits.
 
 Integrals of printed formulas go to the one reference integrator first
-(:func:`linecontact_sym.numeric.reference.integrate`: an Arb enclosure;
-a power t^beta, -1 < beta < 0, at t = 0 after t = (hi/2) u^q, a removable
-0/0 N(t)/t^k with its maximum-modulus bound); so do the Flamant integrals
+(:func:`linecontact_sym.numeric.reference.integrate`: an Arb enclosure,
+end-point powers and logarithms substituted or subtracted there; a
+removable 0/0 N(t)/t^k with its maximum-modulus bound); so do the Flamant integrals
 of a pressure given as a SymPy expression (the kernel's logarithmic points
 removed by :func:`~linecontact_sym.numeric.reference.log_point_integral`).
 Where Arb cannot enclose one, the tanh-sinh route runs, with the generic
@@ -130,10 +130,6 @@ def _arb_integral(f, var, lo, hi, dps):
             lo_b, hi_b, sign = hi_b, lo_b, -1
         with workdps(quad_dps(dps)):
             pts = [lo_b] + relational_breakpoints(f, var, to_mpf(lo_b), to_mpf(hi_b)) + [hi_b]
-        if lo_b == 0 and len(pts) == 2:
-            r = _power_end(f, var, hi_b, dps)
-            if r is not None:
-                return r if sign == 1 else -r
         crude = _removable_quotient(f, var) if lo_b == 0 else None
         if crude is not None and len(pts) == 2:
             pts = [lo_b, hi_b / 2, hi_b]    # the bound next to 0 on one piece, an end singularity on the other
@@ -143,43 +139,6 @@ def _arb_integral(f, var, lo, hi, dps):
     if not r.certified:
         return None
     return r if sign == 1 else -r
-
-
-def _power_end(f, var, hi, dps):
-    """int_0^hi of an integrand t^beta g(t) with a non-integer power
-    -1 < beta < 0 of t as a factor (a power law's t^(n-2) with n < 1 in
-    Eq. (10)/(16)), by Arb: on [0, hi/2], t = (hi/2) u^q with the integer
-    q >= 4/(1 + beta), which turns t^beta dt into u^(q (1 + beta) - 1) du,
-    a power >= 3 that ball arithmetic bounds next to u = 0 (a Float
-    exponent is its exact binary value, as the integrator reads every
-    Float); [hi/2, hi] as it stands.  A certified RefValue, or None (no
-    such factor, a divergent power, or Arb cannot enclose it)."""
-    f = f.xreplace({e: sp.Rational(e) for e in f.atoms(sp.Float)
-                    if any(pw.exp == e and pw.base == var for pw in f.atoms(sp.Pow))})
-    betas = [d.exp for d in sp.Mul.make_args(f) if d.is_Pow and d.base == var and d.exp.is_Rational
-             and not d.exp.is_Integer]
-    if len(betas) != 1 or not (-1 < betas[0] < 0):
-        return None
-    beta = betas[0]
-    q = int(sp.ceiling(4 / (1 + beta)))
-    if q > 2000:
-        return None
-    m = hi / 2
-    u = sp.Dummy("u", positive=True)
-    g = sp.powsimp(sp.expand_power_base(f.xreplace({var: m * u**q}) * q * m * u**(q - 1), force=False))
-    if g.has(var):
-        return None
-    try:
-        near = integrate(g, u, [sp.S.Zero, sp.S.One], dps + 2, fallback=lambda: mpmath.nan)
-        if not near.certified:
-            return None
-        far = integrate(f, var, [m, hi], dps + 2, fallback=lambda: mpmath.nan)
-        if not far.certified:
-            return None
-        r = lincomb([(1, near), (1, far)], dps)
-    except (ArbUnsupported, TypeError, ValueError, ZeroDivisionError):
-        return None
-    return r if r.certified else None
 
 
 def _removable_quotient(f, var):

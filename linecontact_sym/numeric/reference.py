@@ -926,10 +926,12 @@ _u = sp.Dummy("u", positive=True)
 def _substituted(integrand, var, lo, hi, piece):
     """The piece [lo, hi] whose integrand has an algebraic end-point
     singularity (1/sqrt(a^2 - t^2) at t = a, 1/sqrt(s^2 - b^2) behind a
-    break): split at the middle m and, on each half with a singular end e,
-    t = e + (m - e) u^2, u in [0, 1]: the radicands are factored, so that the
-    u^2 they vanish with comes out of the root and cancels the Jacobian
-    2 (m - e) u exactly (ball arithmetic cannot cancel 0/0 by itself).  A
+    break, a power t^beta, -1 < beta < 0, at 0): split at the middle m and,
+    on each half with a singular end e, t = e + (m - e) u^q, u in [0, 1],
+    q = 2 or from the end's power (:func:`_end_power`): the radicands are
+    factored, so that the u^q they vanish with comes out of the root and
+    cancels the Jacobian q (m - e) u^(q-1) (ball arithmetic cannot cancel
+    0/0 by itself).  A
     logarithmic end point (a log singularity, or logarithms whose infinities
     cancel there) goes to :func:`_log_end`.  A singularity that neither
     removes raises :class:`ArbUnsupported` (the fallback runs)."""
@@ -947,8 +949,9 @@ def _substituted(integrand, var, lo, hi, piece):
         ends = [(end, far) for end, far in ((e, other), (other, e)) if not _bounded_next_to(f, end, far)]
 
         def root_end(end, far):
+            f_end, q = _end_power(integrand, var, end)
             d = far - end
-            g = integrand.xreplace({var: end + d * _u**2}) * 2 * d * _u
+            g = f_end.xreplace({var: end + d * _u**q}) * q * d * _u**(q - 1)
             g = _inside_branch(sp.piecewise_fold(g))
             g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_u),
                           lambda z: sp.factor(z.base) ** z.exp)
@@ -974,6 +977,34 @@ def _substituted(integrand, var, lo, hi, piece):
                                  "subtraction of its logarithms removes")
         total += total_half
     return total
+
+
+def _end_power(integrand, var, end):
+    """(integrand, q) for the substitution t = e + d u^q at the end e: the
+    powers (t - e)^beta of the integrand's factors that vanish there (bases
+    B with B(e) = 0 exactly, a Float exponent read as its exact binary
+    value, as the compiler reads every Float) decide q: q = 2 where beta >=
+    -1/2 (1/sqrt), else the integer q >= 4/(1 + beta), which turns
+    (t - e)^beta dt into a power of u >= 3 that ball arithmetic bounds next
+    to u = 0 (a power law's t^(n-2), 1 < n < 2, in Eq. (10)); the radicands
+    are factored afterwards, so the u^q they vanish with leaves the root."""
+    end = sp.sympify(end)
+    floats = {z.exp: sp.Rational(z.exp) for z in integrand.atoms(sp.Pow)
+              if z.exp.is_Float and z.base.has(var) and z.base.xreplace({var: end}) == 0}
+    if floats:
+        integrand = integrand.xreplace(floats)
+    betas = [z.exp for z in integrand.atoms(sp.Pow)
+             if z.exp.is_Rational and not z.exp.is_Integer and z.base.has(var)
+             and z.base.xreplace({var: end}) == 0]
+    beta = min(betas, default=sp.S.Zero)
+    if beta <= -1:
+        raise ArbUnsupported(f"a power {beta} <= -1 at the end point: the integral diverges there")
+    if beta >= -sp.S.Half:
+        return integrand, 2
+    q = int(sp.ceiling(4 / (1 + beta)))
+    if q > 2000:
+        raise ArbUnsupported(f"the end point's power {beta} needs t = e + d u^{q}")
+    return integrand, q
 
 
 class _Slope(sp.Function):
