@@ -14,6 +14,10 @@ gap); the ordinate is written in the value of the quantity: ``P`` (force),
 :func:`curve_data` computes the normalised curves (NumPy only);
 :func:`plot_quantity` draws them (matplotlib, imported only then), with an
 optional lower panel holding the ratio of two curves, and writes PNG and PDF.
+A figure whose inputs (a SHA-256 of its numbers, labels and styles, this
+module's source and matplotlib's version) were drawn before into files that
+are still the bytes written then (their SHA-256, in a hidden record
+``.<stem>.drawn`` beside them) is not redrawn.
 """
 from __future__ import annotations
 
@@ -127,7 +131,6 @@ def plot_quantity(contacts, quantity: str = "force", *, x, y, x_range, values=No
     are the axis formulas in LaTeX (``$\\frac{a}{R}$``).  Returns the paths
     written, one per format.  Needs matplotlib (the ``[plot]`` extra).
     """
-    Figure = _figure_class()
     from ..core.printing import to_latex
     xlabel = xlabel or f"${to_latex(_axis_expr(x, where='x axis'))}$"     # the axis formulas, in LaTeX
     ylabel = ylabel or f"${to_latex(_axis_expr(y, quantity, where='y axis'))}$"
@@ -136,6 +139,13 @@ def plot_quantity(contacts, quantity: str = "force", *, x, y, x_range, values=No
     labels = list(labels or [None] * k)
     styles = list(styles or ["-"] * k)
     widths = list(widths or [1.5] * k)
+    out = Path(out_dir)
+    paths = [out / f"{stem}.{fmt}" for fmt in formats]
+    inputs = _drawing_inputs(X, curves, labels, styles, widths, title, xlabel, ylabel, y_min, y_max, marks, ratio,
+                             ratio_label, size, formats)
+    if _drawn_before(out, stem, inputs, paths):
+        return paths
+    Figure = _figure_class()
     if ratio is None:
         fig = Figure(figsize=size or (5.2, 3.8))
         ax, axr = fig.subplots(), None
@@ -169,14 +179,67 @@ def plot_quantity(contacts, quantity: str = "force", *, x, y, x_range, values=No
         bottom = axr
     bottom.set_xlabel(xlabel)
     bottom.set_xlim(X[0], X[-1])
-    out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    paths = []
-    for fmt in formats:
-        p = out / f"{stem}.{fmt}"
+    for p in paths:
         fig.savefig(p, dpi=150, bbox_inches="tight")
-        paths.append(p)
+    _record_drawing(out, stem, inputs, paths)
     return paths
+
+
+def _drawing_inputs(*parts) -> str:
+    """SHA-256 of everything a drawing depends on: the curves' numbers (their
+    bytes), every label, style and size, the source of this module and the
+    matplotlib version."""
+    import hashlib
+    from importlib.metadata import PackageNotFoundError, version
+    h = hashlib.sha256()
+    for part in parts:
+        if isinstance(part, np.ndarray):
+            h.update(np.ascontiguousarray(part, dtype=float).tobytes())
+        elif isinstance(part, list) and part and isinstance(part[0], np.ndarray):
+            for arr in part:
+                h.update(np.ascontiguousarray(arr, dtype=float).tobytes())
+        else:
+            h.update(repr(part).encode())
+        h.update(b"\x00")
+    h.update(Path(__file__).read_bytes())
+    try:
+        h.update(version("matplotlib").encode())
+    except PackageNotFoundError:
+        pass
+    return h.hexdigest()
+
+
+def _record_path(out, stem):
+    return out / f".{stem}.drawn"
+
+
+def _drawn_before(out, stem, inputs, paths) -> bool:
+    """Were these very inputs drawn into ``paths`` before, and are the files
+    still what was written then (each file's SHA-256 checked against the
+    record)?  Then the figure is not redrawn (nor matplotlib imported)."""
+    import hashlib
+    import json
+    try:
+        rec = json.loads(_record_path(out, stem).read_text())
+        if not isinstance(rec, dict) or rec.get("inputs") != inputs:
+            return False
+        files = rec.get("files")
+        if not isinstance(files, dict) or set(files) != {p.name for p in paths}:
+            return False
+        return all(hashlib.sha256(p.read_bytes()).hexdigest() == files[p.name] for p in paths)
+    except (OSError, ValueError):
+        return False
+
+
+def _record_drawing(out, stem, inputs, paths) -> None:
+    import hashlib
+    import json
+    try:
+        rec = {"inputs": inputs, "files": {p.name: hashlib.sha256(p.read_bytes()).hexdigest() for p in paths}}
+        _record_path(out, stem).write_text(json.dumps(rec))
+    except OSError:          # no record: the next call draws again
+        pass
 
 
 __all__ = ["VALUE_SYMBOLS", "curve_data", "plot_quantity"]

@@ -84,6 +84,30 @@ def test_plot_quantity_writes_png_and_pdf_with_a_ratio_panel(tmp_path):
     assert paths[0].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and paths[1].read_bytes()[:5] == b"%PDF-"
 
 
+def test_a_figure_is_redrawn_only_when_its_inputs_or_its_files_changed(tmp_path, monkeypatch):
+    pytest.importorskip("matplotlib")
+    from linecontact_sym.views import plots
+    law = _Law(lambda a, R, E_star: a**2, ["a", "R", "E_star"])
+    kw = dict(x="a/R", y="P/(E_star*R)", x_range=(0, 1), points=11, values={"R": 1, "E_star": 1},
+              out_dir=tmp_path, stem="demo")
+    paths = plot_quantity([law], "force", **kw)
+    first = [p.read_bytes() for p in paths]
+
+    def no_drawing():
+        raise AssertionError("redrawn")
+    monkeypatch.setattr(plots, "_figure_class", no_drawing)
+    assert plot_quantity([law], "force", **kw) == paths            # same inputs, files intact: not redrawn
+    with pytest.raises(AssertionError, match="redrawn"):            # another curve: redrawn
+        plot_quantity([_Law(lambda a, R, E_star: 2 * a**2, ["a", "R", "E_star"])], "force", **kw)
+    with pytest.raises(AssertionError, match="redrawn"):            # another label: redrawn
+        plot_quantity([law], "force", labels=["other"], **kw)
+    paths[0].write_bytes(first[0][:-1] + b"!")                      # a file changed since: redrawn
+    with pytest.raises(AssertionError, match="redrawn"):
+        plot_quantity([law], "force", **kw)
+    monkeypatch.undo()
+    assert [p.read_bytes()[:4] for p in plot_quantity([law], "force", **kw)] == [b[:4] for b in first]
+
+
 def test_popov2017_figures_are_data():
     paper = spec.load_paper("popov2017")
     figs = {f.file: f for f in paper.figures}
