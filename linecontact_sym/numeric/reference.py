@@ -988,7 +988,7 @@ def _end_power(integrand, var, end):
     (t - e)^beta dt into a power of u >= 3 that ball arithmetic bounds next
     to u = 0 (a power law's t^(n-2), 1 < n < 2, in Eq. (10)); the radicands
     are factored afterwards, so the u^q they vanish with leaves the root."""
-    end = sp.sympify(end)
+    end = sp.sympify(end, strict=True)
     floats = {z.exp: sp.Rational(z.exp) for z in integrand.atoms(sp.Pow)
               if z.exp.is_Float and z.base.has(var) and z.base.xreplace({var: end}) == 0}
     if floats:
