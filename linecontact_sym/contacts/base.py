@@ -431,6 +431,8 @@ class Contact:
 
             def domain(contact, vals):      # the contact passed per call: a copy's cache holds no other contact
                 return check_domain_scalar(contact, name, vals, plan)
+            if plan and plan[2] is None and plan[4] is None and plan[5] is None:
+                domain.bounds = dict(plan[1])   # bounds only: the plan may run them in its own loop
             fast = _numeric_evaluate("scalar_evaluator")(self, name, domain) or False
         self._caches()[("_evaluate", quantity)] = fast
         return fast

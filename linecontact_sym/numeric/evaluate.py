@@ -182,6 +182,8 @@ _CACHE = IdentityCache()
 
 #: plain Python numbers (neither arrays nor NumPy scalars): no conversion needed
 _PLAIN = frozenset((float, int))
+#: what a float64 closed form raises where it has no value (then the full path decides)
+_FAIL_F64 = (ValueError, ZeroDivisionError, OverflowError, TypeError)
 
 
 def _as_float(v):
@@ -504,9 +506,19 @@ _FLOAT64_NOTE = ("stable float64 export; estimate {:g} eps max(1, kappa, cancell
 
 
 def _float64_result(quantity, v, est, rtol, factor, kappa, cancel, qerr, t0):
-    return Evaluation(quantity, v, "float64", est, rtol,
-                      note=(_FLOAT64_NOTE, factor, kappa, cancel, f" + quadrature {qerr:.1e}" if qerr else ""),
-                      seconds=time.perf_counter() - t0, details={"kappa": kappa, "cancellation": cancel})
+    # the Evaluation's fields set in one step (the dataclass __init__ with its defaults cost
+    # as much as the parabola's whole float64 path); the same object as
+    # Evaluation(quantity, v, "float64", est, rtol, note=..., seconds=..., details=...)
+    r = _new(Evaluation)
+    r.__dict__ = {"quantity": quantity, "value": v, "path": "float64", "error": est, "rtol": rtol,
+                  "certified": False, "enclosure": None,
+                  "_note": (_FLOAT64_NOTE, factor, kappa, cancel, f" + quadrature {qerr:.1e}" if qerr else ""),
+                  "seconds": time.perf_counter() - t0, "details": {"kappa": kappa, "cancellation": cancel},
+                  "unit": None}
+    return r
+
+
+_new = object.__new__
 
 
 def _float64_step(d, kit, quantity, vals, rtol, t0, notes):
@@ -558,7 +570,14 @@ def scalar_evaluator(contact, quantity: str, domain):
         m = _model(contact)
         if m is not None and m.name_set != name_set:
             m = None
-    plain, clock = _PLAIN, time.perf_counter
+    plain, clock, inf = _PLAIN, time.perf_counter, math.inf
+    # a domain check that is bounds only (``domain.bounds``: name -> 'positive', 'nonnegative' or
+    # 'any', set by the contacts layer) is run in the loop that reads the values; a point that
+    # fails a bound takes the full check below, which raises the error naming it
+    bounds = getattr(domain, "bounds", None)
+    checks = None
+    if bounds is not None and name_set <= bounds.keys():
+        checks = tuple((n, {"positive": 0, "nonnegative": 1}.get(bounds[n], 2)) for n in names)
     # a monomial with no sums to probe (the parabola's pi E* a^2/(4 R)): kappa
     # (sum of |exponents|, every argument nonzero) and the cancellation (1) are
     # numbers, so the float64 estimate is c |value| with c found here
@@ -566,17 +585,44 @@ def scalar_evaluator(contact, quantity: str, domain):
     kappa0 = kit.monomial_kappa if kit.probe is None else None
     c0 = FLOAT64_FACTOR * EPS * max(1.0, kappa0, 1.0) if kappa0 is not None else None
 
+    lean = checks is not None and m is None and c0 is not None
+    f, n_names, fail = kit.f, len(names), _FAIL_F64
+
     def fast(contact, rtol, values):
         if rtol is None:
             rtol = 1e-12
         elif rtol.__class__ is not float or not 1e-14 <= rtol < 1:
             return None
+        t0 = clock()
+        if lean and len(values) == n_names:
+            # the whole call in one pass (a monomial with a bounds-only domain check: the
+            # parabola's pi E* a^2/(4 R)): names, number types, bounds, value, estimate
+            vals = []
+            for n, low in checks:
+                v = values.get(n, values)
+                c = v.__class__
+                if c is not float:
+                    if c is not int:
+                        break                           # a missing name, another number type
+                    v = float(v)
+                if not (0.0 < v < inf if low == 0 else (0.0 <= v < inf if low == 1 else -inf < v < inf)):
+                    break                               # out of bounds: the full check names it
+                vals.append(v)
+            else:
+                if 0.0 not in vals:
+                    try:
+                        v = float(f(*vals))
+                    except fail:
+                        v = 0.0
+                    if v and v - v == 0:                # finite and nonzero
+                        est = c0 * abs(v)
+                        if est <= rtol * abs(v):
+                            return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
         if values.keys() != name_set:
             return None
         for v in values.values():
             if v.__class__ not in plain:
                 return None
-        t0 = clock()
         values = domain(contact, values)
         if m is not None:
             res = _try_model(m, quantity, values, rtol, t0)
