@@ -67,7 +67,7 @@ from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
 from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, lambdify_mpmath,
                       lambdify_mpmath_quad, compile_callable, stable_form)
-from .fastpath import scalar_kit, vector_float64
+from .fastpath import bounds_reader, scalar_kit, vector_float64
 from .switches import safe_step, switch_near_end
 from .quadrature import VectorQuad
 from ..core.precision import checked_dps, held_digits, workdps
@@ -570,23 +570,17 @@ def scalar_evaluator(contact, quantity: str, domain):
         m = _model(contact)
         if m is not None and m.name_set != name_set:
             m = None
-    plain, clock, inf = _PLAIN, time.perf_counter, math.inf
-    # a domain check that is bounds only (``domain.bounds``: name -> 'positive', 'nonnegative' or
-    # 'any', set by the contacts layer) is run in the loop that reads the values; a point that
-    # fails a bound takes the full check below, which raises the error naming it
-    bounds = getattr(domain, "bounds", None)
-    checks = None
-    if bounds is not None and name_set <= bounds.keys():
-        checks = tuple((n, {"positive": 0, "nonnegative": 1}.get(bounds[n], 2)) for n in names)
+    plain, clock = _PLAIN, time.perf_counter
     # a monomial with no sums to probe (the parabola's pi E* a^2/(4 R)): kappa
     # (sum of |exponents|, every argument nonzero) and the cancellation (1) are
     # numbers, so the float64 estimate is c |value| with c found here
     value = kit.value
     kappa0 = kit.monomial_kappa if kit.probe is None else None
     c0 = FLOAT64_FACTOR * EPS * max(1.0, kappa0, 1.0) if kappa0 is not None else None
-
-    lean = checks is not None and m is None and c0 is not None
-    f, n_names, fail = kit.f, len(names), _FAIL_F64
+    # a domain check that is bounds only (``domain.bounds``, set by the contacts layer) is read in
+    # one pass with the values (fastpath.bounds_reader); any other point takes the full check below
+    read = bounds_reader(getattr(domain, "bounds", None), names) if m is None and c0 is not None else None
+    f, fail = kit.f, _FAIL_F64
 
     def fast(contact, rtol, values):
         if rtol is None:
@@ -594,30 +588,19 @@ def scalar_evaluator(contact, quantity: str, domain):
         elif rtol.__class__ is not float or not 1e-14 <= rtol < 1:
             return None
         t0 = clock()
-        if lean and len(values) == n_names:
-            # the whole call in one pass (a monomial with a bounds-only domain check: the
-            # parabola's pi E* a^2/(4 R)): names, number types, bounds, value, estimate
-            vals = []
-            for n, low in checks:
-                v = values.get(n, values)
-                c = v.__class__
-                if c is not float:
-                    if c is not int:
-                        break                           # a missing name, another number type
-                    v = float(v)
-                if not (0.0 < v < inf if low == 0 else (0.0 <= v < inf if low == 1 else -inf < v < inf)):
-                    break                               # out of bounds: the full check names it
-                vals.append(v)
-            else:
-                if 0.0 not in vals:
-                    try:
-                        v = float(f(*vals))
-                    except fail:
-                        v = 0.0
-                    if v and v - v == 0:                # finite and nonzero
-                        est = c0 * abs(v)
-                        if est <= rtol * abs(v):
-                            return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
+        if read is not None:
+            # a monomial with a bounds-only domain check (the parabola's pi E* a^2/(4 R)): the point
+            # read in one pass, the value, the estimate
+            vals = read(values)
+            if vals is not None and 0.0 not in vals:
+                try:
+                    v = float(f(*vals))
+                except fail:
+                    v = 0.0
+                if v and v - v == 0:                    # finite and nonzero
+                    est = c0 * abs(v)
+                    if est <= rtol * abs(v):
+                        return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
         if values.keys() != name_set:
             return None
         for v in values.values():

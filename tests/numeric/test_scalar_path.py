@@ -209,3 +209,18 @@ def test_monomial_one_pass_is_the_general_path():
         with pytest.raises(LineContactError) as e2:
             evaluate(c, "force", rtol=1e-12, **vals)
         assert (type(e1.value), str(e1.value)) == (type(e2.value), str(e2.value)), vals
+    # the parabola's exports, checked and unchecked, read a point in one pass
+    # (fastpath.bounds_reader): the NumPy path's value, the same errors
+    for check in (True, False):
+        fx = c.to_numeric("force", check=check)
+        for vals in good:
+            ref = np.asarray(fx(**{k: np.asarray([v], dtype=float) for k, v in vals.items()}))[0]
+            got = fx(**vals)
+            assert type(got) is np.float64 and got == ref, (check, vals)
+    fx = c.to_numeric("force")
+    for vals in bad:
+        with pytest.raises(LineContactError) as e1:
+            fx(**vals)
+        with pytest.raises(LineContactError) as e2:
+            c.evaluate("force", rtol=1e-12, **vals)
+        assert type(e1.value) is type(e2.value), vals
