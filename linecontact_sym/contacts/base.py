@@ -714,7 +714,7 @@ class DomainCheck:
         """name -> 'positive', 'nonnegative' or 'any' where this check is
         bounds only (no condition, no inside/outside test, no admissibility
         test), else None: an export may then read a point in one pass
-        (:func:`~linecontact_sym.numeric.fastpath.bounds_reader`)."""
+        (:func:`~linecontact_sym.numeric.fastpath.one_pass`)."""
         return _bounds_only(self._scalar_plan())
 
     def __getstate__(self):

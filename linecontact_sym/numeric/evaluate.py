@@ -67,7 +67,7 @@ from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
 from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, lambdify_mpmath,
                       lambdify_mpmath_quad, compile_callable, stable_form)
-from .fastpath import bounds_reader, scalar_kit, vector_float64
+from .fastpath import one_pass, scalar_kit, vector_float64
 from .switches import safe_step, switch_near_end
 from .quadrature import VectorQuad
 from ..core.precision import checked_dps, held_digits, workdps
@@ -182,8 +182,6 @@ _CACHE = IdentityCache()
 
 #: plain Python numbers (neither arrays nor NumPy scalars): no conversion needed
 _PLAIN = frozenset((float, int))
-#: what a float64 closed form raises where it has no value (then the full path decides)
-_FAIL_F64 = (ValueError, ZeroDivisionError, OverflowError, TypeError)
 
 
 def _as_float(v):
@@ -577,10 +575,9 @@ def scalar_evaluator(contact, quantity: str, domain):
     value = kit.value
     kappa0 = kit.monomial_kappa if kit.probe is None else None
     c0 = FLOAT64_FACTOR * EPS * max(1.0, kappa0, 1.0) if kappa0 is not None else None
-    # a domain check that is bounds only (``domain.bounds``, set by the contacts layer) is read in
-    # one pass with the values (fastpath.bounds_reader); any other point takes the full check below
-    read = bounds_reader(getattr(domain, "bounds", None), names) if m is None and c0 is not None else None
-    f, fail = kit.f, _FAIL_F64
+    # a domain check that is bounds only (``domain.bounds``, set by the contacts layer): the point
+    # read and the value found in one pass (fastpath.one_pass); any other point takes the full path
+    one = one_pass(getattr(domain, "bounds", None), names, kit.f) if m is None and c0 is not None else None
 
     def fast(contact, rtol, values):
         if rtol is None:
@@ -588,19 +585,13 @@ def scalar_evaluator(contact, quantity: str, domain):
         elif rtol.__class__ is not float or not 1e-14 <= rtol < 1:
             return None
         t0 = clock()
-        if read is not None:
-            # a monomial with a bounds-only domain check (the parabola's pi E* a^2/(4 R)): the point
-            # read in one pass, the value, the estimate
-            vals = read(values)
-            if vals is not None and 0.0 not in vals:
-                try:
-                    v = float(f(*vals))
-                except fail:
-                    v = 0.0
-                if v and v - v == 0:                    # finite and nonzero
-                    est = c0 * abs(v)
-                    if est <= rtol * abs(v):
-                        return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
+        if one is not None:
+            # a monomial (the parabola's pi E* a^2/(4 R)): its estimate is c0 |value|
+            v = one(values)
+            if v:
+                est = c0 * abs(v)
+                if est <= rtol * abs(v):
+                    return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
         if values.keys() != name_set:
             return None
         for v in values.values():

@@ -38,7 +38,7 @@ from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, 
                       cancellation_sums, compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
-__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "bounds_reader", "STEP"]
+__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "one_pass", "STEP"]
 
 #: relative step of the central differences for kappa
 STEP = 1e-6
@@ -258,27 +258,27 @@ def vector_float64(d, names, arrays):
     return v, kappa, cancel
 
 
-_BOUND = {"positive": 0, "nonnegative": 1}     # else 2: any finite number
-
-
-def bounds_reader(bounds, names):
+def one_pass(bounds, names, f):
     """For a domain check that is bounds only (``bounds``: name ->
     'positive', 'nonnegative' or 'any', as the contacts layer's scalar plan
-    has them; None: not bounds only), a one-pass reader of a point: ``read(values)``
-    is the list of the values as floats in ``names`` order when ``values`` has
-    exactly these names, each a Python float or int within its bound, else
-    None (the caller then takes its full path, whose check names the
-    problem).  None where ``bounds`` is None or does not cover ``names``."""
+    has them; None: not bounds only), the scalar function ``f`` (positional
+    floats in ``names`` order) called in one pass over a point:
+    ``value(values)`` is f's finite float value when ``values`` has exactly
+    these names, each a Python float or int within its bound and none 0,
+    else None (the caller then takes its full path, whose check names the
+    problem, and which patches a removable point at 0).  None where
+    ``bounds`` is None or does not cover ``names``."""
     if bounds is None or not frozenset(names) <= bounds.keys():
         return None
-    checks = tuple((n, _BOUND.get(bounds[n], 2)) for n in names)
+    checks = tuple((n, bounds[n] in ("positive", "nonnegative")) for n in names)
     n_names, inf, missing = len(names), math.inf, object()
+    fail = (ValueError, ZeroDivisionError, OverflowError, TypeError)
 
-    def read(values):
+    def value(values):
         if len(values) != n_names:
             return None
         vals = []
-        for n, low in checks:
+        for n, positive in checks:
             v = values.get(n, missing)
             c = v.__class__
             if c is not float:
@@ -288,11 +288,16 @@ def bounds_reader(bounds, names):
                     v = float(v)
                 except OverflowError:
                     return None
-            if not (0.0 < v < inf if low == 0 else (0.0 <= v < inf if low == 1 else -inf < v < inf)):
+            # 0 is left to the full path: a bound 'nonnegative' is then 'positive', 'any' finite and nonzero
+            if not (0.0 < v < inf if positive else (v - v == 0.0 and v)):
                 return None
             vals.append(v)
-        return vals
-    return read
+        try:
+            v = float(f(*vals))
+        except fail:
+            return None
+        return v if v - v == 0 else None
+    return value
 
 
 def scalar_plan(nf):
@@ -315,23 +320,17 @@ def scalar_plan(nf):
     wanted = frozenset(names) - frozenset(params)
     domain = getattr(nf.domain, "scalar", nf.domain)
     scalar_types = (float, int)
-    read = None
-    if not params:    # no check (any finite number), or a bounds-only check: one pass (bounds_reader)
-        read = bounds_reader(dict.fromkeys(names, "any") if nf.domain is None else
-                             nf.domain.bounds() if hasattr(nf.domain, "bounds") else None, names)
-    fail = (ValueError, ZeroDivisionError, OverflowError, TypeError)
+    one = None
+    if not params:    # no check (any finite number), or a bounds-only check: one pass (one_pass)
+        one = one_pass(dict.fromkeys(names, "any") if nf.domain is None else
+                       nf.domain.bounds() if hasattr(nf.domain, "bounds") else None, names, f)
     f64 = np.float64
 
     def fast(kw):
-        if read is not None:
-            # a bounds-only domain check and no fixed parameters: one pass (see bounds_reader)
-            vals = read(kw)
-            if vals is not None and 0.0 not in vals:
-                try:
-                    v = float(f(*vals))
-                except fail:
-                    return None
-                return f64(v) if v - v == 0 else None
+        if one is not None:
+            v = one(kw)
+            if v is not None:
+                return f64(v)
         if kw.keys() != wanted:
             return None
         for v in kw.values():

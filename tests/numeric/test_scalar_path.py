@@ -210,7 +210,7 @@ def test_monomial_one_pass_is_the_general_path():
             evaluate(c, "force", rtol=1e-12, **vals)
         assert (type(e1.value), str(e1.value)) == (type(e2.value), str(e2.value)), vals
     # the parabola's exports, checked and unchecked, read a point in one pass
-    # (fastpath.bounds_reader): the NumPy path's value, the same errors
+    # (fastpath.one_pass): the NumPy path's value, the same errors
     for check in (True, False):
         fx = c.to_numeric("force", check=check)
         for vals in good:
