@@ -946,7 +946,8 @@ def _substituted(integrand, var, lo, hi, piece):
             pass
         total_half = None
         # only an end where the integrand has no finite ball is substituted
-        ends = [(end, far) for end, far in ((e, other), (other, e)) if not _bounded_next_to(f, end, far)]
+        ends = [(end, far) for end, far in ((e, other), (other, e)) if not _bounded_next_to(f, end, far)] or \
+            [(e, other), (other, e)]      # bounded at both ends (the work limit): either may still be substituted
 
         def root_end(end, far):
             f_end, q = _end_power(integrand, var, end)
