@@ -224,7 +224,10 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     ``p`` goes to the one reference integrator first (:func:`_flamant_arb`:
     ln|x^2/s^2 - 1| = ln|x - s| + ln(x + s) - 2 ln s, each logarithmic
     point removed by :func:`~linecontact_sym.numeric.reference.
-    log_point_integral`; a certified enclosure).  Where Arb cannot enclose
+    log_point_integral`; a pressure with a break point (the rounded punch's
+    slope has a logarithm at the end of its flat) or unbounded at 0 (the
+    wedge's acosh(a/s)) as one integral of the kernel, whose logarithmic
+    end points the integrator splits; a certified enclosure).  Where Arb cannot enclose
     it (or ``p`` is a callable), tanh-sinh: s = a sin(phi) (removes the
     inverse-square-root edge singularity of flat-punch-like pressures),
     split at the logarithmic point s = x and at ``breaks`` (the profile's
