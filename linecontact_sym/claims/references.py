@@ -30,7 +30,7 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
 from ..core.errors import LineContactError
-from ..numeric.reference import ArbUnsupported, RefValue, integrate, lincomb, log_point_integral, quotient_bound
+from ..numeric.reference import ArbUnsupported, RefValue, integrate, lincomb, log_point_integral
 
 #: working precision of the comparisons (digits)
 DPS = 45
@@ -130,46 +130,12 @@ def _arb_integral(f, var, lo, hi, dps):
             lo_b, hi_b, sign = hi_b, lo_b, -1
         with workdps(quad_dps(dps)):
             pts = [lo_b] + relational_breakpoints(f, var, to_mpf(lo_b), to_mpf(hi_b)) + [hi_b]
-        crude = _removable_quotient(f, var) if lo_b == 0 else None
-        if crude is not None and len(pts) == 2:
-            pts = [lo_b, hi_b / 2, hi_b]    # the bound next to 0 on one piece, an end singularity on the other
-        r = integrate(f, var, pts, dps, fallback=lambda: mpmath.nan, crude=crude)
+        r = integrate(f, var, pts, dps, fallback=lambda: mpmath.nan, removable=True)
     except (ArbUnsupported, TypeError, ValueError, ZeroDivisionError):
         return None
     if not r.certified:
         return None
     return r if sign == 1 else -r
-
-
-def _removable_quotient(f, var):
-    """For an integrand N(t)/(t^k D(t)) with a zero of order >= k of N at
-    t = 0 (the printed Eq. (9): P(t)/(t sqrt(a^2 - t^2)); Eq. (10) of the
-    exact cylinder: (f'(t)/t ...)/t^2 over a common denominator), the
-    reference integrator's bound next to t = 0
-    (:func:`~linecontact_sym.numeric.reference.quotient_bound`; the order
-    is checked exactly: N(0) = ... = N^(k-1)(0) = 0); None for any other
-    integrand."""
-    for form in (f, None):
-        if form is None:
-            try:
-                form = sp.together(f)
-            except (TypeError, ValueError):
-                return None
-        num, den = sp.fraction(form)
-        k = next((int(d.exp) if d.is_Pow else 1 for d in sp.Mul.make_args(den)
-                  if d == var or (d.is_Pow and d.base == var and d.exp.is_Integer and d.exp > 0)), 0)
-        if k == 0 or k > 4 or not num.has(var):
-            continue
-        try:
-            if any(sp.diff(num, var, j).xreplace({var: sp.S.Zero}) != 0 for j in range(k)):
-                continue
-        except (TypeError, ValueError, ZeroDivisionError):
-            continue
-        try:
-            return quotient_bound(num, var, var**k / den, order=k)
-        except ArbUnsupported:
-            continue
-    return None
 
 
 def num_eval(expr: sp.Expr, vals: dict, dps: int = DPS, what: str = "the printed formula", exc=Undefined):

@@ -646,7 +646,7 @@ def _bits(dps: int) -> int:
 
 
 def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: int = EVAL_LIMIT,
-              crude=None) -> RefValue:
+              crude=None, removable: bool = False) -> RefValue:
     """int over [points[0], points[-1]] of ``integrand`` d``var``, split at
     every point given: a :class:`RefValue`.
 
@@ -661,9 +661,19 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
     cannot do it (default: ``mpmath.quad`` of the lambdified integrand over
     the same pieces, at ``dps`` + 10 digits).
 
+    ``crude``: a bound of the integrand on real balls where its ball is not
+    finite (:func:`quotient_bound`); ``removable``: from 0, look for a
+    removable 0/0 N(t)/t^k of the integrand and take its
+    :func:`quotient_bound` (a single piece is then split at its middle: the
+    bound next to 0 on one half, an end singularity on the other).
+
     The result is certified (``method == "arb"``) when every piece's ball
     is finite and the sum's ball is accurate to ``dps`` digits (or its
     absolute radius is below 10**-dps for a value that is 0)."""
+    if removable and crude is None and isinstance(integrand, sp.Basic) and points[0] == 0:
+        crude = _removable_quotient(integrand, var)
+        if crude is not None and len(points) == 2:
+            points = [points[0], sp.sympify(points[1], strict=True) / 2, points[1]]
     try:
         ball = _arb_integral(integrand, var, points, dps, eval_limit, crude)
         reason = None
@@ -707,6 +717,35 @@ def quotient_bound(numerator, var, rest, order: int = 1):
         b = M.abs_upper() / (rho - r) if order == 1 else M.abs_upper() / rho**order
         return flint.acb(flint.arb(0, b), flint.arb(0, b)) * fr(z, False)
     return crude
+
+
+def _removable_quotient(f, var):
+    """For an integrand N(t)/(t^k D(t)) with a zero of order >= k of N at
+    t = 0 (the printed Eq. (9): P(t)/(t sqrt(a^2 - t^2)); Eq. (10) of the
+    exact cylinder: (f'(t)/t ...)/t^2 over a common denominator), the
+    bound next to t = 0 (:func:`quotient_bound`; the order is checked
+    exactly: N(0) = ... = N^(k-1)(0) = 0); None for any other integrand."""
+    for form in (f, None):
+        if form is None:
+            try:
+                form = sp.together(f)
+            except (TypeError, ValueError):
+                return None
+        num, den = sp.fraction(form)
+        k = next((int(d.exp) if d.is_Pow else 1 for d in sp.Mul.make_args(den)
+                  if d == var or (d.is_Pow and d.base == var and d.exp.is_Integer and d.exp > 0)), 0)
+        if k == 0 or k > 4 or not num.has(var):
+            continue
+        try:
+            if any(sp.diff(num, var, j).xreplace({var: sp.S.Zero}) != 0 for j in range(k)):
+                continue
+        except (TypeError, ValueError, ZeroDivisionError):
+            continue
+        try:
+            return quotient_bound(num, var, var**k / den, order=k)
+        except ArbUnsupported:
+            continue
+    return None
 
 
 def log_point_integral(p, var, c, points, dps: int = 45) -> RefValue:
