@@ -998,6 +998,13 @@ def _substituted(integrand, var, lo, hi, piece):
             return piece(compile_acb(sp.expand_mul(g), _u), sp.S.Zero, sp.S.One)
 
         def log_end(end, far):
+            # a power B^beta, beta < 0, of a base vanishing at the end stays
+            # in the split integrand (only logarithms are split) and has no
+            # finite ball next to it: :func:`_log_end` would fail there after
+            # its symbolic work (the pressure's 1/sqrt at s = a under the
+            # kernel's logarithm), so it is not tried
+            if any(b < 0 for b in _end_betas(integrand, var, end)[1]):
+                raise ArbUnsupported("a negative power vanishing at the end point: no logarithmic end point")
             return _log_end(integrand, var, end, far, piece)
         # an integrand with logarithms tries their subtraction first
         ways = (log_end, root_end) if integrand.has(sp.log, sp.acosh, sp.asinh, sp.atanh) else (root_end, log_end)
@@ -1028,14 +1035,7 @@ def _end_power(integrand, var, end):
     (t - e)^beta dt into a power of u >= 3 that ball arithmetic bounds next
     to u = 0 (a power law's t^(n-2), 1 < n < 2, in Eq. (10)); the radicands
     are factored afterwards, so the u^q they vanish with leaves the root."""
-    end = sp.sympify(end, strict=True)
-    floats = {z.exp: sp.Rational(z.exp) for z in integrand.atoms(sp.Pow)
-              if z.exp.is_Float and z.base.has(var) and z.base.xreplace({var: end}) == 0}
-    if floats:
-        integrand = integrand.xreplace(floats)
-    betas = [z.exp for z in integrand.atoms(sp.Pow)
-             if z.exp.is_Rational and not z.exp.is_Integer and z.base.has(var)
-             and z.base.xreplace({var: end}) == 0]
+    integrand, betas = _end_betas(integrand, var, end)
     beta = min(betas, default=sp.S.Zero)
     if beta <= -1:
         raise ArbUnsupported(f"a power {beta} <= -1 at the end point: the integral diverges there")
@@ -1045,6 +1045,22 @@ def _end_power(integrand, var, end):
     if q > 2000:
         raise ArbUnsupported(f"the end point's power {beta} needs t = e + d u^{q}")
     return integrand, q
+
+
+def _end_betas(integrand, var, end):
+    """(integrand, betas): the exponents beta of the powers B^beta of the
+    integrand (beta rational, not an integer) whose base vanishes at the
+    end exactly (B(e) = 0), a Float exponent there read as its exact binary
+    value (the integrand returned with it so replaced)."""
+    end = sp.sympify(end, strict=True)
+    floats = {z.exp: sp.Rational(z.exp) for z in integrand.atoms(sp.Pow)
+              if z.exp.is_Float and z.base.has(var) and z.base.xreplace({var: end}) == 0}
+    if floats:
+        integrand = integrand.xreplace(floats)
+    betas = [z.exp for z in integrand.atoms(sp.Pow)
+             if z.exp.is_Rational and not z.exp.is_Integer and z.base.has(var)
+             and z.base.xreplace({var: end}) == 0]
+    return integrand, betas
 
 
 class _Slope(sp.Function):
