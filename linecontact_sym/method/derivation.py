@@ -324,17 +324,22 @@ def compact(expr: sp.Expr) -> sp.Expr:
     """The shortest (``count_ops``) of a fixed set of rewritings of ``expr``:
     SymPy's ``simplify`` without its passes that do nothing on what the rules
     return, repeated at every level.  The arguments of every function first
-    (recursively, as ``simplify`` does), then per node ``normal``, ``powsimp``
-    (sqrt(a - x) sqrt(a + x) -> sqrt(a^2 - x^2)), ``cancel``, ``together``,
-    ``factor_terms``, ``expand_mul``, ``logcombine`` where there is a log,
-    ``trigsimp``/``exptrigsimp`` only where there is a (hyperbolic)
+    (recursively, as ``simplify`` does), then per node ``normal``, ``cancel``,
+    ``together``, ``factor_terms``, ``expand_mul``, ``logcombine`` where there
+    is a log, ``trigsimp``/``exptrigsimp`` only where there is a (hyperbolic)
     trigonometric function or exp, ``besselsimp`` where there is a Bessel
-    function.  Left out: ``hyperexpand`` and ``gammasimp`` (:func:`tidy` runs
-    them once, not at every level of the argument recursion) and
-    ``simplify``'s other passes (sums, products, Kronecker deltas, units).
-    Every candidate equals ``expr`` (each rewriting is an identity for
-    positive symbols); never longer than ``expr``.  About half of ``simplify``'s CPU time
-    on the seed derivations, as short or shorter (issue 26)."""
+    function, ``powsimp`` (sqrt(a - x) sqrt(a + x) -> sqrt(a^2 - x^2)).
+    Left out: ``hyperexpand`` and ``gammasimp`` (:func:`tidy` runs them once,
+    not at every level of the argument recursion) and ``simplify``'s other
+    passes (sums, products, Kronecker deltas, units).  Every candidate equals
+    ``expr`` (each rewriting is an identity for positive symbols); never
+    longer than ``expr``.  About half of ``simplify``'s CPU time on the seed
+    derivations, as short or shorter (issue 26).  Four more candidates were
+    dropped after they never won on the 18 seed forms (force, pressure, gap of
+    six profiles: every form identical without them, a fifth less CPU): a
+    ``powsimp`` before ``cancel`` (the one after ``trigsimp`` does its work),
+    ``factor_terms`` of the cancelled form beside that of the shortest, and the
+    second ``cancel`` and ``factor_terms`` of the final candidate."""
     if not isinstance(expr, sp.Expr) or expr.is_Atom or not expr.args:
         return expr
     original = expr
@@ -343,11 +348,11 @@ def compact(expr: sp.Expr) -> sp.Expr:
     if not isinstance(expr, _HANDLED):
         return expr
     expr = bottom_up(expr, lambda w: getattr(w, "normal", lambda: w)())
-    expr = sp.Mul(*sp.powsimp(expr).as_content_primitive())
+    expr = sp.Mul(*expr.as_content_primitive())
     canc = sp.cancel(expr)
     expr1 = _shortest(canc, sp.expand_mul(sp.expand_multinomial(canc)).cancel())
     expr = _shortest(sp.together(expr, deep=True), sp.together(expr1, deep=True), expr1, expr)
-    expr = _shortest(sp.factor_terms(expr, sign=False), sp.factor_terms(canc, sign=False))
+    expr = sp.factor_terms(expr, sign=False)
     if expr.has(sp.log):
         expr = _shortest(sp.expand_log(expr, deep=True), sp.logcombine(expr))
     if expr.has(BesselBase):
@@ -356,8 +361,7 @@ def compact(expr: sp.Expr) -> sp.Expr:
         expr = sp.trigsimp(expr, deep=True)
     short = _shortest(sp.powsimp(expr, combine="exp", deep=True), sp.powsimp(expr), expr) \
         if expr.has(sp.exp) else _shortest(sp.powsimp(expr), expr)
-    short = _shortest(short, sp.cancel(short))
-    short = _shortest(short, sp.factor_terms(short), sp.expand_power_exp(sp.expand_mul(short)))
+    short = _shortest(short, sp.expand_power_exp(sp.expand_mul(short)))
     if short.has(TrigonometricFunction, HyperbolicFunction, sp.exp):
         short = sp.exptrigsimp(short)
     expr = short.xreplace(_HOLLOW_MUL)
