@@ -61,6 +61,36 @@ def test_default_guard_is_generous():
     assert monkey == (10.0, 60.0) and B.wall_guard(20) == 260.0
 
 
+def _double(v):
+    return 2 * v
+
+
+def _fail(v):
+    raise ValueError("second stage fails")
+
+
+def _forever(v):
+    return _spin(30)
+
+
+@pytest.mark.slow
+def test_stages_run_in_one_child_under_one_budget():
+    """run_stages: each stage's result as soon as it is there; a stage that the
+    CPU budget ends (begun, no result) or that raises leaves the later ones to the
+    caller, who learns how many were begun; the first stage's budget and errors
+    behave as run_with_budget's; a Deadline counts the child's CPU time."""
+    d = Deadline(None)
+    assert B.run_stages([_spin, _double, _double], 0.01, seconds=5) == ([0.01, 0.02, 0.04], 3)
+    out, started = B.run_stages([_spin, _forever, _double], 0.01, seconds=0.2)
+    assert out == [0.01] and started == 2           # the second stage was stopped by the budget
+    assert d.used() > 0.18
+    assert B.run_stages([_spin, _fail, _double], 0.01, seconds=5) == ([0.01], 2)
+    with pytest.raises(BudgetExceeded, match="budget of 0.15 CPU s"):
+        B.run_stages([_spin, _double], 30, seconds=0.15)
+    with pytest.raises(ValueError, match="second stage"):
+        B.run_stages([_fail, _double], 1, seconds=5)
+
+
 def _nested():
     """Inside a budgeted child: a nested budget larger than what remains is cut to it."""
     _spin(0.15)
