@@ -27,7 +27,6 @@ from ....core import symbols as S
 from ....core.conversion import to_mpf
 from ....core.errors import VerificationError
 from ....core.precision import workdps
-from ...normal import reference as R
 
 
 def _mp(v):
@@ -50,8 +49,8 @@ def strip_slope(s, A, C, sig, E, a_minus_s=None):
 def force_johnson(md, vals, dps):
     """P(a, c_D) by Johnson's bounded-solution condition (see the module docstring)."""
     with workdps(dps + 15):
-        A, C, sig, E, = _values(md, vals)[:3] + (_values(md, vals)[4],)
-        P0 = R.force_reference(md.profile, vals, dps + 5)     # Eq. (10*): Arb ball quadrature (mpmath where not)
+        A, C, sig, _, E = _values(md, vals)
+        P0 = md.contact.force_reference(vals, dps + 5)     # Eq. (10*): Arb ball quadrature (mpmath where not)
         # (E*/2) int_-a^a s u_D'(s)/sqrt(a^2 - s^2) ds, s = a cos(psi), even integrand
         I = mpmath.quad(lambda ps: A * mpmath.cos(ps) * strip_slope(A * mpmath.cos(ps), A, C, sig, E,
                                                                     2 * A * mpmath.sin(ps / 2)**2),
