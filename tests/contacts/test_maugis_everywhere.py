@@ -78,10 +78,18 @@ class Independent:
             self.h0 = mpmath.mpf(str(sp.N(self.fixed[S.gamma] / self.fixed[S.sigma_0], 60)))
         # the strip's contact pressure (checked by substitution in tests/contacts/test_maugis_dugdale.py)
         self.pD = sp.lambdify((x, S.a, S.c_D), md.dugdale.pressure.xreplace(self.fixed), "mpmath")
+        self._dP0 = {}
 
     def dP0(self, s):
         """P0'(s) = E* int_0^{pi/2} sin(phi) h'(s sin phi) dphi, split at the kinks (f' continuous
-        here, h' analytic on each piece: Gauss-Legendre)."""
+        here, h' analytic on each piece: Gauss-Legendre).  Remembered per (s, precision): the
+        s-nodes of :meth:`gap` at one A are the same for every c the root search tries."""
+        key = (s, mpmath.mp.prec)
+        if key not in self._dP0:
+            self._dP0[key] = self._dP0_quad(s)
+        return self._dP0[key]
+
+    def _dP0_quad(self, s):
         pts = [mpmath.mpf(0)] + [mpmath.asin(b / s) for b in self.kinks if b < s] + [mpmath.pi / 2]
         return self.E * mpmath.quad(lambda ph: mpmath.sin(ph) * self.h1(s * mpmath.sin(ph)), pts,
                                     method="gauss-legendre")
