@@ -147,7 +147,7 @@ SLOW_TESTS = {
                                  "test_extreme_grid_gap_power_law", "test_extreme_grid_gap_quadrature",
                                  "test_known_traps_fixed"],
     "numeric/test_reference.py": ["test_seed_verification_records_are_certified_by_arb"],
-    "numeric/test_scalar_path.py": ["test_scalar_calls_take_the_scalar_path"],
+    "numeric/test_scalar_path.py": ["test_scalar_calls_take_the_scalar_path", "test_monomial_one_pass_is_the_general_path"],
     "numeric/test_stable_rules.py": ["test_asin_to_atan_complement_form"],
     "test_architecture.py": ["test_imports_run_down_the_layers",
                              "test_no_import_cycle_even_through_function_level_imports",

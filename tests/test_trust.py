@@ -13,7 +13,7 @@ import math
 import mpmath
 import pytest
 import sympy as sp
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
@@ -293,6 +293,11 @@ def test_property_every_minimum_found_ball(roots, k, frac):
 
 @settings(max_examples=5, deadline=None)
 @given(roots_strategy, st.integers(min_value=1, max_value=50), st.floats(0.05, 0.95))
+@example([sp.Rational(13, 50), sp.Rational(1811, 1000), sp.Rational(387, 200)], 1, 0.5)
+@example([sp.Rational(v, 1000) for v in (2554, 2713, 4168, 4193, 7001)], 20, 0.719)
 def test_property_every_minimum_found_adaptive(roots, k, frac):
-    """The same for a law without closed form (adaptive subdivision)."""
+    """The same for a law without closed form (adaptive subdivision).  The
+    examples: a narrow dip between the minimum at 1.935 and the maximum at
+    1.811 hid between the three samples of an interval (ends and midpoint),
+    found by CI; a second one like it, found by a biased random run."""
     _check(roots, sp.Rational(k, 10), frac, False)

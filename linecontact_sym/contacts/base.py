@@ -431,6 +431,7 @@ class Contact:
 
             def domain(contact, vals):      # the contact passed per call: a copy's cache holds no other contact
                 return check_domain_scalar(contact, name, vals, plan)
+            domain.bounds = _bounds_only(plan)
             fast = _numeric_evaluate("scalar_evaluator")(self, name, domain) or False
         self._caches()[("_evaluate", quantity)] = fast
         return fast
@@ -588,6 +589,14 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
             return self.check_domain(quantity, values)
     return vals
 
+def _bounds_only(plan):
+    """The bounds of a :func:`scalar_domain_plan` that tests nothing else (no
+    inside/outside test, no condition, no admissibility test), else None."""
+    if plan and plan[2] is None and plan[4] is None and plan[5] is None:
+        return dict(plan[1])
+    return None
+
+
 def scalar_domain_plan(self, quantity):
     """The tests of :meth:`check_domain_scalar`, cached per quantity (None:
     a quantity whose tests it does not mirror, checked the full way)."""
@@ -693,10 +702,20 @@ class DomainCheck:
         return self.contact.check_domain(self.quantity, values)
 
     def scalar(self, values):
+        return check_domain_scalar(self.contact, self.quantity, values, self._scalar_plan())
+
+    def _scalar_plan(self):
         plan = self.__dict__.get("_plan")
         if plan is None:
             plan = self._plan = scalar_domain_plan(self.contact, self.quantity)
-        return check_domain_scalar(self.contact, self.quantity, values, plan)
+        return plan
+
+    def bounds(self):
+        """name -> 'positive', 'nonnegative' or 'any' where this check is
+        bounds only (no condition, no inside/outside test, no admissibility
+        test), else None: an export may then read a point in one pass
+        (:func:`~linecontact_sym.numeric.fastpath.one_pass`)."""
+        return _bounds_only(self._scalar_plan())
 
     def __getstate__(self):
         return {"contact": self.contact, "quantity": self.quantity}

@@ -38,7 +38,7 @@ from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, 
                       cancellation_sums, compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
-__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "STEP"]
+__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "one_pass", "STEP"]
 
 #: relative step of the central differences for kappa
 STEP = 1e-6
@@ -258,6 +258,48 @@ def vector_float64(d, names, arrays):
     return v, kappa, cancel
 
 
+def one_pass(bounds, names, f):
+    """For a domain check that is bounds only (``bounds``: name ->
+    'positive', 'nonnegative' or 'any', as the contacts layer's scalar plan
+    has them; None: not bounds only), the scalar function ``f`` (positional
+    floats in ``names`` order) called in one pass over a point:
+    ``value(values)`` is f's finite float value when ``values`` has exactly
+    these names, each a Python float or int within its bound and none 0,
+    else None (the caller then takes its full path, whose check names the
+    problem, and which patches a removable point at 0).  None where
+    ``bounds`` is None or does not cover ``names``."""
+    if bounds is None or not frozenset(names) <= bounds.keys():
+        return None
+    checks = tuple((n, bounds[n] in ("positive", "nonnegative")) for n in names)
+    n_names, inf, missing = len(names), math.inf, object()
+    fail = (ValueError, ZeroDivisionError, OverflowError, TypeError)
+
+    def value(values):
+        if len(values) != n_names:
+            return None
+        vals = []
+        for n, positive in checks:
+            v = values.get(n, missing)
+            c = v.__class__
+            if c is not float:
+                if c is not int:
+                    return None                 # a missing name, another number type
+                try:
+                    v = float(v)
+                except OverflowError:
+                    return None
+            # 0 is left to the full path: a bound 'nonnegative' is then 'positive', 'any' finite and nonzero
+            if not (0.0 < v < inf if positive else (v - v == 0.0 and v)):
+                return None
+            vals.append(v)
+        try:
+            v = float(f(*vals))
+        except fail:
+            return None
+        return v if v - v == 0 else None
+    return value
+
+
 def scalar_plan(nf):
     """The scalar fast path of a float64 export (None where there is none): a
     call whose values are all Python floats (or ints) evaluates the same
@@ -278,8 +320,17 @@ def scalar_plan(nf):
     wanted = frozenset(names) - frozenset(params)
     domain = getattr(nf.domain, "scalar", nf.domain)
     scalar_types = (float, int)
+    one = None
+    if not params:    # no check (any finite number), or a bounds-only check: one pass (one_pass)
+        one = one_pass(dict.fromkeys(names, "any") if nf.domain is None else
+                       nf.domain.bounds() if hasattr(nf.domain, "bounds") else None, names, f)
+    f64 = np.float64
 
     def fast(kw):
+        if one is not None:
+            v = one(kw)
+            if v is not None:
+                return f64(v)
         if kw.keys() != wanted:
             return None
         for v in kw.values():

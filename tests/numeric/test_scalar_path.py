@@ -174,3 +174,53 @@ def test_contact_evaluate_plan_is_the_general_path(monkeypatch):
     r = c.evaluate("force", rtol=1e-12, a=0.31, E_star=1.7, R=1.0)
     assert r.path.startswith("model:") and r.rel_error <= 1e-12
     assert c.evaluate("force", rtol=1e-12, a=0.31, E_star=1.7, R=1.0).note.startswith("series of P(a)")
+
+
+def test_monomial_one_pass_is_the_general_path():
+    """The parabola's force (a monomial, a bounds-only domain check) runs in
+    one pass (numeric.evaluate.scalar_evaluator's lean loop): the same
+    Evaluation as numeric.evaluate.evaluate at floats and ints, and every
+    point it does not take (0, negative, inf, NaN, bool, NumPy floats, a
+    missing or an extra name) meets the same error or the same result."""
+    import numpy as np
+
+    import linecontact_sym as lcs
+    from linecontact_sym.core.errors import LineContactError
+    from linecontact_sym.numeric.evaluate import evaluate
+
+    c = lcs.parabola()
+    good = [dict(a=0.3, E_star=1.7, R=1.0), dict(a=2, E_star=3, R=5), dict(a=1e-150, E_star=1e300, R=1e-5),
+            dict(a=np.float64(0.3), E_star=1.7, R=1.0)]
+    for vals in good:
+        for rtol in (1e-12, 1e-3, None):
+            got = c.evaluate("force", rtol=rtol, **vals)
+            ref = evaluate(c, "force", rtol=1e-12 if rtol is None else rtol, **vals)
+            assert (got.path, got.value, got.error, got.rtol, got.note, got.details, got.unit, got.certified,
+                    got.enclosure) == (ref.path, ref.value, ref.error, ref.rtol, ref.note, ref.details, ref.unit,
+                                       ref.certified, ref.enclosure), vals
+            assert got.value == np.pi * float(vals["E_star"]) * float(vals["a"])**2 / (4 * float(vals["R"])) \
+                or abs(got.value / (np.pi * vals["E_star"] * vals["a"]**2 / (4 * vals["R"])) - 1) < 1e-15
+    bad = [dict(a=0.0, E_star=1.0, R=1.0), dict(a=-0.5, E_star=1.0, R=1.0), dict(a=float("inf"), E_star=1.0, R=1.0),
+           dict(a=float("nan"), E_star=1.0, R=1.0), dict(a=True, E_star=1.0, R=1.0), dict(a=0.5, R=1.0),
+           dict(a=0.5, E_star=1.0, R=1.0, q=2.0), dict(a=0.5, E_star=1.0, R=-1)]
+    for vals in bad:
+        with pytest.raises(LineContactError) as e1:
+            c.evaluate("force", rtol=1e-12, **vals)
+        with pytest.raises(LineContactError) as e2:
+            evaluate(c, "force", rtol=1e-12, **vals)
+        assert (type(e1.value), str(e1.value)) == (type(e2.value), str(e2.value)), vals
+    # the parabola's exports, checked and unchecked, read a point in one pass
+    # (fastpath.one_pass): the NumPy path's value, the same errors
+    for check in (True, False):
+        fx = c.to_numeric("force", check=check)
+        for vals in good:
+            ref = np.asarray(fx(**{k: np.asarray([v], dtype=float) for k, v in vals.items()}))[0]
+            got = fx(**vals)
+            assert type(got) is np.float64 and got == ref, (check, vals)
+    fx = c.to_numeric("force")
+    for vals in bad:
+        with pytest.raises(LineContactError) as e1:
+            fx(**vals)
+        with pytest.raises(LineContactError) as e2:
+            c.evaluate("force", rtol=1e-12, **vals)
+        assert type(e1.value) is type(e2.value), vals
