@@ -147,14 +147,24 @@ QUANTITIES = ("worn_cylinder:pressure", "rounded_punch:pressure")
 BUDGET = "8"
 
 
-def _derive_cold():
+def _pinned(code, cpu):
+    """``code`` run on the one core ``cpu`` (the affinity is set by the child itself; any core if None)."""
+    return code if cpu is None else f"import os\nos.sched_setaffinity(0, {{{cpu}}})\n" + code
+
+
+def _start_cold(cpu=None):
+    """A fresh process deriving QUANTITIES cold (on the one core ``cpu`` if given)."""
     env = dict(os.environ, LINECONTACT_SYM_CACHE="off", LINECONTACT_SYM_BUDGET=BUDGET,
                PYTHONPATH=str(Path(__file__).resolve().parents[2]) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     env.pop("LINECONTACT_SYM_NO_FORK", None)
-    run = subprocess.run([sys.executable, "-c", _DERIVE, *QUANTITIES], env=env, capture_output=True, text=True,
-                         timeout=900)
-    assert run.returncode == 0, run.stderr[-2000:]
-    return json.loads(run.stdout.strip().splitlines()[-1])
+    return subprocess.Popen([sys.executable, "-c", _pinned(_DERIVE, cpu), *QUANTITIES], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def _result(proc):
+    out, err = proc.communicate(timeout=900)
+    assert proc.returncode == 0, err[-2000:]
+    return json.loads(out.strip().splitlines()[-1])
 
 
 _LOOP = "import time\nt = time.monotonic() + {limit}\nwhile time.monotonic() < t:\n    pass\n"
@@ -166,13 +176,24 @@ def test_same_closed_forms_quiet_and_under_cpu_load():
     pressures (a wall-clock budget of 25 s once turned both into unevaluated
     integrals with three busy loops per core) with a budget of 8 CPU s,
     quiet and with three busy loops per core (each ends by itself after
-    10 minutes at most, and is killed when the test ends)."""
-    quiet = _derive_cold()
-    loops = [subprocess.Popen([sys.executable, "-c", _LOOP.format(limit=600)])
-             for _ in range(3 * (os.cpu_count() or 1))]
+    10 minutes at most, and is killed when the test ends).  Where this process
+    may run on two cores or more, the loaded derivation and its three loops
+    share one core, and the quiet derivation runs at the same time on another:
+    the loaded one gets the same quarter of a core as with three loops on
+    every core, and the rest of the machine (the other xdist worker) is not
+    slowed down by loops of its own."""
+    cpus = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else []
+    pinned = len(cpus) >= 2
+    quiet = None if pinned else _result(_start_cold())
+    loaded_cpu = cpus[-1] if pinned else None
+    loops = [subprocess.Popen([sys.executable, "-c", _pinned(_LOOP.format(limit=600), loaded_cpu)])
+             for _ in range(3 if pinned else 3 * (os.cpu_count() or 1))]
     try:
         time.sleep(0.5)
-        loaded = _derive_cold()
+        loaded_run = _start_cold(loaded_cpu)
+        if pinned:
+            quiet = _result(_start_cold(cpus[0]))
+        loaded = _result(loaded_run)
     finally:
         for p in loops:
             p.kill()
