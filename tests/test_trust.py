@@ -232,9 +232,9 @@ def test_item11_pressure_of_a_piecewise_profile_to_30_digits():
         b, X = mpmath.tan(mpmath.mpf(1) / 2), mpmath.mpf(3) / 10
         hp = lambda t: 2 * t if t < b else b  # noqa: E731
 
-        def dP(sv):
+        def dP(sv):     # split at the kink, each piece analytic: Gauss-Legendre (tanh-sinh took 8x longer)
             pts = [0] + ([mpmath.asin(b / sv)] if b < sv else []) + [mpmath.pi / 2]
-            return mpmath.quad(lambda p: mpmath.sin(p) * hp(sv * mpmath.sin(p)), pts)
+            return mpmath.quad(lambda p: mpmath.sin(p) * hp(sv * mpmath.sin(p)), pts, method="gauss-legendre")
         wb, W = mpmath.sqrt(b**2 - X**2), mpmath.sqrt(1 - X**2)
         g = lambda w: dP(mpmath.sqrt(X**2 + w**2)) / mpmath.sqrt(X**2 + w**2)  # noqa: E731
         ref = (mpmath.quad(g, [0, wb]) + mpmath.quad(lambda t: 2 * t * g(wb + t * t), [0, mpmath.sqrt(W - wb)])) \

@@ -12,6 +12,7 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import functools
+import math
 import time
 from dataclasses import KW_ONLY, dataclass, field
 from typing import Callable
@@ -24,13 +25,14 @@ from sympy.functions.elementary.trigonometric import TrigonometricFunction
 from sympy.functions.special.bessel import BesselBase
 
 from ..core import symbols as S
-from ..core.budget import Deadline, checked_budget, run_with_budget
+from ..core.budget import Deadline, checked_budget, child_left, run_stages, run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
 from ..core.errors import BudgetExceeded, ClaimError, DivergentIntegralError, DomainError, LineContactError
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
-from .verification import REQUIRED_DIGITS, VerificationRecord, holds, verify
+from .verification import (REQUIRED_DIGITS, VERIFY_DPS, VerificationRecord, holds, unfinished, verify,
+                           verify_here)
 from ..core.precision import held, serialized, workdps
 
 #: the rule name of a result without closed form
@@ -324,17 +326,22 @@ def compact(expr: sp.Expr) -> sp.Expr:
     """The shortest (``count_ops``) of a fixed set of rewritings of ``expr``:
     SymPy's ``simplify`` without its passes that do nothing on what the rules
     return, repeated at every level.  The arguments of every function first
-    (recursively, as ``simplify`` does), then per node ``normal``, ``powsimp``
-    (sqrt(a - x) sqrt(a + x) -> sqrt(a^2 - x^2)), ``cancel``, ``together``,
-    ``factor_terms``, ``expand_mul``, ``logcombine`` where there is a log,
-    ``trigsimp``/``exptrigsimp`` only where there is a (hyperbolic)
+    (recursively, as ``simplify`` does), then per node ``normal``, ``cancel``,
+    ``together``, ``factor_terms``, ``expand_mul``, ``logcombine`` where there
+    is a log, ``trigsimp``/``exptrigsimp`` only where there is a (hyperbolic)
     trigonometric function or exp, ``besselsimp`` where there is a Bessel
-    function.  Left out: ``hyperexpand`` and ``gammasimp`` (:func:`tidy` runs
-    them once, not at every level of the argument recursion) and
-    ``simplify``'s other passes (sums, products, Kronecker deltas, units).
-    Every candidate equals ``expr`` (each rewriting is an identity for
-    positive symbols); never longer than ``expr``.  About half of ``simplify``'s CPU time
-    on the seed derivations, as short or shorter (issue 26)."""
+    function, ``powsimp`` (sqrt(a - x) sqrt(a + x) -> sqrt(a^2 - x^2)).
+    Left out: ``hyperexpand`` and ``gammasimp`` (:func:`tidy` runs them once,
+    not at every level of the argument recursion) and ``simplify``'s other
+    passes (sums, products, Kronecker deltas, units).  Every candidate equals
+    ``expr`` (each rewriting is an identity for positive symbols); never
+    longer than ``expr``.  About half of ``simplify``'s CPU time on the seed
+    derivations, as short or shorter (issue 26).  Four more candidates were
+    dropped after they never won on the 18 seed forms (force, pressure, gap of
+    six profiles: every form identical without them, a fifth less CPU): a
+    ``powsimp`` before ``cancel`` (the one after ``trigsimp`` does its work),
+    ``factor_terms`` of the cancelled form beside that of the shortest, and the
+    second ``cancel`` and ``factor_terms`` of the final candidate."""
     if not isinstance(expr, sp.Expr) or expr.is_Atom or not expr.args:
         return expr
     original = expr
@@ -343,11 +350,11 @@ def compact(expr: sp.Expr) -> sp.Expr:
     if not isinstance(expr, _HANDLED):
         return expr
     expr = bottom_up(expr, lambda w: getattr(w, "normal", lambda: w)())
-    expr = sp.Mul(*sp.powsimp(expr).as_content_primitive())
+    expr = sp.Mul(*expr.as_content_primitive())
     canc = sp.cancel(expr)
     expr1 = _shortest(canc, sp.expand_mul(sp.expand_multinomial(canc)).cancel())
     expr = _shortest(sp.together(expr, deep=True), sp.together(expr1, deep=True), expr1, expr)
-    expr = _shortest(sp.factor_terms(expr, sign=False), sp.factor_terms(canc, sign=False))
+    expr = sp.factor_terms(expr, sign=False)
     if expr.has(sp.log):
         expr = _shortest(sp.expand_log(expr, deep=True), sp.logcombine(expr))
     if expr.has(BesselBase):
@@ -356,8 +363,7 @@ def compact(expr: sp.Expr) -> sp.Expr:
         expr = sp.trigsimp(expr, deep=True)
     short = _shortest(sp.powsimp(expr, combine="exp", deep=True), sp.powsimp(expr), expr) \
         if expr.has(sp.exp) else _shortest(sp.powsimp(expr), expr)
-    short = _shortest(short, sp.cancel(short))
-    short = _shortest(short, sp.factor_terms(short), sp.expand_power_exp(sp.expand_mul(short)))
+    short = _shortest(short, sp.expand_power_exp(sp.expand_mul(short)))
     if short.has(TrigonometricFunction, HyperbolicFunction, sp.exp):
         short = sp.exptrigsimp(short)
     expr = short.xreplace(_HOLLOW_MUL)
@@ -431,10 +437,57 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
     rules that gave nothing.  The tidying runs in the same time; when none
     is left the result is returned as the rule gave it.
     :class:`~linecontact_sym.core.errors.DivergentIntegralError` propagates."""
+    deadline = Deadline(budget) if deadline is None else deadline
+    step, attempts, _ = _integrate(problem, deadline, rules, None)
+    return step, attempts
+
+
+class _Stop(Exception):
+    """A stage of a derivation's child that leaves the rest to the parent."""
+
+
+def _tidied(step):
+    """The child's second stage: the rule's result tidied (as given where
+    tidying fails), its conditions tidied (None where that raises: the parent
+    does it again and raises)."""
+    try:
+        expr = tidy(step.expr)
+    except Exception:
+        expr = step.expr
+    try:
+        conds = tidy_conditions(step.conditions)
+    except Exception:
+        conds = None
+    return expr, conds, child_left()
+
+
+def _checking(check):
+    """The child's third stage: ``check(expr, conditions)`` (the verification,
+    in the child that derived and tidied the closed form); an exception is
+    sent back to be raised in the parent, as a verification's child does."""
+    def stage(tidied):
+        expr, conds, _ = tidied
+        if conds is None:
+            raise _Stop()
+        try:
+            return "record", check(expr, conds)
+        except Exception as exc:
+            return "raised", exc
+    return stage
+
+
+def _integrate(problem, deadline, rules, check):
+    """:func:`integrate`, with ``check(expr, conditions)`` (or None) run on
+    the tidied closed form in the same forked child
+    (:func:`~linecontact_sym.core.budget.run_stages`: one fork for the rule,
+    its tidying and its verification, each with what remains of the budget,
+    as before).  Returns ``(step, attempts, checked)``: ``checked`` is
+    ``("record", rec)``, ``("unfinished", budget)`` (begun, ended by the
+    budget) or None (not begun: the caller verifies)."""
     attempts = []
     _build_sympy_tables()
-    deadline = Deadline(budget) if deadline is None else deadline
     shown = "no limit" if deadline.budget is None else f"{deadline.budget:g} CPU s"
+    stages = [None, _tidied] + ([_checking(check)] if check is not None else [])
     for rule in (RULES[problem.transform] if rules is None else rules):
         why = rule.applies(problem)
         if why is not None:
@@ -444,7 +497,7 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
             attempts.append((rule.name, "budget used up"))
             break
         try:
-            step = run_with_budget(rule.run, problem, seconds=deadline.left())
+            results, started = run_stages([rule.run] + stages[1:], problem, seconds=deadline.left())
         except NotApplicable as exc:
             attempts.append((rule.name, f"not applicable: {exc}"))
             continue
@@ -456,14 +509,24 @@ def integrate(problem: Problem, budget, rules=None, deadline: Deadline | None = 
         except Exception as exc:  # a SymPy failure inside a rule
             attempts.append((rule.name, f"{type(exc).__name__}: {exc}"))
             continue
-        expr = step.expr
-        if not deadline.expired(0.05):
+        step, expr, conds, checked = results[0], results[0].expr, None, None
+        if len(results) > 1:
+            expr, conds, left = results[1]
+            if len(results) > 2:
+                checked = results[2]
+                if checked[0] == "raised":
+                    raise checked[1]
+            elif started > 2:
+                checked = ("unfinished", max(left, 0.05) if left is not None else math.inf)
+        elif started < 2 and not deadline.expired(0.05):
             try:
                 expr = run_with_budget(tidy, step.expr, seconds=deadline.left())
             except Exception:
                 expr = step.expr
-        return Step(step.rule, expr, tidy_conditions(step.conditions), step.notes), attempts
-    return None, attempts
+        if conds is None:        # not tidied in the child (or it raised there): here, raising as it does
+            conds, checked = tidy_conditions(step.conditions), None
+        return Step(step.rule, expr, conds, step.notes), attempts, checked
+    return None, attempts, None
 
 
 def derive(quantity: str, problem: Problem, *, reference, sampler, fallback: sp.Expr, budget,
@@ -645,14 +708,22 @@ def _usable(rec, budget) -> bool:
 
 
 def _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables):
-    step, attempts = integrate(problem, None, deadline=deadline)
+    name = f"the defining integral ({quantity})"
+
+    def checking(expr, conds):
+        return verify_here(expr, reference, sampler, conds, n_points=points, reference_name=name)
+    step, attempts, checked = _integrate(problem, deadline, None, checking if check else None)
     rec = None
     extra = []
     if step is not None and check:
-        left = deadline.left()
-        rec = verify(step.expr, reference, sampler, step.conditions, n_points=points,
-                     reference_name=f"the defining integral ({quantity})",
-                     budget=max(left, 0.05) if left is not None else None)
+        if checked is None:       # not begun in the rule's child: here, with what remains
+            left = deadline.left()
+            rec = verify(step.expr, reference, sampler, step.conditions, n_points=points, reference_name=name,
+                         budget=max(left, 0.05) if left is not None else None)
+        elif checked[0] == "unfinished":
+            rec = unfinished(VERIFY_DPS, name, checked[1])
+        else:
+            rec = checked[1]
         if not rec.passed and not rec.points:
             attempts.append((step.rule, f"closed form not verified: the verification did not finish in "
                                         f"the budget's remaining time: {step.expr}"))

@@ -431,7 +431,9 @@ def compile_acb(expr, var, holomorphic: bool = True):
         if e is sp.I:
             return lambda z, an: acb(0, 1)
         if e.is_Add or e.is_Mul:
-            fs = [build(t) for t in e.args]
+            fs = _folded(e, build, constant, symbols)
+            if len(fs) == 1:
+                return fs[0]
             if e.is_Add:
                 def add(z, an):
                     s_ = fs[0](z, an)
@@ -540,6 +542,30 @@ def compile_acb(expr, var, holomorphic: bool = True):
         raise ArbUnsupported(f"no acb counterpart for {type(e).__name__}: {e}")
 
     return build(expr)
+
+
+def _folded(e, build, constant, symbols):
+    """The compiled terms of a sum (factors of a product) ``e``, those free of
+    the variables folded into one constant ball (computed once per working
+    precision, not combined again at every evaluation: an integrand's
+    Rationals, pi, gamma values and parameter powers), which comes first."""
+    const = [t for t in e.args if not t.has(*symbols)] if symbols else []
+    if len(const) < 2:
+        return [build(t) for t in e.args]
+    parts = [build(t) for t in const]
+    if e.is_Add:
+        def fold(z, an):
+            s_ = parts[0](z, an)
+            for f in parts[1:]:
+                s_ = s_ + f(z, an)
+            return s_
+    else:
+        def fold(z, an):
+            p_ = parts[0](z, an)
+            for f in parts[1:]:
+                p_ = f(z, an) * p_
+            return p_
+    return [constant(fold)] + [build(t) for t in e.args if t.has(*symbols)]
 
 
 def _extremum(fs, largest):

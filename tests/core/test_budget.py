@@ -61,6 +61,36 @@ def test_default_guard_is_generous():
     assert monkey == (10.0, 60.0) and B.wall_guard(20) == 260.0
 
 
+def _double(v):
+    return 2 * v
+
+
+def _fail(v):
+    raise ValueError("second stage fails")
+
+
+def _forever(v):
+    return _spin(30)
+
+
+@pytest.mark.slow
+def test_stages_run_in_one_child_under_one_budget():
+    """run_stages: each stage's result as soon as it is there; a stage that the
+    CPU budget ends (begun, no result) or that raises leaves the later ones to the
+    caller, who learns how many were begun; the first stage's budget and errors
+    behave as run_with_budget's; a Deadline counts the child's CPU time."""
+    d = Deadline(None)
+    assert B.run_stages([_spin, _double, _double], 0.01, seconds=5) == ([0.01, 0.02, 0.04], 3)
+    out, started = B.run_stages([_spin, _forever, _double], 0.01, seconds=0.2)
+    assert out == [0.01] and started == 2           # the second stage was stopped by the budget
+    assert d.used() > 0.18
+    assert B.run_stages([_spin, _fail, _double], 0.01, seconds=5) == ([0.01], 2)
+    with pytest.raises(BudgetExceeded, match="budget of 0.15 CPU s"):
+        B.run_stages([_spin, _double], 30, seconds=0.15)
+    with pytest.raises(ValueError, match="second stage"):
+        B.run_stages([_fail, _double], 1, seconds=5)
+
+
 def _nested():
     """Inside a budgeted child: a nested budget larger than what remains is cut to it."""
     _spin(0.15)
@@ -117,14 +147,24 @@ QUANTITIES = ("worn_cylinder:pressure", "rounded_punch:pressure")
 BUDGET = "8"
 
 
-def _derive_cold():
+def _pinned(code, cpu):
+    """``code`` run on the one core ``cpu`` (the affinity is set by the child itself; any core if None)."""
+    return code if cpu is None else f"import os\nos.sched_setaffinity(0, {{{cpu}}})\n" + code
+
+
+def _start_cold(cpu=None):
+    """A fresh process deriving QUANTITIES cold (on the one core ``cpu`` if given)."""
     env = dict(os.environ, LINECONTACT_SYM_CACHE="off", LINECONTACT_SYM_BUDGET=BUDGET,
                PYTHONPATH=str(Path(__file__).resolve().parents[2]) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     env.pop("LINECONTACT_SYM_NO_FORK", None)
-    run = subprocess.run([sys.executable, "-c", _DERIVE, *QUANTITIES], env=env, capture_output=True, text=True,
-                         timeout=900)
-    assert run.returncode == 0, run.stderr[-2000:]
-    return json.loads(run.stdout.strip().splitlines()[-1])
+    return subprocess.Popen([sys.executable, "-c", _pinned(_DERIVE, cpu), *QUANTITIES], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def _result(proc):
+    out, err = proc.communicate(timeout=900)
+    assert proc.returncode == 0, err[-2000:]
+    return json.loads(out.strip().splitlines()[-1])
 
 
 _LOOP = "import time\nt = time.monotonic() + {limit}\nwhile time.monotonic() < t:\n    pass\n"
@@ -136,13 +176,24 @@ def test_same_closed_forms_quiet_and_under_cpu_load():
     pressures (a wall-clock budget of 25 s once turned both into unevaluated
     integrals with three busy loops per core) with a budget of 8 CPU s,
     quiet and with three busy loops per core (each ends by itself after
-    10 minutes at most, and is killed when the test ends)."""
-    quiet = _derive_cold()
-    loops = [subprocess.Popen([sys.executable, "-c", _LOOP.format(limit=600)])
-             for _ in range(3 * (os.cpu_count() or 1))]
+    10 minutes at most, and is killed when the test ends).  Where this process
+    may run on two cores or more, the loaded derivation and its three loops
+    share one core, and the quiet derivation runs at the same time on another:
+    the loaded one gets the same quarter of a core as with three loops on
+    every core, and the rest of the machine (the other xdist worker) is not
+    slowed down by loops of its own."""
+    cpus = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else []
+    pinned = len(cpus) >= 2
+    quiet = None if pinned else _result(_start_cold())
+    loaded_cpu = cpus[-1] if pinned else None
+    loops = [subprocess.Popen([sys.executable, "-c", _pinned(_LOOP.format(limit=600), loaded_cpu)])
+             for _ in range(3 if pinned else 3 * (os.cpu_count() or 1))]
     try:
         time.sleep(0.5)
-        loaded = _derive_cold()
+        loaded_run = _start_cold(loaded_cpu)
+        if pinned:
+            quiet = _result(_start_cold(cpus[0]))
+        loaded = _result(loaded_run)
     finally:
         for p in loops:
             p.kill()

@@ -84,7 +84,7 @@ def test_seed_verification_records_are_certified_by_arb(profile, quantity):
 
 def test_planted_wrong_coefficient_fails_certification():
     """A closed form 1e-35 off agrees to 35 digits (more than the 30
-    required) but lies outside the 45-digit enclosures: it fails."""
+    required) but lies outside the 40-digit enclosures: it fails."""
     c = lcs.parabola()
     d = c.derivation("force")
     wrong = d.expr * (1 + sp.Rational(1, 10**35))

@@ -206,8 +206,10 @@ class LineContact(Contact):
     # --------------------------------------------------------------- derivations
     def force_reference(self, vals, dps):
         """P(a) at a point by the independent quadrature of the defining
-        integral (here Eq. 10*), for the checks of the contacts built on this one."""
-        return T.force_quad(self.profile, vals, dps)
+        integral (here Eq. 10*), for the checks of the contacts built on this
+        one: the certified reference (Arb ball quadrature, a RefValue; the
+        mpmath quadrature where Arb cannot), as the force's own verification."""
+        return R.force_reference(self.profile, vals, dps)
 
     def force_integral(self):
         """The unevaluated force law (Eq. 10*)."""

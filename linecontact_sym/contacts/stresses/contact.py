@@ -62,7 +62,7 @@ class StressField(ContactOn):
     >>> import linecontact_sym as lcs
     >>> sf = lcs.parabola(verify=False).stresses(verify=False)
     >>> sf.cauchy_transform
-    pi*E_star*zeta*(1 - sqrt(-a**2/zeta**2 + 1))/(2*R)
+    pi*E_star*zeta*(1 - sqrt((-a**2 + zeta**2)/zeta**2))/(2*R)
     >>> m = sf.maximum("principal_shear", a=1, E_star=2, R=1)     # p0 = 1
     >>> round(m.value, 6), round(abs(m.x), 6), round(m.z, 6), m.digits > 9
     (0.300283, 0.0, 0.786151, True)

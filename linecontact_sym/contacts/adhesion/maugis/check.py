@@ -18,6 +18,8 @@ with the flat-punch derivation of :mod:`.derive`:
 """
 from __future__ import annotations
 
+import functools
+
 import mpmath
 import sympy as sp
 
@@ -25,7 +27,6 @@ from ....core import symbols as S
 from ....core.conversion import to_mpf
 from ....core.errors import VerificationError
 from ....core.precision import workdps
-from ....method import transforms as T
 
 
 def _mp(v):
@@ -48,8 +49,8 @@ def strip_slope(s, A, C, sig, E, a_minus_s=None):
 def force_johnson(md, vals, dps):
     """P(a, c_D) by Johnson's bounded-solution condition (see the module docstring)."""
     with workdps(dps + 15):
-        A, C, sig, E, = _values(md, vals)[:3] + (_values(md, vals)[4],)
-        P0 = T.force_quad(md.profile, vals, dps + 5)
+        A, C, sig, _, E = _values(md, vals)
+        P0 = md.contact.force_reference(vals, dps + 5)     # Eq. (10*): Arb ball quadrature (mpmath where not)
         # (E*/2) int_-a^a s u_D'(s)/sqrt(a^2 - s^2) ds, s = a cos(psi), even integrand
         I = mpmath.quad(lambda ps: A * mpmath.cos(ps) * strip_slope(A * mpmath.cos(ps), A, C, sig, E,
                                                                     2 * A * mpmath.sin(ps / 2)**2),
@@ -71,14 +72,32 @@ def _flamant_difference(p_in, A, C, sig, E, X):
     return -2 / (mpmath.pi * E) * mpmath.re(I)
 
 
+def _dugdale_pressure(md):
+    """The Dugdale sub-problem's contact pressure as an mpmath function of
+    (x, a, c_D, sigma_0), made once per expression: substituting mpf values
+    into the SymPy expression at every point (Floats, then SymPy's own
+    evaluation of asin with its assumption queries) cost 0.15 CPU s a point."""
+    sig = tuple(dict.fromkeys(s for s in (S.sigma_0, md.sigma0) if isinstance(s, sp.Symbol)))
+    return _pressure_function(md.dugdale.pressure, sig)
+
+
+@functools.lru_cache(maxsize=32)
+def _pressure_function(expr, sig):
+    extra = expr.free_symbols - {S.x, S.a, S.c_D, *sig}
+    if extra:
+        raise VerificationError(f"the Dugdale pressure has symbols {sorted(map(str, extra))} without values")
+    f = sp.lambdify([S.x, S.a, S.c_D, *sig], expr, "mpmath")
+    return lambda x, a, c, s0: f(x, a, c, *([s0] * len(sig)))
+
+
 def dugdale_subproblem_gap(md, vals, dps):
     """u_D(c_D) - u_D(0) of the Dugdale sub-problem (strip traction and the
     contact pressure that keeps |x| < a flat), by the Flamant kernel; the
     contact pressure (the derived one) is first checked by substitution."""
     with workdps(dps + 15):
         A, C, sig, w, E = _values(md, vals)
-        pD = sp.lambdify(S.x, md.dugdale.pressure.xreplace({S.a: A, S.c_D: C, S.sigma_0: sig})
-                         .xreplace({md.sigma0: sig}), "mpmath")
+        p = _dugdale_pressure(md)
+        pD = lambda s: p(s, A, C, sig)  # noqa: E731
         scale = sig * (C - A) / E
         for frac in ("0.3", "0.8"):
             r = _flamant_difference(pD, A, C, sig, E, A * mpmath.mpf(frac))

@@ -37,6 +37,7 @@ from ....core.errors import DomainError, NoPullOffError, VerificationError
 from ....core.precision import workdps
 from ....core.roots import UNDEFINED, Outside, domain_end, real_value
 from ....method.transforms import inside
+from ....numeric.special import MPMATH_ARB
 
 @dataclass
 class MDState:
@@ -90,7 +91,9 @@ def profile_kinks(profile, fixed):
 
 
 def _lam(expr, args):
-    return sp.lambdify(args, expr, "mpmath")
+    """``expr`` as an mpmath function of ``args`` (Bessel and elliptic Pi through Arb: the
+    law is evaluated thousands of times in a pull-off search)."""
+    return sp.lambdify(args, expr, modules=[dict(MPMATH_ARB), "mpmath"])
 
 
 def _real(fn):
