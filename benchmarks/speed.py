@@ -105,6 +105,22 @@ def per_call(f, n=3000) -> float:
     return min(timeit.repeat(f, number=n, repeat=5, timer=time.process_time)) / n
 
 
+def per_call_interleaved(fns, n=3000, rounds=15) -> list:
+    """CPU seconds per call of each of ``fns`` ((callable, calls per round)
+    pairs), the best of ``rounds`` rounds that time every callable in turn:
+    a ratio of two rows then compares them in the same state of the machine
+    (on this VM the speed of a microsecond call drifts by up to 2x over
+    seconds; timed one after the other, a ratio drifted with it)."""
+    best = [math.inf] * len(fns)
+    for f, _ in fns:
+        f()
+    for _ in range(rounds):
+        for i, (f, k) in enumerate(fns):
+            t = timeit.timeit(f, number=k, timer=time.process_time) / k
+            best[i] = min(best[i], t)
+    return best
+
+
 def in_process_rows(rows):
     import numpy as np
     import scipy.special as sc
@@ -133,12 +149,13 @@ def in_process_rows(rows):
         c = getattr(lcs, law)()
         f = c.to_numeric("force")
         fn = c.to_numeric("force", check=False)
-        th = per_call(lambda: h(0.3, 1.7, 1.0))
-        te = per_call(lambda: f(a=0.3, E_star=1.7, R=1.0))
-        tn = per_call(lambda: fn(a=0.3, E_star=1.7, R=1.0))
         it = iter(range(10**9))
-        tv = per_call(lambda: f(a=0.3 + 1e-9 * next(it), E_star=1.7, R=1.0), 1000)
-        tev = per_call(lambda: c.evaluate("force", rtol=1e-12, a=0.3, E_star=1.7, R=1.0), 300)
+        th, te, tn, tv, tev = per_call_interleaved([
+            (lambda: h(0.3, 1.7, 1.0), 3000),
+            (lambda: f(a=0.3, E_star=1.7, R=1.0), 3000),
+            (lambda: fn(a=0.3, E_star=1.7, R=1.0), 3000),
+            (lambda: f(a=0.3 + 1e-9 * next(it), E_star=1.7, R=1.0), 300),
+            (lambda: c.evaluate("force", rtol=1e-12, a=0.3, E_star=1.7, R=1.0), 1000)])
         name = law.replace("_", " ")
         rows.append((f"scalar force call, {name}: by hand", f"{th * 1e6:.2f} us",
                      "NumPy/scipy.special, no checks; CPU time per call, as the rows below"))
