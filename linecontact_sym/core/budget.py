@@ -274,6 +274,31 @@ def _exceeded(fn, seconds, *, guard=None):
     return exc
 
 
+def _within_outer(seconds):
+    """``seconds`` cut to what remains of the budget of the child this runs
+    in (if any): a nested budget never outlasts its parent's."""
+    outer = _IN_CHILD["deadline"]
+    if outer is not None and outer.budget is not None:
+        left = max(outer.left(), 1e-3)
+        seconds = left if seconds is None or math.isinf(seconds) else min(float(seconds), left)
+    return seconds
+
+
+def _reap(proc, recv):
+    """Close the pipe, end and join the child; inside a budgeted child, re-arm
+    its own CPU timer with what remains after the grandchild's work."""
+    recv.close()
+    if proc.is_alive():
+        proc.kill()
+    proc.join()
+    outer = _IN_CHILD["deadline"]
+    if outer is not None and outer.budget is not None:
+        try:
+            _arm(outer.left())
+        except (AttributeError, OSError, ValueError):
+            pass
+
+
 def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
     """Call ``fn(*args, **kwargs)`` in a forked child and return its result,
     or raise :class:`BudgetExceeded` once the child has used ``seconds`` of
@@ -284,10 +309,7 @@ def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
     that child's budget.  Exceptions raised by ``fn`` are re-raised in the
     caller.
     """
-    outer = _IN_CHILD["deadline"]
-    if outer is not None and outer.budget is not None:
-        left = max(outer.left(), 1e-3)
-        seconds = left if seconds is None or math.isinf(seconds) else min(float(seconds), left)
+    seconds = _within_outer(seconds)
     if seconds is None or math.isinf(seconds) or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK"):
         return fn(*args, **kwargs)
     seconds = max(float(seconds), 1e-3) if seconds == seconds else 1e-3
@@ -309,15 +331,7 @@ def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
         except EOFError:
             payload = None
     finally:
-        recv.close()
-        if proc.is_alive():
-            proc.kill()
-        proc.join()
-        if outer is not None and outer.budget is not None:
-            try:                      # this child's own timer: what remains after the grandchild's work
-                _arm(outer.left())
-            except (AttributeError, OSError, ValueError):
-                pass
+        _reap(proc, recv)
     if payload is None:
         if proc.exitcode in (-signal.SIGPROF, -getattr(signal, "SIGXCPU", signal.SIGPROF)):
             raise _exceeded(fn, seconds)
@@ -379,10 +393,7 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
     of ``seconds``), so results do not change, but one fork serves them all
     and each stage finds SymPy's caches warm from the stage before (a
     derivation's rule, tidying and verification: issue 26)."""
-    outer = _IN_CHILD["deadline"]
-    if outer is not None and outer.budget is not None:
-        left = max(outer.left(), 1e-3)
-        seconds = left if seconds is None or math.isinf(seconds) else min(float(seconds), left)
+    seconds = _within_outer(seconds)
     if seconds is None or math.isinf(seconds) or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK") \
             or _mp.current_process().daemon:
         # in-process (no limit, no fork) or a pool's worker: each stage as run_with_budget runs it
@@ -424,15 +435,7 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
                 first = msg[1]
             break
     finally:
-        recv.close()
-        if proc.is_alive():
-            proc.kill()
-        proc.join()
-        if outer is not None and outer.budget is not None:
-            try:
-                _arm(outer.left())
-            except (AttributeError, OSError, ValueError):
-                pass
+        _reap(proc, recv)
     if first is not None:
         raise first
     if not out:

@@ -432,25 +432,7 @@ def compile_acb(expr, var, holomorphic: bool = True):
             return lambda z, an: acb(0, 1)
         if e.is_Add or e.is_Mul:
             fs = _folded(e, build, constant, symbols)
-            if len(fs) == 1:
-                return fs[0]
-            if e.is_Add:
-                def add(z, an):
-                    s_ = fs[0](z, an)
-                    for f in fs[1:]:
-                        s_ = s_ + f(z, an)
-                    return s_
-                return add
-
-            def mul(z, an):
-                # f * p: Arb's acb_mul(f, p) on real balls is arb_mul(p, f),
-                # the real product in the order of the factors (its radius
-                # rounding is not symmetric)
-                p_ = fs[0](z, an)
-                for f in fs[1:]:
-                    p_ = f(z, an) * p_
-                return p_
-            return mul
+            return fs[0] if len(fs) == 1 else _combined(fs, e.is_Add)
         if e.is_Pow:
             fb = build(e.base)
             ex = e.exp
@@ -552,20 +534,29 @@ def _folded(e, build, constant, symbols):
     const = [t for t in e.args if not t.has(*symbols)] if symbols else []
     if len(const) < 2:
         return [build(t) for t in e.args]
-    parts = [build(t) for t in const]
-    if e.is_Add:
-        def fold(z, an):
-            s_ = parts[0](z, an)
-            for f in parts[1:]:
+    fold = _combined([build(t) for t in const], e.is_Add)
+    return [constant(fold)] + [build(t) for t in e.args if t.has(*symbols)]
+
+
+def _combined(fs, add):
+    """The compiled sum (``add``) or product of the compiled terms ``fs``."""
+    if add:
+        def total(z, an):
+            s_ = fs[0](z, an)
+            for f in fs[1:]:
                 s_ = s_ + f(z, an)
             return s_
-    else:
-        def fold(z, an):
-            p_ = parts[0](z, an)
-            for f in parts[1:]:
-                p_ = f(z, an) * p_
-            return p_
-    return [constant(fold)] + [build(t) for t in e.args if t.has(*symbols)]
+        return total
+
+    def product(z, an):
+        # f * p: Arb's acb_mul(f, p) on real balls is arb_mul(p, f),
+        # the real product in the order of the factors (its radius
+        # rounding is not symmetric)
+        p_ = fs[0](z, an)
+        for f in fs[1:]:
+            p_ = f(z, an) * p_
+        return p_
+    return product
 
 
 def _extremum(fs, largest):
