@@ -274,6 +274,15 @@ def _exceeded(fn, seconds, *, guard=None):
     return exc
 
 
+def _no_result(fn, seconds, proc):
+    """The error of a child that sent no result: its CPU timer's signal (the
+    budget spent), or it died otherwise."""
+    if proc.exitcode in (-signal.SIGPROF, -getattr(signal, "SIGXCPU", signal.SIGPROF)):
+        return _exceeded(fn, seconds)
+    return BudgetExceeded(f"{getattr(fn, '__name__', fn)}: worker died without a result "
+                          f"(exit code {proc.exitcode})")
+
+
 def _within_outer(seconds):
     """``seconds`` cut to what remains of the budget of the child this runs
     in (if any): a nested budget never outlasts its parent's."""
@@ -333,10 +342,7 @@ def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
     finally:
         _reap(proc, recv)
     if payload is None:
-        if proc.exitcode in (-signal.SIGPROF, -getattr(signal, "SIGXCPU", signal.SIGPROF)):
-            raise _exceeded(fn, seconds)
-        raise BudgetExceeded(f"{getattr(fn, '__name__', fn)}: worker died without a result "
-                             f"(exit code {proc.exitcode})")
+        raise _no_result(fn, seconds, proc)
     if payload[0] == "ok":
         return payload[1]
     raise payload[1]
@@ -439,8 +445,5 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
     if first is not None:
         raise first
     if not out:
-        if proc.exitcode in (-signal.SIGPROF, -getattr(signal, "SIGXCPU", signal.SIGPROF)):
-            raise _exceeded(stages[0], seconds)
-        raise BudgetExceeded(f"{getattr(stages[0], '__name__', stages[0])}: worker died without a result "
-                             f"(exit code {proc.exitcode})")
+        raise _no_result(stages[0], seconds, proc)
     return out, started
