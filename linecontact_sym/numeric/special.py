@@ -56,8 +56,7 @@ from ..core.precision import workdps
 sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "np_rf", "np_rd", "np_rg",
-           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS",
-           "MPMATH_ARB"]
+           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
 
 
 class _StableFunction(sp.Function):
@@ -468,76 +467,3 @@ NUMPY_FUNCS = {"carlson_rf": np_rf, "carlson_rd": np_rd, "carlson_rg": np_rg, "c
 MPMATH_FUNCS = {"carlson_rf": _mp_rf, "carlson_rd": _mp_rd, "carlson_rg": _mp_rg, "carlson_rj": _mp_rj,
                 "gamma_ratio": _mp_gamma_ratio,
                 "hyp2f1c": _mp_hyp2f1c}
-
-
-# ------------------------------------------------ mpmath functions through Arb
-def _arb_of(v):
-    """The arb of a real mpf, int or float (exact where python-flint's precision holds its
-    mantissa); None for anything else (mpc, inf, nan)."""
-    flint = _flint()
-    if isinstance(v, mpmath.mpf):
-        sign, man, exp, _ = v._mpf_
-        if not man:
-            return flint.arb(0) if v == 0 else None
-        return flint.arb(flint.fmpz(-int(man) if sign else int(man))) * flint.arb(2) ** int(exp)
-    if isinstance(v, int) and not isinstance(v, bool):
-        return flint.arb(flint.fmpz(v))
-    if isinstance(v, float) and math.isfinite(v):
-        return flint.arb(v)
-    return None
-
-
-def _mpf_of_ball(b, prec):
-    """The midpoint of the real arb ``b`` as an mpf rounded to ``prec`` bits when the ball
-    is finite and resolves that many bits (relative); else None."""
-    if not b.is_finite():
-        return None
-    if b.is_exact():
-        if b.is_zero():
-            return mpmath.mpf(0)
-    elif b.rel_accuracy_bits() < prec + 4:
-        return None
-    man, exp = b.mid().man_exp()
-    return mpmath.mpf((int(man), int(exp)))
-
-
-_FLINT = []
-
-
-def _flint():
-    if not _FLINT:
-        import flint
-        _FLINT.append(flint)
-    return _FLINT[0]
-
-
-def _through_arb(ball_of, mp_fn, ok=lambda *xs: True):
-    """``mp_fn`` (an mpmath function of real arguments) evaluated by Arb: ``ball_of(*arbs)`` at
-    20 bits above mpmath's working precision, its midpoint returned where the ball resolves
-    that precision; mpmath's own function wherever Arb cannot (a complex or non-finite
-    argument, a ball too wide, ``ok`` false).  The same number to the working precision as
-    mpmath's (both correct to it), several to 25 times faster (Bessel, elliptic Pi)."""
-    def f(*args):
-        prec = mpmath.mp.prec
-        with _flint().ctx.workprec(prec + 20):
-            xs = [_arb_of(a) for a in args]     # exact: an argument's mantissa has at most prec bits
-            out = _mpf_of_ball(ball_of(*xs), prec) if None not in xs and ok(*xs) else None
-        return mp_fn(*args) if out is None else out
-    f.__name__ = mp_fn.__name__
-    return f
-
-
-def _arb_pi_complete(n, m):
-    acb = _flint().acb
-    return acb.elliptic_pi(acb(n), acb(m)).real
-
-
-#: real Bessel I and J and the complete elliptic Pi(n|m) with n, m < 1 (no principal value),
-#: through Arb, for mpmath lambdify namespaces evaluated many times (a law's P(a) in a root
-#: search or a quadrature); everything else is mpmath's
-MPMATH_ARB = {
-    "besseli": _through_arb(lambda nu, z: z.bessel_i(nu), mpmath.besseli),
-    "besselj": _through_arb(lambda nu, z: z.bessel_j(nu), mpmath.besselj),
-    "elliptic_pi": _through_arb(_arb_pi_complete, mp_elliptic_pi,
-                                ok=lambda *xs: len(xs) == 2 and xs[0] < 1 and xs[1] < 1),
-}

@@ -1,10 +1,11 @@
-"""numeric.special.MPMATH_ARB: Bessel I, J and the complete elliptic Pi through Arb give
+"""numeric.arb_functions.MPMATH_ARB: Bessel I, J and the complete elliptic Pi through Arb give
 mpmath's own values to its working precision, and fall back to mpmath where Arb cannot
 (complex arguments, Pi(n|m) with n > 1, an argument that is not a number)."""
 import mpmath
 import pytest
 
-from linecontact_sym.numeric.special import MPMATH_ARB, mp_elliptic_pi
+from linecontact_sym.numeric.arb_functions import MPMATH_ARB
+from linecontact_sym.numeric.special import mp_elliptic_pi
 
 CASES = [("besseli", mpmath.besseli, (1, "0.123456789012345678901234567890123")),
          ("besseli", mpmath.besseli, (0, "0")),

@@ -38,7 +38,7 @@ from ...core.errors import DomainError
 from ...core.roots import UNDEFINED, Outside, real_value
 from ...method.geometry import ISOLATED
 from ...method.transforms import NumericProfile, inside
-from ...numeric.special import MPMATH_ARB
+from ...numeric.arb_functions import MPMATH_ARB
 from ...core.precision import workdps
 
 #: extra working digits of the numeric searches
@@ -141,7 +141,7 @@ class ForceLaw:
         P0 = expr.xreplace(pf)
         if P0.free_symbols - {S.a}:
             raise DomainError(f"missing values for {sorted(map(str, P0.free_symbols - {S.a}))}")
-        # Bessel and elliptic Pi through Arb (numeric.special.MPMATH_ARB): a law is evaluated
+        # Bessel and elliptic Pi through Arb (numeric.arb_functions.MPMATH_ARB): a law is evaluated
         # thousands of times by the root and minimum searches
         fP = sp.lambdify(S.a, P0, modules=[dict(MPMATH_ARB), "mpmath"])
         fdP = sp.lambdify(S.a, sp.diff(P0, S.a), modules=[dict(MPMATH_ARB), "mpmath"])

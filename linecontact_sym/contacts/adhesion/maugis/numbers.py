@@ -37,7 +37,7 @@ from ....core.errors import DomainError, NoPullOffError, VerificationError
 from ....core.precision import workdps
 from ....core.roots import UNDEFINED, Outside, domain_end, real_value
 from ....method.transforms import inside
-from ....numeric.special import MPMATH_ARB
+from ....numeric.arb_functions import MPMATH_ARB
 
 @dataclass
 class MDState:
