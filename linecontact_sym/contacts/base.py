@@ -710,11 +710,14 @@ class DomainCheck:
             plan = self._plan = scalar_domain_plan(self.contact, self.quantity)
         return plan
 
+    @property
     def bounds(self):
         """name -> 'positive', 'nonnegative' or 'any' where this check is
         bounds only (no condition, no inside/outside test, no admissibility
         test), else None: an export may then read a point in one pass
-        (:func:`~linecontact_sym.numeric.fastpath.one_pass`)."""
+        (:func:`~linecontact_sym.numeric.fastpath.one_pass`); the same
+        attribute as the ``bounds`` of :meth:`Contact.evaluate`'s scalar
+        domain check."""
         return _bounds_only(self._scalar_plan())
 
     def __getstate__(self):

@@ -323,7 +323,7 @@ def scalar_plan(nf):
     one = None
     if not params:    # no check (any finite number), or a bounds-only check: one pass (one_pass)
         one = one_pass(dict.fromkeys(names, "any") if nf.domain is None else
-                       nf.domain.bounds() if hasattr(nf.domain, "bounds") else None, names, f)
+                       getattr(nf.domain, "bounds", None), names, f)
     f64 = np.float64
 
     def fast(kw):
