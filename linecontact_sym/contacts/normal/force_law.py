@@ -34,6 +34,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.conversion import to_basic, to_mpf
+from ...core.quadrature import quad_piece
 from ...core.errors import DomainError
 from ...core.roots import UNDEFINED, Outside, real_value
 from ...method.geometry import ISOLATED
@@ -191,8 +192,8 @@ class ForceLaw:
             total = mpmath.mpf(0)
             for lo, hi in zip(e[:-1], e[1:]):
                 fn = inside(g, lo, hi)
-                total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
-                                     [mpmath.asin(lo / A), mpmath.asin(hi / A)])
+                total += quad_piece(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
+                                    mpmath.asin(lo / A), mpmath.asin(hi / A))
             return total
 
         def P(A):
