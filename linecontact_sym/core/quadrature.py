@@ -158,7 +158,7 @@ def quad_segments(g, pts, alphas=(None, None)):
     return total
 
 
-def quad_piece(f, a, b):
+def quad_piece(f, a, b, gauss: bool = True):
     """int_a^b f at the working precision for an integrand that is usually
     analytic on the closed piece [a, b] (a quadrature law's pieces between
     breakpoints, :class:`~linecontact_sym.contacts.normal.force_law.ForceLaw`):
@@ -172,21 +172,27 @@ def quad_piece(f, a, b):
     working precision and runs every degree.  An analytic piece takes 9-45
     integrand values at 20 digits instead of tanh-sinh's 57-115.
 
+    Returns ``(value, by_gauss)``: whether Gauss-Legendre converged (a caller
+    that integrates the same piece again may pass ``gauss=False`` where it
+    did not: tanh-sinh at once).
+
     >>> with mpmath.workdps(30):
-    ...     print(abs(quad_piece(mpmath.exp, mpmath.mpf(0), mpmath.mpf(1)) - (mpmath.e - 1)) < 1e-29)
-    True
+    ...     v, by_gauss = quad_piece(mpmath.exp, mpmath.mpf(0), mpmath.mpf(1))
+    ...     print(abs(v - (mpmath.e - 1)) < 1e-29, by_gauss)
+    True True
     >>> with mpmath.workdps(30):    # sqrt at an end: Gauss-Legendre's estimate fails, tanh-sinh does it
-    ...     print(abs(quad_piece(mpmath.sqrt, mpmath.mpf(0), mpmath.mpf(1)) - mpmath.mpf(2) / 3) < 1e-29)
-    True
+    ...     v, by_gauss = quad_piece(mpmath.sqrt, mpmath.mpf(0), mpmath.mpf(1))
+    ...     print(abs(v - mpmath.mpf(2) / 3) < 1e-29, by_gauss)
+    True False
     """
     ctx = mpmath.mp
     prec = ctx.prec
-    gauss = max(2, math.ceil(math.log2(max(ctx.dps, 3) / 3)) + 1)   # 3 * 2**(m - 1) >= dps nodes
-    for rule, top in ((ctx._gauss_legendre, gauss), (ctx._tanh_sinh, ctx._tanh_sinh.guess_degree(prec))):
-        value, done = _summation(rule, f, a, b, prec, top)
+    if gauss:
+        top = max(2, math.ceil(math.log2(max(ctx.dps, 3) / 3)) + 1)   # 3 * 2**(m - 1) >= dps nodes
+        value, done = _summation(ctx._gauss_legendre, f, a, b, prec, top)
         if done:
-            return value
-    return value
+            return value, True
+    return _summation(ctx._tanh_sinh, f, a, b, prec, ctx._tanh_sinh.guess_degree(prec))[0], False
 
 
 def _summation(rule, f, a, b, prec, top):
