@@ -63,6 +63,22 @@ def test_singular_end_neither_route_removes_falls_back_to_mpmath_and_says_why():
         assert abs(r - mpmath.mpf(-9) / 4) < mpmath.mpf(10)**-20
 
 
+def test_arc_branch_point_at_a_singular_end_falls_back_at_once_with_the_right_value(monkeypatch):
+    # asin(1/(1 + t)) + 1/sqrt(t) on [0, 1]: the end t = 0 is both 1/sqrt's singularity and asin's
+    # branch point (argument 1), which t = u^2 leaves at u = 0: said at once, before the substitution
+    import linecontact_sym.numeric.reference as ref
+
+    def never(*args):
+        raise AssertionError("the substitution was attempted")
+    monkeypatch.setattr(ref, "_end_power", never)
+    f = sp.asin(1 / (1 + t)) + 1 / sp.sqrt(t)
+    r = integrate(f, t, [0, sp.Rational(1, 2), 1], dps=30)
+    assert r.method == MPMATH and "singularity" in r.note
+    with mpmath.workdps(45):     # y = 1/(1 + t): int asin(y)/y^2 = -asin(y)/y - atanh(sqrt(1 - y^2))
+        exact = -mpmath.pi / 6 + mpmath.atanh(mpmath.sqrt(3) / 2) + 2
+        assert abs(r - exact) < mpmath.mpf(10)**-20      # the default fallback: tanh-sinh, an estimate
+
+
 def test_refvalue_is_a_number_and_pickles():
     import pickle
     r = integrate(sp.exp(t), t, [0, 1], dps=30)
