@@ -137,3 +137,19 @@ def test_inverse_sqrt_end_points_are_certified_after_substitution():
     with mpmath.workdps(60):
         f_a = 2 * mpmath.mpf(3) / 2 / mpmath.pi * J
         assert abs(f_a - mpmath.mpf(9) / 4 / (2 * mpmath.mpf(21) / 10)) < mpmath.mpf(10)**-38
+
+
+def test_closed_form_at_a_point_takes_the_piecewise_branch_the_substitution_would():
+    # at_point (the verification's value of a closed form) substitutes only the branch that the
+    # Piecewise of the substituted branches evaluates to; undecided conditions substitute it all
+    from linecontact_sym.method.verification import at_point
+    a, b, x = S.a, S.b, S.x
+    pw = sp.Piecewise((sp.sqrt(a - x), x < b), (sp.log(x), sp.Eq(x, b)), (sp.atan(x / a) + 1, True))
+    for xv in (sp.Float("0.25", 70), sp.Float("0.5", 70), sp.Float("0.75", 70)):
+        vals = {a: sp.Float(1, 70), b: sp.Float("0.5", 70), x: xv}
+        assert at_point(pw, vals) == pw.xreplace(vals)
+    some = {a: sp.Float(1, 70), x: sp.Float("0.25", 70)}           # b left symbolic: x < b undecided
+    assert at_point(pw, some) == pw.xreplace(some) and at_point(pw, some).has(sp.Piecewise)
+    nested = sp.Piecewise((pw, a > 0), (0, True))
+    vals = {a: sp.Float(1, 70), b: sp.Float("0.5", 70), x: sp.Float("0.75", 70)}
+    assert at_point(nested, vals) == nested.xreplace(vals)
