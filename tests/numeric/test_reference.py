@@ -63,20 +63,18 @@ def test_singular_end_neither_route_removes_falls_back_to_mpmath_and_says_why():
         assert abs(r - mpmath.mpf(-9) / 4) < mpmath.mpf(10)**-20
 
 
-def test_arc_branch_point_at_a_singular_end_falls_back_at_once_with_the_right_value(monkeypatch):
-    # asin(1/(1 + t)) + 1/sqrt(t) on [0, 1]: the end t = 0 is both 1/sqrt's singularity and asin's
-    # branch point (argument 1), which t = u^2 leaves at u = 0: said at once, before the substitution
-    import linecontact_sym.numeric.reference as ref
-
-    def never(*args):
-        raise AssertionError("the substitution was attempted")
-    monkeypatch.setattr(ref, "_end_power", never)
-    f = sp.asin(1 / (1 + t)) + 1 / sp.sqrt(t)
-    r = integrate(f, t, [0, sp.Rational(1, 2), 1], dps=30)
-    assert r.method == MPMATH and "singularity" in r.note
-    with mpmath.workdps(45):     # y = 1/(1 + t): int asin(y)/y^2 = -asin(y)/y - atanh(sqrt(1 - y^2))
-        exact = -mpmath.pi / 6 + mpmath.atanh(mpmath.sqrt(3) / 2) + 2
-        assert abs(r - exact) < mpmath.mpf(10)**-20      # the default fallback: tanh-sinh, an estimate
+@pytest.mark.parametrize("arc", [sp.asin, sp.acos])
+def test_arc_branch_point_at_a_singular_end_is_certified(arc):
+    # arc(1/(1 + t)) + 1/sqrt(t) on [0, 1]: the end t = 0 is both 1/sqrt's singularity and the
+    # branch point of asin/acos (argument 1), which t = u^2 leaves at u = 0 (the worn cylinder's and
+    # rounded punch's pressure, asin(b/s) at s = b): the half-angle rewrite makes it holomorphic in u.
+    # Exact: y = 1/(1 + t), int asin(y)/y^2 dy = -asin(y)/y - atanh(sqrt(1 - y^2)), and acos = pi/2 - asin
+    r = integrate(arc(1 / (1 + t)) + 1 / sp.sqrt(t), t, [0, sp.Rational(1, 2), 1], dps=40)
+    assert r.method == ARB and r.digits >= 40
+    with mpmath.workdps(60):
+        of_asin = -mpmath.pi / 6 + mpmath.atanh(mpmath.sqrt(3) / 2)
+        exact = 2 + (of_asin if arc is sp.asin else mpmath.pi / 2 - of_asin)
+        assert r.contains(exact) and not r.contains(exact + mpmath.mpf(10)**-35)
 
 
 def test_refvalue_is_a_number_and_pickles():
