@@ -265,8 +265,11 @@ def test_cache_off_and_stale_versions(tmp_path, monkeypatch):
     assert store.make_key("test", x**2) != key
 
 
-def test_failure_is_remembered_not_retried():
+def test_failure_is_remembered_not_retried(tmp_path, monkeypatch):
     from linecontact_sym.method import store
+    # a cache of its own: another test of this worker (test_engine's same profile, the default
+    # budget) may have stored this force law on disk, which d1 would then read instead of deriving
+    monkeypatch.setenv(store.CACHE_ENV, str(tmp_path))
     store.clear_memory()
     f = x**2 * sp.exp(x) * sp.cos(x)          # no closed force law
     d1 = lcs.LineContact(f, budget=1).derivation("force")
