@@ -61,7 +61,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral", "log_end_integral", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -670,7 +670,10 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
     ``integrand``: a SymPy expression in ``var`` alone (all parameters
     already replaced by numbers, exact ones preferably), or a list of them,
     one per piece [points[k], points[k+1]] (a function whose formula
-    differs between pieces, |s| written s or -s: no switch to bisect);
+    differs between pieces, |s| written s or -s: no switch to bisect); an
+    expression may also be a compiled ``f(z, analytic)`` (:func:`compile_acb`
+    with the parameters' balls bound: no SymPy work per call; then
+    ``fallback`` is the caller's, and no end point is substituted);
     ``points``: the end points and break points, ascending (SymPy numbers,
     ints, Rationals, mpf); ``dps``: the relative digits asked of the
     enclosure (of the sum; each piece is asked a little more);
@@ -821,6 +824,65 @@ def log_point_integral(p, var, c, points, dps: int = 45) -> RefValue:
     return lincomb([(1, ref), (pc, F(hi) - F(lo))], dps)
 
 
+def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
+    """int over the segment between c and ``other`` (either side of c) of
+    p(t) ln|t - c| dt, for p holomorphic next to that segment and finite at
+    c (its logarithmic end).  The exponential substitution
+    t = c + (other - c) e^(-u), h = |other - c|, makes it
+
+        h int_0^oo p(c + (other - c) e^(-u)) (ln h - u) e^(-u) du,
+
+    an integrand holomorphic next to [0, U] that decays like u e^(-u):
+    Arb integrates it on [0, U] (Gauss-Legendre, no bisection towards the
+    logarithm, which :func:`log_point_integral`'s crude bound needs), and
+    the tail beyond U is enclosed by M h e^(-U) (|ln h| + U + 1), M an
+    Arb bound of |p| on the real segment between c and c + (other - c) e^(-U).
+    ``p``: SymPy in ``var`` alone, or compiled (``f(z, analytic)``, see
+    :func:`integrate`); a certified :class:`RefValue`, or
+    :class:`ArbUnsupported` (p not finite at c, or any part Arb cannot
+    enclose): the caller's own route runs.
+
+    >>> t = sp.Dummy("t")
+    >>> r = log_end_integral(1 + t, t, sp.Rational(1, 3), 1, 40)
+    >>> exact = sp.integrate((1 + t) * sp.log(t - sp.Rational(1, 3)), (t, sp.Rational(1, 3), 1))
+    >>> with mpmath.workdps(60):
+    ...     print(r.method, r.contains(to_mpf(sp.N(exact, 60))), r.digits > 40)
+    arb True True
+    """
+    goal = _bits(dps)
+    f = p if callable(p) and not isinstance(p, sp.Basic) else compile_acb(p, var)
+    with flint.ctx.workprec(goal + 30):
+        cb, ob = to_acb(_exact(c)), to_acb(_exact(other))
+        step = ob - cb
+        h = step.real.abs_lower()
+        if not (h > 0 and step.is_finite()):
+            raise ArbUnsupported("an empty or unbounded segment next to a logarithmic end")
+        h = abs(step.real)
+        lnh = h.log()
+        U = int(math.ceil((goal + 20) * math.log(2) + math.log(1 + abs(float(lnh.mid())))))
+
+        def g(u, an):
+            e = (-u).exp()
+            return f(cb + step * e, an) * (lnh - u) * h * e
+        try:
+            v = flint.acb.integral(g, 0, U, rel_tol=flint.arb(2) ** -(goal + 8), eval_limit=EVAL_LIMIT)
+            end = (cb + step * flint.arb(-U).exp()).real
+            M = f(flint.acb(end.union(cb.real)), False)
+        except (ZeroDivisionError, ValueError, TypeError) as exc:
+            raise ArbUnsupported(f"Arb could not evaluate the integrand: {exc}") from None
+        if not (v.is_finite() and M.is_finite()):
+            raise ArbUnsupported("Arb could not enclose the integral next to a logarithmic end")
+        tail = M.abs_upper() * h * flint.arb(-U).exp() * (abs(lnh) + U + 1)
+        total = v.real + flint.arb(0, tail.abs_upper())
+        if 0 not in v.imag:
+            raise ArbUnsupported(f"the integral is not real: {v}")
+        if total.rel_accuracy_bits() < goal and total.rad() > flint.arb(2) ** -goal:
+            raise ArbUnsupported(f"enclosure too wide: {total.rel_accuracy_bits()} of {goal} bits")
+        ball = flint.acb(total)
+    with flint.ctx.workprec(goal + 64):
+        return RefValue(mpf_of_arb(total.mid()), mpf_of_arb(total.rad()), ARB, ball=ball)
+
+
 def _finite_number(v) -> bool:
     """Is the SymPy number ``v`` (SymPy could not tell) a finite ball?"""
     try:
@@ -917,7 +979,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
     prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
 
     def compiled(expr):
-        main = compile_acb(expr, var)
+        main = expr if callable(expr) and not isinstance(expr, sp.Basic) else compile_acb(expr, var)
         if crude is None:
             return main
 
@@ -952,7 +1014,8 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
                 total += piece(fs[e], lo, hi)
             except ArbUnsupported:
                 # ``crude`` bounds the integrand next to t = 0 only: a piece from 0 has no other remedy
-                if (crude is not None and lo == 0) or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)):
+                if (crude is not None and lo == 0) or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)) \
+                        or not isinstance(e, sp.Basic):
                     raise
                 total += _substituted(e, var, lo, hi, piece)
         if 0 not in total.imag:

@@ -27,6 +27,8 @@ from ....core import symbols as S
 from ....core.conversion import to_mpf
 from ....core.errors import VerificationError
 from ....core.precision import workdps
+from ....numeric.flamant import flamant_displacement
+from ....numeric.reference import RefValue, lincomb
 
 
 def _mp(v):
@@ -62,49 +64,50 @@ def force_reference(md):
     return lambda vals, dps: force_johnson(md, vals, dps)
 
 
-def _flamant_difference(p_in, A, C, sig, E, X):
-    """u(X) - u(0) of the pressure p_in on |s| < a and -sigma_0 on a < |s| < c (Flamant kernel)."""
-    def ker(s):
-        return mpmath.log(abs(X - s)) + mpmath.log(X + s) - 2 * mpmath.log(s)
-    pts_in = sorted({mpmath.mpf(0), A} | ({X} if 0 < X < A else set()))
-    pts_out = sorted({A, C} | ({X} if A < X < C else set()))
-    I = mpmath.quad(lambda s: p_in(s) * ker(s), pts_in) + mpmath.quad(lambda s: -sig * ker(s), pts_out)
-    return -2 / (mpmath.pi * E) * mpmath.re(I)
-
-
-def _dugdale_pressure(md):
-    """The Dugdale sub-problem's contact pressure as an mpmath function of
-    (x, a, c_D, sigma_0), made once per expression: substituting mpf values
-    into the SymPy expression at every point (Floats, then SymPy's own
-    evaluation of asin with its assumption queries) cost 0.15 CPU s a point."""
-    sig = tuple(dict.fromkeys(s for s in (S.sigma_0, md.sigma0) if isinstance(s, sp.Symbol)))
-    return _pressure_function(md.dugdale.pressure, sig)
+#: the integration variable of the Dugdale sub-problem's Flamant integrals
+_s = sp.Dummy("s", positive=True)
 
 
 @functools.lru_cache(maxsize=32)
-def _pressure_function(expr, sig):
+def _contact_piece(expr, sig):
+    """The Dugdale sub-problem's contact pressure on |s| < a as a Flamant
+    piece, in s with the parameters a, c_D, sigma_0 left as symbols (the
+    Flamant routine compiles it once and makes balls per point)."""
     extra = expr.free_symbols - {S.x, S.a, S.c_D, *sig}
     if extra:
         raise VerificationError(f"the Dugdale pressure has symbols {sorted(map(str, extra))} without values")
-    f = sp.lambdify([S.x, S.a, S.c_D, *sig], expr, "mpmath")
-    return lambda x, a, c, s0: f(x, a, c, *([s0] * len(sig)))
+    return expr.xreplace({S.x: _s}), _s, sp.S.Zero, S.a
+
+
+def _flamant_difference(md, vals, X, dps):
+    """u(X) - u(0) of the Dugdale sub-problem (its contact pressure on
+    |s| < a and -sigma_0 on a < |s| < c_D), by the one Flamant routine
+    (:func:`~linecontact_sym.numeric.flamant.flamant_displacement`: an Arb
+    enclosure, tanh-sinh where Arb cannot, recorded)."""
+    sig = tuple(dict.fromkeys(s for s in (S.sigma_0, md.sigma0) if isinstance(s, sp.Symbol)))
+    sigma = md.sigma0.xreplace(vals)
+    values = {S.a: vals[S.a], S.c_D: vals[S.c_D], **{q: sigma for q in sig}}
+    pieces = [_contact_piece(md.dugdale.pressure, sig), (-md.sigma0, _s, S.a, S.c_D)]
+    return lincomb([(-1, flamant_displacement(pieces, X, vals[S.E_star], dps, values=values))], dps)
 
 
 def dugdale_subproblem_gap(md, vals, dps):
     """u_D(c_D) - u_D(0) of the Dugdale sub-problem (strip traction and the
     contact pressure that keeps |x| < a flat), by the Flamant kernel; the
-    contact pressure (the derived one) is first checked by substitution."""
+    contact pressure (the derived one) is first checked by substitution:
+    u(x) - u(0) = 0 at x = 0.3 a and 0.8 a, to dps + 3 digits of the
+    strip's scale sigma_0 (c_D - a)/E* (with an Arb enclosure: the whole
+    ball within that bound)."""
     with workdps(dps + 15):
         A, C, sig, w, E = _values(md, vals)
-        p = _dugdale_pressure(md)
-        pD = lambda s: p(s, A, C, sig)  # noqa: E731
-        scale = sig * (C - A) / E
-        for frac in ("0.3", "0.8"):
-            r = _flamant_difference(pD, A, C, sig, E, A * mpmath.mpf(frac))
-            if abs(r) > abs(scale) * mpmath.mpf(10)**-(dps + 3):
+        scale = abs(sig * (C - A) / E) * mpmath.mpf(10)**-(dps + 3)
+        for frac in (sp.Rational(3, 10), sp.Rational(4, 5)):
+            r = _flamant_difference(md, vals, vals[S.a] * frac, dps + 5)
+            if abs(r.mid) + r.rad > scale:
                 raise VerificationError(f"the Dugdale sub-problem's contact pressure does not keep the contact flat: "
-                                        f"u(x) - u(0) = {mpmath.nstr(r, 5)} at x = {frac} a")
-        return mpmath.re(_flamant_difference(pD, A, C, sig, E, C))
+                                        f"u(x) - u(0) = {mpmath.nstr(r.mid, 5)} +- {mpmath.nstr(r.rad, 3)} at "
+                                        f"x = {frac} a")
+        return _flamant_difference(md, vals, vals[S.c_D], dps + 5)
 
 
 def gap_reference(md):
@@ -113,7 +116,9 @@ def gap_reference(md):
     def ref(vals, dps):
         with workdps(dps + 15):
             g0 = gd.reference({**vals, S.x: vals[S.c_D]}, dps + 5)
-            return g0 + dugdale_subproblem_gap(md, vals, dps)
+            if not isinstance(g0, RefValue):     # an estimate: the sum is one too
+                g0 = RefValue(g0, mpmath.mpf(0), "mpmath", "the adhesionless gap's reference is an estimate")
+            return lincomb([(1, g0), (1, dugdale_subproblem_gap(md, vals, dps))], dps + 5)
     return ref
 
 
