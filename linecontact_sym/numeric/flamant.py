@@ -28,14 +28,13 @@ from __future__ import annotations
 
 import functools
 
-import flint
 import mpmath
 import sympy as sp
 
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps
-from .reference import ArbUnsupported, RefValue, compile_acb, estimate, integrate, lincomb, log_end_integral, to_acb
+from .reference import ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral
 
 __all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "kernel_points", "finite_at"]
 
@@ -107,11 +106,6 @@ def _piece_terms(p, s, lo, hi, xv, k, breaks, dps):
 _X, _U, _D = sp.Dummy("x", positive=True), sp.Dummy("u", positive=True), sp.Dummy("d", positive=True)
 
 
-@functools.lru_cache(maxsize=256)
-def _compiled(expr, syms):
-    return compile_acb(expr, list(syms))
-
-
 @functools.lru_cache(maxsize=64)
 def _end_substituted(g, s, hi):
     """g(s) ds on [hi - d, hi] as a function of u in [0, 1], s = hi - d u^2
@@ -123,26 +117,10 @@ def _end_substituted(g, s, hi):
                      lambda z: sp.factor(z.base) ** z.exp)
 
 
-def _bound(expr, syms, numbers):
-    """``f(z, analytic)`` of ``expr`` in (z, *syms) with ``syms`` at the exact
-    balls of ``numbers`` (made once per working precision)."""
-    F = _compiled(expr, (syms[0],) + tuple(syms[1:]))
-    balls: dict = {}
-
-    def f(z, an):
-        prec = flint.ctx.prec
-        if prec not in balls:
-            balls[prec] = tuple(to_acb(v) for v in numbers)
-        return F((z,) + balls[prec], an)
-    return f
-
-
 def _piece_terms_compiled(p, s, lo, hi, xv, k, values, dps):
     """:func:`_piece_terms` for a pressure with parameters (``values``): every
     SymPy form is built with the parameters (and x) as symbols, compiled
     once and reused at every point; per point only balls are made."""
-    params = tuple(values)
-    nums = tuple(values[q] for q in params)
     lo_v, hi_v = to_basic(lo.xreplace(values)), to_basic(hi.xreplace(values))
     inside = _is_true(lo_v < xv) and _is_true(xv < hi_v)
     pts = kernel_points(lo_v, hi_v, [xv] if inside else [])
@@ -162,7 +140,7 @@ def _piece_terms_compiled(p, s, lo, hi, xv, k, values, dps):
         for c, c_sym, m in logs:
             if c == u or c == v:
                 if pc is None:
-                    pc = _bound(p, (s,) + params, nums)
+                    pc = bound_acb(p, s, values)
                 terms.append((m * k, log_end_integral(pc, None, c, v if c == u else u, dps)))
             elif c == 0:
                 g += m * sp.log(s)
@@ -172,10 +150,10 @@ def _piece_terms_compiled(p, s, lo, hi, xv, k, values, dps):
             # the piece's end hi (the contact edge: a sqrt-type branch point of
             # the pressure), s = hi - d u^2
             q = _end_substituted(p * g, s, hi)
-            f = _bound(q, (_U, _X, _D) + params, (xv, v - u) + nums)
+            f = bound_acb(q, _U, {_X: xv, _D: v - u, **values})
             terms.append((k, certified(integrate(f, None, [0, 1], dps, fallback=lambda: mpmath.nan))))
         else:
-            smooth.append(_bound(p * g, (s, _X) + params, (xv,) + nums))
+            smooth.append(bound_acb(p * g, s, {_X: xv, **values}))
             spans.append((u, v))
     for f, (u, v) in zip(smooth, spans):
         terms.append((k, certified(integrate(f, None, [u, v], dps, fallback=lambda: mpmath.nan))))

@@ -51,6 +51,7 @@ True 0.78539816339744830961566084582
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import flint
@@ -61,7 +62,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral", "log_end_integral", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral", "log_end_integral", "bound_acb", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -253,7 +254,8 @@ def _method(name):
 #: functions holomorphic wherever they are finite (poles give non-finite balls by themselves)
 _MEROMORPHIC = {sp.exp: "exp", sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: "sec",
                 sp.csc: "csc", sp.sinh: "sinh", sp.cosh: "cosh", sp.tanh: "tanh", sp.coth: "coth",
-                sp.sech: "sech", sp.csch: "csch", sp.gamma: "gamma", sp.erf: "erf", sp.erfc: "erfc"}
+                sp.sech: "sech", sp.csch: "csch", sp.gamma: "gamma", sp.erf: "erf", sp.erfc: "erfc",
+                sp.sinc: "sinc"}
 
 _UNARY = {
     **{f: _method(name) for f, name in _MEROMORPHIC.items()},
@@ -658,6 +660,30 @@ def _condition(c, build):
 
 
 # ----------------------------------------------------------------- integration
+@functools.lru_cache(maxsize=256)
+def _compiled(expr, syms):
+    return compile_acb(expr, list(syms))
+
+
+def bound_acb(expr, var, values: dict):
+    """``f(z, analytic)`` of ``expr`` in ``var`` with the other symbols at
+    ``values`` (symbol -> number): compiled once per (expression, symbols)
+    with the parameters as symbols, their exact balls made once per working
+    precision, so that a reference evaluated at many points does no SymPy
+    work per point (``integrate`` and ``log_end_integral`` take it)."""
+    params = tuple(values)
+    F = _compiled(expr, (var,) + params)
+    nums = tuple(values[q] for q in params)
+    balls: dict = {}
+
+    def f(z, an):
+        prec = flint.ctx.prec
+        if prec not in balls:
+            balls[prec] = tuple(to_acb(v) for v in nums)
+        return F((z,) + balls[prec], an)
+    return f
+
+
 def _bits(dps: int) -> int:
     return int(math.ceil(dps * math.log2(10)))
 

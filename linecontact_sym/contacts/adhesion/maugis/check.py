@@ -28,7 +28,7 @@ from ....core.conversion import to_mpf
 from ....core.errors import VerificationError
 from ....core.precision import workdps
 from ....numeric.flamant import flamant_displacement
-from ....numeric.reference import RefValue, lincomb
+from ....numeric.reference import ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral
 
 
 def _mp(v):
@@ -48,16 +48,51 @@ def strip_slope(s, A, C, sig, E, a_minus_s=None):
     return 2 * sig / (mpmath.pi * E) * mpmath.log(ams * (C + s) / ((C - A + ams) * (A + s)))
 
 
+_psi = sp.Dummy("psi", positive=True)
+_A, _C = sp.Dummy("a", positive=True), sp.Dummy("c", positive=True)
+#: Johnson's integrand (E*/2) s u_D'(s)/sqrt(a^2 - s^2) ds for s = a cos(psi), without
+#: its factor 2 sigma_0/pi: a cos(psi) [2 ln psi + S(psi)], where
+#: (a - s)(c + s)/((c - s)(a + s)) = psi^2 exp(S(psi)) with a - s = (a/2) psi^2 sinc(psi/2)^2
+#: (sinc(z) = sin(z)/z), so that S is holomorphic on [0, pi/2] and the logarithm at psi = 0
+#: is ln psi alone (reference.log_end_integral)
+_JOHNSON_SMOOTH = _A * sp.cos(_psi) * (sp.log(_A * sp.sinc(_psi / 2)**2 / 2) + sp.log(_C + _A * sp.cos(_psi))
+                                       - sp.log(_C - _A + 2 * _A * sp.sin(_psi / 2)**2)
+                                       - sp.log(_A + _A * sp.cos(_psi)))
+_JOHNSON_LOG = 2 * _A * sp.cos(_psi)
+
+
+def _johnson_strip(A, C, dps):
+    """int_0^(pi/2) a cos(psi) ln((a - s)(c + s)/((c - s)(a + s))) dpsi, s = a cos(psi), by the
+    one reference integrator (an Arb enclosure; tanh-sinh where Arb cannot, recorded)."""
+    values = {_A: A, _C: C}
+    try:
+        smooth = integrate(bound_acb(_JOHNSON_SMOOTH, _psi, values), None, [0, sp.pi / 4, sp.pi / 2], dps,
+                           fallback=lambda: mpmath.nan)
+        log = log_end_integral(bound_acb(_JOHNSON_LOG, _psi, values), None, 0, sp.pi / 2, dps)
+        if smooth.certified and log.certified:
+            return lincomb([(1, smooth), (1, log)], dps)
+        reason = smooth.note
+    except ArbUnsupported as exc:
+        reason = str(exc)
+
+    def fallback():
+        a, c = _mp(A), _mp(C)
+        return mpmath.quad(lambda ps: a * mpmath.cos(ps) * mpmath.log(
+            2 * a * mpmath.sin(ps / 2)**2 * (c + a * mpmath.cos(ps))
+            / ((c - a + 2 * a * mpmath.sin(ps / 2)**2) * (a + a * mpmath.cos(ps)))), [0, mpmath.pi / 4, mpmath.pi / 2])
+    return estimate(fallback, reason, dps)
+
+
 def force_johnson(md, vals, dps):
     """P(a, c_D) by Johnson's bounded-solution condition (see the module docstring)."""
     with workdps(dps + 15):
-        A, C, sig, _, E = _values(md, vals)
+        sigma = md.sigma0.xreplace(vals)
         P0 = md.contact.force_reference(vals, dps + 5)     # Eq. (10*): Arb ball quadrature (mpmath where not)
-        # (E*/2) int_-a^a s u_D'(s)/sqrt(a^2 - s^2) ds, s = a cos(psi), even integrand
-        I = mpmath.quad(lambda ps: A * mpmath.cos(ps) * strip_slope(A * mpmath.cos(ps), A, C, sig, E,
-                                                                    2 * A * mpmath.sin(ps / 2)**2),
-                        [0, mpmath.pi / 4, mpmath.pi / 2])
-        return P0 + E * I - 2 * sig * (C - A)
+        if not isinstance(P0, RefValue):
+            P0 = RefValue(P0, mpmath.mpf(0), "mpmath", "the adhesionless force's reference is an estimate")
+        # E* int_0^a s u_D'(s)/sqrt(a^2 - s^2) ds (even integrand), s = a cos(psi)
+        I = _johnson_strip(vals[S.a], vals[S.c_D], dps + 5)
+        return lincomb([(1, P0), (2 * sigma / sp.pi, I), (-2 * sigma, vals[S.c_D]), (2 * sigma, vals[S.a])], dps + 5)
 
 
 def force_reference(md):
