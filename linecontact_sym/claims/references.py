@@ -190,9 +190,10 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     ``p``: a SymPy expression in one symbol (the pressure, every parameter a
     number), or an mpmath callable; a, x, E* exact numbers or mpf.  A SymPy
     ``p`` goes to the one reference integrator first
-    (:func:`~linecontact_sym.numeric.flamant.flamant_arb`: ln|x^2/s^2 - 1| = ln|x - s| + ln(x + s) - 2 ln s, each logarithmic
-    point removed by :func:`~linecontact_sym.numeric.reference.
-    log_point_integral`; a pressure with a break point (the rounded punch's
+    (:func:`~linecontact_sym.numeric.flamant.flamant_arb`: ln|x^2/s^2 - 1|
+    = ln|x - s| + ln(x + s) - 2 ln s, each logarithmic point at the end of
+    a piece by :func:`~linecontact_sym.numeric.reference.log_end_integral`;
+    a pressure with a break point (the rounded punch's
     slope has a logarithm at the end of its flat) or unbounded at 0 (the
     wedge's acosh(a/s)) as one integral of the kernel, whose logarithmic
     end points the integrator splits; a certified enclosure).  Where Arb cannot enclose

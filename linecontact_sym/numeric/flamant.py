@@ -11,10 +11,10 @@ on [0, a], a cohesive strip on [a, c], ...)::
 :func:`flamant_arb` is the certified route (the one reference integrator of
 :mod:`.reference`): each logarithmic point of the kernel (s = x inside a
 piece or at its end, s = 0 at the start of a piece from 0) is removed by
-:func:`~.reference.log_point_integral`, the smooth rest integrated as it
-stands; a pressure with a break point, or without a finite value at 0, goes
-to the integrator as one integral of the kernel (its logarithmic end points
-split there).  :func:`flamant_displacement` runs it first and, where Arb
+:func:`~.reference.log_end_integral` (an exponential substitution at the
+piece's end), the smooth rest integrated as it stands; a pressure with a
+break point, or without a finite value at 0, goes to the integrator as one
+integral of the kernel (its logarithmic end points split there).  :func:`flamant_displacement` runs it first and, where Arb
 cannot enclose the integral, tanh-sinh (:func:`flamant_tanh_sinh`, split at
 the logarithmic points), recorded as ``method == "mpmath"`` with the reason.
 
@@ -65,43 +65,6 @@ def finite_at(p, s, v) -> bool:
         return False
 
 
-def _piece_terms(p, s, lo, hi, xv, k, breaks, dps):
-    """[(coef, RefValue)] of k int_lo^hi p(s) ln|x^2/s^2 - 1| ds, certified
-    (or :class:`~.reference.ArbUnsupported`)."""
-    inside = _is_true(lo < xv) and _is_true(xv < hi)
-    pts = kernel_points(lo, hi, list(breaks) + ([xv] if inside else []))
-
-    def integral(g):
-        r = integrate(g, s, pts, dps, fallback=lambda: mpmath.nan)
-        if not r.certified:
-            raise ArbUnsupported(r.note)
-        return r
-    from_zero = lo == 0
-    if p.has(s) and (breaks or (from_zero and not finite_at(p, s, 0))):
-        # a break point (the end of a flat, where the pressure's slope has a
-        # logarithm) or p(0) not finite (the wedge's acosh(a/s)): the kernel
-        # as it stands, its logarithms and the pressure's taken by the
-        # integrator's logarithmic end points, one integral
-        return [(k, integral(p * sp.log(sp.Abs(xv**2 / s**2 - 1))))]
-    # ln|x - s| (coefficient 1) and, on a piece from 0, ln s (-2): on a piece
-    # with the point at an end, by the exponential substitution there
-    # (log_end_integral); elsewhere in the smooth part of the piece's integrand
-    logs = [(xv, 1)] + ([(sp.S.Zero, -2)] if from_zero else [])
-    smooth, terms = [], []
-    for u, v in zip(pts[:-1], pts[1:]):
-        g = sp.log(xv + s) + (0 if from_zero else -2 * sp.log(s))
-        for c, m in logs:
-            if c == u or c == v:
-                terms.append((m * k, log_end_integral(p, s, c, v if c == u else u, dps)))
-            elif c == 0:
-                g += m * sp.log(s)
-            else:
-                g += m * sp.log(xv - s if _is_true(v <= xv) else s - xv)
-        smooth.append(p * g)
-    terms.insert(0, (k, integral(smooth)))
-    return terms
-
-
 #: the point x, and the substitution s = hi - d u^2 of a piece's last part
 _X, _U, _D = sp.Dummy("x", positive=True), sp.Dummy("u", positive=True), sp.Dummy("d", positive=True)
 
@@ -117,57 +80,56 @@ def _end_substituted(g, s, hi):
                      lambda z: sp.factor(z.base) ** z.exp)
 
 
-def _piece_terms_compiled(p, s, lo, hi, xv, k, values, dps):
-    """:func:`_piece_terms` for a pressure with parameters (``values``): every
-    SymPy form is built with the parameters (and x) as symbols, compiled
-    once and reused at every point; per point only balls are made."""
-    lo_v, hi_v = to_basic(lo.xreplace(values)), to_basic(hi.xreplace(values))
+def _piece_terms(p, s, lo, hi, xv, k, breaks, values, dps):
+    """[(coef, RefValue)] of k int_lo^hi p(s) ln|x^2/s^2 - 1| ds, certified
+    (or :class:`~.reference.ArbUnsupported`).  ``values`` None: ``p``, lo,
+    hi are numbers but for s, and the integrator gets SymPy forms (its end
+    substitutions apply); a dict: the parameters' numbers, and it gets the
+    forms compiled once with the parameters and x as symbols."""
+    lo_v, hi_v = (lo, hi) if values is None else (to_basic(lo.xreplace(values)), to_basic(hi.xreplace(values)))
     inside = _is_true(lo_v < xv) and _is_true(xv < hi_v)
-    pts = kernel_points(lo_v, hi_v, [xv] if inside else [])
-    from_zero = lo_v == 0
-    logs = [(xv, _X, 1)] + ([(sp.S.Zero, sp.S.Zero, -2)] if from_zero else [])
-    const = not p.has(s)
-    terms = []
+    pts = kernel_points(lo_v, hi_v, list(breaks) + ([xv] if inside else []))
 
     def certified(r):
         if not r.certified:
             raise ArbUnsupported(r.note)
         return r
-    pc = None
-    smooth, spans = [], []
+    from_zero = lo_v == 0
+    if values is None and p.has(s) and (breaks or (from_zero and not finite_at(p, s, 0))):
+        # a break point (the end of a flat, where the pressure's slope has a
+        # logarithm) or p(0) not finite (the wedge's acosh(a/s)): the kernel
+        # as it stands, its logarithms and the pressure's taken by the
+        # integrator's logarithmic end points, one integral
+        g = p * sp.log(sp.Abs(xv**2 / s**2 - 1))
+        return [(k, certified(integrate(g, s, pts, dps, fallback=lambda: mpmath.nan)))]
+    # ln|x - s| (coefficient 1) and, on a piece from 0, ln s (-2): on a piece
+    # with the point at an end, by the exponential substitution there
+    # (log_end_integral); elsewhere in the smooth part of the piece's integrand
+    logs = [(xv, 1)] + ([(sp.S.Zero, -2)] if from_zero else [])
+    at = {**(values or {}), _X: xv}
+    pc = p if values is None else bound_acb(p, s, values)
+    smooth, terms = [], []
     for j, (u, v) in enumerate(zip(pts[:-1], pts[1:])):
         g = sp.log(_X + s) + (0 if from_zero else -2 * sp.log(s))
-        for c, c_sym, m in logs:
+        for c, m in logs:
             if c == u or c == v:
-                if pc is None:
-                    pc = bound_acb(p, s, values)
-                terms.append((m * k, log_end_integral(pc, None, c, v if c == u else u, dps)))
+                terms.append((m * k, log_end_integral(pc, s, c, v if c == u else u, dps)))
             elif c == 0:
                 g += m * sp.log(s)
             else:
                 g += m * sp.log(_X - s if _is_true(v <= xv) else s - _X)
-        if j == len(pts) - 2 and not const and v != xv:
+        if values is None:
+            smooth.append((p * g).xreplace(at))
+        elif j == len(pts) - 2 and p.has(s) and v != xv:
             # the piece's end hi (the contact edge: a sqrt-type branch point of
-            # the pressure), s = hi - d u^2
-            q = _end_substituted(p * g, s, hi)
-            f = bound_acb(q, _U, {_X: xv, _D: v - u, **values})
+            # the pressure), s = hi - d u^2, the substituted form made once
+            f = bound_acb(_end_substituted(p * g, s, hi), _U, {**at, _D: v - u})
             terms.append((k, certified(integrate(f, None, [0, 1], dps, fallback=lambda: mpmath.nan))))
         else:
-            smooth.append(bound_acb(p * g, s, {_X: xv, **values}))
-            spans.append((u, v))
-    for f, (u, v) in zip(smooth, spans):
-        terms.append((k, certified(integrate(f, None, [u, v], dps, fallback=lambda: mpmath.nan))))
-    return terms
-
-
-def _flamant_compiled(pieces, xv, k, dps, values):
-    values = {q: to_basic(v) for q, v in values.items()}
-    terms = []
-    for p, s, lo, hi in pieces:
-        p = sp.sympify(p, strict=True)
-        if p.free_symbols - {s} - set(values):
-            return None
-        terms += _piece_terms_compiled(p, s, sp.sympify(lo, strict=True), sp.sympify(hi, strict=True), xv, k, values, dps)
+            terms.append((k, certified(integrate(bound_acb(p * g, s, at), None, [u, v], dps,
+                                                 fallback=lambda: mpmath.nan))))
+    if smooth:
+        terms.insert(0, (k, certified(integrate(smooth, s, pts, dps, fallback=lambda: mpmath.nan))))
     return terms
 
 
@@ -192,18 +154,15 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
         if xv == 0:
             return RefValue(mpmath.mpf(0), mpmath.mpf(0), "arb")
         k = 2 / (sp.pi * E)
-        if values is not None:
-            terms = _flamant_compiled(pieces, xv, k, dps, values)
-            if terms is None:
-                return None
-            pieces = ()
-        else:
-            terms = []
+        vals = None if values is None else {q: to_basic(v) for q, v in values.items()}
+        terms = []
         for p, s, lo, hi in pieces:
-            p = sp.sympify(p, strict=True)
-            if p.free_symbols - {s}:
+            p, lo, hi = (sp.sympify(q, strict=True) for q in (p, lo, hi))
+            if p.free_symbols - {s} - set(vals or ()):
                 return None
-            terms += _piece_terms(p, s, to_basic(lo), to_basic(hi), xv, k, [to_basic(b) for b in breaks], dps)
+            if vals is None:
+                lo, hi = to_basic(lo), to_basic(hi)
+            terms += _piece_terms(p, s, lo, hi, xv, k, [to_basic(b) for b in breaks], vals, dps)
     except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
         return None
     ref = lincomb(terms, dps)
@@ -238,7 +197,8 @@ def flamant_displacement(pieces, x, E, dps: int, breaks=(), values=None) -> RefV
 
     def fallback():
         with workdps(dps + 15):
-            fs = [(sp.lambdify(s, sp.sympify(p, strict=True).xreplace(vals), "mpmath"), sp.sympify(lo, strict=True).xreplace(vals),
-                   sp.sympify(hi, strict=True).xreplace(vals)) for p, s, lo, hi in pieces]
+            fs = [(sp.lambdify(s, sp.sympify(p, strict=True).xreplace(vals), "mpmath"),
+                   sp.sympify(lo, strict=True).xreplace(vals), sp.sympify(hi, strict=True).xreplace(vals))
+                  for p, s, lo, hi in pieces]
             return flamant_tanh_sinh(fs, x, E)
     return estimate(fallback, "Arb could not enclose the Flamant integral", dps)

@@ -62,7 +62,9 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral", "log_end_integral", "bound_acb", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral",
+           "log_end_integral", "bound_acb", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported",
+           "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -891,7 +893,11 @@ def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
             e = (-u).exp()
             return f(cb + step * e, an) * (lnh - u) * h * e
         try:
-            v = flint.acb.integral(g, 0, U, rel_tol=flint.arb(2) ** -(goal + 8), eval_limit=EVAL_LIMIT)
+            # the size of the integral, to bound the absolute error of the tail's pieces by
+            size = (f(cb, False).abs_upper() * h * (abs(lnh) + 1)).abs_upper()
+            tol = flint.arb(2) ** -(goal + 8)
+            v = flint.acb.integral(g, 0, U, rel_tol=tol, abs_tol=tol * size if size.is_finite() and size > 0 else None,
+                                   eval_limit=EVAL_LIMIT)
             end = (cb + step * flint.arb(-U).exp()).real
             M = f(flint.acb(end.union(cb.real)), False)
         except (ZeroDivisionError, ValueError, TypeError) as exc:
