@@ -338,7 +338,7 @@ def _relation(rel):
     raise ArbUnsupported(f"no ball test for the relation {rel}")
 
 
-def compile_acb(expr, var, holomorphic: bool = True):
+def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
     """``f(z, analytic) -> acb``: ``expr`` (SymPy) evaluated on complex
     balls at the current python-flint precision, holomorphy signalled as
     ``acb.integral`` expects (module docstring).
@@ -349,7 +349,11 @@ def compile_acb(expr, var, holomorphic: bool = True):
     :data:`REAL` (the real function, as :func:`~linecontact_sym.numeric.
     certified.compile_arb` asks).  ``holomorphic=False``: the function will
     not be asked for holomorphy, so functions whose branch cuts are not
-    encoded (incomplete elliptic integrals) are allowed.
+    encoded (incomplete elliptic integrals) are allowed.  ``fixed``: the
+    last ``fixed`` symbols of a list ``var`` are parameters, whose balls
+    stay the same objects over many calls (:func:`bound_acb`): the
+    subexpressions free of the other symbols are computed once per
+    precision and parameter balls, as numbers are.
     :class:`ArbUnsupported` for a function without an acb counterpart or a
     symbol not in ``var``."""
     expr = sp.sympify(expr, strict=True)
@@ -363,7 +367,8 @@ def compile_acb(expr, var, holomorphic: bool = True):
     if extra:
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
     acb, arb = flint.acb, flint.arb
-    symbols = tuple(index)
+    symbols = tuple(index)[:len(index) - fixed] if several else tuple(index)
+    params = tuple(range(len(index) - fixed, len(index))) if several else ()
     # subexpressions in the variables that occur more than once (the
     # pressure's asin(x/a) in four places) are evaluated once per ball
     seen: dict = {}
@@ -409,9 +414,10 @@ def compile_acb(expr, var, holomorphic: bool = True):
         def g(z, an):
             key = (flint.ctx.prec, an == REAL)
             v = memo.get(key)
-            if v is None:
-                v = memo[key] = f(z, REAL if an == REAL else False)
-            return v
+            at = tuple(z[i] for i in params)
+            if v is None or any(b is not c for b, c in zip(v[0], at)):
+                v = memo[key] = (at, f(z, REAL if an == REAL else False))
+            return v[1]
         return g
 
     def build_node(e):
@@ -663,8 +669,8 @@ def _condition(c, build):
 
 # ----------------------------------------------------------------- integration
 @functools.lru_cache(maxsize=256)
-def _compiled(expr, syms):
-    return compile_acb(expr, list(syms))
+def _compiled(expr, syms, fixed):
+    return compile_acb(expr, list(syms), fixed=fixed)
 
 
 def bound_acb(expr, var, values: dict):
@@ -674,7 +680,7 @@ def bound_acb(expr, var, values: dict):
     precision, so that a reference evaluated at many points does no SymPy
     work per point (``integrate`` and ``log_end_integral`` take it)."""
     params = tuple(values)
-    F = _compiled(expr, (var,) + params)
+    F = _compiled(expr, (var,) + params, len(params))
     nums = tuple(values[q] for q in params)
     balls: dict = {}
 
@@ -860,11 +866,14 @@ def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
 
         h int_0^oo p(c + (other - c) e^(-u)) (ln h - u) e^(-u) du,
 
-    an integrand holomorphic next to [0, U] that decays like u e^(-u):
-    Arb integrates it on [0, U] (Gauss-Legendre, no bisection towards the
-    logarithm, which :func:`log_point_integral`'s crude bound needs), and
-    the tail beyond U is enclosed by M h e^(-U) (|ln h| + U + 1), M an
-    Arb bound of |p| on the real segment between c and c + (other - c) e^(-U).
+    an integrand holomorphic next to [0, oo).  Its part p(c) h (ln h - 1)
+    is exact; the rest, with p(t) - p(c) in place of p(t), decays like
+    u e^(-2u) for p differentiable at c: Arb integrates it on [0, U]
+    (Gauss-Legendre, no bisection towards the logarithm, which
+    :func:`log_point_integral`'s crude bound needs), and the tail beyond U
+    is enclosed by D h e^(-U) (|ln h| + U + 1), D an Arb bound of
+    |p(t) - p(c)| on the real segment between c and c + (other - c) e^(-U)
+    (U grows until that bound is below the digits asked).
     ``p``: SymPy in ``var`` alone, or compiled (``f(z, analytic)``, see
     :func:`integrate`); a certified :class:`RefValue`, or
     :class:`ArbUnsupported` (p not finite at c, or any part Arb cannot
@@ -882,32 +891,40 @@ def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
     with flint.ctx.workprec(goal + 30):
         cb, ob = to_acb(_exact(c)), to_acb(_exact(other))
         step = ob - cb
-        h = step.real.abs_lower()
-        if not (h > 0 and step.is_finite()):
+        if not (step.real.abs_lower() > 0 and step.is_finite()):
             raise ArbUnsupported("an empty or unbounded segment next to a logarithmic end")
         h = abs(step.real)
         lnh = h.log()
-        U = int(math.ceil((goal + 20) * math.log(2) + math.log(1 + abs(float(lnh.mid())))))
-
-        def g(u, an):
-            e = (-u).exp()
-            return f(cb + step * e, an) * (lnh - u) * h * e
         try:
-            # the size of the integral, to bound the absolute error of the tail's pieces by
-            size = (f(cb, False).abs_upper() * h * (abs(lnh) + 1)).abs_upper()
+            pc = f(cb, False)
+            if not pc.is_finite():
+                raise ArbUnsupported(f"the integrand has no finite value at its logarithmic end {c}")
+            # the size of the integral, to bound the absolute error of the pieces by
+            size = ((pc.abs_upper() + 1) * h * (abs(lnh) + 1)).abs_upper()
             tol = flint.arb(2) ** -(goal + 8)
-            v = flint.acb.integral(g, 0, U, rel_tol=tol, abs_tol=tol * size if size.is_finite() and size > 0 else None,
-                                   eval_limit=EVAL_LIMIT)
-            end = (cb + step * flint.arb(-U).exp()).real
-            M = f(flint.acb(end.union(cb.real)), False)
+            U, tail = int(math.ceil(((goal + 20) * math.log(2) + math.log(1 + abs(float(lnh.mid())))) / 2)), None
+            for _ in range(4):
+                end = (cb + step * flint.arb(-U).exp()).real
+                D = f(flint.acb(end.union(cb.real)), False) - pc
+                tail = D.abs_upper() * h * flint.arb(-U).exp() * (abs(lnh) + U + 1)
+                if tail.is_finite() and tail < tol * size:
+                    break
+                U = U * 3 // 2
+
+            def g(u, an):
+                e = (-u).exp()
+                return (f(cb + step * e, an) - pc) * (lnh - u) * h * e
+            v = flint.acb.integral(g, 0, U, rel_tol=tol, abs_tol=tol * size, eval_limit=EVAL_LIMIT)
         except (ZeroDivisionError, ValueError, TypeError) as exc:
             raise ArbUnsupported(f"Arb could not evaluate the integrand: {exc}") from None
-        if not (v.is_finite() and M.is_finite()):
+        if not (v.is_finite() and tail is not None and tail.is_finite()):
             raise ArbUnsupported("Arb could not enclose the integral next to a logarithmic end")
-        tail = M.abs_upper() * h * flint.arb(-U).exp() * (abs(lnh) + U + 1)
-        total = v.real + flint.arb(0, tail.abs_upper())
         if 0 not in v.imag:
             raise ArbUnsupported(f"the integral is not real: {v}")
+        exact = pc * h * (lnh - 1)
+        if 0 not in exact.imag:
+            raise ArbUnsupported(f"the integrand is not real at its logarithmic end: {pc}")
+        total = v.real + exact.real + flint.arb(0, tail.abs_upper())
         if total.rel_accuracy_bits() < goal and total.rad() > flint.arb(2) ** -goal:
             raise ArbUnsupported(f"enclosure too wide: {total.rel_accuracy_bits()} of {goal} bits")
         ball = flint.acb(total)
