@@ -15,6 +15,13 @@ with the flat-punch derivation of :mod:`.derive`:
   Dugdale punches;
 * Baney & Hui's normalisation (lambda, A, F) and the rigid limit
   (a rigid profile with a Dugdale law: P = -2 sigma_0 c_r, f(c_r) = h0).
+
+Every integral goes to the one reference integrator
+(:mod:`linecontact_sym.numeric.reference`; the Flamant kernel through
+:func:`linecontact_sym.numeric.flamant.flamant_displacement`), its forms
+compiled once with a, c_D, sigma_0 as parameters: the three references are
+Arb enclosures (40 guaranteed digits of the parabola's conditions), and
+tanh-sinh runs, recorded, where Arb cannot.
 """
 from __future__ import annotations
 
@@ -41,11 +48,11 @@ def _values(md, vals):
     return _mp(vals[S.a]), _mp(vals[S.c_D]), sig, w, _mp(vals[S.E_star])
 
 
-def strip_slope(s, A, C, sig, E, a_minus_s=None):
-    """u_D'(s) on |s| < a of the Dugdale strip (traction -sigma_0 on a < |s| < c), Flamant kernel;
-    ``a_minus_s`` (a - s computed without cancellation) where s is near a."""
-    ams = A - s if a_minus_s is None else a_minus_s
-    return 2 * sig / (mpmath.pi * E) * mpmath.log(ams * (C + s) / ((C - A + ams) * (A + s)))
+def _as_ref(v, what):
+    """A reference of the engine as a RefValue (an mpf estimate recorded as one)."""
+    if isinstance(v, RefValue):
+        return v
+    return RefValue(v, mpmath.mpf(0), "mpmath", f"the {what}'s reference is an estimate")
 
 
 _psi = sp.Dummy("psi", positive=True)
@@ -87,9 +94,8 @@ def force_johnson(md, vals, dps):
     """P(a, c_D) by Johnson's bounded-solution condition (see the module docstring)."""
     with workdps(dps + 15):
         sigma = md.sigma0.xreplace(vals)
-        P0 = md.contact.force_reference(vals, dps + 5)     # Eq. (10*): Arb ball quadrature (mpmath where not)
-        if not isinstance(P0, RefValue):
-            P0 = RefValue(P0, mpmath.mpf(0), "mpmath", "the adhesionless force's reference is an estimate")
+        # Eq. (10*): Arb ball quadrature (mpmath where not)
+        P0 = _as_ref(md.contact.force_reference(vals, dps + 5), "adhesionless force")
         # E* int_0^a s u_D'(s)/sqrt(a^2 - s^2) ds (even integrand), s = a cos(psi)
         I = _johnson_strip(vals[S.a], vals[S.c_D], dps + 5)
         return lincomb([(1, P0), (2 * sigma / sp.pi, I), (-2 * sigma, vals[S.c_D]), (2 * sigma, vals[S.a])], dps + 5)
@@ -150,9 +156,7 @@ def gap_reference(md):
 
     def ref(vals, dps):
         with workdps(dps + 15):
-            g0 = gd.reference({**vals, S.x: vals[S.c_D]}, dps + 5)
-            if not isinstance(g0, RefValue):     # an estimate: the sum is one too
-                g0 = RefValue(g0, mpmath.mpf(0), "mpmath", "the adhesionless gap's reference is an estimate")
+            g0 = _as_ref(gd.reference({**vals, S.x: vals[S.c_D]}, dps + 5), "adhesionless gap")
             return lincomb([(1, g0), (1, dugdale_subproblem_gap(md, vals, dps))], dps + 5)
     return ref
 
@@ -184,9 +188,7 @@ def pressure_reference(md):
 
     def ref(vals, dps):
         with workdps(dps + 15):
-            p0 = pd.reference(vals, dps + 5)
-            if not isinstance(p0, RefValue):
-                p0 = RefValue(p0, mpmath.mpf(0), "mpmath", "the adhesionless pressure's reference is an estimate")
+            p0 = _as_ref(pd.reference(vals, dps + 5), "adhesionless pressure")
             I = _punches(vals[S.a], vals[S.c_D], md.sigma0.xreplace(vals), vals[S.x], dps + 5)
             return lincomb([(1, p0), (1 / sp.pi, I)], dps + 5)
     return ref
@@ -245,4 +247,4 @@ def rigid_limit(md, dps=30, **values):
 
 
 __all__ = ["force_johnson", "force_reference", "gap_reference", "pressure_reference", "dugdale_subproblem_gap",
-           "baney_hui_units", "baney_hui_equations", "rigid_limit", "strip_slope"]
+           "baney_hui_units", "baney_hui_equations", "rigid_limit"]
