@@ -80,57 +80,58 @@ def _end_substituted(g, s, hi):
                      lambda z: sp.factor(z.base) ** z.exp)
 
 
-def _piece_terms(p, s, lo, hi, xv, k, breaks, values, dps):
-    """[(coef, RefValue)] of k int_lo^hi p(s) ln|x^2/s^2 - 1| ds, certified
-    (or :class:`~.reference.ArbUnsupported`).  ``values`` None: ``p``, lo,
-    hi are numbers but for s, and the integrator gets SymPy forms (its end
-    substitutions apply); a dict: the parameters' numbers, and it gets the
-    forms compiled once with the parameters and x as symbols."""
-    lo_v, hi_v = (lo, hi) if values is None else (to_basic(lo.xreplace(values)), to_basic(hi.xreplace(values)))
-    inside = _is_true(lo_v < xv) and _is_true(xv < hi_v)
-    pts = kernel_points(lo_v, hi_v, list(breaks) + ([xv] if inside else []))
+def _certified(r):
+    if not r.certified:
+        raise ArbUnsupported(r.note)
+    return r
 
-    def certified(r):
-        if not r.certified:
-            raise ArbUnsupported(r.note)
-        return r
-    from_zero = lo_v == 0
-    if values is None and p.has(s) and (breaks or (from_zero and not finite_at(p, s, 0))):
-        # a break point (the end of a flat, where the pressure's slope has a
-        # logarithm) or p(0) not finite (the wedge's acosh(a/s)): the kernel
-        # as it stands, its logarithms and the pressure's taken by the
-        # integrator's logarithmic end points, one integral
-        g = p * sp.log(sp.Abs(xv**2 / s**2 - 1))
-        return [(k, certified(integrate(g, s, pts, dps, fallback=lambda: mpmath.nan)))]
-    # ln|x - s| (coefficient 1) and, on a piece from 0, ln s (-2): on a piece
-    # with the point at an end, by the exponential substitution there
-    # (log_end_integral); elsewhere in the smooth part of the piece's integrand
-    logs = [(xv, 1)] + ([(sp.S.Zero, -2)] if from_zero else [])
-    at = {**(values or {}), _X: xv}
-    pc = p if values is None else bound_acb(p, s, values)
-    smooth, terms = [], []
+
+def _log_terms(p, s, lo, hi, c, m, smooth, values, dps):
+    """[(1, RefValue)] of int_lo^hi p(s) [m ln|s - c| + smooth(s)] ds, certified (or
+    :class:`~.reference.ArbUnsupported`): split at c (inside) and the
+    middles (:func:`kernel_points`); the logarithm at a piece's end by
+    :func:`~.reference.log_end_integral`, inside the piece's integrand
+    elsewhere.  ``values`` None: p, lo, hi, c numbers but for s, and the
+    integrator gets SymPy forms (its end substitutions apply); a dict: the
+    parameters' numbers, and it gets the forms compiled once with the
+    parameters and x (``_X``, at ``values[_X]``) as symbols, the last part of
+    a non-constant piece in s = hi - d u^2 (the contact edge's sqrt-type
+    branch point becomes holomorphic)."""
+    lo_v, hi_v = (lo, hi) if values is None else (to_basic(lo.xreplace(values)), to_basic(hi.xreplace(values)))
+    inside = _is_true(lo_v < c) and _is_true(c < hi_v)
+    pts = kernel_points(lo_v, hi_v, [c] if inside else [])
+    c_sym = c if values is None or c == 0 else _X
+
+    def form(e, var=s, extra=None):
+        return e.xreplace(values or {}) if values is None else bound_acb(e, var, {**values, **(extra or {})})
+    terms = []
     for j, (u, v) in enumerate(zip(pts[:-1], pts[1:])):
-        g = sp.log(_X + s) + (0 if from_zero else -2 * sp.log(s))
-        for c, m in logs:
-            if c == u or c == v:
-                terms.append((m * k, log_end_integral(pc, s, c, v if c == u else u, dps)))
-            elif c == 0:
-                g += m * sp.log(s)
-            else:
-                g += m * sp.log(_X - s if _is_true(v <= xv) else s - _X)
-        if values is None:
-            smooth.append((p * g).xreplace(at))
-        elif j == len(pts) - 2 and p.has(s) and v != xv:
-            # the piece's end hi (the contact edge: a sqrt-type branch point of
-            # the pressure), s = hi - d u^2, the substituted form made once
-            f = bound_acb(_end_substituted(p * g, s, hi), _U, {**at, _D: v - u})
-            terms.append((k, certified(integrate(f, None, [0, 1], dps, fallback=lambda: mpmath.nan))))
+        g = smooth
+        if c == u or c == v:
+            terms.append((m, log_end_integral(form(p), s, c, v if c == u else u, dps)))
         else:
-            terms.append((k, certified(integrate(bound_acb(p * g, s, at), None, [u, v], dps,
-                                                 fallback=lambda: mpmath.nan))))
-    if smooth:
-        terms.insert(0, (k, certified(integrate(smooth, s, pts, dps, fallback=lambda: mpmath.nan))))
+            g = g + m * sp.log(c_sym - s if _is_true(v <= c) else s - c_sym)
+        if g == 0:
+            continue
+        if values is not None and j == len(pts) - 2 and p.has(s):
+            f = form(_end_substituted(p * g, s, hi), _U, {_D: v - u})
+            terms.append((1, _certified(integrate(f, None, [0, 1], dps, fallback=lambda: mpmath.nan))))
+        else:
+            terms.append((1, _certified(integrate(form(p * g), s if values is None else None, [u, v], dps,
+                                                  fallback=lambda: mpmath.nan))))
     return terms
+
+
+def _pieces(pieces, values):
+    """The pieces as SymPy (p, s, lo, hi), the parameters' values as SymPy
+    numbers; None where a pressure has a symbol without a value."""
+    out = []
+    for p, s, lo, hi in pieces:
+        p, lo, hi = (sp.sympify(q, strict=True) for q in (p, lo, hi))
+        if p.free_symbols - {s} - set(values or ()):
+            return None
+        out.append((p, s, lo, hi) if values is not None else (p, s, to_basic(lo), to_basic(hi)))
+    return out
 
 
 def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
@@ -138,35 +139,64 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
     or None where Arb cannot enclose it.  ``pieces``: [(p, s, lo, hi)], ``p``
     SymPy in the one symbol ``s`` (every parameter a number, exact or a
     Float), 0 <= lo < hi; ``x``, ``E`` numbers; ``breaks``: break points of
-    the pressures (the profile's), where a piece is split.
+    the pressures (the profile's), where a piece is split.  ``x`` a list:
+    the list of displacements (None for each where Arb cannot), the term
+    of u_z(0), -2 int p(s) ln s ds, integrated once for all.
 
     ``values``: the pressures and piece ends may hold parameters (symbols
     -> numbers here): every form is then compiled once, with the
     parameters and x as symbols, and each call only makes balls (no SymPy
-    work per point: the Maugis-Dugdale checks); the last part of a
-    non-constant piece is integrated in s = hi - d u^2 (a sqrt-type branch
-    point of the pressure at its end, the contact edge, becomes
-    holomorphic).  ``breaks`` are not taken then."""
+    work per point: the Maugis-Dugdale checks).  ``breaks`` are not taken
+    then."""
+    several = isinstance(x, (list, tuple))
+    xs = list(x) if several else [x]
+    out = [None] * len(xs)
     if values is not None and breaks:
         raise ValueError("breaks are not taken with values")
     try:
-        xv, E = abs(to_basic(x)), to_basic(E)
-        if xv == 0:
-            return RefValue(mpmath.mpf(0), mpmath.mpf(0), "arb")
+        E = to_basic(E)
         k = 2 / (sp.pi * E)
         vals = None if values is None else {q: to_basic(v) for q, v in values.items()}
-        terms = []
-        for p, s, lo, hi in pieces:
-            p, lo, hi = (sp.sympify(q, strict=True) for q in (p, lo, hi))
-            if p.free_symbols - {s} - set(vals or ()):
-                return None
-            if vals is None:
-                lo, hi = to_basic(lo), to_basic(hi)
-            terms += _piece_terms(p, s, lo, hi, xv, k, [to_basic(b) for b in breaks], vals, dps)
+        ps = _pieces(pieces, vals)
+        if ps is None:
+            return out if several else None
+        inner = [to_basic(b) for b in breaks]
+        whole = [(p, s, lo, hi) for p, s, lo, hi in ps if vals is None and p.has(s) and
+                 (inner or (lo == 0 and not finite_at(p, s, 0)))]
+        at_zero = None
+        for i, xv in enumerate(abs(to_basic(q)) for q in xs):
+            if xv == 0:
+                out[i] = RefValue(mpmath.mpf(0), mpmath.mpf(0), "arb")
+                continue
+            try:
+                terms = []
+                for p, s, lo, hi in ps:
+                    if (p, s, lo, hi) in whole:
+                        # a break point (the end of a flat, where the pressure's slope
+                        # has a logarithm) or p(0) not finite (the wedge's acosh(a/s)):
+                        # the kernel as it stands, its logarithms and the pressure's
+                        # taken by the integrator's logarithmic end points, one integral
+                        pts = kernel_points(lo, hi, inner + [xv])
+                        terms.append((k, _certified(integrate(p * sp.log(sp.Abs(xv**2 / s**2 - 1)), s, pts, dps,
+                                                              fallback=lambda: mpmath.nan))))
+                        continue
+                    at = None if vals is None else {**vals, _X: xv}
+                    terms += [(k * m, r) for m, r in _log_terms(p, s, lo, hi, xv, 1, sp.log((xv if at is None else _X)
+                                                                                             + s), at, dps)]
+                if at_zero is None:
+                    # u_z(0): -2 int p(s) ln s ds, the same for every x
+                    at_zero = []
+                    for p, s, lo, hi in ps:
+                        if (p, s, lo, hi) not in whole:
+                            at_zero += [(-2 * k * m, r) for m, r in _log_terms(p, s, lo, hi, sp.S.Zero, 1, sp.S.Zero,
+                                                                                 vals, dps)]
+                ref = lincomb(terms + at_zero, dps)
+                out[i] = ref if ref.certified else None
+            except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+                out[i] = None
     except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
-        return None
-    ref = lincomb(terms, dps)
-    return ref if ref.certified else None
+        pass
+    return out if several else out[0]
 
 
 def flamant_tanh_sinh(pieces, x, E):
@@ -185,20 +215,23 @@ def flamant_tanh_sinh(pieces, x, E):
     return 2 / (mpmath.pi * E) * total
 
 
-def flamant_displacement(pieces, x, E, dps: int, breaks=(), values=None) -> RefValue:
+def flamant_displacement(pieces, x, E, dps: int, breaks=(), values=None):
     """u_z(0) - u_z(x) (module docstring): :func:`flamant_arb` (certified),
     else :func:`flamant_tanh_sinh` of the lambdified pieces at ``dps`` + 15
-    digits, recorded (``method == "mpmath"``).  ``pieces`` as for
+    digits, recorded (``method == "mpmath"``).  ``pieces``, ``x`` (a number
+    or a list: a RefValue or a list of them) and ``values`` as for
     :func:`flamant_arb`."""
-    ref = flamant_arb(pieces, x, E, dps, breaks, values)
-    if ref is not None:
-        return ref
+    refs = flamant_arb(pieces, x, E, dps, breaks, values)
+    several = isinstance(x, (list, tuple))
+    xs, refs = (list(x), refs) if several else ([x], [refs])
     vals = values or {}
 
-    def fallback():
+    def fallback(xv):
         with workdps(dps + 15):
             fs = [(sp.lambdify(s, sp.sympify(p, strict=True).xreplace(vals), "mpmath"),
                    sp.sympify(lo, strict=True).xreplace(vals), sp.sympify(hi, strict=True).xreplace(vals))
                   for p, s, lo, hi in pieces]
-            return flamant_tanh_sinh(fs, x, E)
-    return estimate(fallback, "Arb could not enclose the Flamant integral", dps)
+            return flamant_tanh_sinh(fs, xv, E)
+    out = [r if r is not None else estimate(lambda xv=xv: fallback(xv), "Arb could not enclose the Flamant integral",
+                                            dps) for xv, r in zip(xs, refs)]
+    return out if several else out[0]

@@ -350,10 +350,11 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
     certified.compile_arb` asks).  ``holomorphic=False``: the function will
     not be asked for holomorphy, so functions whose branch cuts are not
     encoded (incomplete elliptic integrals) are allowed.  ``fixed``: the
-    last ``fixed`` symbols of a list ``var`` are parameters, whose balls
-    stay the same objects over many calls (:func:`bound_acb`): the
+    last ``fixed`` symbols of a list ``var`` are parameters: ``z`` is then
+    (the other symbols' balls ..., P) with P one tuple of the parameters'
+    balls, the same object over many calls (:func:`bound_acb`), and the
     subexpressions free of the other symbols are computed once per
-    precision and parameter balls, as numbers are.
+    precision and P, as numbers are.
     :class:`ArbUnsupported` for a function without an acb counterpart or a
     symbol not in ``var``."""
     expr = sp.sympify(expr, strict=True)
@@ -367,8 +368,9 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
     if extra:
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
     acb, arb = flint.acb, flint.arb
-    symbols = tuple(index)[:len(index) - fixed] if several else tuple(index)
-    params = tuple(range(len(index) - fixed, len(index))) if several else ()
+    moving = len(index) - fixed if several else len(index)
+    symbols = tuple(index)[:moving]
+    params = bool(fixed) and several
     # subexpressions in the variables that occur more than once (the
     # pressure's asin(x/a) in four places) are evaluated once per ball
     seen: dict = {}
@@ -380,6 +382,9 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
     def build(e):
         if e in index:
             i = index[e]
+            if i is not None and i >= moving:
+                j = i - moving
+                return lambda z, an: z[-1][j]
             return (lambda z, an: z) if i is None else (lambda z, an: z[i])
         if symbols and not e.has(*symbols):
             return constant(build_node(e))
@@ -414,8 +419,8 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
         def g(z, an):
             key = (flint.ctx.prec, an == REAL)
             v = memo.get(key)
-            at = tuple(z[i] for i in params)
-            if v is None or any(b is not c for b, c in zip(v[0], at)):
+            at = z[-1] if params else None
+            if v is None or v[0] is not at:
                 v = memo[key] = (at, f(z, REAL if an == REAL else False))
             return v[1]
         return g
@@ -688,7 +693,7 @@ def bound_acb(expr, var, values: dict):
         prec = flint.ctx.prec
         if prec not in balls:
             balls[prec] = tuple(to_acb(v) for v in nums)
-        return F((z,) + balls[prec], an)
+        return F((z, balls[prec]), an)
     return f
 
 

@@ -120,16 +120,18 @@ def _contact_piece(expr, sig):
     return expr.xreplace({S.x: _s}), _s, sp.S.Zero, S.a
 
 
-def _flamant_difference(md, vals, X, dps):
-    """u(X) - u(0) of the Dugdale sub-problem (its contact pressure on
-    |s| < a and -sigma_0 on a < |s| < c_D), by the one Flamant routine
-    (:func:`~linecontact_sym.numeric.flamant.flamant_displacement`: an Arb
-    enclosure, tanh-sinh where Arb cannot, recorded)."""
+def _flamant_differences(md, vals, xs, dps):
+    """u(x) - u(0) at each x of ``xs`` of the Dugdale sub-problem (its
+    contact pressure on |s| < a and -sigma_0 on a < |s| < c_D), by the one
+    Flamant routine (:func:`~linecontact_sym.numeric.flamant.flamant_displacement`:
+    Arb enclosures, u(0)'s term once for all x; tanh-sinh where Arb cannot,
+    recorded)."""
     sig = tuple(dict.fromkeys(s for s in (S.sigma_0, md.sigma0) if isinstance(s, sp.Symbol)))
     sigma = md.sigma0.xreplace(vals)
     values = {S.a: vals[S.a], S.c_D: vals[S.c_D], **{q: sigma for q in sig}}
     pieces = [_contact_piece(md.dugdale.pressure, sig), (-md.sigma0, _s, S.a, S.c_D)]
-    return lincomb([(-1, flamant_displacement(pieces, X, vals[S.E_star], dps, values=values))], dps)
+    return [lincomb([(-1, r)], dps) for r in flamant_displacement(pieces, list(xs), vals[S.E_star], dps,
+                                                                   values=values)]
 
 
 def dugdale_subproblem_gap(md, vals, dps):
@@ -142,13 +144,14 @@ def dugdale_subproblem_gap(md, vals, dps):
     with workdps(dps + 15):
         A, C, sig, w, E = _values(md, vals)
         scale = abs(sig * (C - A) / E) * mpmath.mpf(10)**-(dps + 3)
-        for frac in (sp.Rational(3, 10), sp.Rational(4, 5)):
-            r = _flamant_difference(md, vals, vals[S.a] * frac, dps + 5)
+        fracs = (sp.Rational(3, 10), sp.Rational(4, 5))
+        *flat, gap = _flamant_differences(md, vals, [vals[S.a] * f for f in fracs] + [vals[S.c_D]], dps + 5)
+        for frac, r in zip(fracs, flat):
             if abs(r.mid) + r.rad > scale:
                 raise VerificationError(f"the Dugdale sub-problem's contact pressure does not keep the contact flat: "
                                         f"u(x) - u(0) = {mpmath.nstr(r.mid, 5)} +- {mpmath.nstr(r.rad, 3)} at "
                                         f"x = {frac} a")
-        return _flamant_difference(md, vals, vals[S.c_D], dps + 5)
+        return gap
 
 
 def gap_reference(md):
