@@ -62,7 +62,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral",
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound",
            "log_end_integral", "bound_acb", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported",
            "EVAL_LIMIT", "ARB", "MPMATH"]
 
@@ -807,62 +807,6 @@ def _removable_quotient(f, var):
     return None
 
 
-def log_point_integral(p, var, c, points, dps: int = 45) -> RefValue:
-    """int over [points[0], points[-1]] of p(t) ln|t - c| dt for a point c of
-    that interval (an end or a break point in ``points``) where p is C^1
-    next to c: the logarithmic singularity that ball arithmetic cannot
-    bound is removed by subtraction,
-
-        int p(t) ln|t - c| dt = int (p(t) - p(c)) ln|t - c| dt + p(c) [(t - c) ln|t - c| - t],
-
-    and the remainder, which vanishes at c, is bounded on a real ball next
-    to c by the mean value theorem: |(p(t) - p(c)) ln|t - c|| <= M d |ln d|
-    with M = max |p'| on the hull of the ball and c (an Arb enclosure of p')
-    and d = the largest |t - c| on the ball (d <= 1/e, where d |ln d|
-    increases).  Arb's bisection then converges on those crude bounds.
-    ``p``: SymPy in ``var`` alone; a certified :class:`RefValue`, or
-    :class:`ArbUnsupported` (p(c) not finite, p' not bounded next to c, any
-    piece Arb cannot enclose): the caller's own route runs.
-
-    >>> t = sp.Dummy("t")
-    >>> r = log_point_integral(1 + t, t, sp.Rational(1, 3), [0, sp.Rational(1, 3), 1], 40)
-    >>> exact = sp.integrate((1 + t) * sp.log(sp.Abs(t - sp.Rational(1, 3))), (t, 0, 1))
-    >>> with mpmath.workdps(60):
-    ...     print(r.method, r.contains(to_mpf(sp.N(exact, 60))), r.digits > 40)
-    arb True True
-    """
-    c = sp.sympify(c, strict=True)
-    pc = p.xreplace({var: c})
-    if not (pc.is_finite or (pc.is_finite is None and _finite_number(pc))):
-        raise ArbUnsupported(f"the integrand has no finite value at its logarithmic point {c}")
-    g = (p - pc) * sp.log(sp.Abs(var - c))
-    fdp = compile_acb(sp.diff(p, var), var)
-    c_ball = to_acb(c)
-
-    def crude(z):
-        with flint.ctx.workprec(flint.ctx.prec):
-            re_ = z.real
-            d = max((re_.lower() - c_ball.real).abs_upper(), (re_.upper() - c_ball.real).abs_upper())
-            if d == 0:
-                return flint.acb(0)          # t = c exactly: the limit 0
-            if not d < flint.arb(1) / flint.arb.const_e():
-                return _nan()
-            hull = re_.union(c_ball.real)
-            M = fdp(flint.acb(hull), False)
-            if not M.is_finite():
-                return _nan()
-            b = M.abs_upper() * (d * -flint.arb(d).log()).abs_upper()
-            return flint.acb(flint.arb(0, b))
-    ref = integrate(g, var, points, dps, fallback=lambda: mpmath.nan, crude=crude)
-    if not ref.certified:
-        raise ArbUnsupported(ref.note or "Arb could not enclose the remainder of the logarithmic point")
-    lo, hi = sp.sympify(points[0], strict=True), sp.sympify(points[-1], strict=True)
-
-    def F(t):
-        return -t if t == c else (t - c) * sp.log(sp.Abs(t - c)) - t
-    return lincomb([(1, ref), (pc, F(hi) - F(lo))], dps)
-
-
 def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
     """int over the segment between c and ``other`` (either side of c) of
     p(t) ln|t - c| dt, for p holomorphic next to that segment and finite at
@@ -874,8 +818,8 @@ def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
     an integrand holomorphic next to [0, oo).  Its part p(c) h (ln h - 1)
     is exact; the rest, with p(t) - p(c) in place of p(t), decays like
     u e^(-2u) for p differentiable at c: Arb integrates it on [0, U]
-    (Gauss-Legendre, no bisection towards the logarithm, which
-    :func:`log_point_integral`'s crude bound needs), and the tail beyond U
+    (Gauss-Legendre, no bisection towards the logarithm, which a
+    subtraction bounded crudely next to c would need), and the tail beyond U
     is enclosed by D h e^(-U) (|ln h| + U + 1), D an Arb bound of
     |p(t) - p(c)| on the real segment between c and c + (other - c) e^(-U)
     (U grows until that bound is below the digits asked).
@@ -935,15 +879,6 @@ def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
         ball = flint.acb(total)
     with flint.ctx.workprec(goal + 64):
         return RefValue(mpf_of_arb(total.mid()), mpf_of_arb(total.rad()), ARB, ball=ball)
-
-
-def _finite_number(v) -> bool:
-    """Is the SymPy number ``v`` (SymPy could not tell) a finite ball?"""
-    try:
-        with flint.ctx.workprec(128):
-            return not v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) and to_acb(v).is_finite()
-    except (ArbUnsupported, ZeroDivisionError, ValueError, TypeError):
-        return False
 
 
 def estimate(fallback, reason: str, dps: int = 45) -> RefValue:
