@@ -70,14 +70,21 @@ _X, _U, _D = sp.Dummy("x", positive=True), sp.Dummy("u", positive=True), sp.Dumm
 
 
 @functools.lru_cache(maxsize=64)
-def _end_substituted(g, s, hi):
-    """g(s) ds on [hi - d, hi] as a function of u in [0, 1], s = hi - d u^2
-    (Jacobian 2 d u), the radicands factored so that the u^2 they vanish
-    with at s = hi leaves the root (a sqrt-type branch point of the
-    pressure there becomes holomorphic in u).  Symbolic, once per form."""
-    q = g.xreplace({s: hi - _D * _U**2}) * 2 * _D * _U
+def _edge_form(p, s, hi):
+    """p at s = hi - d u^2, the radicands factored so that the u^2 they
+    vanish with at s = hi leaves the root (a sqrt-type branch point of the
+    pressure there becomes holomorphic in u).  Symbolic, once per pressure."""
+    q = p.xreplace({s: hi - _D * _U**2})
     return q.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_U),
                      lambda z: sp.factor(z.base) ** z.exp)
+
+
+@functools.lru_cache(maxsize=64)
+def _end_substituted(p, g, s, hi):
+    """p(s) g(s) ds on [hi - d, hi] as a function of u in [0, 1], s = hi - d u^2
+    (Jacobian 2 d u; p by :func:`_edge_form`, the kernel's logarithms g as
+    they are).  Symbolic, once per form."""
+    return _edge_form(p, s, hi) * g.xreplace({s: hi - _D * _U**2}) * 2 * _D * _U
 
 
 def _certified(r):
@@ -114,7 +121,7 @@ def _log_terms(p, s, lo, hi, c, m, smooth, values, dps):
         if g == 0:
             continue
         if values is not None and j == len(pts) - 2 and p.has(s):
-            f = form(_end_substituted(p * g, s, hi), _U, {_D: v - u})
+            f = form(_end_substituted(p, g, s, hi), _U, {_D: v - u})
             terms.append((1, _certified(integrate(f, None, [0, 1], dps, fallback=lambda: mpmath.nan))))
         else:
             terms.append((1, _certified(integrate(form(p * g), s if values is None else None, [u, v], dps,
