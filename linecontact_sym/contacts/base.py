@@ -393,7 +393,8 @@ class Contact:
         ``.quantity_value()`` is the value as a pint quantity."""
         if not certified and dps is None:
             # a point of plain numbers: the scalar plan of this quantity (numeric.evaluate.scalar_evaluator)
-            fast = self._caches().get(("_evaluate", quantity))
+            cache = self.__dict__.get("_cache")        # self._caches() without its call
+            fast = None if cache is None else cache.get(("_evaluate", quantity))
             if fast is None:
                 fast = self._scalar_evaluator(quantity, rtol, values)
             if fast:

@@ -43,11 +43,6 @@ from ..core.errors import LineContactError
 from .reference import REAL, ArbUnsupported, compile_acb, mpf_of_arb, to_acb
 
 
-def _flint():
-    """The python-flint module (a core dependency: one code path for numbers)."""
-    return flint
-
-
 class CertificationError(LineContactError):
     """The expression cannot be evaluated in certified ball arithmetic."""
 
@@ -111,7 +106,7 @@ class Enclosure:
     def _mp(self, ball_method, digits=None):
         """The exact binary end point / midpoint / radius as an mpmath mpf
         (exact: an mpf with enough bits holds the Arb float as it is)."""
-        with _flint().ctx.workprec(self.prec + 64):
+        with flint.ctx.workprec(self.prec + 64):
             b = getattr(self.ball, ball_method)()
             if not b.is_finite():
                 return mpmath.nan
@@ -139,7 +134,7 @@ class Enclosure:
         return self.ball.rel_accuracy_bits() * math.log10(2)
 
     def __str__(self):
-        with _flint().ctx.workprec(self.prec):
+        with flint.ctx.workprec(self.prec):
             return self.ball.str(max(int(self.prec * 0.30103) - 3, 15), radius=True)
 
 
@@ -183,7 +178,6 @@ def arb_evaluate(expr, args, values, dps: int = 15, max_prec: int = 40000) -> En
 
 
 def _enclose(f, values, dps, max_prec):
-    flint = _flint()
     prec = int(dps * 3.33) + 30
     target_bits = dps * math.log2(10) + 1
     last = None

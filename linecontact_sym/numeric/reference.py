@@ -1029,6 +1029,26 @@ def _exact(p):
 
 #: the substitution variable of an end-point singularity
 _u = sp.Dummy("u", positive=True)
+#: the same without assumptions (the root end's substitution, :func:`_root_out`)
+_w = sp.Dummy("w")
+
+
+def _root_out(base, r, w):
+    """``base**r`` with the powers of ``w`` (> 0 on the substituted piece)
+    among the factors of the factored ``base`` taken out of the root:
+    (w^k B)^r = w^(k r) B^r, so that w^(k r) cancels the Jacobian's power
+    of w in the product (ball arithmetic cannot cancel 0/0 by itself).
+    What a positive u would have done at construction, without SymPy's
+    sign queries on every intermediate expression."""
+    k, rest = 0, []
+    for f in sp.Mul.make_args(base):
+        if f == w:
+            k += 1
+        elif f.is_Pow and f.base == w and f.exp.is_Integer:
+            k += int(f.exp)
+        else:
+            rest.append(f)
+    return w ** (k * r) * sp.Mul(*rest) ** r if k else base ** r
 
 
 def _substituted(integrand, var, lo, hi, piece):
@@ -1060,11 +1080,15 @@ def _substituted(integrand, var, lo, hi, piece):
         def root_end(end, far):
             f_end, q = _end_power(integrand, var, end)
             d = far - end
-            g = f_end.xreplace({var: end + d * _u**q}) * q * d * _u**(q - 1)
-            g = _inside_branch(sp.piecewise_fold(g))
-            g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_u),
-                          lambda z: sp.factor(z.base) ** z.exp)
-            return piece(compile_acb(sp.expand_mul(g), _u), sp.S.Zero, sp.S.One)
+            # in a variable without assumptions (SymPy's sign queries on a
+            # positive u were three quarters of this route's CPU); the powers
+            # of u leave each factored radicand by hand (:func:`_root_out`)
+            w = _w
+            g = f_end.xreplace({var: end + d * w**q}) * q * d * w**(q - 1)
+            g = _inside_branch(sp.piecewise_fold(g), w)
+            g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(w),
+                          lambda z: _root_out(sp.factor(z.base), z.exp, w))
+            return piece(compile_acb(sp.expand_mul(g), w), sp.S.Zero, sp.S.One)
 
         def log_end(end, far):
             # a power B^beta, beta < 0, of a base vanishing at the end stays
