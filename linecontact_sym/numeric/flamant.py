@@ -34,7 +34,8 @@ import sympy as sp
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps
-from .reference import ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral
+from .reference import (ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral,
+                        substitute_end)
 
 __all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "kernel_points", "finite_at"]
 
@@ -65,26 +66,27 @@ def finite_at(p, s, v) -> bool:
         return False
 
 
-#: the point x, and the substitution s = hi - d u^2 of a piece's last part
-_X, _U, _D = sp.Dummy("x", positive=True), sp.Dummy("u", positive=True), sp.Dummy("d", positive=True)
+#: the point x, and the length d of a piece's last part (s = hi - d w^2)
+_X, _D = sp.Dummy("x", positive=True), sp.Dummy("d", positive=True)
 
 
 @functools.lru_cache(maxsize=64)
 def _edge_form(p, s, hi):
-    """p at s = hi - d u^2, the radicands factored so that the u^2 they
-    vanish with at s = hi leaves the root (a sqrt-type branch point of the
-    pressure there becomes holomorphic in u).  Symbolic, once per pressure."""
-    q = p.xreplace({s: hi - _D * _U**2})
-    return q.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(_U),
-                     lambda z: sp.factor(z.base) ** z.exp)
+    """p(s) ds on [hi - d, hi] in s = hi - d w^2 (:func:`~.reference.substitute_end`:
+    the pressure's radicands factored, so that a sqrt-type branch point at
+    the contact edge s = hi becomes holomorphic in w), symbolic, once per
+    pressure: (the form, w).  Oriented from hi: its integral over w in
+    [0, 1] is minus the piece's."""
+    return substitute_end(p, s, hi, -_D, 2)
 
 
 @functools.lru_cache(maxsize=64)
 def _end_substituted(p, g, s, hi):
-    """p(s) g(s) ds on [hi - d, hi] as a function of u in [0, 1], s = hi - d u^2
-    (Jacobian 2 d u; p by :func:`_edge_form`, the kernel's logarithms g as
-    they are).  Symbolic, once per form."""
-    return _edge_form(p, s, hi) * g.xreplace({s: hi - _D * _U**2}) * 2 * _D * _U
+    """p(s) g(s) ds on [hi - d, hi] as (a form in w over [0, 1], w):
+    :func:`_edge_form` of p times the kernel's logarithms g as they are,
+    the orientation turned.  Symbolic, once per form."""
+    q, w = _edge_form(p, s, hi)
+    return -q * g.xreplace({s: hi - _D * w**2}), w
 
 
 def _certified(r):
@@ -121,7 +123,7 @@ def _log_terms(p, s, lo, hi, c, m, smooth, values, dps):
         if g == 0:
             continue
         if values is not None and j == len(pts) - 2 and p.has(s):
-            f = form(_end_substituted(p, g, s, hi), _U, {_D: v - u})
+            f = form(*_end_substituted(p, g, s, hi), {_D: v - u})
             terms.append((1, _certified(integrate(f, None, [0, 1], dps, fallback=lambda: mpmath.nan))))
         else:
             terms.append((1, _certified(integrate(form(p * g), s if values is None else None, [u, v], dps,

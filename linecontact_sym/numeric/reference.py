@@ -63,7 +63,7 @@ from ..core.errors import LineContactError
 from ..core.precision import workdps, workprec
 
 __all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound",
-           "log_end_integral", "bound_acb", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported",
+           "log_end_integral", "bound_acb", "substitute_end", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported",
            "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
@@ -1051,6 +1051,24 @@ def _root_out(base, r, w):
     return w ** (k * r) * sp.Mul(*rest) ** r if k else base ** r
 
 
+def substitute_end(expr, var, end, d, q: int = 2):
+    """``expr`` d``var`` on the half piece from ``end`` (a root end: a
+    radicand vanishing there) to end + d, in var = end + d w^q, w in [0, 1]:
+    (the integrand in w, w).  The Jacobian q d w^(q-1) included, a
+    Piecewise folded and its branch on the half piece taken, and the
+    powers of w out of each factored radicand (:func:`_root_out`), so that
+    they cancel the Jacobian's and the integrand is holomorphic at w = 0.
+    ``end`` and ``d`` may be symbols (a form made once for many points).
+    In a variable without assumptions: SymPy's sign queries on a positive
+    one were three quarters of this route's CPU."""
+    w = _w
+    g = expr.xreplace({var: end + d * w**q}) * q * d * w**(q - 1)
+    g = _inside_branch(sp.piecewise_fold(g), w)
+    g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(w),
+                  lambda z: _root_out(sp.factor(z.base), z.exp, w))
+    return sp.expand_mul(g), w
+
+
 def _substituted(integrand, var, lo, hi, piece):
     """The piece [lo, hi] whose integrand has an algebraic end-point
     singularity (1/sqrt(a^2 - t^2) at t = a, 1/sqrt(s^2 - b^2) behind a
@@ -1079,16 +1097,8 @@ def _substituted(integrand, var, lo, hi, piece):
 
         def root_end(end, far):
             f_end, q = _end_power(integrand, var, end)
-            d = far - end
-            # in a variable without assumptions (SymPy's sign queries on a
-            # positive u were three quarters of this route's CPU); the powers
-            # of u leave each factored radicand by hand (:func:`_root_out`)
-            w = _w
-            g = f_end.xreplace({var: end + d * w**q}) * q * d * w**(q - 1)
-            g = _inside_branch(sp.piecewise_fold(g), w)
-            g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(w),
-                          lambda z: _root_out(sp.factor(z.base), z.exp, w))
-            return piece(compile_acb(sp.expand_mul(g), w), sp.S.Zero, sp.S.One)
+            g, w = substitute_end(f_end, var, end, far - end, q)
+            return piece(compile_acb(g, w), sp.S.Zero, sp.S.One)
 
         def log_end(end, far):
             # a power B^beta, beta < 0, of a base vanishing at the end stays
