@@ -57,25 +57,31 @@ def _as_ref(v, what):
 
 _psi = sp.Dummy("psi", positive=True)
 _A, _C = sp.Dummy("a", positive=True), sp.Dummy("c", positive=True)
-#: Johnson's integrand (E*/2) s u_D'(s)/sqrt(a^2 - s^2) ds for s = a cos(psi), without
-#: its factor 2 sigma_0/pi: a cos(psi) [2 ln psi + S(psi)], where
-#: (a - s)(c + s)/((c - s)(a + s)) = psi^2 exp(S(psi)) with a - s = (a/2) psi^2 sinc(psi/2)^2
-#: (sinc(z) = sin(z)/z), so that S is holomorphic on [0, pi/2] and the logarithm at psi = 0
-#: is ln psi alone (reference.log_end_integral)
-_JOHNSON_SMOOTH = _A * sp.cos(_psi) * (sp.log(_A * sp.sinc(_psi / 2)**2 / 2) + sp.log(_C + _A * sp.cos(_psi))
-                                       - sp.log(_C - _A + 2 * _A * sp.sin(_psi / 2)**2)
-                                       - sp.log(_A + _A * sp.cos(_psi)))
-_JOHNSON_LOG = 2 * _A * sp.cos(_psi)
+
+
+@functools.cache
+def _johnson_forms():
+    """Johnson's integrand (E*/2) s u_D'(s)/sqrt(a^2 - s^2) ds for s = a cos(psi), without
+    its factor 2 sigma_0/pi: a cos(psi) [2 ln psi + S(psi)], where
+    (a - s)(c + s)/((c - s)(a + s)) = psi^2 exp(S(psi)) with a - s = (a/2) psi^2 sinc(psi/2)^2
+    (sinc(z) = sin(z)/z), so that S is holomorphic on [0, pi/2] and the logarithm at psi = 0
+    is ln psi alone (reference.log_end_integral): (a cos(psi) S(psi), 2 a cos(psi)).
+    Built at the first check (not at import)."""
+    smooth = _A * sp.cos(_psi) * (sp.log(_A * sp.sinc(_psi / 2)**2 / 2) + sp.log(_C + _A * sp.cos(_psi))
+                                  - sp.log(_C - _A + 2 * _A * sp.sin(_psi / 2)**2)
+                                  - sp.log(_A + _A * sp.cos(_psi)))
+    return smooth, 2 * _A * sp.cos(_psi)
 
 
 def _johnson_strip(A, C, dps):
     """int_0^(pi/2) a cos(psi) ln((a - s)(c + s)/((c - s)(a + s))) dpsi, s = a cos(psi), by the
     one reference integrator (an Arb enclosure; tanh-sinh where Arb cannot, recorded)."""
     values = {_A: A, _C: C}
+    smooth_form, log_form = _johnson_forms()
     try:
-        smooth = integrate(bound_acb(_JOHNSON_SMOOTH, _psi, values), None, [0, sp.pi / 4, sp.pi / 2], dps,
+        smooth = integrate(bound_acb(smooth_form, _psi, values), None, [0, sp.pi / 4, sp.pi / 2], dps,
                            fallback=lambda: mpmath.nan)
-        log = log_end_integral(bound_acb(_JOHNSON_LOG, _psi, values), None, 0, sp.pi / 2, dps)
+        log = log_end_integral(bound_acb(log_form, _psi, values), None, 0, sp.pi / 2, dps)
         if smooth.certified and log.certified:
             return lincomb([(1, smooth), (1, log)], dps)
         reason = smooth.note
@@ -165,22 +171,27 @@ def gap_reference(md):
 
 
 _v, _X, _SIG = sp.Dummy("v", positive=True), sp.Dummy("x", real=True), sp.Dummy("sigma", positive=True)
-_PHI0 = sp.asin(_A / _C)
-_PHI = _PHI0 + (sp.pi / 2 - _PHI0) * _v
-#: the Dugdale punches' pressure at x: (1/pi) int_a^c_D -2 sigma_0 t/(sqrt(t^2 - x^2) sqrt(c_D^2 - t^2)) dt,
-#: t = c_D sin(phi), phi = phi0 + (pi/2 - phi0) v (phi0 = asin(a/c_D): the ends exact, in Arb)
-_PUNCHES = -2 * _SIG * _C * sp.sin(_PHI) / sp.sqrt((_C * sp.sin(_PHI))**2 - _X**2) * (sp.pi / 2 - _PHI0)
+
+
+@functools.cache
+def _punches_form():
+    """The Dugdale punches' pressure at x: (1/pi) int_a^c_D -2 sigma_0 t/(sqrt(t^2 - x^2) sqrt(c_D^2 - t^2)) dt,
+    t = c_D sin(phi), phi = phi0 + (pi/2 - phi0) v (phi0 = asin(a/c_D): the ends exact, in Arb);
+    built at the first check (not at import)."""
+    phi0 = sp.asin(_A / _C)
+    phi = phi0 + (sp.pi / 2 - phi0) * _v
+    return -2 * _SIG * _C * sp.sin(phi) / sp.sqrt((_C * sp.sin(phi))**2 - _X**2) * (sp.pi / 2 - phi0)
 
 
 def _punches(A, C, sig, X, dps):
-    """The integral of :data:`_PUNCHES` over v in [0, 1] by the one reference
+    """The integral of :func:`_punches_form` over v in [0, 1] by the one reference
     integrator (certified; tanh-sinh where Arb cannot, recorded)."""
     def fallback():
         a, c, s0, x = _mp(A), _mp(C), _mp(sig), _mp(X)
         return mpmath.quad(lambda ph: -2 * s0 * c * mpmath.sin(ph) / mpmath.sqrt((c * mpmath.sin(ph))**2 - x**2),
                            [mpmath.asin(a / c), mpmath.pi / 2])
     try:
-        f = bound_acb(_PUNCHES, _v, {_A: A, _C: C, _SIG: sig, _X: X})
+        f = bound_acb(_punches_form(), _v, {_A: A, _C: C, _SIG: sig, _X: X})
     except ArbUnsupported as exc:
         return estimate(fallback, str(exc), dps)
     return integrate(f, None, [0, sp.Rational(1, 2), 1], dps, fallback=fallback)
