@@ -350,9 +350,11 @@ def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
 
 def _stages_child(conn, stages, args, seconds, margin):
     """The child of :func:`run_stages`: each stage's result sent as soon as it
-    is there (the timer disarmed while it is pickled and sent), the next stage
-    begun only with more than ``margin`` CPU seconds left; the first stage's
-    exception is sent back, a later stage's ends the work (``("stop",)``)."""
+    is there (the timer disarmed while it is pickled and sent; the value
+    pickled on its own, so that the parent unpickles only the results it
+    reads: :class:`Packed`), the next stage begun only with more than
+    ``margin`` CPU seconds left; the first stage's exception is sent back, a
+    later stage's ends the work (``("stop",)``)."""
     try:
         gc.freeze()                       # as in _child: no collection walks the parent's objects
         deadline = _IN_CHILD["deadline"] = Deadline(seconds)
@@ -366,13 +368,15 @@ def _stages_child(conn, stages, args, seconds, margin):
                 _arm(deadline.left())
             except (AttributeError, OSError, ValueError):
                 pass
+            ok = True
             try:
                 value = stage(*args) if k == 0 else stage(value)
-                msg = ("ok", value)
             except BaseException as exc:
-                msg = ("err", exc, traceback.format_exc()) if k == 0 else ("stop",)
+                ok, msg = False, (("err", exc, traceback.format_exc()) if k == 0 else ("stop",))
             _disarm()
             try:
+                if ok:
+                    msg = ("ok", pickle.dumps(value))
                 conn.send_bytes(pickle.dumps(msg))
             except Exception as exc:
                 conn.send_bytes(pickle.dumps(("err", RuntimeError(f"unpicklable result: {exc}"), "") if k == 0
@@ -385,7 +389,26 @@ def _stages_child(conn, stages, args, seconds, margin):
         os._exit(0)
 
 
-def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0.05) -> list:
+class Packed:
+    """A stage's result as :func:`run_stages` (``lazy=True``) returns it:
+    unpickled on the first :meth:`load` only (a derivation reads the result
+    of its last stage and rarely the rule's raw expression before tidying,
+    whose unpickling rebuilds every SymPy node: hypergeometric functions
+    cost the parent about 0.05 CPU s each)."""
+
+    __slots__ = ("_data", "_value")
+    _EMPTY = object()
+
+    def __init__(self, data: bytes | None = None, value=_EMPTY):
+        self._data, self._value = data, value
+
+    def load(self):
+        if self._value is Packed._EMPTY:
+            self._value, self._data = pickle.loads(self._data), None
+        return self._value
+
+
+def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0.05, lazy: bool = False) -> list:
     """The stages of one piece of work in ONE forked child under one budget of
     ``seconds`` CPU seconds: ``stages[0](*args)``, then ``stages[k](result of
     stage k-1)``.  Returns ``(results, started)``: the results of the stages
@@ -398,7 +421,8 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
     :func:`run_with_budget` called for it in turn would give it (what remains
     of ``seconds``), so results do not change, but one fork serves them all
     and each stage finds SymPy's caches warm from the stage before (a
-    derivation's rule, tidying and verification: issue 26)."""
+    derivation's rule, tidying and verification: issue 26).  ``lazy``: each
+    result comes as a :class:`Packed`, unpickled when the caller loads it."""
     seconds = _within_outer(seconds)
     if seconds is None or math.isinf(seconds) or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK") \
             or _mp.current_process().daemon:
@@ -411,8 +435,8 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
             try:
                 out.append(run_with_budget(stage, out[-1], seconds=deadline.left()))
             except Exception:
-                return out, len(out) + 1
-        return out, len(out)
+                return _packed(out, lazy), len(out) + 1
+        return _packed(out, lazy), len(out)
     seconds = max(float(seconds), 1e-3) if seconds == seconds else 1e-3
     ctx = _mp.get_context("fork")
     recv, send = ctx.Pipe(duplex=False)
@@ -432,7 +456,7 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
             except EOFError:
                 break
             if msg[0] == "ok":
-                out.append(msg[1])
+                out.append(Packed(msg[1]) if lazy else pickle.loads(msg[1]))
                 continue
             if msg[0] == "start":
                 started = msg[1] + 1
@@ -447,3 +471,7 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
     if not out:
         raise _no_result(stages[0], seconds, proc)
     return out, started
+
+
+def _packed(values, lazy):
+    return [Packed(value=v) for v in values] if lazy else values

@@ -449,7 +449,8 @@ class _Stop(Exception):
 def _tidied(step):
     """The child's second stage: the rule's result tidied (as given where
     tidying fails), its conditions tidied (None where that raises: the parent
-    does it again and raises)."""
+    does it again and raises), the CPU seconds left, and the rule's name and
+    notes (so that the parent need not unpickle the rule's raw result)."""
     try:
         expr = tidy(step.expr)
     except Exception:
@@ -458,7 +459,7 @@ def _tidied(step):
         conds = tidy_conditions(step.conditions)
     except Exception:
         conds = None
-    return expr, conds, child_left()
+    return expr, conds, child_left(), step.rule, step.notes
 
 
 def _checking(check):
@@ -466,7 +467,7 @@ def _checking(check):
     in the child that derived and tidied the closed form); an exception is
     sent back to be raised in the parent, as a verification's child does."""
     def stage(tidied):
-        expr, conds, _ = tidied
+        expr, conds = tidied[:2]
         if conds is None:
             raise _Stop()
         try:
@@ -497,7 +498,7 @@ def _integrate(problem, deadline, rules, check):
             attempts.append((rule.name, "budget used up"))
             break
         try:
-            results, started = run_stages([rule.run] + stages[1:], problem, seconds=deadline.left())
+            results, started = run_stages([rule.run] + stages[1:], problem, seconds=deadline.left(), lazy=True)
         except NotApplicable as exc:
             attempts.append((rule.name, f"not applicable: {exc}"))
             continue
@@ -509,23 +510,26 @@ def _integrate(problem, deadline, rules, check):
         except Exception as exc:  # a SymPy failure inside a rule
             attempts.append((rule.name, f"{type(exc).__name__}: {exc}"))
             continue
-        step, expr, conds, checked = results[0], results[0].expr, None, None
-        if len(results) > 1:
-            expr, conds, left = results[1]
+        conds, checked = None, None
+        if len(results) > 1:      # tidied in the child: the rule's raw result is not unpickled unless needed
+            expr, conds, left, name, notes = results[1].load()
             if len(results) > 2:
-                checked = results[2]
+                checked = results[2].load()
                 if checked[0] == "raised":
                     raise checked[1]
             elif started > 2:
                 checked = ("unfinished", max(left, 0.05) if left is not None else math.inf)
-        elif started < 2 and not deadline.expired(0.05):
-            try:
-                expr = run_with_budget(tidy, step.expr, seconds=deadline.left())
-            except Exception:
-                expr = step.expr
+        else:
+            step = results[0].load()
+            expr, name, notes = step.expr, step.rule, step.notes
+            if started < 2 and not deadline.expired(0.05):
+                try:
+                    expr = run_with_budget(tidy, step.expr, seconds=deadline.left())
+                except Exception:
+                    expr = step.expr
         if conds is None:        # not tidied in the child (or it raised there): here, raising as it does
-            conds, checked = tidy_conditions(step.conditions), None
-        return Step(step.rule, expr, conds, step.notes), attempts, checked
+            conds, checked = tidy_conditions(results[0].load().conditions), None
+        return Step(name, expr, conds, notes), attempts, checked
     return None, attempts, None
 
 

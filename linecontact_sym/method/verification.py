@@ -111,6 +111,23 @@ def holds(conds, vals) -> bool:
     return True
 
 
+def at_point(expr, vals):
+    """``expr.xreplace(vals)``, where a Piecewise is first decided at the
+    point: the first branch whose condition becomes True (after those that
+    become False) is the one substituted, as the Piecewise of the
+    substituted branches would evaluate to, without substituting into (and
+    evaluating in SymPy's Float arithmetic) the branches not taken; a
+    condition left undecided substitutes the whole Piecewise."""
+    if isinstance(expr, sp.Piecewise):
+        for e, c in expr.args:
+            cv = c.xreplace(vals)
+            if cv is sp.true:
+                return at_point(e, vals)
+            if cv is not sp.false:
+                break
+    return expr.xreplace(vals)
+
+
 def digits_agreeing(val, ref, dps=None) -> float:
     """Agreeing significant digits of ``val`` and ``ref`` (capped at ``dps``,
     default the current working precision; a reference below 10**(-dps/2)
@@ -190,7 +207,7 @@ def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
         for k, expr in exprs.items():
             with workdps(dps + 10):
                 try:
-                    val = real_mpf(sp.N(expr.xreplace(fvals), dps + 10))
+                    val = real_mpf(sp.N(at_point(expr, fvals), dps + 10))
                 except (DomainError, TypeError, ValueError):
                     val = mpmath.mpf("nan")
             with workdps(dps):

@@ -1060,15 +1060,17 @@ def substitute_end(expr, var, end, d, q: int = 2):
     """``expr`` d``var`` on the half piece from ``end`` (a root end: a
     radicand vanishing there) to end + d, in var = end + d w^q, w in [0, 1]:
     (the integrand in w, w).  The Jacobian q d w^(q-1) included, a
-    Piecewise folded and its branch on the half piece taken, and the
-    powers of w out of each factored radicand (:func:`_root_out`), so that
-    they cancel the Jacobian's and the integrand is holomorphic at w = 0.
+    Piecewise folded and its branch on the half piece taken, an asin or
+    acos at its branch point +-1 there rewritten (:func:`_arcs_at_end`),
+    and the powers of w out of each factored radicand (:func:`_root_out`),
+    so that they cancel the Jacobian's and the integrand is holomorphic at
+    w = 0.
     ``end`` and ``d`` may be symbols (a form made once for many points).
     In a variable without assumptions: SymPy's sign queries on a positive
     one were three quarters of this route's CPU."""
     w = _w
     g = expr.xreplace({var: end + d * w**q}) * q * d * w**(q - 1)
-    g = _inside_branch(sp.piecewise_fold(g), w)
+    g = _arcs_at_end(_inside_branch(sp.piecewise_fold(g), w), w)
     g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(w),
                   lambda z: _root_out(sp.factor(z.base), z.exp, w))
     return sp.expand_mul(g), w
@@ -1132,6 +1134,34 @@ def _substituted(integrand, var, lo, hi, piece):
                                  "subtraction of its logarithms removes")
         total += total_half
     return total
+
+
+def _arcs_at_end(g, u):
+    """asin(z) and acos(z) of a substituted half piece whose argument is
+    exactly +-1 at the singular end u = 0 (the pressure's asin(b/s) where s
+    reaches a break point b): their branch point, where no ball of z is
+    holomorphic although asin(z(u)) is (z = 1 - c u^2 + ...), rewritten by
+    the half-angle identities, exact for real z in [-1, 1] (where the
+    integrand is real),
+
+        asin z = 2 atan(z / (1 + sqrt(1 - z^2))),
+        acos z = 2 atan(sqrt(1 - z^2) / (1 + z))       (z -> 1),
+        acos z = pi - 2 atan(sqrt(1 - z^2) / (1 - z))  (z -> -1),
+
+    whose radicand 1 - z^2 vanishes with u^2 and leaves its root when the
+    caller factors it (:func:`_root_out`), as the integrand's own radicands
+    do.  A z that is not real on the piece makes the integral's ball not
+    real: the caller then falls back, as before."""
+    def swap(f):
+        z = f.args[0]
+        z0 = z.xreplace({u: sp.S.Zero})
+        if z0 not in (sp.S.One, sp.S.NegativeOne):
+            return f
+        r = sp.sqrt(1 - z**2)
+        if isinstance(f, sp.asin):
+            return 2 * sp.atan(z / (1 + r))
+        return 2 * sp.atan(r / (1 + z)) if z0 == 1 else sp.pi - 2 * sp.atan(r / (1 - z))
+    return g.replace(lambda f: isinstance(f, (sp.asin, sp.acos)) and f.args[0].has(u), swap)
 
 
 def _end_power(integrand, var, end):
@@ -1428,25 +1458,41 @@ def _log_end(integrand, var, end, far, piece):
 def _inside_branch(g, u=_u):
     """A Piecewise integrand of a substituted half piece (u in [0, 1], the
     singular end at u = 0, which is a break point of the caller) replaced
-    by the branch that holds on all of [2**-20, 1] (decided on a ball: the
+    by the branch that holds on all of [2**-20, 1] (decided on balls: the
     caller's break points are the switch points, so the branch of the open
     half piece is the branch next to its end); :class:`ArbUnsupported` where
-    no branch is decided there."""
+    no branch is decided there.  The span is cut at the powers 2**-k into 20
+    balls, each narrow next to its own distance from the end, and a ball
+    still undecided is bisected (:func:`_decided_on`): one ball of the whole
+    span left a condition that holds by a margin of order u^2 (the
+    pressure's s > b behind the break s = b) undecided."""
     if not isinstance(g, sp.Piecewise):
         if g.has(sp.Piecewise):
             raise ArbUnsupported("a Piecewise inside the substituted integrand")
         return g
-    span = flint.acb((flint.arb(2) ** -20).union(flint.arb(1)))
+    two = flint.arb(2)
     for expr, cond in g.args:
         if cond == sp.true:
             return expr
         test = _condition(cond, lambda e: compile_acb(e, u))
-        dec = test(span)
-        if dec is True:
+        decided = set()
+        for k in range(20):
+            decided |= _decided_on(test, two ** -(k + 1), two ** -k)
+        if decided == {True}:
             return expr
-        if dec is None:
+        if decided != {False}:
             raise ArbUnsupported("the branch of a Piecewise is not decided on the substituted half piece")
     raise ArbUnsupported("no branch of the Piecewise holds on the substituted half piece")
+
+
+def _decided_on(test, lo, hi, depth: int = 6) -> set:
+    """The values (True, False, None) of the ball test ``test`` on [lo, hi]
+    (arb end points), an undecided ball bisected up to ``depth`` times."""
+    dec = test(flint.acb(lo.union(hi)))
+    if dec is not None or depth == 0:
+        return {dec}
+    mid = (lo + hi) / 2
+    return _decided_on(test, lo, mid, depth - 1) | _decided_on(test, mid, hi, depth - 1)
 
 
 def _bounded_next_to(f, end, far) -> bool:

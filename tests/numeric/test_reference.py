@@ -63,6 +63,20 @@ def test_singular_end_neither_route_removes_falls_back_to_mpmath_and_says_why():
         assert abs(r - mpmath.mpf(-9) / 4) < mpmath.mpf(10)**-20
 
 
+@pytest.mark.parametrize("arc", [sp.asin, sp.acos])
+def test_arc_branch_point_at_a_singular_end_is_certified(arc):
+    # arc(1/(1 + t)) + 1/sqrt(t) on [0, 1]: the end t = 0 is both 1/sqrt's singularity and the
+    # branch point of asin/acos (argument 1), which t = u^2 leaves at u = 0 (the worn cylinder's and
+    # rounded punch's pressure, asin(b/s) at s = b): the half-angle rewrite makes it holomorphic in u.
+    # Exact: y = 1/(1 + t), int asin(y)/y^2 dy = -asin(y)/y - atanh(sqrt(1 - y^2)), and acos = pi/2 - asin
+    r = integrate(arc(1 / (1 + t)) + 1 / sp.sqrt(t), t, [0, sp.Rational(1, 2), 1], dps=40)
+    assert r.method == ARB and r.digits >= 40
+    with mpmath.workdps(60):
+        of_asin = -mpmath.pi / 6 + mpmath.atanh(mpmath.sqrt(3) / 2)
+        exact = 2 + (of_asin if arc is sp.asin else mpmath.pi / 2 - of_asin)
+        assert r.contains(exact) and not r.contains(exact + mpmath.mpf(10)**-35)
+
+
 def test_refvalue_is_a_number_and_pickles():
     import pickle
     r = integrate(sp.exp(t), t, [0, 1], dps=30)
@@ -121,3 +135,19 @@ def test_inverse_sqrt_end_points_are_certified_after_substitution():
     with mpmath.workdps(60):
         f_a = 2 * mpmath.mpf(3) / 2 / mpmath.pi * J
         assert abs(f_a - mpmath.mpf(9) / 4 / (2 * mpmath.mpf(21) / 10)) < mpmath.mpf(10)**-38
+
+
+def test_closed_form_at_a_point_takes_the_piecewise_branch_the_substitution_would():
+    # at_point (the verification's value of a closed form) substitutes only the branch that the
+    # Piecewise of the substituted branches evaluates to; undecided conditions substitute it all
+    from linecontact_sym.method.verification import at_point
+    a, b, x = S.a, S.b, S.x
+    pw = sp.Piecewise((sp.sqrt(a - x), x < b), (sp.log(x), sp.Eq(x, b)), (sp.atan(x / a) + 1, True))
+    for xv in (sp.Float("0.25", 70), sp.Float("0.5", 70), sp.Float("0.75", 70)):
+        vals = {a: sp.Float(1, 70), b: sp.Float("0.5", 70), x: xv}
+        assert at_point(pw, vals) == pw.xreplace(vals)
+    some = {a: sp.Float(1, 70), x: sp.Float("0.25", 70)}           # b left symbolic: x < b undecided
+    assert at_point(pw, some) == pw.xreplace(some) and at_point(pw, some).has(sp.Piecewise)
+    nested = sp.Piecewise((pw, a > 0), (0, True))
+    vals = {a: sp.Float(1, 70), b: sp.Float("0.5", 70), x: sp.Float("0.75", 70)}
+    assert at_point(nested, vals) == nested.xreplace(vals)
