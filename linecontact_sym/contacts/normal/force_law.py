@@ -34,6 +34,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.conversion import to_basic, to_mpf
+from ...core.quadrature import quad_piece
 from ...core.errors import DomainError
 from ...core.roots import UNDEFINED, Outside, real_value
 from ...method.geometry import ISOLATED
@@ -43,6 +44,8 @@ from ...core.precision import workdps
 
 #: extra working digits of the numeric searches
 GUARD = 15
+#: calls of a quadrature law's piece by tanh-sinh alone after Gauss-Legendre failed there (ForceLaw.from_profile)
+GAUSS_RETRY = 8
 
 
 @dataclass(frozen=True)
@@ -186,13 +189,21 @@ class ForceLaw:
         def edges(A):
             return [mpmath.mpf(0)] + npf.kinks(0, A) + [A]
 
+        # a piece where Gauss-Legendre did not converge (a singular end: the power
+        # law's piece from 0) is integrated by tanh-sinh at once the next
+        # GAUSS_RETRY times it comes (per integrand and start of the piece)
+        retry = {}
+
         def over_pieces(g, A, e):
             """int_0^{pi/2} sin(phi) g(A sin phi) dphi, piece by piece between the kinks e."""
             total = mpmath.mpf(0)
             for lo, hi in zip(e[:-1], e[1:]):
                 fn = inside(g, lo, hi)
-                total += mpmath.quad(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
-                                     [mpmath.asin(lo / A), mpmath.asin(hi / A)])
+                wait = retry.get((g, lo), 0)
+                v, by_gauss = quad_piece(lambda ph: mpmath.sin(ph) * fn(A * mpmath.sin(ph)),
+                                         mpmath.asin(lo / A), mpmath.asin(hi / A), gauss=not wait)
+                retry[(g, lo)] = wait - 1 if wait else (0 if by_gauss else GAUSS_RETRY)
+                total += v
             return total
 
         def P(A):
