@@ -13,8 +13,9 @@ Integrals of printed formulas go to the one reference integrator first
 (:func:`linecontact_sym.numeric.reference.integrate`: an Arb enclosure,
 end-point powers and logarithms substituted or subtracted there; a
 removable 0/0 N(t)/t^k with its maximum-modulus bound); so do the Flamant integrals
-of a pressure given as a SymPy expression (the kernel's logarithmic points
-removed by :func:`~linecontact_sym.numeric.reference.log_point_integral`).
+of a pressure given as a SymPy expression (the one Flamant routine,
+:func:`linecontact_sym.numeric.flamant.flamant_arb`, which the
+Maugis-Dugdale checks share).
 Where Arb cannot enclose one, the tanh-sinh route runs, with the generic
 quadrature helpers of :mod:`linecontact_sym.core.quadrature`.
 """
@@ -30,7 +31,8 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
 from ..core.errors import LineContactError
-from ..numeric.reference import ArbUnsupported, RefValue, integrate, lincomb, log_point_integral
+from ..numeric.flamant import finite_at, flamant_arb, kernel_points
+from ..numeric.reference import ArbUnsupported, integrate
 
 #: working precision of the comparisons (digits)
 DPS = 45
@@ -187,10 +189,11 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
 
     ``p``: a SymPy expression in one symbol (the pressure, every parameter a
     number), or an mpmath callable; a, x, E* exact numbers or mpf.  A SymPy
-    ``p`` goes to the one reference integrator first (:func:`_flamant_arb`:
-    ln|x^2/s^2 - 1| = ln|x - s| + ln(x + s) - 2 ln s, each logarithmic
-    point removed by :func:`~linecontact_sym.numeric.reference.
-    log_point_integral`; a pressure with a break point (the rounded punch's
+    ``p`` goes to the one reference integrator first
+    (:func:`~linecontact_sym.numeric.flamant.flamant_arb`: ln|x^2/s^2 - 1|
+    = ln|x - s| + ln(x + s) - 2 ln s, each logarithmic point at the end of
+    a piece by :func:`~linecontact_sym.numeric.reference.log_end_integral`;
+    a pressure with a break point (the rounded punch's
     slope has a logarithm at the end of its flat) or unbounded at 0 (the
     wedge's acosh(a/s)) as one integral of the kernel, whose logarithmic
     end points the integrator splits; a certified enclosure).  Where Arb cannot enclose
@@ -224,7 +227,7 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
         if ref is not None:
             return (ref, ref.rad) if with_error else ref
         xb = abs(to_basic(xv))
-        est = None if s is None or _finite_at(p, s, a) else \
+        est = None if s is None or finite_at(p, s, a) else \
             _tanh_sinh_sym(p * sp.log(sp.Abs(xb**2 / s**2 - 1)), s, a, [xb] + list(breaks), dps)
         if est is not None:
             with workdps(quad_dps(dps)):
@@ -276,17 +279,6 @@ def _callable(p):
     return f
 
 
-def _arb_points(a, inner):
-    """0, the points strictly inside (0, a), a, and the middle of every piece
-    (so that no piece joins a logarithmic point to the end a, where the
-    pressure may have an inverse-square-root singularity)."""
-    pts = sorted({sp.S.Zero, a} | {b for b in inner if (0 < b) == sp.true and (b < a) == sp.true})
-    out = [pts[0]]
-    for lo, hi in zip(pts[:-1], pts[1:]):
-        out += [(lo + hi) / 2, hi]
-    return out
-
-
 def _pressure_symbol(p):
     syms = p.free_symbols
     if len(syms) > 1:
@@ -301,61 +293,23 @@ def _flamant_arb(p, a, xv, E, dps, breaks):
     if s is None:
         return None
     try:
-        a, xv, E = to_basic(a), abs(to_basic(xv)), to_basic(E)
-        inner = [to_basic(b) for b in breaks]
-        if xv == 0:
-            return RefValue(mpmath.mpf(0), mpmath.mpf(0), "arb")
-        k = 2 / (sp.pi * E)
-        inside = (xv < a) == sp.true
-        pts = _arb_points(a, inner + ([xv] if inside else []))
-    except (LineContactError, TypeError, ValueError, ZeroDivisionError):
+        piece = (p, s, sp.S.Zero, to_basic(a))
+    except (LineContactError, TypeError, ValueError):
         return None
-
-    def integral(g):
-        r = integrate(g, s, pts, dps, fallback=lambda: mpmath.nan)
-        if not r.certified:
-            raise ArbUnsupported(r.note)
-        return r
-    try:
-        if inner or not _finite_at(p, s, 0):
-            # a break point (the end of a flat, where the pressure's slope
-            # has a logarithm) or p(0) not finite (the wedge's acosh(a/s)):
-            # the kernel as it stands, its logarithms and the pressure's
-            # taken by the integrator's logarithmic end points, one integral
-            terms = [(k, integral(p * sp.log(sp.Abs(xv**2 / s**2 - 1))))]
-        elif inside:
-            terms = [(k, integral(p * sp.log(xv + s))), (k, log_point_integral(p, s, xv, pts, dps)),
-                     (-2 * k, log_point_integral(p, s, sp.S.Zero, pts, dps))]
-        else:
-            terms = [(k, integral(p * sp.log(xv**2 - s**2))), (-2 * k, log_point_integral(p, s, sp.S.Zero, pts, dps))]
-    except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
-        return None
-    ref = lincomb(terms, dps)
-    return ref if ref.certified else None
-
-
-def _finite_at(p, s, v):
-    """Is the SymPy pressure p finite at s = v (False where it is not or
-    SymPy cannot tell)?  A pressure unbounded at s = a (1/sqrt) goes to
-    tanh-sinh in s with that end substituted (:func:`_tanh_sinh_sym`), a
-    bounded one in a sin(phi), which is faster for it."""
-    try:
-        return bool(to_basic(p.xreplace({s: to_basic(v)})).is_finite)
-    except (TypeError, ValueError, ZeroDivisionError, LineContactError):
-        return False
+    return flamant_arb([piece], xv, E, dps, breaks)
 
 
 def _tanh_sinh_sym(g, s, a, inner, dps):
     """(value, error) of int_0^a g(s) ds by tanh-sinh for a SymPy integrand
     whose pressure may have an inverse-square-root singularity at s = a:
-    split as :func:`_arb_points`, the last piece in s = a - d u^2 with the
+    split as :func:`~linecontact_sym.numeric.flamant.kernel_points`, the last piece in s = a - d u^2 with the
     radicands factored (the u^2 they vanish with leaves the root exactly, so
     no digits cancel in a^2 - s^2, as they do in a sin(phi)); logarithmic
     points (s = 0, x) are piece ends, where tanh-sinh converges.  None
     where the integrand cannot be prepared (the a sin(phi) route runs)."""
     try:
         a = to_basic(a)
-        pts = _arb_points(a, [to_basic(b) for b in inner])
+        pts = kernel_points(0, a, [to_basic(b) for b in inner])
         u = sp.Dummy("u", positive=True)
         pieces = []
         for lo, hi in zip(pts[:-1], pts[1:]):
@@ -410,13 +364,13 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
         if s is not None:
             try:
                 a_b = to_basic(a)
-                ref = integrate(2 * p, s, _arb_points(a_b, [to_basic(b) for b in breaks]), dps,
+                ref = integrate(2 * p, s, kernel_points(0, a_b, [to_basic(b) for b in breaks]), dps,
                                 fallback=lambda: mpmath.nan)
             except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
                 ref = None
             if ref is not None and ref.certified:
                 return (ref, ref.rad) if with_error else ref
-            est = _tanh_sinh_sym(2 * p, s, a, list(breaks), dps) if s is not None and not _finite_at(p, s, a) else None
+            est = _tanh_sinh_sym(2 * p, s, a, list(breaks), dps) if s is not None and not finite_at(p, s, a) else None
             if est is not None:
                 return est if with_error else est[0]
         p = _callable(p)

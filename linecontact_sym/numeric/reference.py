@@ -51,6 +51,7 @@ True 0.78539816339744830961566084582
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import flint
@@ -62,7 +63,9 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound", "log_point_integral", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported", "EVAL_LIMIT", "ARB", "MPMATH"]
+__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound",
+           "log_end_integral", "bound_acb", "substitute_end", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported",
+           "EVAL_LIMIT", "ARB", "MPMATH"]
 
 #: the method names a :class:`RefValue` records
 ARB = "arb"
@@ -254,7 +257,8 @@ def _method(name):
 #: functions holomorphic wherever they are finite (poles give non-finite balls by themselves)
 _MEROMORPHIC = {sp.exp: "exp", sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: "sec",
                 sp.csc: "csc", sp.sinh: "sinh", sp.cosh: "cosh", sp.tanh: "tanh", sp.coth: "coth",
-                sp.sech: "sech", sp.csch: "csch", sp.gamma: "gamma", sp.erf: "erf", sp.erfc: "erfc"}
+                sp.sech: "sech", sp.csch: "csch", sp.gamma: "gamma", sp.erf: "erf", sp.erfc: "erfc",
+                sp.sinc: "sinc"}
 
 _UNARY = {
     **{f: _method(name) for f, name in _MEROMORPHIC.items()},
@@ -335,7 +339,7 @@ def _relation(rel):
     raise ArbUnsupported(f"no ball test for the relation {rel}")
 
 
-def compile_acb(expr, var, holomorphic: bool = True):
+def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
     """``f(z, analytic) -> acb``: ``expr`` (SymPy) evaluated on complex
     balls at the current python-flint precision, holomorphy signalled as
     ``acb.integral`` expects (module docstring).
@@ -346,7 +350,12 @@ def compile_acb(expr, var, holomorphic: bool = True):
     :data:`REAL` (the real function, as :func:`~linecontact_sym.numeric.
     certified.compile_arb` asks).  ``holomorphic=False``: the function will
     not be asked for holomorphy, so functions whose branch cuts are not
-    encoded (incomplete elliptic integrals) are allowed.
+    encoded (incomplete elliptic integrals) are allowed.  ``fixed``: the
+    last ``fixed`` symbols of a list ``var`` are parameters: ``z`` is then
+    (the other symbols' balls ..., P) with P one tuple of the parameters'
+    balls, the same object over many calls (:func:`bound_acb`), and the
+    subexpressions free of the other symbols are computed once per
+    precision and P, as numbers are.
     :class:`ArbUnsupported` for a function without an acb counterpart or a
     symbol not in ``var``."""
     expr = sp.sympify(expr, strict=True)
@@ -360,7 +369,9 @@ def compile_acb(expr, var, holomorphic: bool = True):
     if extra:
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
     acb, arb = flint.acb, flint.arb
-    symbols = tuple(index)
+    moving = len(index) - fixed if several else len(index)
+    symbols = tuple(index)[:moving]
+    params = bool(fixed) and several
     # subexpressions in the variables that occur more than once (the
     # pressure's asin(x/a) in four places) are evaluated once per ball
     seen: dict = {}
@@ -372,6 +383,9 @@ def compile_acb(expr, var, holomorphic: bool = True):
     def build(e):
         if e in index:
             i = index[e]
+            if i is not None and i >= moving:
+                j = i - moving
+                return lambda z, an: z[-1][j]
             return (lambda z, an: z) if i is None else (lambda z, an: z[i])
         if symbols and not e.has(*symbols):
             return constant(build_node(e))
@@ -406,9 +420,10 @@ def compile_acb(expr, var, holomorphic: bool = True):
         def g(z, an):
             key = (flint.ctx.prec, an == REAL)
             v = memo.get(key)
-            if v is None:
-                v = memo[key] = f(z, REAL if an == REAL else False)
-            return v
+            at = z[-1] if params else None
+            if v is None or v[0] is not at:
+                v = memo[key] = (at, f(z, REAL if an == REAL else False))
+            return v[1]
         return g
 
     def build_node(e):
@@ -659,6 +674,30 @@ def _condition(c, build):
 
 
 # ----------------------------------------------------------------- integration
+@functools.lru_cache(maxsize=256)
+def _compiled(expr, syms, fixed):
+    return compile_acb(expr, list(syms), fixed=fixed)
+
+
+def bound_acb(expr, var, values: dict):
+    """``f(z, analytic)`` of ``expr`` in ``var`` with the other symbols at
+    ``values`` (symbol -> number): compiled once per (expression, symbols)
+    with the parameters as symbols, their exact balls made once per working
+    precision, so that a reference evaluated at many points does no SymPy
+    work per point (``integrate`` and ``log_end_integral`` take it)."""
+    params = tuple(values)
+    F = _compiled(expr, (var,) + params, len(params))
+    nums = tuple(values[q] for q in params)
+    balls: dict = {}
+
+    def f(z, an):
+        prec = flint.ctx.prec
+        if prec not in balls:
+            balls[prec] = tuple(to_acb(v) for v in nums)
+        return F((z, balls[prec]), an)
+    return f
+
+
 def _bits(dps: int) -> int:
     return int(math.ceil(dps * math.log2(10)))
 
@@ -671,7 +710,10 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
     ``integrand``: a SymPy expression in ``var`` alone (all parameters
     already replaced by numbers, exact ones preferably), or a list of them,
     one per piece [points[k], points[k+1]] (a function whose formula
-    differs between pieces, |s| written s or -s: no switch to bisect);
+    differs between pieces, |s| written s or -s: no switch to bisect); an
+    expression may also be a compiled ``f(z, analytic)`` (:func:`compile_acb`
+    with the parameters' balls bound: no SymPy work per call; then
+    ``fallback`` is the caller's, and no end point is substituted);
     ``points``: the end points and break points, ascending (SymPy numbers,
     ints, Rationals, mpf); ``dps``: the relative digits asked of the
     enclosure (of the sum; each piece is asked a little more);
@@ -771,69 +813,78 @@ def _removable_quotient(f, var):
     return None
 
 
-def log_point_integral(p, var, c, points, dps: int = 45) -> RefValue:
-    """int over [points[0], points[-1]] of p(t) ln|t - c| dt for a point c of
-    that interval (an end or a break point in ``points``) where p is C^1
-    next to c: the logarithmic singularity that ball arithmetic cannot
-    bound is removed by subtraction,
+def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
+    """int over the segment between c and ``other`` (either side of c) of
+    p(t) ln|t - c| dt, for p holomorphic next to that segment and finite at
+    c (its logarithmic end).  The exponential substitution
+    t = c + (other - c) e^(-u), h = |other - c|, makes it
 
-        int p(t) ln|t - c| dt = int (p(t) - p(c)) ln|t - c| dt + p(c) [(t - c) ln|t - c| - t],
+        h int_0^oo p(c + (other - c) e^(-u)) (ln h - u) e^(-u) du,
 
-    and the remainder, which vanishes at c, is bounded on a real ball next
-    to c by the mean value theorem: |(p(t) - p(c)) ln|t - c|| <= M d |ln d|
-    with M = max |p'| on the hull of the ball and c (an Arb enclosure of p')
-    and d = the largest |t - c| on the ball (d <= 1/e, where d |ln d|
-    increases).  Arb's bisection then converges on those crude bounds.
-    ``p``: SymPy in ``var`` alone; a certified :class:`RefValue`, or
-    :class:`ArbUnsupported` (p(c) not finite, p' not bounded next to c, any
-    piece Arb cannot enclose): the caller's own route runs.
+    an integrand holomorphic next to [0, oo).  Its part p(c) h (ln h - 1)
+    is exact; the rest, with p(t) - p(c) in place of p(t), decays like
+    u e^(-2u) for p differentiable at c: Arb integrates it on [0, U]
+    (Gauss-Legendre, no bisection towards the logarithm, which a
+    subtraction bounded crudely next to c would need), and the tail beyond U
+    is enclosed by D h e^(-U) (|ln h| + U + 1), D an Arb bound of
+    |p(t) - p(c)| on the real segment between c and c + (other - c) e^(-U)
+    (U grows until that bound is below the digits asked).
+    ``p``: SymPy in ``var`` alone, or compiled (``f(z, analytic)``, see
+    :func:`integrate`); a certified :class:`RefValue`, or
+    :class:`ArbUnsupported` (p not finite at c, or any part Arb cannot
+    enclose): the caller's own route runs.
 
     >>> t = sp.Dummy("t")
-    >>> r = log_point_integral(1 + t, t, sp.Rational(1, 3), [0, sp.Rational(1, 3), 1], 40)
-    >>> exact = sp.integrate((1 + t) * sp.log(sp.Abs(t - sp.Rational(1, 3))), (t, 0, 1))
+    >>> r = log_end_integral(1 + t, t, sp.Rational(1, 3), 1, 40)
+    >>> exact = sp.integrate((1 + t) * sp.log(t - sp.Rational(1, 3)), (t, sp.Rational(1, 3), 1))
     >>> with mpmath.workdps(60):
     ...     print(r.method, r.contains(to_mpf(sp.N(exact, 60))), r.digits > 40)
     arb True True
     """
-    c = sp.sympify(c, strict=True)
-    pc = p.xreplace({var: c})
-    if not (pc.is_finite or (pc.is_finite is None and _finite_number(pc))):
-        raise ArbUnsupported(f"the integrand has no finite value at its logarithmic point {c}")
-    g = (p - pc) * sp.log(sp.Abs(var - c))
-    fdp = compile_acb(sp.diff(p, var), var)
-    c_ball = to_acb(c)
+    goal = _bits(dps)
+    f = p if callable(p) and not isinstance(p, sp.Basic) else compile_acb(p, var)
+    with flint.ctx.workprec(goal + 30):
+        cb, ob = to_acb(_exact(c)), to_acb(_exact(other))
+        step = ob - cb
+        if not (step.real.abs_lower() > 0 and step.is_finite()):
+            raise ArbUnsupported("an empty or unbounded segment next to a logarithmic end")
+        h = abs(step.real)
+        lnh = h.log()
+        try:
+            pc = f(cb, False)
+            if not pc.is_finite():
+                raise ArbUnsupported(f"the integrand has no finite value at its logarithmic end {c}")
+            # the size of the integral, to bound the absolute error of the pieces by
+            size = ((pc.abs_upper() + 1) * h * (abs(lnh) + 1)).abs_upper()
+            tol = flint.arb(2) ** -(goal + 8)
+            U, tail = int(math.ceil(((goal + 20) * math.log(2) + math.log(1 + abs(float(lnh.mid())))) / 2)), None
+            for _ in range(4):
+                end = (cb + step * flint.arb(-U).exp()).real
+                D = f(flint.acb(end.union(cb.real)), False) - pc
+                tail = D.abs_upper() * h * flint.arb(-U).exp() * (abs(lnh) + U + 1)
+                if tail.is_finite() and tail < tol * size:
+                    break
+                U = U * 3 // 2
 
-    def crude(z):
-        with flint.ctx.workprec(flint.ctx.prec):
-            re_ = z.real
-            d = max((re_.lower() - c_ball.real).abs_upper(), (re_.upper() - c_ball.real).abs_upper())
-            if d == 0:
-                return flint.acb(0)          # t = c exactly: the limit 0
-            if not d < flint.arb(1) / flint.arb.const_e():
-                return _nan()
-            hull = re_.union(c_ball.real)
-            M = fdp(flint.acb(hull), False)
-            if not M.is_finite():
-                return _nan()
-            b = M.abs_upper() * (d * -flint.arb(d).log()).abs_upper()
-            return flint.acb(flint.arb(0, b))
-    ref = integrate(g, var, points, dps, fallback=lambda: mpmath.nan, crude=crude)
-    if not ref.certified:
-        raise ArbUnsupported(ref.note or "Arb could not enclose the remainder of the logarithmic point")
-    lo, hi = sp.sympify(points[0], strict=True), sp.sympify(points[-1], strict=True)
-
-    def F(t):
-        return -t if t == c else (t - c) * sp.log(sp.Abs(t - c)) - t
-    return lincomb([(1, ref), (pc, F(hi) - F(lo))], dps)
-
-
-def _finite_number(v) -> bool:
-    """Is the SymPy number ``v`` (SymPy could not tell) a finite ball?"""
-    try:
-        with flint.ctx.workprec(128):
-            return not v.has(sp.nan, sp.zoo, sp.oo, -sp.oo) and to_acb(v).is_finite()
-    except (ArbUnsupported, ZeroDivisionError, ValueError, TypeError):
-        return False
+            def g(u, an):
+                e = (-u).exp()
+                return (f(cb + step * e, an) - pc) * (lnh - u) * h * e
+            v = flint.acb.integral(g, 0, U, rel_tol=tol, abs_tol=tol * size, eval_limit=EVAL_LIMIT)
+        except (ZeroDivisionError, ValueError, TypeError) as exc:
+            raise ArbUnsupported(f"Arb could not evaluate the integrand: {exc}") from None
+        if not (v.is_finite() and tail is not None and tail.is_finite()):
+            raise ArbUnsupported("Arb could not enclose the integral next to a logarithmic end")
+        if 0 not in v.imag:
+            raise ArbUnsupported(f"the integral is not real: {v}")
+        exact = pc * h * (lnh - 1)
+        if 0 not in exact.imag:
+            raise ArbUnsupported(f"the integrand is not real at its logarithmic end: {pc}")
+        total = v.real + exact.real + flint.arb(0, tail.abs_upper())
+        if total.rel_accuracy_bits() < goal and total.rad() > flint.arb(2) ** -goal:
+            raise ArbUnsupported(f"enclosure too wide: {total.rel_accuracy_bits()} of {goal} bits")
+        ball = flint.acb(total)
+    with flint.ctx.workprec(goal + 64):
+        return RefValue(mpf_of_arb(total.mid()), mpf_of_arb(total.rad()), ARB, ball=ball)
 
 
 def estimate(fallback, reason: str, dps: int = 45) -> RefValue:
@@ -923,7 +974,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
     prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
 
     def compiled(expr):
-        main = compile_acb(expr, var)
+        main = expr if callable(expr) and not isinstance(expr, sp.Basic) else compile_acb(expr, var)
         if crude is None:
             return main
 
@@ -958,7 +1009,8 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
                 total += piece(fs[e], lo, hi)
             except ArbUnsupported:
                 # ``crude`` bounds the integrand next to t = 0 only: a piece from 0 has no other remedy
-                if (crude is not None and lo == 0) or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)):
+                if (crude is not None and lo == 0) or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)) \
+                        or not isinstance(e, sp.Basic):
                     raise
                 total += _substituted(e, var, lo, hi, piece)
         if 0 not in total.imag:
@@ -1005,6 +1057,26 @@ def _root_out(base, r, w):
     return w ** (k * r) * sp.Mul(*rest) ** r if k else base ** r
 
 
+def substitute_end(expr, var, end, d, q: int = 2):
+    """``expr`` d``var`` on the half piece from ``end`` (a root end: a
+    radicand vanishing there) to end + d, in var = end + d w^q, w in [0, 1]:
+    (the integrand in w, w).  The Jacobian q d w^(q-1) included, a
+    Piecewise folded and its branch on the half piece taken, an asin or
+    acos at its branch point +-1 there rewritten (:func:`_arcs_at_end`),
+    and the powers of w out of each factored radicand (:func:`_root_out`),
+    so that they cancel the Jacobian's and the integrand is holomorphic at
+    w = 0.
+    ``end`` and ``d`` may be symbols (a form made once for many points).
+    In a variable without assumptions: SymPy's sign queries on a positive
+    one were three quarters of this route's CPU."""
+    w = _w
+    g = expr.xreplace({var: end + d * w**q}) * q * d * w**(q - 1)
+    g = _arcs_at_end(_inside_branch(sp.piecewise_fold(g), w), w)
+    g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(w),
+                  lambda z: _root_out(sp.factor(z.base), z.exp, w))
+    return sp.expand_mul(g), w
+
+
 def _substituted(integrand, var, lo, hi, piece):
     """The piece [lo, hi] whose integrand has an algebraic end-point
     singularity (1/sqrt(a^2 - t^2) at t = a, 1/sqrt(s^2 - b^2) behind a
@@ -1033,16 +1105,8 @@ def _substituted(integrand, var, lo, hi, piece):
 
         def root_end(end, far):
             f_end, q = _end_power(integrand, var, end)
-            d = far - end
-            # in a variable without assumptions (SymPy's sign queries on a
-            # positive u were three quarters of this route's CPU); the powers
-            # of u leave each factored radicand by hand (:func:`_root_out`)
-            w = _w
-            g = f_end.xreplace({var: end + d * w**q}) * q * d * w**(q - 1)
-            g = _arcs_at_end(_inside_branch(sp.piecewise_fold(g), w), w)
-            g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(w),
-                          lambda z: _root_out(sp.factor(z.base), z.exp, w))
-            return piece(compile_acb(sp.expand_mul(g), w), sp.S.Zero, sp.S.One)
+            g, w = substitute_end(f_end, var, end, far - end, q)
+            return piece(compile_acb(g, w), sp.S.Zero, sp.S.One)
 
         def log_end(end, far):
             # a power B^beta, beta < 0, of a base vanishing at the end stays

@@ -285,3 +285,18 @@ def test_state_refuses_a_half_width_that_is_not_one_real_number():
         md.state((sp.Rational(7, 100),), 20, **vals)
     with pytest.raises(DomainError, match="must be a real number"):
         md.state("1 + 2*I", 20, **vals)
+
+
+@pytest.mark.parametrize("q", ["zone_force", "cohesive_gap"])
+def test_planted_wrong_condition_fails_certification(mds, q):
+    """The zone force and the gap at c_D are checked against Arb enclosures
+    (Johnson's condition; the Flamant kernel through numeric.flamant): a
+    closed form 1e-35 off agrees to 35 digits (more than the 30 required)
+    but lies outside every 40-digit enclosure, so it fails."""
+    from linecontact_sym.method.verification import verify
+    md = mds["parabola"]
+    d = md.derivation(q)
+    assert d.verification.certified and min(d.verification.guaranteed) >= 40
+    wrong = d.expr * (1 + sp.Rational(1, 10**35))
+    bad = verify(wrong, d.reference, md._sampler("any"), d.conditions, n_points=2)
+    assert bad.min_digits > 30 and bad.outside == 2 and not bad.passed

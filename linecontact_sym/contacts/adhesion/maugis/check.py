@@ -15,6 +15,13 @@ with the flat-punch derivation of :mod:`.derive`:
   Dugdale punches;
 * Baney & Hui's normalisation (lambda, A, F) and the rigid limit
   (a rigid profile with a Dugdale law: P = -2 sigma_0 c_r, f(c_r) = h0).
+
+Every integral goes to the one reference integrator
+(:mod:`linecontact_sym.numeric.reference`; the Flamant kernel through
+:func:`linecontact_sym.numeric.flamant.flamant_displacement`), its forms
+compiled once with a, c_D, sigma_0 as parameters: the three references are
+Arb enclosures (40 guaranteed digits of the parabola's conditions), and
+tanh-sinh runs, recorded, where Arb cannot.
 """
 from __future__ import annotations
 
@@ -27,6 +34,8 @@ from ....core import symbols as S
 from ....core.conversion import to_mpf
 from ....core.errors import VerificationError
 from ....core.precision import workdps
+from ....numeric.flamant import flamant_displacement
+from ....numeric.reference import ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral
 
 
 def _mp(v):
@@ -39,72 +48,116 @@ def _values(md, vals):
     return _mp(vals[S.a]), _mp(vals[S.c_D]), sig, w, _mp(vals[S.E_star])
 
 
-def strip_slope(s, A, C, sig, E, a_minus_s=None):
-    """u_D'(s) on |s| < a of the Dugdale strip (traction -sigma_0 on a < |s| < c), Flamant kernel;
-    ``a_minus_s`` (a - s computed without cancellation) where s is near a."""
-    ams = A - s if a_minus_s is None else a_minus_s
-    return 2 * sig / (mpmath.pi * E) * mpmath.log(ams * (C + s) / ((C - A + ams) * (A + s)))
+def _as_ref(v, what):
+    """A reference of the engine as a RefValue (an mpf estimate recorded as one)."""
+    if isinstance(v, RefValue):
+        return v
+    return RefValue(v, mpmath.mpf(0), "mpmath", f"the {what}'s reference is an estimate")
+
+
+_psi = sp.Dummy("psi", positive=True)
+_A, _C = sp.Dummy("a", positive=True), sp.Dummy("c", positive=True)
+
+
+@functools.cache
+def _johnson_forms():
+    """Johnson's integrand (E*/2) s u_D'(s)/sqrt(a^2 - s^2) ds for s = a cos(psi), without
+    its factor 2 sigma_0/pi: a cos(psi) [2 ln psi + S(psi)], where
+    (a - s)(c + s)/((c - s)(a + s)) = psi^2 exp(S(psi)) with a - s = (a/2) psi^2 sinc(psi/2)^2
+    (sinc(z) = sin(z)/z), so that S is holomorphic on [0, pi/2] and the logarithm at psi = 0
+    is ln psi alone (reference.log_end_integral): (a cos(psi) S(psi), 2 a cos(psi)).
+    Built at the first check (not at import)."""
+    smooth = _A * sp.cos(_psi) * (sp.log(_A * sp.sinc(_psi / 2)**2 / 2) + sp.log(_C + _A * sp.cos(_psi))
+                                  - sp.log(_C - _A + 2 * _A * sp.sin(_psi / 2)**2)
+                                  - sp.log(_A + _A * sp.cos(_psi)))
+    return smooth, 2 * _A * sp.cos(_psi)
+
+
+def _johnson_strip(A, C, dps):
+    """int_0^(pi/2) a cos(psi) ln((a - s)(c + s)/((c - s)(a + s))) dpsi, s = a cos(psi), by the
+    one reference integrator (an Arb enclosure; tanh-sinh where Arb cannot, recorded)."""
+    values = {_A: A, _C: C}
+    smooth_form, log_form = _johnson_forms()
+    try:
+        smooth = integrate(bound_acb(smooth_form, _psi, values), None, [0, sp.pi / 4, sp.pi / 2], dps,
+                           fallback=lambda: mpmath.nan)
+        log = log_end_integral(bound_acb(log_form, _psi, values), None, 0, sp.pi / 2, dps)
+        if smooth.certified and log.certified:
+            return lincomb([(1, smooth), (1, log)], dps)
+        reason = smooth.note
+    except ArbUnsupported as exc:
+        reason = str(exc)
+
+    def fallback():
+        a, c = _mp(A), _mp(C)
+        return mpmath.quad(lambda ps: a * mpmath.cos(ps) * mpmath.log(
+            2 * a * mpmath.sin(ps / 2)**2 * (c + a * mpmath.cos(ps))
+            / ((c - a + 2 * a * mpmath.sin(ps / 2)**2) * (a + a * mpmath.cos(ps)))), [0, mpmath.pi / 4, mpmath.pi / 2])
+    return estimate(fallback, reason, dps)
 
 
 def force_johnson(md, vals, dps):
     """P(a, c_D) by Johnson's bounded-solution condition (see the module docstring)."""
     with workdps(dps + 15):
-        A, C, sig, _, E = _values(md, vals)
-        P0 = md.contact.force_reference(vals, dps + 5)     # Eq. (10*): Arb ball quadrature (mpmath where not)
-        # (E*/2) int_-a^a s u_D'(s)/sqrt(a^2 - s^2) ds, s = a cos(psi), even integrand
-        I = mpmath.quad(lambda ps: A * mpmath.cos(ps) * strip_slope(A * mpmath.cos(ps), A, C, sig, E,
-                                                                    2 * A * mpmath.sin(ps / 2)**2),
-                        [0, mpmath.pi / 4, mpmath.pi / 2])
-        return P0 + E * I - 2 * sig * (C - A)
+        sigma = md.sigma0.xreplace(vals)
+        # Eq. (10*): Arb ball quadrature (mpmath where not)
+        P0 = _as_ref(md.contact.force_reference(vals, dps + 5), "adhesionless force")
+        # E* int_0^a s u_D'(s)/sqrt(a^2 - s^2) ds (even integrand), s = a cos(psi)
+        I = _johnson_strip(vals[S.a], vals[S.c_D], dps + 5)
+        return lincomb([(1, P0), (2 * sigma / sp.pi, I), (-2 * sigma, vals[S.c_D]), (2 * sigma, vals[S.a])], dps + 5)
 
 
 def force_reference(md):
     return lambda vals, dps: force_johnson(md, vals, dps)
 
 
-def _flamant_difference(p_in, A, C, sig, E, X):
-    """u(X) - u(0) of the pressure p_in on |s| < a and -sigma_0 on a < |s| < c (Flamant kernel)."""
-    def ker(s):
-        return mpmath.log(abs(X - s)) + mpmath.log(X + s) - 2 * mpmath.log(s)
-    pts_in = sorted({mpmath.mpf(0), A} | ({X} if 0 < X < A else set()))
-    pts_out = sorted({A, C} | ({X} if A < X < C else set()))
-    I = mpmath.quad(lambda s: p_in(s) * ker(s), pts_in) + mpmath.quad(lambda s: -sig * ker(s), pts_out)
-    return -2 / (mpmath.pi * E) * mpmath.re(I)
-
-
-def _dugdale_pressure(md):
-    """The Dugdale sub-problem's contact pressure as an mpmath function of
-    (x, a, c_D, sigma_0), made once per expression: substituting mpf values
-    into the SymPy expression at every point (Floats, then SymPy's own
-    evaluation of asin with its assumption queries) cost 0.15 CPU s a point."""
-    sig = tuple(dict.fromkeys(s for s in (S.sigma_0, md.sigma0) if isinstance(s, sp.Symbol)))
-    return _pressure_function(md.dugdale.pressure, sig)
+#: the integration variable of the Dugdale sub-problem's Flamant integrals
+_s = sp.Dummy("s", positive=True)
 
 
 @functools.lru_cache(maxsize=32)
-def _pressure_function(expr, sig):
+def _contact_piece(expr, sig):
+    """The Dugdale sub-problem's contact pressure on |s| < a as a Flamant
+    piece, in s with the parameters a, c_D, sigma_0 left as symbols (the
+    Flamant routine compiles it once and makes balls per point)."""
     extra = expr.free_symbols - {S.x, S.a, S.c_D, *sig}
     if extra:
         raise VerificationError(f"the Dugdale pressure has symbols {sorted(map(str, extra))} without values")
-    f = sp.lambdify([S.x, S.a, S.c_D, *sig], expr, "mpmath")
-    return lambda x, a, c, s0: f(x, a, c, *([s0] * len(sig)))
+    return expr.xreplace({S.x: _s}), _s, sp.S.Zero, S.a
+
+
+def _flamant_differences(md, vals, xs, dps):
+    """u(x) - u(0) at each x of ``xs`` of the Dugdale sub-problem (its
+    contact pressure on |s| < a and -sigma_0 on a < |s| < c_D), by the one
+    Flamant routine (:func:`~linecontact_sym.numeric.flamant.flamant_displacement`:
+    Arb enclosures, u(0)'s term once for all x; tanh-sinh where Arb cannot,
+    recorded)."""
+    sig = tuple(dict.fromkeys(s for s in (S.sigma_0, md.sigma0) if isinstance(s, sp.Symbol)))
+    sigma = md.sigma0.xreplace(vals)
+    values = {S.a: vals[S.a], S.c_D: vals[S.c_D], **{q: sigma for q in sig}}
+    pieces = [_contact_piece(md.dugdale.pressure, sig), (-md.sigma0, _s, S.a, S.c_D)]
+    return [lincomb([(-1, r)], dps) for r in flamant_displacement(pieces, list(xs), vals[S.E_star], dps,
+                                                                   values=values)]
 
 
 def dugdale_subproblem_gap(md, vals, dps):
     """u_D(c_D) - u_D(0) of the Dugdale sub-problem (strip traction and the
     contact pressure that keeps |x| < a flat), by the Flamant kernel; the
-    contact pressure (the derived one) is first checked by substitution."""
+    contact pressure (the derived one) is first checked by substitution:
+    u(x) - u(0) = 0 at x = 0.3 a and 0.8 a, to dps + 3 digits of the
+    strip's scale sigma_0 (c_D - a)/E* (with an Arb enclosure: the whole
+    ball within that bound)."""
     with workdps(dps + 15):
         A, C, sig, w, E = _values(md, vals)
-        p = _dugdale_pressure(md)
-        pD = lambda s: p(s, A, C, sig)  # noqa: E731
-        scale = sig * (C - A) / E
-        for frac in ("0.3", "0.8"):
-            r = _flamant_difference(pD, A, C, sig, E, A * mpmath.mpf(frac))
-            if abs(r) > abs(scale) * mpmath.mpf(10)**-(dps + 3):
+        scale = abs(sig * (C - A) / E) * mpmath.mpf(10)**-(dps + 3)
+        fracs = (sp.Rational(3, 10), sp.Rational(4, 5))
+        *flat, gap = _flamant_differences(md, vals, [vals[S.a] * f for f in fracs] + [vals[S.c_D]], dps + 5)
+        for frac, r in zip(fracs, flat):
+            if abs(r.mid) + r.rad > scale:
                 raise VerificationError(f"the Dugdale sub-problem's contact pressure does not keep the contact flat: "
-                                        f"u(x) - u(0) = {mpmath.nstr(r, 5)} at x = {frac} a")
-        return mpmath.re(_flamant_difference(pD, A, C, sig, E, C))
+                                        f"u(x) - u(0) = {mpmath.nstr(r.mid, 5)} +- {mpmath.nstr(r.rad, 3)} at "
+                                        f"x = {frac} a")
+        return gap
 
 
 def gap_reference(md):
@@ -112,9 +165,36 @@ def gap_reference(md):
 
     def ref(vals, dps):
         with workdps(dps + 15):
-            g0 = gd.reference({**vals, S.x: vals[S.c_D]}, dps + 5)
-            return g0 + dugdale_subproblem_gap(md, vals, dps)
+            g0 = _as_ref(gd.reference({**vals, S.x: vals[S.c_D]}, dps + 5), "adhesionless gap")
+            return lincomb([(1, g0), (1, dugdale_subproblem_gap(md, vals, dps))], dps + 5)
     return ref
+
+
+_v, _X, _SIG = sp.Dummy("v", positive=True), sp.Dummy("x", real=True), sp.Dummy("sigma", positive=True)
+
+
+@functools.cache
+def _punches_form():
+    """The Dugdale punches' pressure at x: (1/pi) int_a^c_D -2 sigma_0 t/(sqrt(t^2 - x^2) sqrt(c_D^2 - t^2)) dt,
+    t = c_D sin(phi), phi = phi0 + (pi/2 - phi0) v (phi0 = asin(a/c_D): the ends exact, in Arb);
+    built at the first check (not at import)."""
+    phi0 = sp.asin(_A / _C)
+    phi = phi0 + (sp.pi / 2 - phi0) * _v
+    return -2 * _SIG * _C * sp.sin(phi) / sp.sqrt((_C * sp.sin(phi))**2 - _X**2) * (sp.pi / 2 - phi0)
+
+
+def _punches(A, C, sig, X, dps):
+    """The integral of :func:`_punches_form` over v in [0, 1] by the one reference
+    integrator (certified; tanh-sinh where Arb cannot, recorded)."""
+    def fallback():
+        a, c, s0, x = _mp(A), _mp(C), _mp(sig), _mp(X)
+        return mpmath.quad(lambda ph: -2 * s0 * c * mpmath.sin(ph) / mpmath.sqrt((c * mpmath.sin(ph))**2 - x**2),
+                           [mpmath.asin(a / c), mpmath.pi / 2])
+    try:
+        f = bound_acb(_punches_form(), _v, {_A: A, _C: C, _SIG: sig, _X: X})
+    except ArbUnsupported as exc:
+        return estimate(fallback, str(exc), dps)
+    return integrate(f, None, [0, sp.Rational(1, 2), 1], dps, fallback=fallback)
 
 
 def pressure_reference(md):
@@ -122,11 +202,9 @@ def pressure_reference(md):
 
     def ref(vals, dps):
         with workdps(dps + 15):
-            A, C, sig, w, E = _values(md, vals)
-            X = _mp(vals[S.x])
-            I = mpmath.quad(lambda ph: -2 * sig * C * mpmath.sin(ph) / mpmath.sqrt((C * mpmath.sin(ph))**2 - X**2),
-                            [mpmath.asin(A / C), mpmath.pi / 2])
-            return pd.reference(vals, dps + 5) + I / mpmath.pi
+            p0 = _as_ref(pd.reference(vals, dps + 5), "adhesionless pressure")
+            I = _punches(vals[S.a], vals[S.c_D], md.sigma0.xreplace(vals), vals[S.x], dps + 5)
+            return lincomb([(1, p0), (1 / sp.pi, I)], dps + 5)
     return ref
 
 
@@ -183,4 +261,4 @@ def rigid_limit(md, dps=30, **values):
 
 
 __all__ = ["force_johnson", "force_reference", "gap_reference", "pressure_reference", "dugdale_subproblem_gap",
-           "baney_hui_units", "baney_hui_equations", "rigid_limit", "strip_slope"]
+           "baney_hui_units", "baney_hui_equations", "rigid_limit"]

@@ -455,12 +455,12 @@ _LIMITS = {"sigma_0": "the cohesive stress sigma_0 (sigma_0 -> oo with w fixed i
 _REFERENCE_NAMES = {
     "zone_force": "Johnson's bounded-solution condition P = (E*/2) int_-a^a s phi'(s)/sqrt(a^2-s^2) ds on the effective "
              "profile phi = f + u_D (u_D' of the Dugdale strip from the Flamant log kernel), minus 2 sigma_0 (c_D - a), "
-             "mpmath quadrature",
+             "by the one reference integrator (Arb; tanh-sinh where it cannot)",
     "cohesive_gap": "the engine's quadrature of the adhesionless gap plus the Flamant (log-kernel) displacement "
                     "difference u(c_D) - u(0) of the Dugdale sub-problem, its pressure first checked to make the "
-                    "contact displacement uniform (mpmath quadrature)",
+                    "contact displacement uniform (numeric.flamant: Arb; tanh-sinh where it cannot)",
     "pressure": "the engine's Eq. (12) quadrature of p0 plus a direct quadrature of the Dugdale punches "
-                "(1/pi) int_a^c_D g_D(t)/sqrt(t^2 - x^2) dt (t = c_D sin(phi)); the Flamant substitution check of "
+                "(1/pi) int_a^c_D g_D(t)/sqrt(t^2 - x^2) dt (t = c_D sin(phi), Arb); the Flamant substitution check of "
                 "this pressure is part of the cohesive_gap reference",
 }
 

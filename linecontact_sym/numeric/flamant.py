@@ -1,0 +1,246 @@
+"""The Flamant (logarithmic) kernel of the half-plane: the relative surface
+displacement of an even pressure, one routine for every caller (the
+checker's references of printed pressures, the Maugis-Dugdale checks).
+
+For an even pressure p(s) on pieces [lo, hi] of s >= 0 (a contact pressure
+on [0, a], a cohesive strip on [a, c], ...)::
+
+    u_z(0) - u_z(x) = (2/(pi E*)) sum int_lo^hi p(s) ln|x^2/s^2 - 1| ds
+                    = (2/(pi E*)) sum int_lo^hi p(s) [ln|x - s| + ln(x + s) - 2 ln s] ds
+
+:func:`flamant_arb` is the certified route (the one reference integrator of
+:mod:`.reference`): each logarithmic point of the kernel (s = x inside a
+piece or at its end, s = 0 at the start of a piece from 0) is removed by
+:func:`~.reference.log_end_integral` (an exponential substitution at the
+piece's end), the smooth rest integrated as it stands; a pressure with a
+break point, or without a finite value at 0, goes to the integrator as one
+integral of the kernel (its logarithmic end points split there).  :func:`flamant_displacement` runs it first and, where Arb
+cannot enclose the integral, tanh-sinh (:func:`flamant_tanh_sinh`, split at
+the logarithmic points), recorded as ``method == "mpmath"`` with the reason.
+
+>>> import sympy as sp
+>>> s = sp.Symbol("s")
+>>> r = flamant_displacement([(1 / (sp.pi * sp.sqrt(1 - s**2)), s, 0, 1)], sp.Rational(1, 2), 1, 40)
+>>> print(r.method, abs(r) <= r.rad < 1e-40)      # the flat punch keeps |x| < a flat
+arb True
+"""
+from __future__ import annotations
+
+import functools
+
+import mpmath
+import sympy as sp
+
+from ..core.conversion import to_basic, to_mpf
+from ..core.errors import LineContactError
+from ..core.precision import workdps
+from .reference import (ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral,
+                        substitute_end)
+
+__all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "kernel_points", "finite_at"]
+
+
+def _is_true(rel) -> bool:
+    return rel == sp.true or rel is True
+
+
+def kernel_points(lo, hi, inner=()):
+    """lo, the points of ``inner`` strictly inside (lo, hi), hi, and the
+    middle of every piece between them (so that no piece joins a
+    logarithmic point to the piece's other end, where the pressure may have
+    an inverse-square-root singularity); exact SymPy numbers."""
+    lo, hi = to_basic(lo), to_basic(hi)
+    pts = sorted({lo, hi} | {b for b in map(to_basic, inner) if _is_true(lo < b) and _is_true(b < hi)})
+    out = [pts[0]]
+    for a, b in zip(pts[:-1], pts[1:]):
+        out += [(a + b) / 2, b]
+    return out
+
+
+def finite_at(p, s, v) -> bool:
+    """Is the SymPy pressure p finite at s = v (False where it is not or
+    SymPy cannot tell)?"""
+    try:
+        return bool(to_basic(p.xreplace({s: to_basic(v)})).is_finite)
+    except (TypeError, ValueError, ZeroDivisionError, LineContactError):
+        return False
+
+
+#: the point x, and the length d of a piece's last part (s = hi - d w^2)
+_X, _D = sp.Dummy("x", positive=True), sp.Dummy("d", positive=True)
+
+
+@functools.lru_cache(maxsize=64)
+def _edge_form(p, s, hi):
+    """p(s) ds on [hi - d, hi] in s = hi - d w^2 (:func:`~.reference.substitute_end`:
+    the pressure's radicands factored, so that a sqrt-type branch point at
+    the contact edge s = hi becomes holomorphic in w), symbolic, once per
+    pressure: (the form, w).  Oriented from hi: its integral over w in
+    [0, 1] is minus the piece's."""
+    return substitute_end(p, s, hi, -_D, 2)
+
+
+@functools.lru_cache(maxsize=64)
+def _end_substituted(p, g, s, hi):
+    """p(s) g(s) ds on [hi - d, hi] as (a form in w over [0, 1], w):
+    :func:`_edge_form` of p times the kernel's logarithms g as they are,
+    the orientation turned.  Symbolic, once per form."""
+    q, w = _edge_form(p, s, hi)
+    return -q * g.xreplace({s: hi - _D * w**2}), w
+
+
+def _certified(r):
+    if not r.certified:
+        raise ArbUnsupported(r.note)
+    return r
+
+
+def _log_terms(p, s, lo, hi, c, m, smooth, values, dps):
+    """[(1, RefValue)] of int_lo^hi p(s) [m ln|s - c| + smooth(s)] ds, certified (or
+    :class:`~.reference.ArbUnsupported`): split at c (inside) and the
+    middles (:func:`kernel_points`); the logarithm at a piece's end by
+    :func:`~.reference.log_end_integral`, inside the piece's integrand
+    elsewhere.  ``values`` None: p, lo, hi, c numbers but for s, and the
+    integrator gets SymPy forms (its end substitutions apply); a dict: the
+    parameters' numbers, and it gets the forms compiled once with the
+    parameters and x (``_X``, at ``values[_X]``) as symbols, the last part of
+    a non-constant piece in s = hi - d u^2 (the contact edge's sqrt-type
+    branch point becomes holomorphic)."""
+    lo_v, hi_v = (lo, hi) if values is None else (to_basic(lo.xreplace(values)), to_basic(hi.xreplace(values)))
+    inside = _is_true(lo_v < c) and _is_true(c < hi_v)
+    pts = kernel_points(lo_v, hi_v, [c] if inside else [])
+    c_sym = c if values is None or c == 0 else _X
+
+    def form(e, var=s, extra=None):
+        return e.xreplace(values or {}) if values is None else bound_acb(e, var, {**values, **(extra or {})})
+    terms = []
+    for j, (u, v) in enumerate(zip(pts[:-1], pts[1:])):
+        g = smooth
+        if c == u or c == v:
+            terms.append((m, log_end_integral(form(p), s, c, v if c == u else u, dps)))
+        else:
+            g = g + m * sp.log(c_sym - s if _is_true(v <= c) else s - c_sym)
+        if g == 0:
+            continue
+        if values is not None and j == len(pts) - 2 and p.has(s):
+            f = form(*_end_substituted(p, g, s, hi), {_D: v - u})
+            terms.append((1, _certified(integrate(f, None, [0, 1], dps, fallback=lambda: mpmath.nan))))
+        else:
+            terms.append((1, _certified(integrate(form(p * g), s if values is None else None, [u, v], dps,
+                                                  fallback=lambda: mpmath.nan))))
+    return terms
+
+
+def _pieces(pieces, values):
+    """The pieces as SymPy (p, s, lo, hi), the parameters' values as SymPy
+    numbers; None where a pressure has a symbol without a value."""
+    out = []
+    for p, s, lo, hi in pieces:
+        p, lo, hi = (sp.sympify(q, strict=True) for q in (p, lo, hi))
+        if p.free_symbols - {s} - set(values or ()):
+            return None
+        out.append((p, s, lo, hi) if values is not None else (p, s, to_basic(lo), to_basic(hi)))
+    return out
+
+
+def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
+    """u_z(0) - u_z(x) (module docstring) as a certified :class:`~.reference.RefValue`,
+    or None where Arb cannot enclose it.  ``pieces``: [(p, s, lo, hi)], ``p``
+    SymPy in the one symbol ``s`` (every parameter a number, exact or a
+    Float), 0 <= lo < hi; ``x``, ``E`` numbers; ``breaks``: break points of
+    the pressures (the profile's), where a piece is split.  ``x`` a list:
+    the list of displacements (None for each where Arb cannot), the term
+    of u_z(0), -2 int p(s) ln s ds, integrated once for all.
+
+    ``values``: the pressures and piece ends may hold parameters (symbols
+    -> numbers here): every form is then compiled once, with the
+    parameters and x as symbols, and each call only makes balls (no SymPy
+    work per point: the Maugis-Dugdale checks).  ``breaks`` are not taken
+    then."""
+    several = isinstance(x, (list, tuple))
+    xs = list(x) if several else [x]
+    out = [None] * len(xs)
+    if values is not None and breaks:
+        raise ValueError("breaks are not taken with values")
+    try:
+        E = to_basic(E)
+        k = 2 / (sp.pi * E)
+        vals = None if values is None else {q: to_basic(v) for q, v in values.items()}
+        ps = _pieces(pieces, vals)
+        if ps is None:
+            return out if several else None
+        inner = [to_basic(b) for b in breaks]
+        whole = [(p, s, lo, hi) for p, s, lo, hi in ps if vals is None and p.has(s) and
+                 (inner or (lo == 0 and not finite_at(p, s, 0)))]
+        at_zero = None
+        for i, xv in enumerate(abs(to_basic(q)) for q in xs):
+            if xv == 0:
+                out[i] = RefValue(mpmath.mpf(0), mpmath.mpf(0), "arb")
+                continue
+            try:
+                terms = []
+                for p, s, lo, hi in ps:
+                    if (p, s, lo, hi) in whole:
+                        # a break point (the end of a flat, where the pressure's slope
+                        # has a logarithm) or p(0) not finite (the wedge's acosh(a/s)):
+                        # the kernel as it stands, its logarithms and the pressure's
+                        # taken by the integrator's logarithmic end points, one integral
+                        pts = kernel_points(lo, hi, inner + [xv])
+                        terms.append((k, _certified(integrate(p * sp.log(sp.Abs(xv**2 / s**2 - 1)), s, pts, dps,
+                                                              fallback=lambda: mpmath.nan))))
+                        continue
+                    at = None if vals is None else {**vals, _X: xv}
+                    terms += [(k * m, r) for m, r in _log_terms(p, s, lo, hi, xv, 1, sp.log((xv if at is None else _X)
+                                                                                             + s), at, dps)]
+                if at_zero is None:
+                    # u_z(0): -2 int p(s) ln s ds, the same for every x
+                    at_zero = []
+                    for p, s, lo, hi in ps:
+                        if (p, s, lo, hi) not in whole:
+                            at_zero += [(-2 * k * m, r) for m, r in _log_terms(p, s, lo, hi, sp.S.Zero, 1, sp.S.Zero,
+                                                                                 vals, dps)]
+                ref = lincomb(terms + at_zero, dps)
+                out[i] = ref if ref.certified else None
+            except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+                out[i] = None
+    except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+        pass
+    return out if several else out[0]
+
+
+def flamant_tanh_sinh(pieces, x, E):
+    """u_z(0) - u_z(x) (module docstring) by tanh-sinh at the working
+    precision: ``pieces`` [(p, lo, hi)] with ``p`` an mpmath callable, split
+    at the logarithmic points s = x and 0.  An estimate (mpf)."""
+    xv, E = abs(to_mpf(x)), to_mpf(E)
+
+    def ker(t):
+        return mpmath.log(abs(xv - t)) + mpmath.log(xv + t) - 2 * mpmath.log(t)
+    total = mpmath.mpf(0)
+    for p, lo, hi in pieces:
+        lo, hi = to_mpf(lo), to_mpf(hi)
+        pts = sorted({lo, hi} | ({xv} if lo < xv < hi else set()))
+        total += mpmath.re(mpmath.quad(lambda t: p(t) * ker(t), pts))
+    return 2 / (mpmath.pi * E) * total
+
+
+def flamant_displacement(pieces, x, E, dps: int, breaks=(), values=None):
+    """u_z(0) - u_z(x) (module docstring): :func:`flamant_arb` (certified),
+    else :func:`flamant_tanh_sinh` of the lambdified pieces at ``dps`` + 15
+    digits, recorded (``method == "mpmath"``).  ``pieces``, ``x`` (a number
+    or a list: a RefValue or a list of them) and ``values`` as for
+    :func:`flamant_arb`."""
+    refs = flamant_arb(pieces, x, E, dps, breaks, values)
+    several = isinstance(x, (list, tuple))
+    xs, refs = (list(x), refs) if several else ([x], [refs])
+    vals = values or {}
+
+    def fallback(xv):
+        with workdps(dps + 15):
+            fs = [(sp.lambdify(s, sp.sympify(p, strict=True).xreplace(vals), "mpmath"),
+                   sp.sympify(lo, strict=True).xreplace(vals), sp.sympify(hi, strict=True).xreplace(vals))
+                  for p, s, lo, hi in pieces]
+            return flamant_tanh_sinh(fs, xv, E)
+    out = [r if r is not None else estimate(lambda xv=xv: fallback(xv), "Arb could not enclose the Flamant integral",
+                                            dps) for xv, r in zip(xs, refs)]
+    return out if several else out[0]
