@@ -393,8 +393,7 @@ class Contact:
         ``.quantity_value()`` is the value as a pint quantity."""
         if not certified and dps is None:
             # a point of plain numbers: the scalar plan of this quantity (numeric.evaluate.scalar_evaluator)
-            cache = self.__dict__.get("_cache")        # self._caches() without its call
-            fast = None if cache is None else cache.get(("_evaluate", quantity))
+            fast = self._caches().get(("_evaluate", quantity))
             if fast is None:
                 fast = self._scalar_evaluator(quantity, rtol, values)
             if fast:

@@ -510,15 +510,10 @@ def _float64_result(quantity, v, est, rtol, factor, kappa, cancel, qerr, t0):
     r = _new(Evaluation)
     r.__dict__ = {"quantity": quantity, "value": v, "path": "float64", "error": est, "rtol": rtol,
                   "certified": False, "enclosure": None,
-                  "_note": _float64_note(factor, kappa, cancel, qerr),
+                  "_note": (_FLOAT64_NOTE, factor, kappa, cancel, f" + quadrature {qerr:.1e}" if qerr else ""),
                   "seconds": time.perf_counter() - t0, "details": {"kappa": kappa, "cancellation": cancel},
                   "unit": None}
     return r
-
-
-def _float64_note(factor, kappa, cancel, qerr):
-    """The float64 path's note, formatted when first read (see :class:`_Note`)."""
-    return (_FLOAT64_NOTE, factor, kappa, cancel, f" + quadrature {qerr:.1e}" if qerr else "")
 
 
 _new = object.__new__
@@ -583,7 +578,6 @@ def scalar_evaluator(contact, quantity: str, domain):
     # a domain check that is bounds only (``domain.bounds``, set by the contacts layer): the point
     # read and the value found in one pass (fastpath.one_pass); any other point takes the full path
     one = one_pass(getattr(domain, "bounds", None), names, kit.f) if m is None and c0 is not None else None
-    note0 = _float64_note(FLOAT64_FACTOR, kappa0, 1.0, 0.0)
 
     def fast(contact, rtol, values):
         if rtol is None:
@@ -597,13 +591,7 @@ def scalar_evaluator(contact, quantity: str, domain):
             if v:
                 est = c0 * abs(v)
                 if est <= rtol * abs(v):
-                    # _float64_result's Evaluation, its constant note arguments made once (note0)
-                    r = _new(Evaluation)
-                    r.__dict__ = {"quantity": quantity, "value": v, "path": "float64", "error": est,
-                                  "rtol": rtol, "certified": False, "enclosure": None, "_note": note0,
-                                  "seconds": clock() - t0, "details": {"kappa": kappa0, "cancellation": 1.0},
-                                  "unit": None}
-                    return r
+                    return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
         if values.keys() != name_set:
             return None
         for v in values.values():
