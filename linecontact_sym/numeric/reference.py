@@ -1456,7 +1456,7 @@ def _log_end(integrand, var, end, far, piece):
     return total
 
 
-def _inside_branch(g, u=_u):
+def _inside_branch(g, u):
     """A Piecewise integrand of a substituted half piece (u in [0, 1], the
     singular end at u = 0, which is a break point of the caller) replaced
     by the branch that holds on all of [2**-20, 1] (decided on balls: the
