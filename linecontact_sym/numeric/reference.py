@@ -612,7 +612,10 @@ def _root(b, an, name):
 
 
 def _real_parts(z, several):
-    return tuple(flint.acb(w.real) for w in z) if several else flint.acb(z.real)
+    """The real parts of the balls ``z``; the tuple of the parameters' balls
+    (:func:`bound_acb`: real numbers) kept as it is, the same object, since
+    the constant subexpressions are kept per that object."""
+    return tuple(w if isinstance(w, tuple) else flint.acb(w.real) for w in z) if several else flint.acb(z.real)
 
 
 def _piecewise(e, build, several=False):
@@ -698,6 +701,11 @@ def bound_acb(expr, var, values: dict):
     return f
 
 
+def _is_compiled(e) -> bool:
+    """Is ``e`` a compiled integrand (``f(z, analytic)``), not a SymPy expression?"""
+    return callable(e) and not isinstance(e, sp.Basic)
+
+
 def _bits(dps: int) -> int:
     return int(math.ceil(dps * math.log2(10)))
 
@@ -762,8 +770,12 @@ def quotient_bound(numerator, var, rest, order: int = 1):
     ``order`` k > 1: a bound of numerator(t)/t^k * rest(t), where the
     numerator has a zero of order >= k at t = 0 (the caller must know it):
     numerator(w)/w^k is then holomorphic on the disk |w| <= rho, and by the
-    maximum modulus principle at most M/rho^k on it."""
-    fn, fr = compile_acb(numerator, var), compile_acb(rest, var)
+    maximum modulus principle at most M/rho^k on it.
+
+    ``numerator`` and ``rest`` may be compiled already (``f(z, analytic)``,
+    :func:`bound_acb`: a form made once for many points; ``var`` is then
+    not used)."""
+    fn, fr = (e if _is_compiled(e) else compile_acb(e, var) for e in (numerator, rest))
 
     def crude(z):
         r = z.abs_upper()
@@ -842,7 +854,7 @@ def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
     arb True True
     """
     goal = _bits(dps)
-    f = p if callable(p) and not isinstance(p, sp.Basic) else compile_acb(p, var)
+    f = p if _is_compiled(p) else compile_acb(p, var)
     with flint.ctx.workprec(goal + 30):
         cb, ob = to_acb(_exact(c)), to_acb(_exact(other))
         step = ob - cb
@@ -974,7 +986,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
     prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
 
     def compiled(expr):
-        main = expr if callable(expr) and not isinstance(expr, sp.Basic) else compile_acb(expr, var)
+        main = expr if _is_compiled(expr) else compile_acb(expr, var)
         if crude is None:
             return main
 
