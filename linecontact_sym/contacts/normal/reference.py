@@ -33,7 +33,6 @@ from ...core import symbols as S
 from ...core.conversion import to_mpf
 from ...core.precision import workdps
 from ...method import transforms as T
-from ...method.profile import expose_kinks
 from ...numeric.reference import ArbUnsupported, bound_acb, combine, estimate, integrate, quotient_bound
 
 _phi = sp.Dummy("phi", positive=True)
@@ -48,36 +47,16 @@ def _params(vals):
     return {k: v for k, v in vals.items() if k not in (S.a, S.x)}
 
 
-@functools.lru_cache(maxsize=32)
-def _force_form(source):
-    """Eq. (10*)'s integrand E* a sin(phi) f'(a sin(phi)) with a, E* and the
-    parameters as symbols: made once per profile expression."""
-    d = sp.diff(source, S.x)
-    if d.has(sp.Piecewise):
-        d = sp.piecewise_fold(d)
-    return S.E_star * S.a * sp.sin(_phi) * d.xreplace({S.x: S.a * sp.sin(_phi)})
-
-
 def force_reference(profile, vals: dict, dps: int):
-    """Eq. (10*) at ``vals`` (which hold a and every parameter).  The
-    integrand is compiled once per profile (:func:`_force_form`, the
-    parameters' balls bound per point); at this point's numbers where Arb
-    cannot enclose that form."""
+    """Eq. (10*) at ``vals`` (which hold a and every parameter)."""
     A = vals[S.a]
     E = vals.get(S.E_star, 1)
     npf = T.NumericProfile(profile, vals)
+    f1 = npf.slope
+    integrand = E * A * sp.sin(_phi) * f1.xreplace({S.x: A * sp.sin(_phi)})
     with workdps(dps + 30):
         Am = to_mpf(A)
         pts = [0] + [mpmath.asin(k / Am) for k in npf.kinks(0, Am)] + [sp.pi / 2]
-    source = profile.expr if hasattr(profile, "expr") else expose_kinks(profile)
-    try:
-        values = {**{k: v for k, v in vals.items() if k != S.x}, S.E_star: E}
-        r = integrate(bound_acb(_force_form(source), _phi, values), None, pts, dps, fallback=lambda: mpmath.nan)
-        if r.certified:
-            return r
-    except ArbUnsupported:
-        pass
-    integrand = E * A * sp.sin(_phi) * npf.slope.xreplace({S.x: A * sp.sin(_phi)})
     return integrate(integrand, _phi, pts, dps, fallback=lambda: T.force_quad(profile, vals, dps))
 
 
