@@ -24,8 +24,6 @@ Each function returns a :class:`~linecontact_sym.numeric.reference.RefValue`
 """
 from __future__ import annotations
 
-import functools
-
 import mpmath
 import sympy as sp
 
@@ -33,14 +31,12 @@ from ...core import symbols as S
 from ...core.conversion import to_mpf
 from ...core.precision import workdps
 from ...method import transforms as T
-from ...numeric.reference import ArbUnsupported, bound_acb, combine, estimate, integrate, quotient_bound
+from ...numeric.reference import combine, estimate, integrate, quotient_bound
 
 _phi = sp.Dummy("phi", positive=True)
 _w = sp.Dummy("w", nonnegative=True)
 _s = sp.Dummy("s", positive=True)
 _J = sp.Dummy("J")
-#: |x| in the forms made once per force law (no assumption: it may be 0)
-_X = sp.Dummy("X")
 
 
 def _params(vals):
@@ -60,78 +56,30 @@ def force_reference(profile, vals: dict, dps: int):
     return integrate(integrand, _phi, pts, dps, fallback=lambda: T.force_quad(profile, vals, dps))
 
 
-@functools.lru_cache(maxsize=32)
-def _pressure_form(force_law):
-    """Eq. (12)'s integrand P'(s)/(pi s), s = sqrt(X^2 + w^2), with the
-    parameters and X = |x| as symbols: made once per force law (a
-    verification asks at every point)."""
-    sv = sp.sqrt(_X**2 + _w**2)
-    return sp.diff(force_law, S.a).xreplace({S.a: sv}) / (sp.pi * sv)
-
-
-@functools.lru_cache(maxsize=32)
-def _gap_forms(force_law):
-    """The gap's P(s)/(s sqrt(X^2 - s^2)), its numerator P(s) and 1/sqrt(X^2 - s^2),
-    with the parameters and X = |x| as symbols: made once per force law."""
-    root = sp.sqrt(_X**2 - _s**2)
-    P = force_law.xreplace({S.a: _s})
-    return P / (_s * root), P, 1 / root
-
-
-def _bound(vals, X):
-    """The values of the forms' parameters: those of ``vals`` but a and x, and X."""
-    return {**_params(vals), _X: X}
-
-
 def pressure_reference(force_law, breaks, vals: dict, dps: int, fallback):
     """Eq. (12) at ``vals`` for the closed force law ``force_law`` (SymPy, in a)
-    with break points ``breaks`` (numbers at these parameters).  The
-    integrand is compiled once per force law (:func:`_pressure_form`, the
-    parameters' balls bound per point); where Arb cannot enclose a piece
-    of that form (a 1/sqrt behind a break, which needs the end substitution
-    of a SymPy integrand), the integrand at this point's numbers, as it
-    was before."""
+    with break points ``breaks`` (numbers at these parameters)."""
     A, X = vals[S.a], abs(vals[S.x])
-    inner = sorted((sp.sqrt(b**2 - X**2) for b in breaks if (X < b) == sp.true and (b < A) == sp.true),
-                   key=lambda v: to_mpf(v))
-    pts = [0, *inner, sp.sqrt(A**2 - X**2)]
-    try:
-        r = integrate(bound_acb(_pressure_form(force_law), _w, _bound(vals, X)), None, pts, dps,
-                      fallback=lambda: mpmath.nan)
-        if r.certified:
-            return r
-    except ArbUnsupported:
-        pass
     dP = sp.diff(force_law, S.a).xreplace(_params(vals))
     sv = sp.sqrt(X**2 + _w**2)
     integrand = dP.xreplace({S.a: sv}) / (sp.pi * sv)
-    return integrate(integrand, _w, pts, dps, fallback=fallback)
+    inner = sorted((sp.sqrt(b**2 - X**2) for b in breaks if (X < b) == sp.true and (b < A) == sp.true),
+                   key=lambda v: to_mpf(v))
+    return integrate(integrand, _w, [0, *inner, sp.sqrt(A**2 - X**2)], dps, fallback=fallback)
 
 
 def gap_reference(profile_expr, force_law, breaks, vals: dict, dps: int, fallback):
-    """The outside gap (|x| > a) at ``vals``, by parts (module docstring); its
-    integral's forms compiled once per force law (:func:`_gap_forms`), at
-    this point's numbers where Arb cannot enclose it so."""
+    """The outside gap (|x| > a) at ``vals``, by parts (module docstring)."""
     A, X = vals[S.a], abs(vals[S.x])
     E = vals.get(S.E_star, 1)
     pv = _params(vals)
     P = force_law.xreplace(pv)
+    root = sp.sqrt(X**2 - _s**2)
+    integrand = P.xreplace({S.a: _s}) / (_s * root)
+    crude = quotient_bound(P.xreplace({S.a: _s}), _s, 1 / root)    # P(0) = 0: P(s)/s is removable at 0
     with workdps(dps + 30):
         inner = sorted(to_mpf(b) for b in breaks if 0 < to_mpf(b) < to_mpf(A))
-    J = None
-    try:
-        values = _bound(vals, X)
-        form, num, rest = (bound_acb(e, _s, values) for e in _gap_forms(force_law))
-        # P(0) = 0: P(s)/s is removable at 0
-        J = integrate(form, None, [0, *inner, A], dps + 5, fallback=lambda: mpmath.nan,
-                      crude=quotient_bound(num, None, rest))
-    except ArbUnsupported:
-        pass
-    if J is None or not J.certified:
-        root = sp.sqrt(X**2 - _s**2)
-        integrand = P.xreplace({S.a: _s}) / (_s * root)
-        crude = quotient_bound(P.xreplace({S.a: _s}), _s, 1 / root)    # P(0) = 0: P(s)/s is removable at 0
-        J = integrate(integrand, _s, [0, *inner, A], dps + 5, fallback=lambda: mpmath.nan, crude=crude)
+    J = integrate(integrand, _s, [0, *inner, A], dps + 5, fallback=lambda: mpmath.nan, crude=crude)
     if not J.certified:
         return estimate(fallback, J.note, dps)
     outer = profile_expr.xreplace(pv).xreplace({S.x: X}) - 2 / (sp.pi * E) * (
