@@ -770,12 +770,8 @@ def quotient_bound(numerator, var, rest, order: int = 1):
     ``order`` k > 1: a bound of numerator(t)/t^k * rest(t), where the
     numerator has a zero of order >= k at t = 0 (the caller must know it):
     numerator(w)/w^k is then holomorphic on the disk |w| <= rho, and by the
-    maximum modulus principle at most M/rho^k on it.
-
-    ``numerator`` and ``rest`` may be compiled already (``f(z, analytic)``,
-    :func:`bound_acb`: a form made once for many points; ``var`` is then
-    not used)."""
-    fn, fr = (e if _is_compiled(e) else compile_acb(e, var) for e in (numerator, rest))
+    maximum modulus principle at most M/rho^k on it."""
+    fn, fr = compile_acb(numerator, var), compile_acb(rest, var)
 
     def crude(z):
         r = z.abs_upper()
