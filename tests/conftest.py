@@ -136,6 +136,7 @@ SLOW_TESTS = {
                                     "test_worn_cylinder_pressure_is_infinite_at_the_kink"],
     "method/test_engine.py": ["test_admissible_range_of_a_cosine_bump_and_quartic",
                               "test_half_width_closed_and_numeric", "test_inadmissible_profile_detected",
+                              "test_inverse_of_a_three_power_sum_closes_within_the_budget",
                               "test_no_closed_form_is_honest_and_nothing_hangs",
                               "test_numeric_export_numpy_and_mpmath",
                               "test_polynomials_with_nonnegative_coefficients", "test_power_law_sums",
