@@ -75,16 +75,24 @@ def condition_number(fmp, point: dict, dps: int = 100):
                     vals.append(fv if (not isinstance(fv, mpmath.mpc) and mpmath.isfinite(fv)) else None)
                 except (ValueError, ZeroDivisionError, TypeError):
                     vals.append(None)
-            if vals[0] is not None and vals[1] is not None:
-                d = (vals[0] - vals[1]) / (2 * h)
-            elif vals[0] is not None:
-                d = (vals[0] - f0) / h
-            elif vals[1] is not None:
-                d = (f0 - vals[1]) / h
-            else:
-                continue
-            total += abs(d)
+            d = _difference(vals, f0, h)
+            if d is not None:
+                total += abs(d)
         return float(total / abs(f0))
+
+
+def _difference(vals, f0, h):
+    """d/dt of f(x (1 + t)) at t = 0 from ``vals`` = [f(x (1 + h)), f(x (1 - h))]
+    (None where not finite): central, else one-sided with ``f0`` = f(x); None
+    where neither side is finite."""
+    up, down = vals
+    if up is not None and down is not None:
+        return (up - down) / (2 * h)
+    if up is not None:
+        return (up - f0) / h
+    if down is not None:
+        return (f0 - down) / h
+    return None
 
 
 def condition_number_float(f64, point: dict, h: float = 1e-6, f0: float | None = None):
@@ -109,15 +117,9 @@ def condition_number_float(f64, point: dict, h: float = 1e-6, f0: float | None =
             for sgn in (1, -1):
                 fv = float(np.asarray(f64(**{**point, k: v * (1 + sgn * h)})))
                 vals.append(fv if math.isfinite(fv) else None)
-            if vals[0] is not None and vals[1] is not None:
-                d = (vals[0] - vals[1]) / (2 * h)
-            elif vals[0] is not None:
-                d = (vals[0] - f0) / h
-            elif vals[1] is not None:
-                d = (f0 - vals[1]) / h
-            else:
-                continue
-            total += abs(d)
+            d = _difference(vals, f0, h)
+            if d is not None:
+                total += abs(d)
         return total / abs(f0)
 
 

@@ -51,7 +51,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import mpmath
 import numpy as np
@@ -80,21 +80,50 @@ FLOAT64_FACTOR_QUAD = 16.0
 MODEL_TERMS = 40
 
 
-class _Note:
-    """The ``note`` of an :class:`Evaluation`: a str, or ``(format, *args)``
-    formatted when first read (on the float64 path, formatting the note's
-    floats cost as much as the evaluation itself)."""
+class _Float64Field:
+    """A field of an :class:`Evaluation` (``note``, ``details``) that a
+    float64-path result builds when first read, from the terms of its
+    estimate stored as ``_float64`` = (factor, kappa, cancellation,
+    quadrature error): on the float64 path, formatting the note's floats and
+    building the details dict cost as much as the parabola's whole
+    evaluation.  Any result may set the field as usual; a note also as
+    ``(format, *args)``, formatted when first read (the model path's)."""
+
+    def __init__(self, build, default):
+        self.build, self.default = build, default
+
+    def __set_name__(self, owner, name):
+        self.key = "_" + name
 
     def __get__(self, obj, owner=None):
         if obj is None:
-            return ""                   # the dataclass field's default
-        v = obj.__dict__["_note"]
-        if v.__class__ is not str:
-            v = obj.__dict__["_note"] = v[0].format(*v[1:])
+            return self.default         # the dataclass field's default
+        d = obj.__dict__
+        try:
+            v = d[self.key]
+        except KeyError:
+            v = d[self.key] = self.build(*d["_float64"])
+            return v
+        if v.__class__ is tuple:        # a note given as (format, *args): formatted when first read
+            v = d[self.key] = v[0].format(*v[1:])
         return v
 
     def __set__(self, obj, value):
-        obj.__dict__["_note"] = value
+        # details: None (the default; a dict cannot be a dataclass default) is a new {}
+        obj.__dict__[self.key] = {} if value is None else value
+
+
+#: the note of the float64 path
+_FLOAT64_NOTE = ("stable float64 export; estimate {:g} eps max(1, kappa, cancellation) |value| with "
+                 "kappa = {:.3g}, cancellation = {:.3g}{}")
+
+
+def _float64_note(factor, kappa, cancel, qerr):
+    return _FLOAT64_NOTE.format(factor, kappa, cancel, f" + quadrature {qerr:.1e}" if qerr else "")
+
+
+def _float64_details(factor, kappa, cancel, qerr):
+    return {"kappa": kappa, "cancellation": cancel}
 
 
 @dataclass
@@ -120,9 +149,9 @@ class Evaluation:
     rtol: float | None = None
     certified: bool = False
     enclosure: tuple | None = None
-    note: str = _Note()
+    note: str = _Float64Field(_float64_note, "")
     seconds: float = 0.0
-    details: dict = field(default_factory=dict, repr=False)
+    details: dict = _Float64Field(_float64_details, None)
     unit: object = None
 
     def quantity_value(self):
@@ -498,21 +527,15 @@ def evaluate(contact, quantity: str, rtol: float | None = None, certified: bool 
         return _reference_path(d, quantity, values, rtol, t0, f"no mpmath export ({type(exc).__name__}); ")
 
 
-#: the note of the float64 path (formatted when read: :class:`_Note`)
-_FLOAT64_NOTE = ("stable float64 export; estimate {:g} eps max(1, kappa, cancellation) |value| with "
-                 "kappa = {:.3g}, cancellation = {:.3g}{}")
-
-
 def _float64_result(quantity, v, est, rtol, factor, kappa, cancel, qerr, t0):
     # the Evaluation's fields set in one step (the dataclass __init__ with its defaults cost
     # as much as the parabola's whole float64 path); the same object as
-    # Evaluation(quantity, v, "float64", est, rtol, note=..., seconds=..., details=...)
+    # Evaluation(quantity, v, "float64", est, rtol, note=..., seconds=..., details=...), whose
+    # note and details are built when read (_Float64Field), and whose certified, enclosure and
+    # unit are the class's defaults
     r = _new(Evaluation)
     r.__dict__ = {"quantity": quantity, "value": v, "path": "float64", "error": est, "rtol": rtol,
-                  "certified": False, "enclosure": None,
-                  "_note": (_FLOAT64_NOTE, factor, kappa, cancel, f" + quadrature {qerr:.1e}" if qerr else ""),
-                  "seconds": time.perf_counter() - t0, "details": {"kappa": kappa, "cancellation": cancel},
-                  "unit": None}
+                  "_float64": (factor, kappa, cancel, qerr), "seconds": time.perf_counter() - t0}
     return r
 
 

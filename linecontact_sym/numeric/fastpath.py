@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 
 import functools
+import operator
 
 import numpy as np
 import sympy as sp
@@ -274,7 +275,7 @@ def one_pass(bounds, names, f):
     n_names, inf, missing = len(names), math.inf, object()
     fail = (ValueError, ZeroDivisionError, OverflowError, TypeError)
 
-    def value(values):
+    def general(values):
         if len(values) != n_names:
             return None
         vals = []
@@ -292,6 +293,30 @@ def one_pass(bounds, names, f):
             if not (0.0 < v < inf if positive else (v - v == 0.0 and v)):
                 return None
             vals.append(v)
+        try:
+            v = float(f(*vals))
+        except fail:
+            return None
+        return v if v - v == 0 else None
+    if not (names and all(p for _, p in checks)):
+        return general
+
+    # every bound positive (the parabola's a, E*, R) and the point all floats, the common
+    # case: the same test in C loops (min > 0; a sum < inf has no inf and no NaN)
+    get = operator.itemgetter(*names) if len(names) > 1 else (lambda values: (values[names[0]],))
+
+    def value(values):
+        if len(values) != n_names:
+            return None
+        try:
+            vals = get(values)
+        except KeyError:
+            return None
+        for v in vals:
+            if v.__class__ is not float:
+                return general(values)
+        if not (0.0 < min(vals) and sum(vals) < inf):
+            return None
         try:
             v = float(f(*vals))
         except fail:
