@@ -300,8 +300,35 @@ def tidy(expr: sp.Expr) -> sp.Expr:
         if isinstance(expr, sp.Piecewise):
             return sp.Piecewise(*[(tidy(e), c) for e, c in expr.args])
     if expr.has(sp.gamma):
-        expr = sp.gammasimp(expr)
+        expr = gammasimp_masked(expr)
     return compact(expr)
+
+
+def gammasimp_masked(expr: sp.Expr) -> sp.Expr:
+    """``sympy.gammasimp`` with every fractional power of a free symbol
+    (a**(3/4)) held as a generic symbol of its own, restored after.
+
+    gammasimp factors its whole argument (``sympy.factor``), and a sum of
+    powers a**(p_i/q_i) is a polynomial in a**(1/lcm(q_i)) of degree up to
+    lcm(q_i) max(p_i/q_i): a**(457/140) + a**(5/7) + a**(3/4), which the
+    inverse map gives for f = x**(2/7) + x**(1/4) + x**(14/5) before
+    tidying, is one of degree 457, and its factorization over the integers
+    (Zassenhaus) took SymPy 150-300 CPU s (issue 26).  Masked, each power
+    is a generator of degree 1 and the factorization is immediate.  The
+    result is the same identity: whatever gammasimp proves for a generic
+    symbol holds for the power put back in its place (the symbol is
+    positive where the power is); what the mask hides, relations between
+    powers of one symbol, is :func:`compact`'s work (``factor_terms``,
+    ``powsimp``), which runs after."""
+    if expr.has(sp.Integral, sp.Sum, sp.Product):     # bound symbols: not masked
+        return sp.gammasimp(expr)
+    free = expr.free_symbols
+    powers = sorted((p for p in expr.atoms(sp.Pow) if p.base in free and p.exp.is_Rational
+                     and not p.exp.is_Integer), key=sp.default_sort_key)
+    masks = {p: sp.Dummy(positive=True) if p.is_positive else sp.Dummy() for p in powers}
+    if not masks:
+        return sp.gammasimp(expr)
+    return sp.gammasimp(expr.xreplace(masks)).xreplace({m: p for p, m in masks.items()})
 
 
 @functools.lru_cache(maxsize=4096)

@@ -612,7 +612,10 @@ def _root(b, an, name):
 
 
 def _real_parts(z, several):
-    return tuple(flint.acb(w.real) for w in z) if several else flint.acb(z.real)
+    """The real parts of the balls ``z``; the tuple of the parameters' balls
+    (:func:`bound_acb`: real numbers) kept as it is, the same object, since
+    the constant subexpressions are kept per that object."""
+    return tuple(w if isinstance(w, tuple) else flint.acb(w.real) for w in z) if several else flint.acb(z.real)
 
 
 def _piecewise(e, build, several=False):
@@ -696,6 +699,11 @@ def bound_acb(expr, var, values: dict):
             balls[prec] = tuple(to_acb(v) for v in nums)
         return F((z, balls[prec]), an)
     return f
+
+
+def _is_compiled(e) -> bool:
+    """Is ``e`` a compiled integrand (``f(z, analytic)``), not a SymPy expression?"""
+    return callable(e) and not isinstance(e, sp.Basic)
 
 
 def _bits(dps: int) -> int:
@@ -842,7 +850,7 @@ def log_end_integral(p, var, c, other, dps: int = 45) -> RefValue:
     arb True True
     """
     goal = _bits(dps)
-    f = p if callable(p) and not isinstance(p, sp.Basic) else compile_acb(p, var)
+    f = p if _is_compiled(p) else compile_acb(p, var)
     with flint.ctx.workprec(goal + 30):
         cb, ob = to_acb(_exact(c)), to_acb(_exact(other))
         step = ob - cb
@@ -974,7 +982,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
     prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
 
     def compiled(expr):
-        main = expr if callable(expr) and not isinstance(expr, sp.Basic) else compile_acb(expr, var)
+        main = expr if _is_compiled(expr) else compile_acb(expr, var)
         if crude is None:
             return main
 

@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from ..method.derivation import gammasimp_masked
 from .accuracy import expressions_agree
 from .special import gamma_ratio, hyp2f1c
 from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
@@ -50,8 +51,8 @@ class Hyp2f1Connection(StableRule):
     + (1 - z)^d Gamma(r) Gamma(-d) / (Gamma(p) Gamma(q)) 2F1(r - p, r - q; 1 + d; 1 - z),
     d = r - p - q a non-integer number (DLMF 15.8.4), with 1 - z simplified.
 
-    Kept only when the result, after hyperexpand / gammasimp / expand, has
-    fewer terms than the expanded original: terms of the surrounding sum then
+    Kept only when the result, after hyperexpand / expand / gammasimp of
+    each term, has fewer terms than the expanded original: terms of the surrounding sum then
     cancel exactly (e.g. the profile term c*x**n of a power-law gap against
     the a**n*(x/a)**n part of 2F1(1/2, n/2; n/2 + 1; a**2/x**2)).
     """
@@ -77,7 +78,11 @@ class Hyp2f1Connection(StableRule):
             reps[h] = t1 + t2
         if not reps:
             return expr
-        cand = sp.expand(sp.powdenest(sp.gammasimp(expr.xreplace(reps)), force=True))
+        # gammasimp term by term (gamma products are per term): gammasimp of
+        # the whole sum factors it over all its radicals and powers, minutes
+        # for a sum of three powers (x**(2/7) + x**(1/4) + x**(14/5), issue 26)
+        cand = sp.expand(sp.powdenest(expr.xreplace(reps), force=True))
+        cand = sp.expand(sp.Add(*[gammasimp_masked(t) for t in sp.Add.make_args(cand)]))
         if len(sp.Add.make_args(cand)) < len(sp.Add.make_args(sp.expand(expr))):
             return cand
         return expr

@@ -32,6 +32,23 @@ def test_piecewise_switch_between_the_given_points_is_still_enclosed():
             assert r.contains(mpmath.mpf(exact.p) / exact.q)
 
 
+def test_piecewise_with_a_bound_parameter_is_decided_on_the_balls():
+    """A form made once with a parameter (bound_acb: the parameters' balls a
+    tuple beside the variable's) whose Piecewise condition holds the
+    parameter: the real parts taken for the condition keep that tuple (it
+    raised AttributeError), and the value is the exact one."""
+    from linecontact_sym.numeric.reference import bound_acb
+    b = sp.Symbol("b", positive=True)
+    third = sp.Rational(1, 3)
+    f = bound_acb(sp.Piecewise((b * t, t < b), (t**2, True)), t, {b: third})
+    exact = third**3 / 2 + (1 - third**3) / 3
+    r = integrate(f, None, [0, third, 1], dps=30, fallback=lambda: mpmath.nan)
+    assert r.method == ARB and r.digits >= 30
+    with mpmath.workdps(50):
+        assert r.contains(mpmath.mpf(exact.p) / exact.q)
+        assert not r.contains(mpmath.mpf(exact.p) / exact.q * (1 + mpmath.mpf(10)**-28))
+
+
 def test_log_end_point_is_certified_and_a_planted_value_is_left_out():
     # int_0^1 s acosh(2/s) ds: acosh(2/s) = -ln s + ln(2 + sqrt(4 - s^2)) has no finite ball at
     # s = 0; the integrator splits the logarithm symbolically and integrates ln s in closed form

@@ -138,6 +138,24 @@ def test_hyp2f1_connection():
         assert rule.apply(other) == other
 
 
+
+def test_hyp2f1_connection_of_a_sum_of_three_powers_is_fast():
+    """The gap of f = x**(2/7) + x**(1/4) + x**(14/5) (issue 26): each x**n
+    cancels against its 2F1 as in the single power law.  gammasimp of the
+    whole connected sum factored it over all its powers and radicals (minutes,
+    the scalar gap evaluator hung); term by term it takes a fraction of a
+    second.  Run under a CPU budget, so a return of the slow path fails."""
+    from linecontact_sym.core.budget import run_with_budget
+    ns = (sp.Rational(2, 7), sp.Rational(1, 4), sp.Rational(14, 5))
+
+    def k(m):       # a**m Gamma((m + 1)/2)/(sqrt(pi) Gamma(m/2)), Gammas of arguments in (0, 1) as gap_termwise writes them
+        return sp.expand_func(a**m * sp.gamma((m + 1) / 2) / (sp.sqrt(sp.pi) * sp.gamma(m / 2)))
+    expr = sum(x**m - 2 * k(m) * sp.acosh(x / a) - 2 / m * k(m) * sp.hyper([m / 2, half], [m / 2 + 1], a**2 / x**2)
+               for m in ns)
+    new = run_with_budget(ST.Hyp2f1Connection().apply, expr, seconds=10)
+    assert len(sp.Add.make_args(new)) == 6 and len(sp.Add.make_args(sp.expand(expr))) == 9
+    assert_same_function(expr, new, {a: (0.5, 1.0), x: (1.2, 3.0)})
+
 def test_gamma_absorb():
     """(n - 1) Gamma(n/2 - 1/2) = 2 Gamma(n/2 + 1/2): 0 * inf (NaN) at n = 1 removed."""
     rule = ST.GammaAbsorb()
