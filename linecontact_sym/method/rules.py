@@ -94,6 +94,67 @@ def _special_law(problem):
             f"integral of it against the kernel over finite symbolic limits")
 
 
+def _rational_slope(problem):
+    """dP/da of the force law as (numerator, denominator) Polys in a when it
+    is a rational function of a (one expression, no Piecewise) with a pole
+    off a = 0, else None."""
+    if problem.force_law is None:
+        return None
+    dP = sp.diff(problem.force_law, S.a)
+    if dP.has(sp.Piecewise) or not dP.has(S.a) or not dP.is_rational_function(S.a):
+        return None
+    num, den = sp.fraction(sp.cancel(dP))
+    den = sp.Poly(den, S.a)
+    return None if den.is_monomial else (sp.Poly(num, S.a), den)   # no pole off a = 0: nothing to say
+
+
+def _pole_off_origin(R) -> bool:
+    """Has the rational function R of a a pole other than a = 0 (its reduced
+    denominator is not c a**k)?"""
+    return R != 0 and not sp.Poly(sp.denom(sp.cancel(R)), S.a).is_monomial
+
+
+def _euler_pressure(problem):
+    """Why ``sympy.integrate`` cannot do Eq. (12) at once, or None: dP/da is
+    rational in a and its even part has a pole off a = 0 (the periodic
+    wedge's kernel twin, dP/da ~ 1/(1 - a^2)).  int R(s)/sqrt(s^2 - x^2) ds of
+    an even R is elementary only through an Euler substitution
+    (s = x cosh u, then w = e^u), which SymPy does not make: it leaves the
+    integral unevaluated after 6-26 CPU s (SymPy 1.14, R = 1/(1 - s),
+    1/(1 - s^2), 1/(1 + s^2), 1/(b^2 - s^2), s^2/(1 - s^2), 1/(s^2 (1 - s^2));
+    mostly in ``manualintegrate``).  The odd part is no obstacle (u = s^2
+    makes it rational: s/((1 - s^2) sqrt(s^2 - x^2)) closes), so it is not
+    looked at."""
+    R = _rational_slope(problem)
+    if R is None:
+        return None
+    dP = R[0].as_expr() / R[1].as_expr()
+    even = sp.cancel((dP + dP.subs(S.a, -S.a)) / 2)
+    if not _pole_off_origin(even):
+        return None
+    return (f"dP/da is rational in a and its even part {even} has a pole off a = 0: the integral of Eq. (12) "
+            f"needs an Euler substitution, which sympy.integrate does not make (it leaves it unevaluated)")
+
+
+def _dilog_gap(problem):
+    """Why ``sympy.integrate`` cannot do the gap integral at once, or None:
+    dP/da is rational in a and P(a) has a logarithmic term with its branch
+    point off a = 0 (dP/da has a simple-pole part c/(a - r), r != 0, after
+    Hermite's reduction: the periodic wedge's atanh(a)).  By parts the gap
+    then holds int log(s - r) x/(s sqrt(x^2 - s^2)) ds, a dilogarithm-type
+    function, which SymPy leaves unevaluated after 1.5-8 CPU s (SymPy 1.14:
+    acosh(x/s) times 1/(1 - s^2), s/(1 - s^2), 1/(1 + s), 1/(1 + s^2))."""
+    from sympy.integrals.rationaltools import ratint_ratpart
+    R = _rational_slope(problem)
+    if R is None:
+        return None
+    _, logpart = ratint_ratpart(R[0], R[1], S.a)
+    if not _pole_off_origin(logpart):
+        return None
+    return (f"P(a) has a logarithmic term off a = 0 (dP/da has the simple-pole part {sp.cancel(logpart)}): the "
+            f"gap integral is then of dilogarithm type, which sympy.integrate leaves unevaluated")
+
+
 def _has_piecewise(problem):
     return any(e is not None and e.has(sp.Piecewise)
                for e in (problem.force_law, problem.profile.expr if problem.profile is not None else None))
@@ -191,7 +252,7 @@ class PressureSympy(Rule):
     name, transform = "pressure_sympy", "pressure"
 
     def applies(self, problem):
-        return _no_closed_force_law(problem) or _special_law(problem)
+        return _no_closed_force_law(problem) or _special_law(problem) or _euler_pressure(problem)
 
     def run(self, problem):
         bps = list(problem.profile.breakpoints) if problem.profile is not None else []
@@ -257,7 +318,9 @@ class GapSympy(Rule):
     name, transform = "gap_sympy", "gap"
 
     def applies(self, problem):
-        return "piecewise force law" if problem.force_law.has(sp.Piecewise) else _special_law(problem)
+        if problem.force_law.has(sp.Piecewise):
+            return "piecewise force law"
+        return _special_law(problem) or _dilog_gap(problem)
 
     def run(self, problem):
         dP = sp.diff(problem.force_law, S.a).subs(S.a, s)

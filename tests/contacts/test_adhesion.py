@@ -351,6 +351,22 @@ def test_worn_cylinder_kink_and_stationary():
     assert not d.closed_form and d.verification.min_digits >= DIG and len(d.verification.points) >= 5
 
 
+def test_solve_is_not_tried_where_it_cannot_invert():
+    """sympy.solve has no inverse of a Bessel or elliptic function of a: it
+    raises NotImplementedError (after up to 5 CPU s for the Gaussian bump's
+    besseli law, or runs into the budget for the exact cylinder's elliptic
+    laws), so the pull-off and the branches do not ask it; an elementary law
+    is still its."""
+    from linecontact_sym.contacts.adhesion.pull_off import unsolvable
+    bump = sp.pi * E * a * sp.besselj(1, a) / 2 - sp.sqrt(2 * sp.pi * g * E * a)
+    assert "besselj" in unsolvable(sp.diff(bump, a))
+    assert "elliptic_k" in unsolvable(a * sp.elliptic_k(a**2) - 1)
+    assert unsolvable(sp.pi * E * a**2 / (4 * R) - sp.sqrt(2 * sp.pi * g * E * a)) is None
+    for e in ((a - 2) * sp.besselj(1, a), sp.besselj(1, a) - sp.Rational(1, 2)):   # what the precheck stands on
+        with pytest.raises(NotImplementedError):
+            sp.solve(e, a)
+
+
 # ---------------------------------------------------------------- input errors
 def test_input_errors():
     cp = lcs.parabola()

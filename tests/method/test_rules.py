@@ -203,6 +203,26 @@ def test_gap_sympy():
     refuses(GapSympy(), Problem("gap", WORN, P_WORN))
 
 
+def test_sympy_rules_refuse_a_rational_slope_they_cannot_close():
+    """The periodic wedge's kernel twin, P = atanh(a): dP/da = 1/(1 - a^2).
+    PressureSympy (an even part with a pole off a = 0: an Euler substitution)
+    and GapSympy (a logarithm off a = 0: dilogarithm type) say so at once;
+    before, sympy.integrate spent 10 and 7 CPU s and left both unevaluated.
+    What SymPy can close stays its: the odd slope of log(1 - a^2) for the
+    pressure (s/((1 - s^2) sqrt(s^2 - x^2)) closes), a slope without a
+    logarithmic part (a/(1 - a)) for the gap, every power law."""
+    twin = E * sp.atanh(a)
+    assert "Euler substitution" in PressureSympy().applies(Problem("pressure", PARABOLA, twin))
+    assert "dilogarithm" in GapSympy().applies(Problem("gap", PARABOLA, twin))
+    assert "Euler substitution" in PressureSympy().applies(Problem("pressure", PARABOLA, E * sp.atan(a)))
+    assert "dilogarithm" in GapSympy().applies(Problem("gap", PARABOLA, E * sp.log(1 - a**2)))
+    assert PressureSympy().applies(Problem("pressure", PARABOLA, E * sp.log(1 - a**2))) is None
+    assert GapSympy().applies(Problem("gap", PARABOLA, E * a / (1 - a))) is None
+    for P in (P_HERTZ, E * a**3 + a, E / (1 - a**2)):
+        assert PressureSympy().applies(Problem("pressure", PARABOLA, P)) is None
+        assert GapSympy().applies(Problem("gap", PARABOLA, P)) is None
+
+
 # ---------------------------------------------------------------- profile (9)
 P_OPEN = sp.Integral(E * _t * sp.exp(_t**3) / sp.sqrt(a**2 - _t**2), (_t, 0, a))     # a force law without closed form
 

@@ -19,7 +19,7 @@ from ...method.rules import Step
 from ...method.verification import VERIFY_DPS, VerificationRecord, digits_agreeing, verify
 from ...numeric.reference import integrate
 from ..normal.equilibria import equilibria, landscape, minimum
-from .pull_off import NumericDerivation, sample_points, solve_load, statement, tidy_checked
+from .pull_off import NumericDerivation, sample_points, solve_load, statement, tidy_checked, unsolvable
 from ...core.precision import workdps
 
 _phi = sp.Dummy("phi", positive=True)   # an integration variable: never a user's phi
@@ -87,8 +87,12 @@ def derive_jump_in(ad) -> Derivation:
             cands, method = closed[0], closed[1]
         else:
             cands = []
+            why = unsolvable(P)
             try:
-                cands = run_with_budget(solve_load, P, 0, seconds=ad.contact.budget)
+                if why is not None:
+                    notes.append(f"sympy.solve(P = 0): {why}")
+                else:
+                    cands = run_with_budget(solve_load, P, 0, seconds=ad.contact.budget)
             except (BudgetExceeded, NotImplementedError, ValueError, TypeError) as exc:
                 notes.append(f"sympy.solve(P = 0): {type(exc).__name__}")
         for cand in cands:
@@ -147,8 +151,12 @@ def derive_half_widths(ad, load):
     P = force.expr
     notes, cands = [], []
     if force.closed_form and not P.has(sp.Piecewise) and not ad.law.inactive:
+        why = unsolvable(P)
         try:
-            cands = run_with_budget(solve_load, P, load, seconds=ad.contact.budget)
+            if why is not None:
+                notes.append(f"sympy.solve(P(a) = {load}): {why}")
+            else:
+                cands = run_with_budget(solve_load, P, load, seconds=ad.contact.budget)
         except BudgetExceeded:
             notes.append(f"sympy.solve(P(a) = {load}) found nothing within {ad.contact.budget:g} s")
         except (NotImplementedError, ValueError, TypeError) as exc:

@@ -34,7 +34,7 @@ from ...core.errors import BudgetExceeded, NoPullOffError, VerificationError
 from ...method import store
 from ...method.derivation import Derivation, remembered_many, tidy
 from ...method.hyperseries import NotDecomposable, decompose
-from ...method.rules import Step
+from ...method.rules import Step, special_of
 from ...method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
                                    verify_many)
 from .brute_force import minimum_by_grid
@@ -68,6 +68,18 @@ def statement(P, what, load=0):
 
 def solve_stationary(P):
     return sp.solve(sp.diff(P, S.a), S.a)
+
+
+def unsolvable(expr):
+    """Why ``sympy.solve(expr = 0, a)`` is not worth trying, or None: ``expr``
+    holds a non-elementary function of a (:func:`~linecontact_sym.method.rules.special_of`:
+    Bessel, elliptic, hypergeometric ...), which SymPy cannot invert.  It
+    raises NotImplementedError then, even where the function is a factor
+    ((a - 2) besselj(1, a)), after up to 5 CPU s (the Gaussian bump's
+    besseli laws), or runs into the budget (the exact cylinder's elliptic
+    laws); a strategy that cannot apply says so at once."""
+    f = special_of(expr, S.a)
+    return None if f is None else f"it cannot invert {f.func.__name__} of a (not tried)"
 
 
 def solve_load(P, load):
@@ -172,7 +184,10 @@ def closed_attempt(ad):
             a_star = pick_minimum(ad, by_law[0], P, conds)
             if a_star is not None:
                 notes.append(by_law[1])
-        if a_star is None:
+        why = unsolvable(sp.diff(P, S.a)) if a_star is None else None
+        if why is not None:
+            notes.append(f"sympy.solve(dP/da = 0): {why}")
+        elif a_star is None:
             try:
                 cands = run_with_budget(solve_stationary, P, seconds=ad.contact.budget)
                 notes.append(f"sympy.solve(dP/da = 0) gave {len(cands)} candidate(s)")
@@ -434,4 +449,4 @@ def checked_or_fail(ad, vals, dps) -> PullOff:
 __all__ = ["reference", "checked", "at_values", "remembered_derivations", "remembered_closed_attempt", "single_power",
            "closed_attempt", "derivations", "numeric_derivations",
            "NumericDerivation", "pick_minimum", "tidy_checked", "sample_points", "same_at_points",
-           "solve_stationary", "solve_load", "statement"]
+           "solve_stationary", "solve_load", "unsolvable", "statement"]

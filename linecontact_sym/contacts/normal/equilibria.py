@@ -400,6 +400,8 @@ def admissible_range(law):
             note = (f"admissible for a <= a* = {mpmath.nstr(hi, 12)}: dP0/da turns negative there (tensile "
                     f"pressure at the edges of the non-adhesive contact beyond)")
     res = (lo, hi, end, note)
+    # the scan itself, for the landscape of P0 (the same search: see landscape)
+    law.base._admissible_scan = (balls, tuple(notes))
     law.base._admissible = res
     return res
 
@@ -419,8 +421,16 @@ def landscape(law) -> Landscape:
     if law.base.convex and (law is law.base or law.monotone_term):
         law._landscape = _convex_landscape(law, lo, hi, end, notes)
         return law._landscape
+    # the non-adhesive law itself: dP0/da >= 0 up to a* is what admissible_range
+    # just searched for, on the same segments with the same balls; it found no
+    # sign change below a* (the first one, falling, is a*), so P0 has no
+    # stationary point there and the search is not run a second time (the
+    # circular-corner punch: two subdivisions to MIN_WIDTH at its domain end)
+    read_off = law is law.base and getattr(law, "_admissible_scan", None) is not None
     with workdps(20):
-        balls = _Balls(law)
+        balls = law._admissible_scan[0] if read_off else _Balls(law)
+        if read_off:
+            notes += law._admissible_scan[1]
         method = "ball" if balls.f is not None else "adaptive"
         if balls.f is None and law.expr is not None:
             notes.append(f"ball arithmetic unavailable ({balls.reason}): adaptive subdivision instead")
@@ -429,7 +439,7 @@ def landscape(law) -> Landscape:
         ext = []
         g = reliable(law.dP) if law.expr is not None else law.dP
         for (l, r), b in zip(segs, kinks + [None]):
-            for cl, cr in (crossings(g, l, r, balls, notes) if not _on_flat(law, r) else ()):
+            for cl, cr in (crossings(g, l, r, balls, notes) if not (read_off or _on_flat(law, r)) else ()):
                 A = root_in_log(g, cl, cr)
                 ext.append(Extremum(A, law.P(A), "stationary", g(cl) < 0, (cl, cr)))
             if b is not None:
