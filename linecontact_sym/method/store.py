@@ -148,12 +148,26 @@ def code_version() -> str:
 _DUMMY_INDEX = re.compile(r"dummy_index=\d+")
 
 
+#: the key text of recent SymPy objects, by identity (the object kept, so that its id is not
+#: reused while it is here): SymPy objects are immutable, and the claims checker keys every
+#: point of a form by the same derived expression, profile and conditions
+_TEXTS: dict = {}
+_TEXTS_MAX = 512
+
+
 def _part(p):
     import sympy as sp
     if isinstance(p, sp.Basic):
+        hit = _TEXTS.get(id(p))
+        if hit is not None and hit[0] is p:
+            return hit[1]
         text, seen = sp.srepr(p), {}
         # a Dummy's index differs between processes: number them by appearance
-        return _DUMMY_INDEX.sub(lambda m: f"dummy_index=#{seen.setdefault(m.group(0), len(seen))}", text)
+        text = _DUMMY_INDEX.sub(lambda m: f"dummy_index=#{seen.setdefault(m.group(0), len(seen))}", text)
+        if len(_TEXTS) >= _TEXTS_MAX:
+            _TEXTS.clear()
+        _TEXTS[id(p)] = (p, text)
+        return text
     if isinstance(p, (list, tuple)):
         return "(" + ",".join(_part(q) for q in p) + ")"
     if isinstance(p, dict):
