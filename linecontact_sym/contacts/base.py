@@ -27,7 +27,6 @@ import functools
 from dataclasses import dataclass, field
 
 import math
-import types
 
 import numpy as np
 import sympy as sp
@@ -394,7 +393,8 @@ class Contact:
         ``.quantity_value()`` is the value as a pint quantity."""
         if not certified and dps is None:
             # a point of plain numbers: the scalar plan of this quantity (numeric.evaluate.scalar_evaluator)
-            fast = self.__dict__.get("_cache", _NO_CACHE).get(("_evaluate", quantity))   # self._caches()
+            cache = self.__dict__.get("_cache")        # self._caches() without its call
+            fast = None if cache is None else cache.get(("_evaluate", quantity))
             if fast is None:
                 fast = self._scalar_evaluator(quantity, rtol, values)
             if fast:
@@ -474,8 +474,6 @@ _NUMERIC: dict = {}
 
 #: the types of plain SI numbers (no unit to strip: the common, fast case of evaluate)
 _PLAIN_NUMBERS = frozenset((float, int))
-#: what self.__dict__ lacks before the first derivation (read-only: never written to)
-_NO_CACHE = types.MappingProxyType({})
 
 #: symbols declared positive whose values may be <= 0 (x: the profile is
 #: mirrored, f(-x) = f(x))
