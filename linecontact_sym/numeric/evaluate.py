@@ -89,8 +89,10 @@ class _Float64Field:
     evaluation.  Any result may set the field as usual; a note also as
     ``(format, *args)``, formatted when first read (the model path's)."""
 
-    def __init__(self, build, default):
-        self.build, self.default = build, default
+    def __init__(self, build, default, fresh=None):
+        # fresh: what a None (the dataclass default) stands for, made per result ({} for
+        # details: a dict cannot be a dataclass default)
+        self.build, self.default, self.fresh = build, default, fresh
 
     def __set_name__(self, owner, name):
         self.key = "_" + name
@@ -109,8 +111,7 @@ class _Float64Field:
         return v
 
     def __set__(self, obj, value):
-        # details: None (the default; a dict cannot be a dataclass default) is a new {}
-        obj.__dict__[self.key] = {} if value is None else value
+        obj.__dict__[self.key] = self.fresh() if value is None and self.fresh is not None else value
 
 
 #: the note of the float64 path
@@ -151,7 +152,7 @@ class Evaluation:
     enclosure: tuple | None = None
     note: str = _Float64Field(_float64_note, "")
     seconds: float = 0.0
-    details: dict = _Float64Field(_float64_details, None)
+    details: dict = _Float64Field(_float64_details, None, fresh=dict)
     unit: object = None
 
     def quantity_value(self):
