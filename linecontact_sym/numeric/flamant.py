@@ -112,7 +112,7 @@ def _log_terms(p, s, lo, hi, c, m, smooth, values, dps):
     c_sym = c if values is None or c == 0 else _X
 
     def form(e, var=s, extra=None):
-        return e.xreplace(values or {}) if values is None else bound_acb(e, var, {**values, **(extra or {})})
+        return e if values is None else bound_acb(e, var, {**values, **(extra or {})})
     terms = []
     for j, (u, v) in enumerate(zip(pts[:-1], pts[1:])):
         g = smooth
