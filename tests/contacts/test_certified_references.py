@@ -170,3 +170,20 @@ def test_jkr_verification_records_are_certified_by_arb():
         v = ad.derivation(q).verification
         assert v.passed and v.certified and min(v.guaranteed) >= 30, (q, str(v))
         assert "Arb ball quadrature" in str(v)
+
+
+def test_gap_reference_refuses_a_point_where_the_profile_is_not_real():
+    """The exact cylinder's R - sqrt(R^2 - x^2) past x = R: no gap there, a
+    DomainError at once (it returned a real mpmath estimate after an Arb
+    quadrature in vain); inside the profile's domain the certified value."""
+    from linecontact_sym.core.errors import DomainError
+    c = lcs.exact_cylinder()
+    d = c.derivation("gap")
+    vals = {S.R: R(73, 100), S.E_star: R(2), S.a: R(62, 100), S.x: R(15, 10)}
+    with pytest.raises(DomainError, match="not real at x"):
+        d.reference(vals, 30)
+    vals[S.x] = R(7, 10)
+    r = d.reference(vals, 30)
+    assert r.certified and r.digits >= 30
+    with workdps(40):
+        assert abs(d.evalf(30, R=R(73, 100), E_star=2, a=R(62, 100), x=R(7, 10)) - r.mid) < 10**-28

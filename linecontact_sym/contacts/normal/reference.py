@@ -29,6 +29,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.conversion import to_mpf
+from ...core.errors import DomainError
 from ...core.precision import workdps
 from ...method import transforms as T
 from ...numeric.reference import combine, estimate, integrate, quotient_bound
@@ -69,10 +70,16 @@ def pressure_reference(force_law, breaks, vals: dict, dps: int, fallback):
 
 
 def gap_reference(profile_expr, force_law, breaks, vals: dict, dps: int, fallback):
-    """The outside gap (|x| > a) at ``vals``, by parts (module docstring)."""
+    """The outside gap (|x| > a) at ``vals``, by parts (module docstring).
+    :class:`~linecontact_sym.core.errors.DomainError` where the profile is
+    not real at x (the exact cylinder's R - sqrt(R^2 - x^2) past x = R):
+    no gap there (a verification passes over such a point)."""
     A, X = vals[S.a], abs(vals[S.x])
     E = vals.get(S.E_star, 1)
     pv = _params(vals)
+    f_x = profile_expr.xreplace(pv).xreplace({S.x: X})
+    if f_x.is_extended_real is False:     # before the quadrature (a second, in vain, then an mpmath estimate)
+        raise DomainError(f"the profile is not real at x = {X} (here {f_x}): the gap is not defined there")
     P = force_law.xreplace(pv)
     root = sp.sqrt(X**2 - _s**2)
     integrand = P.xreplace({S.a: _s}) / (_s * root)
@@ -82,6 +89,6 @@ def gap_reference(profile_expr, force_law, breaks, vals: dict, dps: int, fallbac
     J = integrate(integrand, _s, [0, *inner, A], dps + 5, fallback=lambda: mpmath.nan, crude=crude)
     if not J.certified:
         return estimate(fallback, J.note, dps)
-    outer = profile_expr.xreplace(pv).xreplace({S.x: X}) - 2 / (sp.pi * E) * (
+    outer = f_x - 2 / (sp.pi * E) * (
         P.xreplace({S.a: A}) * sp.acosh(X / A) + X * _J)
     return combine(outer, _J, J, dps)
