@@ -38,6 +38,24 @@ each with what remains of the one budget, as separate calls of
 :func:`run_with_budget` would give it: the same results, one fork instead
 of three, and every stage finds SymPy's caches warm from the one before.
 
+Work done ahead (:class:`Ahead`): values that a stage will need and that do
+not depend on the stages before it (a verification's references at its
+sample points, which are drawn before the closed form is known) are
+computed in a SECOND forked child, concurrently with the first (the rule
+and its tidying): on two cores the wall time is the larger of the two, not
+their sum.  The budget stays one budget of CPU seconds, and results stay
+independent of the load, by this rule: each value comes with the CPU
+seconds the second child spent on it, and the stage that takes it
+*charges* them to its own budget (:meth:`Deadline.charge`; its CPU timer
+re-armed with what remains, a charge past the budget ending it as its
+timer would).  A stage so uses the CPU time it would have used doing the
+work itself, whichever child did it and however the two were scheduled; a
+value not there yet is waited for (no CPU), never computed again, so the
+order of events does not change a result either.  The second child runs
+under what remained of the budget when it began; values never taken (no
+closed form found, a point the conditions exclude) are CPU time of the
+second child, counted by the parent's :class:`Deadline` once it is reaped.
+
 On platforms without ``fork`` the work runs in-process and the budget is not
 enforced (documented limitation).
 """
@@ -46,6 +64,7 @@ from __future__ import annotations
 import gc
 import math
 import multiprocessing as _mp
+import multiprocessing.connection  # noqa: F401  (Ahead's pipe)
 import os
 import signal
 import pickle
@@ -159,9 +178,15 @@ class Deadline:
     def __init__(self, budget):
         self.budget = checked_budget(budget)
         self.start = cpu_time()
+        self.charged = 0.0
 
     def used(self) -> float:
-        return cpu_time() - self.start
+        return cpu_time() - self.start + self.charged
+
+    def charge(self, seconds: float) -> None:
+        """Count ``seconds`` of CPU time spent elsewhere on this work (a
+        value done ahead by another child, :class:`Ahead`)."""
+        self.charged += max(float(seconds), 0.0)
 
     def left(self):
         return None if self.budget is None else max(self.budget - self.used(), 0.0)
@@ -475,3 +500,112 @@ def run_stages(stages, *args, seconds: float = DEFAULT_BUDGET, margin: float = 0
 
 def _packed(values, lazy):
     return [Packed(value=v) for v in values] if lazy else values
+
+
+def charge_child(seconds: float) -> None:
+    """Charge ``seconds`` of CPU time done elsewhere (:class:`Ahead`) to the
+    budget of the forked child this runs in: its CPU timer is re-armed with
+    what remains; with nothing left the child ends as its timer would end
+    it (SIGPROF at its default action).  Outside a budgeted child: nothing."""
+    d = _IN_CHILD["deadline"]
+    if d is None:
+        return
+    d.charge(seconds)
+    if d.budget is None:
+        return
+    left = d.left()
+    if left <= 0:
+        signal.signal(signal.SIGPROF, signal.SIG_DFL)
+        os.kill(os.getpid(), signal.SIGPROF)
+    try:
+        _arm(left)
+    except (AttributeError, OSError, ValueError):
+        pass
+
+
+def forks(seconds) -> bool:
+    """Does budgeted work of ``seconds`` CPU seconds run in a forked child
+    here (:func:`run_stages`), so that a second child (:class:`Ahead`) can
+    work beside it?"""
+    seconds = _within_outer(seconds)
+    return not (seconds is None or math.isinf(seconds) or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK")
+                or _mp.current_process().daemon)
+
+
+class Ahead:
+    """Values computed ahead in a second forked child (module docstring):
+    ``Ahead(produce, seconds)`` forks a child that iterates ``produce()``
+    under ``seconds`` CPU seconds and sends each item with the CPU seconds
+    it took (the time since the item before); :meth:`take` (in this process
+    or in a child forked after this one) returns the next ``(item,
+    seconds)``, waiting for it, or None once the child has ended without
+    sending it (its generator done, or its budget spent).  :meth:`close`
+    ends and reaps the child (in the process that made it)."""
+
+    def __init__(self, produce, seconds):
+        self._owner = os.getpid()
+        self._done = False
+        rfd, wfd = os.pipe()
+        self.pid = os.fork()
+        if self.pid == 0:           # the child: never returns
+            try:
+                os.close(rfd)
+                _ahead_child(wfd, produce, seconds)
+            finally:
+                os._exit(0)
+        os.close(wfd)
+        self._recv = _mp.connection.Connection(rfd, writable=False)
+        self._guard = wall_guard(seconds)
+
+    def take(self):
+        if self._done:
+            return None
+        try:
+            if not self._recv.poll(self._guard):
+                self._done = True
+                return None
+            return pickle.loads(self._recv.recv_bytes())
+        except (EOFError, OSError, pickle.UnpicklingError):
+            self._done = True
+            return None
+
+    def close(self):
+        if os.getpid() != self._owner:
+            return
+        try:
+            os.kill(self.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        try:
+            os.waitpid(self.pid, 0)
+        except ChildProcessError:
+            pass
+        self._recv.close()
+        self._done = True
+
+
+def _ahead_child(wfd, produce, seconds):
+    import multiprocessing.connection as _conn
+    send = _conn.Connection(wfd, readable=False)
+    gc.freeze()                             # as in _child: no collection walks the parent's objects
+    _IN_CHILD["deadline"] = Deadline(seconds)
+    try:
+        _arm(seconds)
+    except (AttributeError, OSError, ValueError):
+        pass
+    last = time.process_time()
+    try:
+        for item in produce():
+            now = time.process_time()
+            _disarm()
+            send.send_bytes(pickle.dumps((item, now - last)))
+            try:
+                _arm(max(_IN_CHILD["deadline"].left(), 1e-3))
+            except (AttributeError, OSError, ValueError):
+                pass
+            last = time.process_time()
+    except Exception:       # the consumer does the rest itself (and meets the same error)
+        pass
+    finally:
+        _disarm()
+        send.close()

@@ -25,14 +25,14 @@ from sympy.functions.elementary.trigonometric import TrigonometricFunction
 from sympy.functions.special.bessel import BesselBase
 
 from ..core import symbols as S
-from ..core.budget import Deadline, checked_budget, child_left, run_stages, run_with_budget
+from ..core.budget import Ahead, Deadline, checked_budget, child_left, forks, run_stages, run_with_budget
 from ..core.conversion import float_values, point_value, real_mpf
 from ..core.errors import BudgetExceeded, ClaimError, DivergentIntegralError, DomainError, LineContactError
 from ..parsing import to_sympy
 from . import store
 from .rules import RULES, NotApplicable, Problem, Step
-from .verification import (REQUIRED_DIGITS, VERIFY_DPS, VerificationRecord, holds, unfinished, verify,
-                           verify_here)
+from .verification import (REQUIRED_DIGITS, VERIFY_DPS, VerificationRecord, holds, references_ahead, unfinished,
+                           verify, verify_here)
 from ..core.precision import held, serialized, workdps
 
 #: the rule name of a result without closed form
@@ -740,10 +740,18 @@ def _usable(rec, budget) -> bool:
 
 def _derive(quantity, problem, reference, sampler, fallback, deadline, check, points, notes, variables):
     name = f"the defining integral ({quantity})"
+    # the references at the verification points do not depend on the closed form: a second child
+    # computes them while the rules run (core.budget.Ahead: their CPU time charged when taken)
+    ahead = Ahead(references_ahead(reference, sampler, points), deadline.left()) \
+        if check and reference is not None and sampler is not None and forks(deadline.left()) else None
 
     def checking(expr, conds):
-        return verify_here(expr, reference, sampler, conds, n_points=points, reference_name=name)
-    step, attempts, checked = _integrate(problem, deadline, None, checking if check else None)
+        return verify_here(expr, reference, sampler, conds, n_points=points, reference_name=name, ahead=ahead)
+    try:
+        step, attempts, checked = _integrate(problem, deadline, None, checking if check else None)
+    finally:
+        if ahead is not None:
+            ahead.close()
     rec = None
     extra = []
     if step is not None and check:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 
-from ..core.budget import run_with_budget
+from ..core.budget import charge_child, run_with_budget
 from ..core.conversion import float_values, real_mpf
 from ..core.errors import BudgetExceeded, DomainError
 from ..core.precision import workdps
@@ -155,12 +155,76 @@ def verify(expr, reference, sampler, conditions=(), n_points: int = 5, seed: int
 
 
 def verify_here(expr, reference, sampler, conditions=(), n_points: int = 5, seed: int = 2017,
-                dps: int = VERIFY_DPS, reference_name: str = "mpmath quadrature") -> VerificationRecord:
+                dps: int = VERIFY_DPS, reference_name: str = "mpmath quadrature", ahead=None) -> VerificationRecord:
     """:func:`verify` in this process, under whatever budget bounds it (a
     derivation's forked child, :func:`~linecontact_sym.core.budget.run_stages`,
-    which verifies in the child that derived and tidied the closed form)."""
+    which verifies in the child that derived and tidied the closed form).
+    ``ahead``: the references done ahead by :func:`references_ahead` with the
+    same ``reference``, ``sampler``, ``n_points``, ``seed`` and ``dps``
+    (a :class:`~linecontact_sym.core.budget.Ahead`), taken instead of
+    computed here (their CPU time charged to this budget): the same record."""
     return _verify({"_": expr}, lambda vals, d: {"_": reference(vals, d)}, sampler, conditions, n_points, seed,
-                   dps, lambda k: reference_name)["_"]
+                   dps, lambda k: reference_name, _Taken(ahead) if ahead is not None else None)["_"]
+
+
+def references_ahead(reference, sampler, n_points: int = 5, seed: int = 2017, dps: int = VERIFY_DPS):
+    """The work of a :class:`~linecontact_sym.core.budget.Ahead` for
+    :func:`verify_here`: ``reference(values, dps)`` at the candidate points
+    in the order the verification draws them (the sampler's, from the same
+    seed; the points do not depend on the closed form), until ``n_points``
+    gave a usable reference.  Yields ``(k, values, reference or None)``: k
+    the candidate's number, None where the reference raised one of the
+    errors that make the verification skip a point.  The closed form's
+    conditions may exclude some of these points; the verification then
+    computes the references of the further points itself."""
+    def produce():
+        rng = random.Random(seed)
+        usable = 0
+        for k in range(20 * n_points):
+            if usable >= n_points:
+                return
+            vals = sampler(rng)
+            if vals is None:
+                continue
+            try:
+                ref = reference(vals, dps)
+            except (ZeroDivisionError, ValueError, DomainError):
+                ref = None
+            yield k, vals, ref
+            usable += ref is not None and _usable({"_": ref})
+    return produce
+
+
+class _Taken:
+    """The verification's side of the references done ahead: the one for
+    candidate k (None: not done ahead, computed here).  A reference taken is
+    charged to this process's budget (:func:`~linecontact_sym.core.budget.charge_child`);
+    those of candidates the conditions excluded are passed over uncharged,
+    as the verification would not have computed them."""
+
+    def __init__(self, ahead):
+        self.ahead, self.next = ahead, None
+
+    def get(self, k, vals):
+        while True:
+            if self.next is None:
+                self.next = self.ahead.take()
+                if self.next is None:
+                    return None
+            (j, jvals, ref), secs = self.next
+            if j > k:
+                return None
+            self.next = None
+            if j == k:
+                if jvals != vals:
+                    return None
+                charge_child(secs)
+                return ("skip",) if ref is None else ("ok", {"_": ref})
+
+
+def _usable(refs) -> bool:
+    mids = [getattr(r, "mid", r) for r in refs.values()]
+    return not any(not mpmath.isfinite(r) or isinstance(r, mpmath.mpc) for r in mids)
 
 
 def unfinished(dps: int, reference_name: str, budget) -> VerificationRecord:
@@ -185,7 +249,7 @@ def verify_many(exprs: dict, reference, sampler, conditions=(), n_points: int = 
         return {k: unfinished(dps, name(k), budget) for k in exprs}
 
 
-def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
+def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name, taken=None):
     rng = random.Random(seed)
     points, digits = [], {k: [] for k in exprs}
     guaranteed, outside = {k: [] for k in exprs}, {k: 0 for k in exprs}
@@ -195,13 +259,19 @@ def _verify(exprs, reference, sampler, conditions, n_points, seed, dps, name):
         vals = sampler(rng)
         if vals is None or not holds(conditions, vals):
             continue
-        try:
-            refs = reference(vals, dps)
-        except (ZeroDivisionError, ValueError, DomainError):
+        got = taken.get(tries - 1, vals) if taken is not None else None
+        if got is not None:
+            if got[0] == "skip":
+                continue
+            refs = got[1]
+        else:
+            try:
+                refs = reference(vals, dps)
+            except (ZeroDivisionError, ValueError, DomainError):
+                continue
+        if not _usable(refs):
             continue
         mids = {k: getattr(r, "mid", r) for k, r in refs.items()}
-        if any(not mpmath.isfinite(r) or isinstance(r, mpmath.mpc) for r in mids.values()):
-            continue
         points.append(vals)
         fvals = float_values(vals, dps + 30)
         for k, expr in exprs.items():

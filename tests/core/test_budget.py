@@ -204,3 +204,52 @@ def test_same_closed_forms_quiet_and_under_cpu_load():
         assert loaded[q]["closed"] and loaded[q]["verified"], (q, loaded[q])
         assert loaded[q]["expr"] == quiet[q]["expr"], q
     print({q: (round(quiet[q]["wall"], 1), round(loaded[q]["wall"], 1)) for q in QUANTITIES})
+
+
+def _squares(n, cost):
+    def produce():
+        for k in range(n):
+            _spin(cost)
+            yield k * k
+    return produce
+
+
+def test_work_done_ahead_comes_in_order_with_its_cpu_seconds():
+    a = B.Ahead(_squares(3, 0.05), 10)
+    try:
+        got = [a.take() for _ in range(4)]
+    finally:
+        a.close()
+    assert [g[0] for g in got[:3]] == [0, 1, 4] and got[3] is None
+    assert all(0.04 < g[1] < 1.0 for g in got[:3])
+    short = B.Ahead(_squares(3, 0.3), 0.1)      # its own budget spent before the first item: nothing
+    try:
+        assert short.take() is None
+    finally:
+        short.close()
+
+
+def test_a_child_taking_work_done_ahead_is_charged_for_it():
+    """The CPU seconds of the values taken count against the taker's budget
+    (core.budget's rule for Ahead): 3 x 0.2 s charged to a child that itself
+    only waits; with a budget of 0.3 s the second charge ends it as its own
+    CPU timer would (BudgetExceeded, not the wall-clock guard)."""
+    def take_all(ahead):
+        out = []
+        while (item := ahead.take()) is not None:
+            B.charge_child(item[1])
+            out.append(item[0])
+        return out, B._IN_CHILD["deadline"].used()
+    a = B.Ahead(_squares(3, 0.2), 10)
+    try:
+        out, used = run_with_budget(take_all, a, seconds=5)
+    finally:
+        a.close()
+    assert out == [0, 1, 4] and 0.55 < used < 3
+    a = B.Ahead(_squares(3, 0.2), 10)
+    try:
+        with pytest.raises(BudgetExceeded) as info:
+            run_with_budget(take_all, a, seconds=0.3)
+    finally:
+        a.close()
+    assert not info.value.wall_guard

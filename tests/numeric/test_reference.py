@@ -223,3 +223,36 @@ def test_exact_cylinder_gap_integral_certified_with_few_evaluations():
                           / (s * mpmath.sqrt(Xm**2 - s**2)), [0, mpmath.mpf(7171) / 10000])
         assert r.contains(ref, mpmath.mpf(10)**-55)
         assert not r.contains(ref * (1 + mpmath.mpf(10)**-35))
+
+
+def test_references_done_ahead_give_the_same_record():
+    """verify_here with the references computed ahead in a second child
+    (core.budget.Ahead, method.verification.references_ahead) gives the
+    record it gives computing them itself: with conditions that exclude
+    some of the points done ahead (passed over; the further points computed
+    here), and for a closed form 1e-35 off (outside every enclosure)."""
+    from linecontact_sym.core.budget import Ahead
+    from linecontact_sym.method.verification import references_ahead, verify_here
+    c = lcs.parabola()
+    d = c.derivation("force")
+    sampler = c._sampler("any")
+    conds = (sp.Lt(S.a, sp.Rational(8, 10)),)
+    calls = []
+
+    def reference(vals, dps):       # counts the references computed in this process
+        calls.append(vals)
+        return d.reference(vals, dps)
+    for expr in (d.expr, d.expr * (1 + sp.Rational(1, 10**35))):
+        calls.clear()
+        here = verify_here(expr, reference, sampler, conds, n_points=5)
+        n_here = len(calls)
+        ahead = Ahead(references_ahead(reference, sampler, 5), 60)
+        calls.clear()
+        try:
+            taken = verify_here(expr, reference, sampler, conds, n_points=5, ahead=ahead)
+        finally:
+            ahead.close()
+        assert taken == here and len(here.points) == 5
+        assert 0 < len(calls) < n_here          # some taken from the second child, the further ones here
+        assert all(p[S.a] < sp.Rational(8, 10) for p in here.points)
+    assert here.outside == 5 and not here.passed
