@@ -523,13 +523,21 @@ def charge_child(seconds: float) -> None:
         pass
 
 
+def _cores() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
 def forks(seconds) -> bool:
     """Does budgeted work of ``seconds`` CPU seconds run in a forked child
-    here (:func:`run_stages`), so that a second child (:class:`Ahead`) can
-    work beside it?"""
+    here (:func:`run_stages`), with a second core for a second child
+    (:class:`Ahead`) to work beside it?  (On one core the second child
+    would only add its fork; the results are the same either way.)"""
     seconds = _within_outer(seconds)
     return not (seconds is None or math.isinf(seconds) or not _HAS_FORK or os.environ.get("LINECONTACT_SYM_NO_FORK")
-                or _mp.current_process().daemon)
+                or _mp.current_process().daemon or _cores() < 2)
 
 
 class Ahead:
