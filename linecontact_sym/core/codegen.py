@@ -12,7 +12,7 @@ and is compiled only after :func:`checked_tree` has read every node:
   ``global``, ``lambda``, comprehensions, ``with``, ``del`` ...);
 * every name read is an argument, a name the function assigns, a name of the
   namespace given (the functions ``lambdify`` put there and the package's
-  helpers) or one of a few builtins (``float``, ``abs``, ``len``);
+  helpers) or one of a few builtins (``float``, ``abs``, ``len``, ``KeyError``);
 * attributes only ``__class__``, ``__dict__`` and ``get``; no name with
   two leading underscores.
 
@@ -35,7 +35,7 @@ _NODES = (ast.Module, ast.FunctionDef, ast.arguments, ast.arg, ast.Return, ast.I
           ast.Assign, ast.Compare, ast.BoolOp, ast.UnaryOp, ast.BinOp, ast.Call, ast.Name, ast.Constant,
           ast.Attribute, ast.Dict, ast.Tuple, ast.Load, ast.Store, ast.IfExp, ast.boolop, ast.operator,
           ast.unaryop, ast.cmpop, ast.Subscript)
-_BUILTINS = frozenset({"float", "abs", "len"})
+_BUILTINS = frozenset({"float", "abs", "len", "KeyError"})
 _ATTRIBUTES = frozenset({"__class__", "__dict__", "get"})
 
 

@@ -533,7 +533,8 @@ def _float64_result(quantity, v, est, rtol, factor, kappa, cancel, qerr, t0):
     # as much as the parabola's whole float64 path); the same object as
     # Evaluation(quantity, v, "float64", est, rtol, note=..., seconds=..., details=...), whose
     # note and details are built when read (_Float64Field), and whose certified, enclosure and
-    # unit are the class's defaults
+    # unit are the class's defaults.  _FAST_TEMPLATE writes the same fields out in the
+    # generated monomial path (test_monomial_one_pass_is_the_general_path compares the two)
     r = _new(Evaluation)
     r.__dict__ = {"quantity": quantity, "value": v, "path": "float64", "error": est, "rtol": rtol,
                   "_float64": (factor, kappa, cancel, qerr), "seconds": time.perf_counter() - t0}
@@ -656,7 +657,8 @@ def scalar_evaluator(contact, quantity: str, domain):
     return fast
 
 
-#: :func:`scalar_evaluator`'s ``fast`` for a monomial, as :func:`~.fastpath.inline_point` generates it
+#: :func:`scalar_evaluator`'s ``fast`` for a monomial, as :func:`~.fastpath.inline_point` generates it;
+#: the Evaluation built as :func:`_float64_result` builds it, written out (a call costs 5 % of the path)
 _FAST_TEMPLATE = """
 def _lcs_pass(_lcs_contact, _lcs_rtol, _lcs_values):
     if _lcs_rtol is None:

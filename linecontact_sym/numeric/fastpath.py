@@ -332,7 +332,10 @@ def _lcs_pass(_lcs_values):
 _CHECK_TEMPLATE = """
 if len(_lcs_values) != _lcs_n:
     return FAIL
-ARG = _lcs_values.get(NAME, _lcs_missing)
+try:
+    ARG = _lcs_values[NAME]
+except KeyError:
+    return FAIL
 if ARG.__class__ is not float:
     ARG = _lcs_int_as_float(ARG)
     if ARG is None:
@@ -416,7 +419,7 @@ def inline_point(checks, f, template: str, fail: str, space=None):
               and st.value.id == "CHECK")
     func.body[at:at + 1] = code
     namespace.update(space or {})
-    namespace.update(_lcs_n=len(checks), _lcs_missing=object(), _lcs_inf=math.inf, _lcs_int_as_float=_int_as_float,
+    namespace.update(_lcs_n=len(checks), _lcs_inf=math.inf, _lcs_int_as_float=_int_as_float,
                      _lcs_fail=(ValueError, ZeroDivisionError, OverflowError, TypeError))
     try:
         return compile_function(module, namespace, "_lcs_pass")
