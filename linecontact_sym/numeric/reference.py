@@ -775,7 +775,7 @@ def quotient_bound(numerator, var, rest, order: int = 1):
     there when ``analytic`` is set; so ``acb.integral`` may use it on its
     complex neighbourhoods of a piece from 0 (its Gauss-Legendre error
     bound), not only bisect towards 0 with real balls (issue 26: the exact
-    cylinder's gap took about 3,300 evaluations a point, a third now)."""
+    cylinder's gap took about 3,200 evaluations a point, about 700 now)."""
     fn, fr = compile_acb(numerator, var), compile_acb(rest, var)
 
     def crude(z, analytic=False):
