@@ -253,3 +253,18 @@ def test_a_child_taking_work_done_ahead_is_charged_for_it():
     finally:
         a.close()
     assert not info.value.wall_guard
+
+
+def test_a_second_child_only_where_a_core_is_idle(monkeypatch):
+    """forks(): the references are done ahead only with an idle core (two or
+    more cores, the 1-minute load average below their number), never
+    without a budget or fork; either way the records are the same
+    (tests/numeric/test_reference.py::test_references_done_ahead_give_the_same_record)."""
+    monkeypatch.setattr(B, "_cores", lambda: 2)
+    monkeypatch.setattr(B.os, "getloadavg", lambda: (0.4, 0.3, 0.2))
+    assert B.forks(5) and not B.forks(None) and not B.forks(float("inf"))
+    monkeypatch.setattr(B.os, "getloadavg", lambda: (2.5, 2.0, 1.0))
+    assert not B.forks(5)
+    monkeypatch.setattr(B, "_cores", lambda: 1)
+    monkeypatch.setattr(B.os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    assert not B.forks(5)
