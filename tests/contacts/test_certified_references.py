@@ -172,6 +172,7 @@ def test_jkr_verification_records_are_certified_by_arb():
         assert "Arb ball quadrature" in str(v)
 
 
+@pytest.mark.slow
 def test_gap_reference_refuses_a_point_where_the_profile_is_not_real():
     """The exact cylinder's R - sqrt(R^2 - x^2) past x = R: no gap there, a
     DomainError at once (it returned a real mpmath estimate after an Arb

@@ -231,8 +231,8 @@ def test_work_done_ahead_comes_in_order_with_its_cpu_seconds():
 
 def test_a_child_taking_work_done_ahead_is_charged_for_it():
     """The CPU seconds of the values taken count against the taker's budget
-    (core.budget's rule for Ahead): 3 x 0.2 s charged to a child that itself
-    only waits; with a budget of 0.3 s the second charge ends it as its own
+    (core.budget's rule for Ahead): 3 x 0.1 s charged to a child that itself
+    only waits; with a budget of 0.15 s the second charge ends it as its own
     CPU timer would (BudgetExceeded, not the wall-clock guard)."""
     def take_all(ahead):
         out = []
@@ -240,16 +240,16 @@ def test_a_child_taking_work_done_ahead_is_charged_for_it():
             B.charge_child(item[1])
             out.append(item[0])
         return out, B._IN_CHILD["deadline"].used()
-    a = B.Ahead(_squares(3, 0.2), 10)
+    a = B.Ahead(_squares(3, 0.1), 10)
     try:
         out, used = run_with_budget(take_all, a, seconds=5)
     finally:
         a.close()
-    assert out == [0, 1, 4] and 0.55 < used < 3
-    a = B.Ahead(_squares(3, 0.2), 10)
+    assert out == [0, 1, 4] and 0.28 < used < 2
+    a = B.Ahead(_squares(3, 0.1), 10)
     try:
         with pytest.raises(BudgetExceeded) as info:
-            run_with_budget(take_all, a, seconds=0.3)
+            run_with_budget(take_all, a, seconds=0.15)
     finally:
         a.close()
     assert not info.value.wall_guard

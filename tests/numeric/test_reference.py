@@ -225,6 +225,7 @@ def test_exact_cylinder_gap_integral_certified_with_few_evaluations():
         assert not r.contains(ref * (1 + mpmath.mpf(10)**-35))
 
 
+@pytest.mark.slow
 def test_references_done_ahead_give_the_same_record():
     """verify_here with the references computed ahead in a second child
     (core.budget.Ahead, method.verification.references_ahead) gives the
