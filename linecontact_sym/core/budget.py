@@ -533,11 +533,18 @@ def _cores() -> int:
 
 
 def _idle_core() -> bool:
-    """A core left idle by the rest of the machine: the 1-minute load
-    average below the number of cores (this process's own work included)."""
+    """A core idle now: the processes running on the machine, this one
+    included, fewer than its cores (Linux: the running count of
+    ``/proc/loadavg``, at this instant; elsewhere the 1-minute load average
+    below the number of cores)."""
     cores = _cores()
     if cores < 2:
         return False
+    try:
+        with open("/proc/loadavg") as fh:
+            return int(fh.read().split()[3].split("/")[0]) < cores
+    except (OSError, ValueError, IndexError):
+        pass
     try:
         return os.getloadavg()[0] < cores
     except (AttributeError, OSError):
@@ -547,10 +554,10 @@ def _idle_core() -> bool:
 def forks(seconds) -> bool:
     """Does budgeted work of ``seconds`` CPU seconds run in a forked child
     here (:func:`run_stages`), with an idle core for a second child
-    (:class:`Ahead`) to work on beside it?  On a single core, or on cores
-    the machine's other work keeps busy, the second child would only
-    compete with the first (measured on 2 busy cores: no gain in wall time,
-    10-30 % more CPU time from the contention), so the work is done in the
+    (:class:`Ahead`) to work on beside it (:func:`_idle_core`)?  On a
+    single core, or on cores the machine's other work keeps busy, the second
+    child would only compete with the first (measured on 2 busy cores: no
+    gain in wall time, 10-30 % more CPU time), so the work is done in the
     first child as before.  This choice never changes a result: the
     verification takes the same references at the same points either way
     and is charged their CPU time (module docstring)."""

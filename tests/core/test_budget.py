@@ -257,14 +257,23 @@ def test_a_child_taking_work_done_ahead_is_charged_for_it():
 
 def test_a_second_child_only_where_a_core_is_idle(monkeypatch):
     """forks(): the references are done ahead only with an idle core (two or
-    more cores, the 1-minute load average below their number), never
+    more cores, fewer processes running now than cores), never
     without a budget or fork; either way the records are the same
     (tests/numeric/test_reference.py::test_references_done_ahead_give_the_same_record)."""
+    import builtins
+    import io
+    real_open = builtins.open
+    running = {"n": 1}
+
+    def fake_open(path, *args, **kw):       # /proc/loadavg with ``running`` processes running now
+        if path == "/proc/loadavg":
+            return io.StringIO(f"0.50 0.40 0.30 {running['n']}/300 12345\n")
+        return real_open(path, *args, **kw)
+    monkeypatch.setattr(builtins, "open", fake_open)
     monkeypatch.setattr(B, "_cores", lambda: 2)
-    monkeypatch.setattr(B.os, "getloadavg", lambda: (0.4, 0.3, 0.2))
     assert B.forks(5) and not B.forks(None) and not B.forks(float("inf"))
-    monkeypatch.setattr(B.os, "getloadavg", lambda: (2.5, 2.0, 1.0))
+    running["n"] = 2                        # this process and another: no idle core
     assert not B.forks(5)
     monkeypatch.setattr(B, "_cores", lambda: 1)
-    monkeypatch.setattr(B.os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    running["n"] = 1
     assert not B.forks(5)
