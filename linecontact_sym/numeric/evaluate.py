@@ -67,7 +67,7 @@ from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
 from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, lambdify_mpmath,
                       lambdify_mpmath_quad, compile_callable, stable_form)
-from .fastpath import inline_point, one_pass, scalar_kit, vector_float64
+from .fastpath import bound_checks, inline_point, one_pass, scalar_kit, vector_float64
 from .switches import safe_step, switch_near_end
 from .quadrature import VectorQuad
 from ..core.precision import checked_dps, held_digits, workdps
@@ -645,11 +645,10 @@ def scalar_evaluator(contact, quantity: str, domain):
         return _mpmath_path(d, quantity, values, rtol, kappa, t0, notes)
     if one is not None:
         # the same steps as fast's, generated as one function with the law's expression in it
-        # (fastpath.inline_point): the parabola's evaluate 2.4 -> 2.0 us
-        inlined = inline_point(tuple((n, bounds[n] in ("positive", "nonnegative")) for n in names), kit.f,
+        # (fastpath.inline_point): the parabola's evaluate 13x -> 9.5x the law written by hand
+        inlined = inline_point(bound_checks(bounds, names), kit.f,
                                _FAST_TEMPLATE, "_lcs_general(_lcs_contact, _lcs_rtol, _lcs_values, _lcs_t0)",
-                               {"_lcs_clock": clock, "_lcs_c0": c0, "_lcs_result": _float64_result,
-                                "_lcs_quantity": quantity, "_lcs_factor": FLOAT64_FACTOR, "_lcs_kappa0": kappa0,
+                               {"_lcs_clock": clock, "_lcs_c0": c0, "_lcs_quantity": quantity,
                                 "_lcs_general": general, "_lcs_new": _new, "_lcs_Evaluation": Evaluation,
                                 "_lcs_terms": (FLOAT64_FACTOR, kappa0, 1.0, 0.0)})
         if inlined is not None:

@@ -40,7 +40,8 @@ from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, 
                       cancellation_sums, compile_callable, stable_form)
 from .special import np_gamma_ratio, np_hyp2f1c
 
-__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "one_pass", "inline_point", "STEP"]
+__all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "one_pass", "inline_point", "bound_checks",
+           "STEP"]
 
 #: relative step of the central differences for kappa
 STEP = 1e-6
@@ -278,7 +279,7 @@ def one_pass(bounds, names, f):
     (the parabola's force: 0.75 -> 0.3 us); else it is the loop below."""
     if bounds is None or not frozenset(names) <= bounds.keys():
         return None
-    checks = tuple((n, bounds[n] in ("positive", "nonnegative")) for n in names)
+    checks = bound_checks(bounds, names)
     inlined = _inlined_pass(checks, f)
     if inlined is not None:
         return inlined
@@ -309,6 +310,13 @@ def one_pass(bounds, names, f):
             return None
         return v if v - v == 0 else None
     return value
+
+
+def bound_checks(bounds, names):
+    """(name, positive) per name: the bound test of :func:`inline_point`
+    ('positive' and 'nonnegative': 0 < v < inf, 0 being left to the full
+    path; 'any': finite and nonzero)."""
+    return tuple((n, bounds[n] in ("positive", "nonnegative")) for n in names)
 
 
 def _int_as_float(v):
@@ -447,17 +455,20 @@ def scalar_plan(nf):
     wanted = frozenset(names) - frozenset(params)
     domain = getattr(nf.domain, "scalar", nf.domain)
     scalar_types = (float, int)
-    one = None
-    if not params:    # no check (any finite number), or a bounds-only check: one pass (one_pass)
-        one = one_pass(dict.fromkeys(names, "any") if nf.domain is None else
-                       getattr(nf.domain, "bounds", None), names, f)
     f64 = np.float64
+    bounds = None
+    if not params:    # no check (any finite number), or a bounds-only check: one pass (one_pass)
+        bounds = dict.fromkeys(names, "any") if nf.domain is None else getattr(nf.domain, "bounds", None)
+    one = one_pass(bounds, names, f)
 
     def fast(kw):
         if one is not None:
             v = one(kw)
             if v is not None:
                 return f64(v)
+        return general(kw)
+
+    def general(kw):
         if kw.keys() != wanted:
             return None
         for v in kw.values():
@@ -471,4 +482,19 @@ def scalar_plan(nf):
         except (ValueError, ZeroDivisionError, OverflowError, TypeError, KeyError):
             return None
         return np.float64(v) if math.isfinite(v) else None
+    if one is not None:     # fast generated as one function with f's expression in it (inline_point)
+        inlined = inline_point(bound_checks(bounds, names), f, _EXPORT_TEMPLATE, "_lcs_general(_lcs_values)",
+                               {"_lcs_f64": f64, "_lcs_general": general})
+        if inlined is not None:
+            return inlined
     return fast
+
+
+#: :func:`scalar_plan`'s ``fast`` where the point is read in one pass, as :func:`inline_point` generates it
+_EXPORT_TEMPLATE = """
+def _lcs_pass(_lcs_values):
+    CHECK
+    if _lcs_v - _lcs_v == 0:
+        return _lcs_f64(_lcs_v)
+    return _lcs_general(_lcs_values)
+"""
