@@ -176,7 +176,10 @@ def references_ahead(reference, sampler, n_points: int = 5, seed: int = 2017, dp
     the candidate's number, None where the reference raised one of the
     errors that make the verification skip a point.  The closed form's
     conditions may exclude some of these points; the verification then
-    computes the references of the further points itself."""
+    computes the references of the further points itself.  The CPU time
+    charged for an item is that of producing it: the reference and the
+    sampler's draw (a few ms, which the verification spends again drawing
+    the same point: a charge a little above the work it replaces)."""
     def produce():
         rng = random.Random(seed)
         usable = 0
