@@ -37,7 +37,7 @@ from ....core.errors import DomainError, NoPullOffError, VerificationError
 from ....core.precision import workdps
 from ....core.roots import UNDEFINED, Outside, domain_end, real_value
 from ....method.transforms import inside
-from ....numeric.arb_functions import MPMATH_ARB
+from ....numeric.arb_functions import lambdify_law
 
 @dataclass
 class MDState:
@@ -91,9 +91,10 @@ def profile_kinks(profile, fixed):
 
 
 def _lam(expr, args):
-    """``expr`` as an mpmath function of ``args`` (Bessel and elliptic Pi through Arb: the
-    law is evaluated thousands of times in a pull-off search)."""
-    return sp.lambdify(args, expr, modules=[dict(MPMATH_ARB), "mpmath"])
+    """``expr`` as an mpmath function of ``args`` (a form with Bessel functions in Arb, the
+    others with Bessel and elliptic Pi through Arb: the law is evaluated thousands of times
+    in a pull-off search; :func:`~linecontact_sym.numeric.arb_functions.lambdify_law`)."""
+    return lambdify_law(args, expr)
 
 
 def _real(fn):
@@ -187,6 +188,10 @@ class QuadGap:
     def g_a(self, A, C):
         """dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a)."""
         return -2 / (mpmath.pi * self._E()) * mpmath.acosh(C / A) * self.dP0(A)
+
+
+#: relative Newton step at which the working-precision estimate of c_D - a stops (c_of)
+ESTIMATE_TOL = mpmath.mpf(10)**-7
 
 
 class MDLaw:
@@ -303,8 +308,14 @@ class MDLaw:
         by doubling / halving (never past s_max, where the profile stops being
         real: a :class:`DomainError` when F < 0 still there, i.e. the cohesive
         zone would have to reach past the profile's end), then Newton kept
-        inside the bracket."""
-        F = _real(F)
+        inside the bracket.  F is evaluated once per point (the guess is
+        both the first end of the bracket and Newton's start)."""
+        F_real, seen = _real(F), {}
+
+        def F(v):
+            if v not in seen:
+                seen[v] = F_real(v)
+            return seen[v]
         if s_max is not None and not s0 < s_max:
             s0 = s_max / 2
         lo = hi = s0
@@ -358,12 +369,12 @@ class MDLaw:
             extra = max(0, int(mpmath.log10(mpmath.mpf(A) / self._s_guess(A))))
         with workdps(25 + extra):
             A25 = mpmath.mpf(A)
-            guess = self._s_guess(A25)
-            if self._warm is not None and self._warm[1] > A25:     # the last solution: scans move smoothly
-                guess = self._warm[1] - A25
+            guess = self._warm_guess(A25)
+            # the estimate stops at a Newton step below ESTIMATE_TOL: quadratic convergence leaves it
+            # about ESTIMATE_TOL**2 off, and the solve at dps + guard digits below corrects it anyway
             s_est = self._solve_s(lambda s: self._G(A25, A25 + s), lambda s: self._Gc(A25, A25 + s),
-                                  guess, mpmath.mpf(10)**-12, self._s_max(A25), A25)
-            self._warm = (A25, A25 + s_est)
+                                  guess, ESTIMATE_TOL, self._s_max(A25), A25)
+            self._warm = (self._warm or [])[-1:] + [(A25, s_est)]
             # acosh(c/a) near c = a loses log10(a/s) digits; at small a, terms of size c/a cancel in
             # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
             r = mpmath.log10(A25 / s_est)
@@ -373,6 +384,25 @@ class MDLaw:
             s = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
                               mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A)
             return A + s, guard
+
+    def _warm_guess(self, A):
+        """The start of the estimate of s = c_D - a at A from the last two solutions (scans, root
+        searches and the descent move smoothly): s(a) extrapolated as a power law between them
+        where A lies within a factor 4 of both, else c_D kept from the last one (where it lies
+        above A), else the JKR-limit zone.  Only the work depends on it: the bracket decides."""
+        h = self._warm or []
+        if len(h) == 2 and all(A / 4 < a < 4 * A for a, _ in h):
+            (a1, s1), (a2, s2) = h
+            span = mpmath.log(a2 / a1)
+            # extrapolated at most twice the span of the two (two nearly equal half-widths of a root
+            # search would amplify the estimates' own errors), and within a factor 4 of s2
+            if abs(span) > mpmath.mpf(10)**-4 and abs(mpmath.log(A / a2)) <= 2 * abs(span):
+                g = s2 * (s2 / s1)**(mpmath.log(A / a2) / span)
+                if mpmath.isfinite(g) and s2 / 4 < g < 4 * s2:
+                    return g
+        if h and h[-1][0] + h[-1][1] > A:
+            return h[-1][0] + h[-1][1] - A
+        return self._s_guess(A)
 
     def _s_guess(self, A):
         # the Dugdale gap is ~ 4 sigma0 s/(pi E*) for s << a: s ~ pi E* h0/(4 sigma0)
