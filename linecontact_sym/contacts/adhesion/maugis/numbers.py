@@ -172,8 +172,10 @@ class QuadGap:
         """g0(C; A)."""
         with workdps(mpmath.mp.dps + self._extra(C)):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
-            I = mpmath.acosh(C / A) * self.P0(A) + self._integral(
-                lambda th: self.P0(C * mpmath.sin(th)) / mpmath.sin(th), A, C)
+            def integrand(th):
+                sin = mpmath.sin(th)
+                return self.P0(C * sin) / sin
+            I = mpmath.acosh(C / A) * self.P0(A) + self._integral(integrand, A, C)
             v = self.f(C) - 2 * I / (mpmath.pi * self._E())
         return +v
 
