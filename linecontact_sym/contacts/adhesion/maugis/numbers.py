@@ -305,13 +305,15 @@ class MDLaw:
                               f"domain x = {mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
         return (self.x_end - A) * (1 - mpmath.mpf(10)**-(mpmath.mp.dps - 5))
 
-    def _solve_s(self, F, dF, s0, tol, s_max=None, A=None):
+    def _solve_s(self, F, dF, s0, tol, s_max=None, A=None, with_slope=False):
         """Root of the increasing F on 0 < s < s_max from the guess s0: bracket
         by doubling / halving (never past s_max, where the profile stops being
         real: a :class:`DomainError` when F < 0 still there, i.e. the cohesive
         zone would have to reach past the profile's end), then Newton kept
         inside the bracket.  F is evaluated once per point (the guess is
-        both the first end of the bracket and Newton's start)."""
+        both the first end of the bracket and Newton's start).
+        ``with_slope``: (s, dF at the last Newton point, within tol s of s,
+        or None where there was none)."""
         F_real, seen = _real(F), {}
 
         def F(v):
@@ -345,6 +347,7 @@ class MDLaw:
                 if n > 4000:
                     raise DomainError("no cohesive-zone half-width found: the gap exceeds h0 at c_D -> a")
         s = s0 if lo <= s0 <= hi else (lo + hi) / 2   # a good guess stays the start
+        d = None
         for _ in range(200):
             f = F(s)
             if f > 0:
@@ -359,14 +362,22 @@ class MDLaw:
             if s_new is None or not lo < s_new < hi:
                 s_new = mpmath.sqrt(lo * hi) if hi / lo > 4 else (lo + hi) / 2
             if abs(s_new - s) <= tol * s:
-                return s_new
+                return (s_new, d) if with_slope else s_new
             s = s_new
             if (hi - lo) <= tol * lo:
-                return s
-        return s
+                break
+            d = None      # the slope was at the previous point
+        return (s, d) if with_slope else s
 
     def c_of(self, A, dps: int):
         """c_D at the half-width A (mpf), to dps digits."""
+        C, guard, _ = self._c_and_slope(A, dps)
+        return C, guard
+
+    def _c_and_slope(self, A, dps: int):
+        """(c_D, the guard digits, dG/dc of the gap condition at the last Newton point, within
+        10**-(dps+4) (c_D - a) of c_D, or None) at the half-width A: :meth:`c_of`, and the slope
+        :meth:`P_and_slope` needs for dc_D/da without one more quadrature."""
         with workdps(15):   # c_D - a is at least of the order of the JKR-limit zone: digits to resolve it
             extra = max(0, int(mpmath.log10(mpmath.mpf(A) / self._s_guess(A))))
         with workdps(25 + extra):
@@ -383,9 +394,10 @@ class MDLaw:
             guard = 14 + (int(r) if r > 0 else 2 * int(-r))
         with workdps(dps + guard):
             A = mpmath.mpf(A)
-            s = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
-                              mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A)
-            return A + s, guard
+            s, slope = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
+                                     mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A,
+                                     with_slope=True)
+            return A + s, guard, slope
 
     def _warm_guess(self, A):
         """The start of the estimate of s = c_D - a at A from the last two solutions (scans, root
@@ -423,10 +435,12 @@ class MDLaw:
 
     def P_and_slope(self, A, dps: int):
         """(P, dP/da, c_D) at A, each to about dps digits."""
-        C, guard = self.c_of(A, dps)
+        C, guard, Gc = self._c_and_slope(A, dps)
         with workdps(dps + guard):
             A = mpmath.mpf(A)
-            dc = -self._Ga(A, C) / self._Gc(A, C)
+            # dG/dc at the last Newton point: c_D moved by at most 10**-(dps+4) (c_D - a) from it, a
+            # relative change of that order in dc_D/da (G is smooth in c on the scale c_D - a)
+            dc = -self._Ga(A, C) / (self._Gc(A, C) if Gc is None else Gc)
             P = self._P(A, C)
             dP = self._Pa(A, C) + self._Pc(A, C) * dc
             return +P, +dP, +C
