@@ -172,6 +172,6 @@ def lambdify_law(args, expr):
     at 20-40 digits), else mpmath's lambdified function with
     :data:`MPMATH_ARB` (an elementary or elliptic-K/E form costs less in
     mpmath than the conversion to balls and back, about 25 us)."""
-    if sp.sympify(expr).has(*SLOW_IN_MPMATH):
+    if sp.sympify(expr, strict=True).has(*SLOW_IN_MPMATH):
         return arb_lambdify(args, expr)
     return sp.lambdify(list(args), expr, modules=[dict(MPMATH_ARB), "mpmath"])
