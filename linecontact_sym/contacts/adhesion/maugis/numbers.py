@@ -305,26 +305,53 @@ class MDLaw:
                               f"domain x = {mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
         return (self.x_end - A) * (1 - mpmath.mpf(10)**-(mpmath.mp.dps - 5))
 
-    def _solve_s(self, F, dF, s0, tol, s_max=None, A=None, with_slope=False):
+    def _solve_s(self, F, dF, s0, tol, s_max=None, A=None, with_slope=False, near=False):
         """Root of the increasing F on 0 < s < s_max from the guess s0: bracket
         by doubling / halving (never past s_max, where the profile stops being
         real: a :class:`DomainError` when F < 0 still there, i.e. the cohesive
         zone would have to reach past the profile's end), then Newton kept
-        inside the bracket.  F is evaluated once per point (the guess is
-        both the first end of the bracket and Newton's start).
+        inside the bracket.  F and dF are evaluated once per point (the guess
+        is both the first end of the bracket and Newton's start).
+        ``near``: s0 is an estimate within quadratic reach of the root (c_of's
+        solve at the working precision): the second end of the bracket is first
+        probed just beyond the Newton step from s0 (past it by the larger of
+        tol s0 / 4 and 1000 step**2 / s0, far more than that step's own error),
+        where F has the other sign when s0 is that close; only if it has not,
+        the doubling / halving from s0.  Newton then starts at the probe.
         ``with_slope``: (s, dF at the last Newton point, within tol s of s,
         or None where there was none)."""
-        F_real, seen = _real(F), {}
+        F_real, seen, slopes = _real(F), {}, {}
 
         def F(v):
             if v not in seen:
                 seen[v] = F_real(v)
             return seen[v]
+
+        def slope(v):
+            if v not in slopes:
+                try:
+                    slopes[v] = real_value(dF(v))
+                except UNDEFINED:
+                    slopes[v] = None
+            return slopes[v]
         if s_max is not None and not s0 < s_max:
             s0 = s_max / 2
         lo = hi = s0
         n = 0
-        if F(s0) <= 0:
+        start = s0
+        probed = False
+        if near:
+            f0, d0 = F(s0), slope(s0)
+            if d0 is not None and d0 > 0 and f0 != 0:
+                step = -f0 / d0
+                past = max(tol * s0 / 4, 1000 * step * step / s0)
+                probe = s0 + step + (past if step > 0 else -past)
+                if probe > 0 and (s_max is None or probe < s_max) and (F(probe) > 0) != (f0 > 0):
+                    lo, hi = (s0, probe) if probe > s0 else (probe, s0)
+                    start, probed = probe, True
+        if probed:
+            pass
+        elif F(s0) <= 0:
             lo = s0
             hi = s0 * 2 if s_max is None else min(s0 * 2, s_max)
             while F(hi) <= 0:
@@ -346,7 +373,7 @@ class MDLaw:
                 n += 1
                 if n > 4000:
                     raise DomainError("no cohesive-zone half-width found: the gap exceeds h0 at c_D -> a")
-        s = s0 if lo <= s0 <= hi else (lo + hi) / 2   # a good guess stays the start
+        s = start if lo <= start <= hi else (lo + hi) / 2   # a good guess stays the start
         d = None
         for _ in range(200):
             f = F(s)
@@ -354,10 +381,7 @@ class MDLaw:
                 hi = s
             else:
                 lo = s
-            try:
-                d = real_value(dF(s))
-            except UNDEFINED:
-                d = None
+            d = slope(s)
             s_new = s - f / d if d is not None and d > 0 else None
             if s_new is None or not lo < s_new < hi:
                 s_new = mpmath.sqrt(lo * hi) if hi / lo > 4 else (lo + hi) / 2
@@ -396,7 +420,7 @@ class MDLaw:
             A = mpmath.mpf(A)
             s, slope = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
                                      mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A,
-                                     with_slope=True)
+                                     with_slope=True, near=True)
             return A + s, guard, slope
 
     def _warm_guess(self, A):
