@@ -31,7 +31,7 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
 from ..core.errors import LineContactError
-from ..numeric.flamant import finite_at, flamant_arb, kernel_points
+from ..numeric.flamant import finite_at, flamant_arb, kernel_points, kernel_points_at
 from ..numeric.reference import ArbUnsupported, integrate
 
 #: working precision of the comparisons (digits)
@@ -178,7 +178,7 @@ def _numeric_values(expr, vals, dps):
     return out
 
 
-def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=False):
+def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=False, values=None):
     """u_z(0) - u_z(x) of the half-plane under the even pressure p(s) on |s| < a
     (Flamant/Boussinesq kernel; reference-free)::
 
@@ -208,6 +208,13 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     or mpmath's error estimate of the quadrature (see
     :func:`flamant_magnitude` for the scale of an absolute comparison).
 
+    ``values`` (symbol -> number): ``p`` and ``breaks`` hold these
+    parameters as symbols (``p`` a SymPy expression in one more symbol, the
+    pressure's variable): Arb gets the forms made once with the parameters
+    as symbols (:func:`~linecontact_sym.numeric.flamant.flamant_arb`), so
+    that the points of a claim share its symbolic work; where Arb cannot,
+    the routes below run on ``p`` at ``values``.
+
     The flat punch P/(pi sqrt(a^2 - s^2)) leaves the surface flat under it:
 
     >>> p = lambda s: 1 / (mpmath.pi * mpmath.sqrt(1 - s**2))
@@ -220,6 +227,11 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     >>> print(abs(v) <= err < 1e-40, v.method)
     True arb
     """
+    if values:
+        ref = _flamant_arb(p, a, xv, E, dps, breaks, values)
+        if ref is not None:
+            return (ref, ref.rad) if with_error else ref
+        p, breaks = _at_values(p, breaks, values, dps)
     if isinstance(p, sp.Expr):
         s = _pressure_symbol(p)
         # Arb needs p(0) (the log point s = 0 is removed by subtracting it)
@@ -279,24 +291,35 @@ def _callable(p):
     return f
 
 
-def _pressure_symbol(p):
-    syms = p.free_symbols
+def _at_values(p, breaks, values, dps):
+    """The pressure and its break points at the parameters' values (a break
+    point an exact number where it is rational, else an mpf of dps + 20
+    digits)."""
+    bs = []
+    for b in breaks:
+        b = to_basic(b).xreplace(values)
+        bs.append(b if b.is_Rational else to_mpf(sp.N(b, dps + 20)))
+    return p.xreplace(values), bs
+
+
+def _pressure_symbol(p, values=None):
+    syms = p.free_symbols - set(values or ())
     if len(syms) > 1:
         return None
     return next(iter(syms)) if syms else sp.Dummy("s")
 
 
-def _flamant_arb(p, a, xv, E, dps, breaks):
+def _flamant_arb(p, a, xv, E, dps, breaks, values=None):
     """The Flamant displacement by Arb (see :func:`flamant_relative_displacement`):
     a certified RefValue, or None (the tanh-sinh route runs)."""
-    s = _pressure_symbol(p)
+    s = _pressure_symbol(p, values)
     if s is None:
         return None
     try:
         piece = (p, s, sp.S.Zero, to_basic(a))
     except (LineContactError, TypeError, ValueError):
         return None
-    return flamant_arb([piece], xv, E, dps, breaks)
+    return flamant_arb([piece], xv, E, dps, breaks, values)
 
 
 def _tanh_sinh_sym(g, s, a, inner, dps):
@@ -344,12 +367,14 @@ def _split_points(a, inner):
     return [mpmath.mpf(0)] + angles + [mpmath.pi / 2]
 
 
-def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
+def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False, values=None):
     """The resultant int_{-a}^{a} p(s) ds of an even pressure, split at
     ``breaks`` (see :func:`flamant_relative_displacement`: a SymPy ``p``
     goes to Arb, an mpmath callable or what Arb cannot enclose to
     tanh-sinh with s = a sin(phi)); ``with_error``: ``(value, error)``,
-    the enclosure's radius or mpmath's error estimate.
+    the enclosure's radius or mpmath's error estimate; ``values``: ``p``
+    and ``breaks`` hold these parameters (see
+    :func:`flamant_relative_displacement`), Arb gets the forms made once.
 
     >>> with workdps(30):
     ...     print(mpmath.nstr(flamant_resultant(lambda s: 1 / (mpmath.pi * mpmath.sqrt(4 - s**2)), 2, 20), 15))
@@ -359,6 +384,18 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
     >>> print(r.method, r.contains(1), r.digits > 40)
     arb True True
     """
+    if values:
+        s = _pressure_symbol(p, values)
+        ref = None
+        if s is not None:
+            try:
+                ref = integrate(2 * p, s, kernel_points_at(0, to_basic(a), [to_basic(b) for b in breaks], values),
+                                dps, fallback=lambda: mpmath.nan, values=dict(values))
+            except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+                ref = None
+        if ref is not None and ref.certified:
+            return (ref, ref.rad) if with_error else ref
+        p, breaks = _at_values(p, breaks, values, dps)
     if isinstance(p, sp.Expr):
         s = _pressure_symbol(p)
         if s is not None:

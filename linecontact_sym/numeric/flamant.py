@@ -37,7 +37,8 @@ from ..core.precision import workdps
 from .reference import (ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral,
                         substitute_end)
 
-__all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "kernel_points", "finite_at"]
+__all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "kernel_points", "kernel_points_at",
+           "finite_at"]
 
 
 def _is_true(rel) -> bool:
@@ -53,6 +54,28 @@ def kernel_points(lo, hi, inner=()):
     pts = sorted({lo, hi} | {b for b in map(to_basic, inner) if _is_true(lo < b) and _is_true(b < hi)})
     out = [pts[0]]
     for a, b in zip(pts[:-1], pts[1:]):
+        out += [(a + b) / 2, b]
+    return out
+
+
+def kernel_points_at(lo, hi, inner, values):
+    """:func:`kernel_points` of ends and points that hold parameters: kept
+    as expressions (the integrator makes its end forms once for them),
+    ordered and taken strictly inside (lo, hi) by their numbers at
+    ``values``; a point at the number of another is one point."""
+    def num(e):
+        return to_basic(sp.sympify(e, strict=True).xreplace(values))
+    lo, hi = sp.sympify(lo, strict=True), sp.sympify(hi, strict=True)
+    lo_v, hi_v = num(lo), num(hi)
+    pts = [(lo_v, lo), (hi_v, hi)]
+    for b in inner:
+        b = sp.sympify(b, strict=True)
+        bv = num(b)
+        if _is_true(lo_v < bv) and _is_true(bv < hi_v) and not any(_is_true(sp.Eq(bv, v)) for v, _ in pts):
+            pts.append((bv, b))
+    pts.sort(key=lambda t: to_mpf(t[0]))
+    out = [pts[0][1]]
+    for (_, a), (_, b) in zip(pts[:-1], pts[1:]):
         out += [(a + b) / 2, b]
     return out
 
@@ -155,13 +178,15 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
     ``values``: the pressures and piece ends may hold parameters (symbols
     -> numbers here): every form is then compiled once, with the
     parameters and x as symbols, and each call only makes balls (no SymPy
-    work per point: the Maugis-Dugdale checks).  ``breaks`` are not taken
-    then."""
+    work per point: the Maugis-Dugdale checks).  ``breaks`` may then hold
+    the parameters too: a pressure split at a break point goes to the
+    integrator as one integral of the kernel with x a symbol, its points
+    expressions (:func:`kernel_points_at`), so that the integrator's
+    symbolic work at its logarithmic end points is made once for all the
+    points of a claim (``integrate(values=...)``)."""
     several = isinstance(x, (list, tuple))
     xs = list(x) if several else [x]
     out = [None] * len(xs)
-    if values is not None and breaks:
-        raise ValueError("breaks are not taken with values")
     try:
         E = to_basic(E)
         k = 2 / (sp.pi * E)
@@ -170,8 +195,10 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
         if ps is None:
             return out if several else None
         inner = [to_basic(b) for b in breaks]
-        whole = [(p, s, lo, hi) for p, s, lo, hi in ps if vals is None and p.has(s) and
-                 (inner or (lo == 0 and not finite_at(p, s, 0)))]
+        # (with values, only a pressure with break points: the pieces of the
+        # Maugis-Dugdale checks keep their terms)
+        whole = [(p, s, lo, hi) for p, s, lo, hi in ps if p.has(s) and
+                 (inner or (vals is None and lo == 0 and not finite_at(p, s, 0)))]
         at_zero = None
         for i, xv in enumerate(abs(to_basic(q)) for q in xs):
             if xv == 0:
@@ -185,9 +212,15 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
                         # has a logarithm) or p(0) not finite (the wedge's acosh(a/s)):
                         # the kernel as it stands, its logarithms and the pressure's
                         # taken by the integrator's logarithmic end points, one integral
-                        pts = kernel_points(lo, hi, inner + [xv])
-                        terms.append((k, _certified(integrate(p * sp.log(sp.Abs(xv**2 / s**2 - 1)), s, pts, dps,
-                                                              fallback=lambda: mpmath.nan))))
+                        if vals is None:
+                            pts = kernel_points(lo, hi, inner + [xv])
+                            terms.append((k, _certified(integrate(p * sp.log(sp.Abs(xv**2 / s**2 - 1)), s, pts, dps,
+                                                                  fallback=lambda: mpmath.nan))))
+                        else:
+                            at = {**vals, _X: xv}
+                            pts = kernel_points_at(lo, hi, inner + [_X], at)
+                            terms.append((k, _certified(integrate(p * sp.log(sp.Abs(_X**2 / s**2 - 1)), s, pts, dps,
+                                                                  fallback=lambda: mpmath.nan, values=at))))
                         continue
                     at = None if vals is None else {**vals, _X: xv}
                     terms += [(k * m, r) for m, r in _log_terms(p, s, lo, hi, xv, 1, sp.log((xv if at is None else _X)
