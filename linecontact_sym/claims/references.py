@@ -31,7 +31,7 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
 from ..core.errors import LineContactError
-from ..numeric.flamant import finite_at, flamant_arb, kernel_points, kernel_points_at
+from ..numeric.flamant import finite_at, flamant_arb, flamant_tanh_sinh, kernel_points, kernel_points_at, tanh_sinh
 from ..numeric.reference import ArbUnsupported, integrate
 
 #: working precision of the comparisons (digits)
@@ -197,7 +197,11 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     slope has a logarithm at the end of its flat) or unbounded at 0 (the
     wedge's acosh(a/s)) as one integral of the kernel, whose logarithmic
     end points the integrator splits; a certified enclosure).  Where Arb cannot enclose
-    it (or ``p`` is a callable), tanh-sinh: s = a sin(phi) (removes the
+    it, a SymPy pressure without a finite value at s = a goes to the one
+    tanh-sinh Flamant routine
+    (:func:`~linecontact_sym.numeric.flamant.flamant_tanh_sinh`: its last
+    part in s = a - d u^2, the radicands factored).  Otherwise (or ``p`` a
+    callable), tanh-sinh: s = a sin(phi) (removes the
     inverse-square-root edge singularity of flat-punch-like pressures),
     split at the logarithmic point s = x and at ``breaks`` (the profile's
     breakpoints: the pressure of a rounded punch has a logarithmic
@@ -238,13 +242,10 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
         ref = _flamant_arb(p, a, xv, E, dps, breaks) if s is not None else None
         if ref is not None:
             return (ref, ref.rad) if with_error else ref
-        xb = abs(to_basic(xv))
         est = None if s is None or finite_at(p, s, a) else \
-            _tanh_sinh_sym(p * sp.log(sp.Abs(xb**2 / s**2 - 1)), s, a, [xb] + list(breaks), dps)
+            flamant_tanh_sinh([(p, s, sp.S.Zero, to_basic(a))], xv, E, dps, breaks)
         if est is not None:
-            with workdps(quad_dps(dps)):
-                k = 2 / (mpmath.pi * to_mpf(E))
-                return (+(k * est[0]), +(k * est[1])) if with_error else +(k * est[0])
+            return est if with_error else est[0]
         p = _callable(p)
     with workdps(quad_dps(dps)):
         a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
@@ -322,45 +323,6 @@ def _flamant_arb(p, a, xv, E, dps, breaks, values=None):
     return flamant_arb([piece], xv, E, dps, breaks, values)
 
 
-def _tanh_sinh_sym(g, s, a, inner, dps):
-    """(value, error) of int_0^a g(s) ds by tanh-sinh for a SymPy integrand
-    whose pressure may have an inverse-square-root singularity at s = a:
-    split as :func:`~linecontact_sym.numeric.flamant.kernel_points`, the last piece in s = a - d u^2 with the
-    radicands factored (the u^2 they vanish with leaves the root exactly, so
-    no digits cancel in a^2 - s^2, as they do in a sin(phi)); logarithmic
-    points (s = 0, x) are piece ends, where tanh-sinh converges.  None
-    where the integrand cannot be prepared (the a sin(phi) route runs)."""
-    try:
-        a = to_basic(a)
-        pts = kernel_points(0, a, [to_basic(b) for b in inner])
-        u = sp.Dummy("u", positive=True)
-        pieces = []
-        for lo, hi in zip(pts[:-1], pts[1:]):
-            if hi == a:
-                d = a - lo
-                h = sp.piecewise_fold(g.xreplace({s: a - d * u**2}) * 2 * d * u)
-                h = h.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(u),
-                              lambda z: sp.factor(z.base) ** z.exp)
-                pieces.append((sp.lambdify(u, h, "mpmath"), [sp.S.Zero, sp.S.One]))
-            else:
-                pieces.append((sp.lambdify(s, g, "mpmath"), [lo, hi]))
-    except (TypeError, ValueError, ZeroDivisionError, LineContactError):
-        return None
-    with workdps(quad_dps(dps)):
-        total, err = mpmath.mpf(0), mpmath.mpf(0)
-        try:
-            for f, (lo, hi) in pieces:
-                lo_v, hi_v = to_mpf(lo), to_mpf(hi)
-                gf = EndpointGuard(f, lo_v, hi_v)
-                v, e = mpmath.quad(gf, [lo_v, hi_v], maxdegree=10, error=True)
-                if gf.complex_at is not None or isinstance(v, mpmath.mpc):
-                    return None
-                total, err = total + v, err + e
-        except (TypeError, ValueError, ZeroDivisionError):
-            return None
-        return +total, +err
-
-
 def _split_points(a, inner):
     """0, the angles asin(s/a) of the points s strictly inside (0, a), pi/2."""
     angles = sorted({mpmath.asin(s / a) for s in inner if 0 < s < a})
@@ -407,7 +369,7 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False, values=None):
                 ref = None
             if ref is not None and ref.certified:
                 return (ref, ref.rad) if with_error else ref
-            est = _tanh_sinh_sym(2 * p, s, a, list(breaks), dps) if s is not None and not finite_at(p, s, a) else None
+            est = tanh_sinh(2 * p, s, 0, a, list(breaks), dps) if not finite_at(p, s, a) else None
             if est is not None:
                 return est if with_error else est[0]
         p = _callable(p)
