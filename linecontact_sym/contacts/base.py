@@ -159,6 +159,8 @@ class Contact:
     #: from the derivation store, :mod:`~linecontact_sym.method.store`, in
     #: memory or on disk) and not shared by copies
     _transient = ("_cache", "_laws")   # _laws: the adhesive contact's numeric force laws
+    #: the caches of derived results (:meth:`_caches`): None until the first is made
+    _cache = None
 
     def __getstate__(self):
         return {k: v for k, v in self.__dict__.items() if k not in self._transient}
@@ -393,7 +395,7 @@ class Contact:
         ``.quantity_value()`` is the value as a pint quantity."""
         if not certified and dps is None:
             # a point of plain numbers: the scalar plan of this quantity (numeric.evaluate.scalar_evaluator)
-            cache = self.__dict__.get("_cache")        # self._caches() without its call
+            cache = self._cache        # self._caches() without its call
             fast = None if cache is None else cache.get(("_evaluate", quantity))
             if fast is None:
                 fast = self._scalar_evaluator(quantity, rtol, values)

@@ -224,3 +224,49 @@ def test_monomial_one_pass_is_the_general_path():
         with pytest.raises(LineContactError) as e2:
             c.evaluate("force", rtol=1e-12, **vals)
         assert type(e1.value) is type(e2.value), vals
+
+
+def test_inlined_one_pass_is_the_loop():
+    """fastpath.inline_point (the law's expression generated into the pass
+    over a point) gives what the loop it replaces gives, bit for bit, at
+    floats, ints and every point the loop refuses (0, signs, inf, NaN, bool,
+    NumPy floats, huge ints, missing and extra keys), for bounds 'positive'
+    and 'any'; and it is refused for a function that is not one return line
+    (a cse'd lambdify), which then takes the loop."""
+    import math
+    import random
+
+    import numpy as np
+    import sympy as sp
+
+    from linecontact_sym.core.printing import lambdify
+    from linecontact_sym.numeric import fastpath
+
+    a, b, c = sp.symbols("a b c", positive=True)
+    expr = sp.pi * b * a**sp.Rational(3, 2) / (4 * c) + sp.log(a) * sp.sqrt(b + c)
+    f = lambdify([a, b, c], expr, "math")
+    names = ("a", "b", "c")
+    rng = random.Random(7)
+    points = [dict(a=0.3, b=1.7, c=1.0), dict(a=2, b=3, c=5), dict(a=10**400, b=1.0, c=1.0), dict(a=1.0, b=2.0),
+              dict(a=1.0, b=2.0, c=3.0, d=1.0), dict(b=2.0, c=3.0, d=1.0), dict(a=True, b=1.0, c=1.0),
+              dict(a=np.float64(0.5), b=1.0, c=1.0), dict(a=1e300, b=1e300, c=1e-300)]
+    for _ in range(300):
+        points.append({n: rng.choice([rng.uniform(0.01, 3), rng.uniform(0.01, 3), rng.randint(1, 9),
+                                      10.0**rng.randint(-300, 300), 10.0**rng.randint(-30, 30), rng.uniform(-3, 3),
+                                      0.0, -0.0, math.inf, -math.inf, math.nan, rng.randint(-3, 3)])
+                       for n in names})
+    for kinds in (("positive", "positive", "positive"), ("any", "positive", "any"), ("any", "any", "any")):
+        bounds = dict(zip(names, kinds))
+        checks = tuple((n, bounds[n] in ("positive", "nonnegative")) for n in names)
+        inlined = fastpath._inlined_pass(checks, f)
+        assert inlined is not None and inlined.__code__.co_filename == "<linecontact_sym generated _lcs_pass>"
+        loop = fastpath.one_pass(bounds, names, lambda *v: f(*v))   # a lambda's source is not one def: the loop
+        assert loop.__code__.co_filename != "<linecontact_sym generated _lcs_pass>"
+        taken = 0
+        for p in points:
+            got, ref = inlined(p), loop(p)
+            assert (got is None and ref is None) or (type(got) is float and got == ref), (kinds, p, got, ref)
+            taken += got is not None
+        assert taken > 20
+    g = lambdify([a, b, c], sp.Tuple(expr, expr**2), "math", cse=True)
+    assert fastpath._inlined_pass(tuple((n, True) for n in names), g) is None
