@@ -196,10 +196,8 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
         if ps is None:
             return out if several else None
         inner = [to_basic(b) for b in breaks]
-        # (with values, only a pressure with break points: the pieces of the
-        # Maugis-Dugdale checks keep their terms)
         whole = [(p, s, lo, hi) for p, s, lo, hi in ps if p.has(s) and
-                 (inner or (vals is None and lo == 0 and not finite_at(p, s, 0)))]
+                 (inner or (lo == 0 and not finite_at(p if vals is None else p.xreplace(vals), s, 0)))]
         at_zero = None
         for i, xv in enumerate(abs(to_basic(q)) for q in xs):
             if xv == 0:
