@@ -200,16 +200,22 @@ def _pressure_physics(profile, force_fn, bps=()):
     profile value of 0 (inside a flat) is compared on the absolute scale of
     the displacement integral's terms."""
     def physics(vals, printed_expr, dps):
-        fixed = {k: v for k, v in vals.items() if k != S.x}
-        p = printed_expr.xreplace(fixed)   # SymPy, in x alone: Arb where it can, tanh-sinh where not
+        # the printed pressure with its parameters as symbols and their values
+        # apart: Arb's forms are made once for all the points of the claim
+        # (SymPy work per point was most of this check); tanh-sinh where Arb cannot
+        fixed = {k: to_basic(v) for k, v in sorted(vals.items(), key=lambda kv: kv[0].name) if k != S.x}
         E, av, xv = vals[S.E_star], vals[S.a], vals[S.x]
         with workdps(dps + 10):
-            breaks = [_break_value(b.xreplace(fixed), dps) for b in bps]
-            D, errD = flamant_relative_displacement(p, av, xv, E, dps, breaks, with_error=True)
+            D, errD = flamant_relative_displacement(printed_expr, av, xv, E, dps, bps, with_error=True,
+                                                    values=fixed)
             fx = num_eval(profile, {**vals}, dps, what="the profile", exc=DerivedUndefined)
-            res, errR = flamant_resultant(p, av, dps, breaks, with_error=True)
+            res, errR = flamant_resultant(printed_expr, av, dps, bps, with_error=True, values=fixed)
             Pa = force_fn(vals, dps)
-            scale = abs(fx) if fx != 0 else flamant_magnitude(p, av, xv, E, breaks)
+            if fx != 0:
+                scale = abs(fx)
+            else:
+                breaks = [_break_value(b.xreplace(fixed), dps) for b in bps]
+                scale = flamant_magnitude(printed_expr.xreplace(fixed), av, xv, E, breaks)
         return [Comparison("Flamant: u_z(0) - u_z(x) = f(x) under the contact", D, fx, scale,
                            resolution(errD, scale)),
                 Comparison("Flamant: resultant = P(a)", res, Pa, None, resolution(errR, Pa))]

@@ -31,7 +31,7 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
 from ..core.errors import LineContactError
-from ..numeric.flamant import finite_at, flamant_arb, kernel_points
+from ..numeric.flamant import finite_at, flamant_arb, flamant_tanh_sinh, kernel_points, kernel_points_at, tanh_sinh
 from ..numeric.reference import ArbUnsupported, integrate
 
 #: working precision of the comparisons (digits)
@@ -178,7 +178,7 @@ def _numeric_values(expr, vals, dps):
     return out
 
 
-def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=False):
+def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=False, values=None):
     """u_z(0) - u_z(x) of the half-plane under the even pressure p(s) on |s| < a
     (Flamant/Boussinesq kernel; reference-free)::
 
@@ -197,7 +197,11 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     slope has a logarithm at the end of its flat) or unbounded at 0 (the
     wedge's acosh(a/s)) as one integral of the kernel, whose logarithmic
     end points the integrator splits; a certified enclosure).  Where Arb cannot enclose
-    it (or ``p`` is a callable), tanh-sinh: s = a sin(phi) (removes the
+    it, a SymPy pressure without a finite value at s = a goes to the one
+    tanh-sinh Flamant routine
+    (:func:`~linecontact_sym.numeric.flamant.flamant_tanh_sinh`: its last
+    part in s = a - d u^2, the radicands factored).  Otherwise (or ``p`` a
+    callable), tanh-sinh: s = a sin(phi) (removes the
     inverse-square-root edge singularity of flat-punch-like pressures),
     split at the logarithmic point s = x and at ``breaks`` (the profile's
     breakpoints: the pressure of a rounded punch has a logarithmic
@@ -207,6 +211,13 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     ``with_error``: returns ``(value, error)``: the enclosure's radius (Arb)
     or mpmath's error estimate of the quadrature (see
     :func:`flamant_magnitude` for the scale of an absolute comparison).
+
+    ``values`` (symbol -> number): ``p`` and ``breaks`` hold these
+    parameters as symbols (``p`` a SymPy expression in one more symbol, the
+    pressure's variable): Arb gets the forms made once with the parameters
+    as symbols (:func:`~linecontact_sym.numeric.flamant.flamant_arb`), so
+    that the points of a claim share its symbolic work; where Arb cannot,
+    the routes below run on ``p`` at ``values``.
 
     The flat punch P/(pi sqrt(a^2 - s^2)) leaves the surface flat under it:
 
@@ -220,19 +231,21 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     >>> print(abs(v) <= err < 1e-40, v.method)
     True arb
     """
+    if values:
+        ref = _flamant_arb(p, a, xv, E, dps, breaks, values)
+        if ref is not None:
+            return (ref, ref.rad) if with_error else ref
+        p, breaks = _at_values(p, breaks, values, dps)
     if isinstance(p, sp.Expr):
         s = _pressure_symbol(p)
         # Arb needs p(0) (the log point s = 0 is removed by subtracting it)
         ref = _flamant_arb(p, a, xv, E, dps, breaks) if s is not None else None
         if ref is not None:
             return (ref, ref.rad) if with_error else ref
-        xb = abs(to_basic(xv))
         est = None if s is None or finite_at(p, s, a) else \
-            _tanh_sinh_sym(p * sp.log(sp.Abs(xb**2 / s**2 - 1)), s, a, [xb] + list(breaks), dps)
+            flamant_tanh_sinh([(p, s, sp.S.Zero, to_basic(a))], xv, E, dps, breaks)
         if est is not None:
-            with workdps(quad_dps(dps)):
-                k = 2 / (mpmath.pi * to_mpf(E))
-                return (+(k * est[0]), +(k * est[1])) if with_error else +(k * est[0])
+            return est if with_error else est[0]
         p = _callable(p)
     with workdps(quad_dps(dps)):
         a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
@@ -279,63 +292,35 @@ def _callable(p):
     return f
 
 
-def _pressure_symbol(p):
-    syms = p.free_symbols
+def _at_values(p, breaks, values, dps):
+    """The pressure and its break points at the parameters' values (a break
+    point an exact number where it is rational, else an mpf of dps + 20
+    digits)."""
+    bs = []
+    for b in breaks:
+        b = to_basic(b).xreplace(values)
+        bs.append(b if b.is_Rational else to_mpf(sp.N(b, dps + 20)))
+    return p.xreplace(values), bs
+
+
+def _pressure_symbol(p, values=None):
+    syms = p.free_symbols - set(values or ())
     if len(syms) > 1:
         return None
     return next(iter(syms)) if syms else sp.Dummy("s")
 
 
-def _flamant_arb(p, a, xv, E, dps, breaks):
+def _flamant_arb(p, a, xv, E, dps, breaks, values=None):
     """The Flamant displacement by Arb (see :func:`flamant_relative_displacement`):
     a certified RefValue, or None (the tanh-sinh route runs)."""
-    s = _pressure_symbol(p)
+    s = _pressure_symbol(p, values)
     if s is None:
         return None
     try:
         piece = (p, s, sp.S.Zero, to_basic(a))
     except (LineContactError, TypeError, ValueError):
         return None
-    return flamant_arb([piece], xv, E, dps, breaks)
-
-
-def _tanh_sinh_sym(g, s, a, inner, dps):
-    """(value, error) of int_0^a g(s) ds by tanh-sinh for a SymPy integrand
-    whose pressure may have an inverse-square-root singularity at s = a:
-    split as :func:`~linecontact_sym.numeric.flamant.kernel_points`, the last piece in s = a - d u^2 with the
-    radicands factored (the u^2 they vanish with leaves the root exactly, so
-    no digits cancel in a^2 - s^2, as they do in a sin(phi)); logarithmic
-    points (s = 0, x) are piece ends, where tanh-sinh converges.  None
-    where the integrand cannot be prepared (the a sin(phi) route runs)."""
-    try:
-        a = to_basic(a)
-        pts = kernel_points(0, a, [to_basic(b) for b in inner])
-        u = sp.Dummy("u", positive=True)
-        pieces = []
-        for lo, hi in zip(pts[:-1], pts[1:]):
-            if hi == a:
-                d = a - lo
-                h = sp.piecewise_fold(g.xreplace({s: a - d * u**2}) * 2 * d * u)
-                h = h.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(u),
-                              lambda z: sp.factor(z.base) ** z.exp)
-                pieces.append((sp.lambdify(u, h, "mpmath"), [sp.S.Zero, sp.S.One]))
-            else:
-                pieces.append((sp.lambdify(s, g, "mpmath"), [lo, hi]))
-    except (TypeError, ValueError, ZeroDivisionError, LineContactError):
-        return None
-    with workdps(quad_dps(dps)):
-        total, err = mpmath.mpf(0), mpmath.mpf(0)
-        try:
-            for f, (lo, hi) in pieces:
-                lo_v, hi_v = to_mpf(lo), to_mpf(hi)
-                gf = EndpointGuard(f, lo_v, hi_v)
-                v, e = mpmath.quad(gf, [lo_v, hi_v], maxdegree=10, error=True)
-                if gf.complex_at is not None or isinstance(v, mpmath.mpc):
-                    return None
-                total, err = total + v, err + e
-        except (TypeError, ValueError, ZeroDivisionError):
-            return None
-        return +total, +err
+    return flamant_arb([piece], xv, E, dps, breaks, values)
 
 
 def _split_points(a, inner):
@@ -344,12 +329,14 @@ def _split_points(a, inner):
     return [mpmath.mpf(0)] + angles + [mpmath.pi / 2]
 
 
-def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
+def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False, values=None):
     """The resultant int_{-a}^{a} p(s) ds of an even pressure, split at
     ``breaks`` (see :func:`flamant_relative_displacement`: a SymPy ``p``
     goes to Arb, an mpmath callable or what Arb cannot enclose to
     tanh-sinh with s = a sin(phi)); ``with_error``: ``(value, error)``,
-    the enclosure's radius or mpmath's error estimate.
+    the enclosure's radius or mpmath's error estimate; ``values``: ``p``
+    and ``breaks`` hold these parameters (see
+    :func:`flamant_relative_displacement`), Arb gets the forms made once.
 
     >>> with workdps(30):
     ...     print(mpmath.nstr(flamant_resultant(lambda s: 1 / (mpmath.pi * mpmath.sqrt(4 - s**2)), 2, 20), 15))
@@ -359,6 +346,18 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
     >>> print(r.method, r.contains(1), r.digits > 40)
     arb True True
     """
+    if values:
+        s = _pressure_symbol(p, values)
+        ref = None
+        if s is not None:
+            try:
+                ref = integrate(2 * p, s, kernel_points_at(0, to_basic(a), [to_basic(b) for b in breaks], values),
+                                dps, fallback=lambda: mpmath.nan, values=dict(values))
+            except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+                ref = None
+        if ref is not None and ref.certified:
+            return (ref, ref.rad) if with_error else ref
+        p, breaks = _at_values(p, breaks, values, dps)
     if isinstance(p, sp.Expr):
         s = _pressure_symbol(p)
         if s is not None:
@@ -370,7 +369,7 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False):
                 ref = None
             if ref is not None and ref.certified:
                 return (ref, ref.rad) if with_error else ref
-            est = _tanh_sinh_sym(2 * p, s, a, list(breaks), dps) if s is not None and not finite_at(p, s, a) else None
+            est = tanh_sinh(2 * p, s, 0, a, list(breaks), dps) if not finite_at(p, s, a) else None
             if est is not None:
                 return est if with_error else est[0]
         p = _callable(p)

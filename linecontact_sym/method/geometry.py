@@ -252,6 +252,42 @@ class Periodic(Geometry):
             I = 2 / L * mpmath.quad(g, [0, mpmath.pi / 2])
         return +(-2 * I / (mpmath.pi * E))
 
+    def mp_punch_compliance_slope(self, A, E, values):
+        """dC/dA of :meth:`mp_punch_compliance`'s defining integral,
+        differentiated under the integral sign (in t = A sin(phi) the
+        integrand G(phi, A) is smooth in A; one quadrature at the working
+        precision, where a finite difference of the quadrature needs two at
+        twice the digits).  With k = pi/L, theta = k A sin(phi), alpha =
+        k (A - t) = 2 k A sin^2(pi/4 - phi/2), beta = k (A + t) and
+        G = A cos(phi) cos(theta) ln(2 sin theta)/sqrt(sin alpha sin beta)::
+
+            A dG/dA = G (1 - (alpha cot alpha + beta cot beta)/2)
+                      + A cos(phi) theta (cos^2 theta/sin theta - sin theta ln(2 sin theta))
+                        / sqrt(sin alpha sin beta)
+
+        (alpha, beta, theta are proportional to A: d/dA = (1/A) x d/dx on
+        each), every term bounded but the logarithm at phi = 0."""
+        L = self.mp_period(values)
+        with workdps(mpmath.mp.dps + 10):
+            k = mpmath.pi / L
+
+            def dg(ph):
+                th = k * A * mpmath.sin(ph)
+                al = 2 * k * A * mpmath.sin(mpmath.pi / 4 - ph / 2)**2      # k (A - t), without cancellation
+                be = k * A + th
+                den = mpmath.sin(al) * mpmath.sin(be)
+                if den <= 0 or th <= 0:   # a node that rounds onto an end (tanh-sinh weight ~ 0 there)
+                    return mpmath.mpf(0)
+                root = mpmath.sqrt(den)
+                st, ct = mpmath.sin(th), mpmath.cos(th)
+                lg = mpmath.log(2 * st)
+                G = A * mpmath.cos(ph) * ct * lg / root
+                xcot = lambda z: z * mpmath.cos(z) / mpmath.sin(z)  # noqa: E731
+                return (G * (1 - (xcot(al) + xcot(be)) / 2)
+                        + A * mpmath.cos(ph) * th * (ct**2 / st - st * lg) / root) / A
+            dI = 2 / L * mpmath.quad(dg, [0, mpmath.pi / 2])
+        return +(-2 * dI / (mpmath.pi * E))
+
     # ------------------------------------------------------------ the maps
     def kernel_profile(self, f):
         """F(s) = f((L/pi) asin s), written in the standard x (standing for

@@ -173,17 +173,19 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
     return patched
 
 
-def compile_plain_numpy(expr, args):
+def compile_plain_numpy(expr, args, patch=None):
     """:func:`lambdify_numpy` of ``expr`` as it is (no stable rewriting): the
     compiler :class:`~linecontact_sym.numeric.quadrature.VectorQuad` uses for
-    the pieces of an integrand that is already in stable form."""
-    return lambdify_numpy(expr, args, stable=False)
+    the pieces of an integrand that is already in stable form (``patch``:
+    the arguments whose removable limit at 0 is sought, default all)."""
+    return lambdify_numpy(expr, args, stable=False, patch=patch)
 
 
 def _removable_limit(expr, sym):
     """lim_{sym -> 0+} expr if expr is undefined (nan) at sym = 0 but the limit
-    is finite; else None."""
-    if expr.has(sp.Integral) or sym not in expr.free_symbols or sp.count_ops(expr) > 300:
+    is finite; else None (at once for what is not an expression: SymPy
+    takes no limit of a Tuple)."""
+    if not isinstance(expr, sp.Expr) or expr.has(sp.Integral) or sym not in expr.free_symbols or sp.count_ops(expr) > 300:
         return None
     try:
         e0 = expr.subs(sym, 0)
@@ -358,7 +360,10 @@ def cancellation_probe(derivation):
         if not pairs:
             cache["cancel_probe"] = lambda *vals: np.ones(np.broadcast_shapes(*[np.shape(v) for v in vals]))
         else:
-            g = lambdify_numpy(sp.Tuple(*[e for pair in pairs for e in pair]), syms, stable=False)
+            # no removable-limit patch: SymPy takes no limit of a Tuple (it raised
+            # after seconds of work per argument), and a ratio that is NaN at a
+            # point is skipped below anyway
+            g = lambdify_numpy(sp.Tuple(*[e for pair in pairs for e in pair]), syms, stable=False, patch=())
 
             def probe(*vals):
                 with np.errstate(all="ignore"):

@@ -34,10 +34,12 @@ import sympy as sp
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps
+from ..core.quadrature import EndpointGuard, quad_dps
 from .reference import (ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral,
                         substitute_end)
 
-__all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "kernel_points", "finite_at"]
+__all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "tanh_sinh", "kernel_points", "kernel_points_at",
+           "finite_at"]
 
 
 def _is_true(rel) -> bool:
@@ -53,6 +55,28 @@ def kernel_points(lo, hi, inner=()):
     pts = sorted({lo, hi} | {b for b in map(to_basic, inner) if _is_true(lo < b) and _is_true(b < hi)})
     out = [pts[0]]
     for a, b in zip(pts[:-1], pts[1:]):
+        out += [(a + b) / 2, b]
+    return out
+
+
+def kernel_points_at(lo, hi, inner, values):
+    """:func:`kernel_points` of ends and points that hold parameters: kept
+    as expressions (the integrator makes its end forms once for them),
+    ordered and taken strictly inside (lo, hi) by their numbers at
+    ``values``; a point at the number of another is one point."""
+    def num(e):
+        return to_basic(sp.sympify(e, strict=True).xreplace(values))
+    lo, hi = sp.sympify(lo, strict=True), sp.sympify(hi, strict=True)
+    lo_v, hi_v = num(lo), num(hi)
+    pts = [(lo_v, lo), (hi_v, hi)]
+    for b in inner:
+        b = sp.sympify(b, strict=True)
+        bv = num(b)
+        if _is_true(lo_v < bv) and _is_true(bv < hi_v) and not any(_is_true(sp.Eq(bv, v)) for v, _ in pts):
+            pts.append((bv, b))
+    pts.sort(key=lambda t: to_mpf(t[0]))
+    out = [pts[0][1]]
+    for (_, a), (_, b) in zip(pts[:-1], pts[1:]):
         out += [(a + b) / 2, b]
     return out
 
@@ -155,13 +179,15 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
     ``values``: the pressures and piece ends may hold parameters (symbols
     -> numbers here): every form is then compiled once, with the
     parameters and x as symbols, and each call only makes balls (no SymPy
-    work per point: the Maugis-Dugdale checks).  ``breaks`` are not taken
-    then."""
+    work per point: the Maugis-Dugdale checks).  ``breaks`` may then hold
+    the parameters too: a pressure split at a break point goes to the
+    integrator as one integral of the kernel with x a symbol, its points
+    expressions (:func:`kernel_points_at`), so that the integrator's
+    symbolic work at its logarithmic end points is made once for all the
+    points of a claim (``integrate(values=...)``)."""
     several = isinstance(x, (list, tuple))
     xs = list(x) if several else [x]
     out = [None] * len(xs)
-    if values is not None and breaks:
-        raise ValueError("breaks are not taken with values")
     try:
         E = to_basic(E)
         k = 2 / (sp.pi * E)
@@ -170,8 +196,8 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
         if ps is None:
             return out if several else None
         inner = [to_basic(b) for b in breaks]
-        whole = [(p, s, lo, hi) for p, s, lo, hi in ps if vals is None and p.has(s) and
-                 (inner or (lo == 0 and not finite_at(p, s, 0)))]
+        whole = [(p, s, lo, hi) for p, s, lo, hi in ps if p.has(s) and
+                 (inner or (lo == 0 and not finite_at(p if vals is None else p.xreplace(vals), s, 0)))]
         at_zero = None
         for i, xv in enumerate(abs(to_basic(q)) for q in xs):
             if xv == 0:
@@ -185,9 +211,15 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
                         # has a logarithm) or p(0) not finite (the wedge's acosh(a/s)):
                         # the kernel as it stands, its logarithms and the pressure's
                         # taken by the integrator's logarithmic end points, one integral
-                        pts = kernel_points(lo, hi, inner + [xv])
-                        terms.append((k, _certified(integrate(p * sp.log(sp.Abs(xv**2 / s**2 - 1)), s, pts, dps,
-                                                              fallback=lambda: mpmath.nan))))
+                        if vals is None:
+                            pts = kernel_points(lo, hi, inner + [xv])
+                            terms.append((k, _certified(integrate(p * sp.log(sp.Abs(xv**2 / s**2 - 1)), s, pts, dps,
+                                                                  fallback=lambda: mpmath.nan))))
+                        else:
+                            at = {**vals, _X: xv}
+                            pts = kernel_points_at(lo, hi, inner + [_X], at)
+                            terms.append((k, _certified(integrate(p * sp.log(sp.Abs(_X**2 / s**2 - 1)), s, pts, dps,
+                                                                  fallback=lambda: mpmath.nan, values=at))))
                         continue
                     at = None if vals is None else {**vals, _X: xv}
                     terms += [(k * m, r) for m, r in _log_terms(p, s, lo, hi, xv, 1, sp.log((xv if at is None else _X)
@@ -208,39 +240,92 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
     return out if several else out[0]
 
 
-def flamant_tanh_sinh(pieces, x, E):
-    """u_z(0) - u_z(x) (module docstring) by tanh-sinh at the working
-    precision: ``pieces`` [(p, lo, hi)] with ``p`` an mpmath callable, split
-    at the logarithmic points s = x and 0.  An estimate (mpf)."""
-    xv, E = abs(to_mpf(x)), to_mpf(E)
+def tanh_sinh(g, s, lo, hi, inner, dps: int, edge: bool = True, real_part: bool = False):
+    """(value, error) of int_lo^hi g(s) ds by tanh-sinh at
+    :func:`~linecontact_sym.core.quadrature.quad_dps` working digits, for a
+    SymPy integrand (every parameter a number) whose pressure may have an
+    inverse-square-root singularity at s = hi: split as
+    :func:`kernel_points` (at ``inner`` and the middles), the last piece, with
+    ``edge``, in s = hi - d u^2 with the radicands factored (the u^2 they
+    vanish with leaves the root exactly, so no digits cancel in hi^2 - s^2,
+    as they do in hi sin(phi)); logarithmic points (s = 0, x, a break) are
+    piece ends, where tanh-sinh converges.  None where the integrand cannot
+    be prepared or is complex on a piece (the caller's route runs);
+    ``real_part``: the real part of a complex value is taken instead."""
+    try:
+        lo, hi = to_basic(lo), to_basic(hi)
+        pts = kernel_points(lo, hi, [to_basic(b) for b in inner])
+        u = sp.Dummy("u", positive=True)
+        pieces = []
+        for a, b in zip(pts[:-1], pts[1:]):
+            if edge and b == hi:
+                d = hi - a
+                h = sp.piecewise_fold(g.xreplace({s: hi - d * u**2}) * 2 * d * u)
+                h = h.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(u),
+                              lambda z: sp.factor(z.base) ** z.exp)
+                pieces.append((sp.lambdify(u, h, "mpmath"), [sp.S.Zero, sp.S.One]))
+            else:
+                pieces.append((sp.lambdify(s, g, "mpmath"), [a, b]))
+    except (TypeError, ValueError, ZeroDivisionError, LineContactError):
+        return None
+    with workdps(quad_dps(dps)):
+        total, err = mpmath.mpf(0), mpmath.mpf(0)
+        try:
+            for f, (a, b) in pieces:
+                a_v, b_v = to_mpf(a), to_mpf(b)
+                gf = EndpointGuard(f, a_v, b_v)
+                v, e = mpmath.quad(gf, [a_v, b_v], maxdegree=10, error=True)
+                if real_part:
+                    v = mpmath.re(v)
+                elif gf.complex_at is not None or isinstance(v, mpmath.mpc):
+                    return None
+                total, err = total + v, err + e
+        except (TypeError, ValueError, ZeroDivisionError):
+            return None
+        return +total, +err
 
-    def ker(t):
-        return mpmath.log(abs(xv - t)) + mpmath.log(xv + t) - 2 * mpmath.log(t)
-    total = mpmath.mpf(0)
-    for p, lo, hi in pieces:
-        lo, hi = to_mpf(lo), to_mpf(hi)
-        pts = sorted({lo, hi} | ({xv} if lo < xv < hi else set()))
-        total += mpmath.re(mpmath.quad(lambda t: p(t) * ker(t), pts))
-    return 2 / (mpmath.pi * E) * total
+
+def flamant_tanh_sinh(pieces, x, E, dps: int, breaks=(), real_part: bool = False):
+    """u_z(0) - u_z(x) (module docstring) by tanh-sinh, (value, error):
+    ``pieces`` [(p, s, lo, hi)] with ``p`` SymPy in ``s`` (every parameter a
+    number), the kernel ln|x^2/s^2 - 1| as it stands, each piece split at
+    x and ``breaks`` by :func:`tanh_sinh` (its last part in s = hi - d u^2
+    where p has no finite value at hi: the inverse square root of a contact
+    edge).  None where a piece cannot be prepared (or, but with
+    ``real_part``, is complex)."""
+    xb = abs(to_basic(x))
+    total, err = mpmath.mpf(0), mpmath.mpf(0)
+    for p, s, lo, hi in pieces:
+        p = sp.sympify(p, strict=True)
+        est = tanh_sinh(p * sp.log(sp.Abs(xb**2 / s**2 - 1)), s, lo, hi, [xb] + list(breaks), dps,
+                        edge=not finite_at(p, s, hi), real_part=real_part)
+        if est is None:
+            return None
+        total, err = total + est[0], err + est[1]
+    with workdps(quad_dps(dps)):
+        k = 2 / (mpmath.pi * to_mpf(E))
+        return +(k * total), +(k * err)
 
 
 def flamant_displacement(pieces, x, E, dps: int, breaks=(), values=None):
     """u_z(0) - u_z(x) (module docstring): :func:`flamant_arb` (certified),
-    else :func:`flamant_tanh_sinh` of the lambdified pieces at ``dps`` + 15
-    digits, recorded (``method == "mpmath"``).  ``pieces``, ``x`` (a number
-    or a list: a RefValue or a list of them) and ``values`` as for
-    :func:`flamant_arb`."""
+    else :func:`flamant_tanh_sinh` of the pieces at ``values``, recorded
+    (``method == "mpmath"``).  ``pieces``, ``x`` (a number or a list: a
+    RefValue or a list of them) and ``values`` as for :func:`flamant_arb`."""
     refs = flamant_arb(pieces, x, E, dps, breaks, values)
     several = isinstance(x, (list, tuple))
     xs, refs = (list(x), refs) if several else ([x], [refs])
     vals = values or {}
 
+    def at(e):
+        return to_basic(sp.sympify(e, strict=True).xreplace(vals))
+
     def fallback(xv):
-        with workdps(dps + 15):
-            fs = [(sp.lambdify(s, sp.sympify(p, strict=True).xreplace(vals), "mpmath"),
-                   sp.sympify(lo, strict=True).xreplace(vals), sp.sympify(hi, strict=True).xreplace(vals))
-                  for p, s, lo, hi in pieces]
-            return flamant_tanh_sinh(fs, xv, E)
+        est = flamant_tanh_sinh([(sp.sympify(p, strict=True).xreplace(vals), s, at(lo), at(hi))
+                                 for p, s, lo, hi in pieces], xv, E, dps, [at(b) for b in breaks], real_part=True)
+        if est is None:
+            raise LineContactError("neither Arb nor tanh-sinh could evaluate the Flamant integral")
+        return est[0]
     out = [r if r is not None else estimate(lambda xv=xv: fallback(xv), "Arb could not enclose the Flamant integral",
                                             dps) for xv, r in zip(xs, refs)]
     return out if several else out[0]

@@ -71,9 +71,13 @@ class VectorQuad:
     the integral is split into sub-intervals [p, q] with *symbolic* ends; on
     each the integrand's branch is resolved, s = p + (q - p) v substituted and
     1 - v named w, the result put in stable form and compiled in
-    (params, v, w) by ``compile_fn(expr, args)`` (a float64 exporter such as
-    ``lambdify_numpy(..., stable=False)``: passed in, since the exporter in
-    turn uses this class for the integrals it meets).  Evaluation selects the
+    (params, v, w) by ``compile_fn(expr, args, patch)`` (a float64 exporter
+    such as ``lambdify_numpy(..., stable=False)``: passed in, since the
+    exporter in turn uses this class for the integrals it meets; ``patch``:
+    the arguments that may be 0 where it is evaluated, the parameters, not
+    v and w: the nodes never reach 0 (:func:`~linecontact_sym.core.quadrature.tanh_sinh_levels`
+    drops a node that underflows, the Gauss nodes are inside (0, 1)), so no
+    removable limit at v = 0 or w = 0 is sought).  Evaluation selects the
     case per point; ``q(*params)`` gives the values, ``q(*params,
     with_error=True)`` also an error estimate.
     """
@@ -110,7 +114,7 @@ class VectorQuad:
                 if stable:
                     gv = stabilize(gv, check=False).expr
                 gv = gv.xreplace({1 - v: w, v - 1: -w, -v + 1: w})
-                pieces.append(compile_fn(gv, list(self.params) + [v, w]))
+                pieces.append(compile_fn(gv, list(self.params) + [v, w], tuple(self.params)))
             self.cases.append((where, pieces))
 
     def _sample_case(self, lo, hi, bps, where):

@@ -59,7 +59,7 @@ import mpmath
 import sympy as sp
 from mpmath.libmp import from_man_exp
 
-from ..core.conversion import number, to_mpf
+from ..core.conversion import number, to_basic, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps
 
@@ -711,7 +711,7 @@ def _bits(dps: int) -> int:
 
 
 def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: int = EVAL_LIMIT,
-              crude=None, removable: bool = False) -> RefValue:
+              crude=None, removable: bool = False, values: dict | None = None) -> RefValue:
     """int over [points[0], points[-1]] of ``integrand`` d``var``, split at
     every point given: a :class:`RefValue`.
 
@@ -738,13 +738,31 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
 
     The result is certified (``method == "arb"``) when every piece's ball
     is finite and the sum's ball is accurate to ``dps`` digits (or its
-    absolute radius is below 10**-dps for a value that is 0)."""
+    absolute radius is below 10**-dps for a value that is 0).
+
+    ``values`` (symbol -> number): the integrand (SymPy) and the points hold
+    these parameters as symbols (the points ascending at their values): the
+    integrand is compiled once with the parameters as symbols
+    (:func:`bound_acb`), and the symbolic work of a singular end point (its
+    substitution, the split of its logarithms) is done once per integrand
+    and end point and kept (:func:`_log_end`), so that the same integral
+    at many parameter values does it once, not at every one.  The result
+    is the same enclosure's kind: only where the work is done changes."""
+    if values is not None:
+        if crude is not None or removable:
+            raise ValueError("crude and removable are not taken with values")
+        if not all(isinstance(e, sp.Basic) for e in _per_piece(integrand, points)):
+            raise ValueError("with values the integrand is SymPy")
+        if fallback is None:
+            def fallback():
+                return _mpmath_integral([e.xreplace(values) for e in _per_piece(integrand, points)], var,
+                                        [_num(p, values) for p in points], dps)
     if removable and crude is None and isinstance(integrand, sp.Basic) and points[0] == 0:
         crude = _removable_quotient(integrand, var)
         if crude is not None and len(points) == 2:
             points = [points[0], sp.sympify(points[1], strict=True) / 2, points[1]]
     try:
-        ball = _arb_integral(integrand, var, points, dps, eval_limit, crude)
+        ball = _arb_integral(integrand, var, points, dps, eval_limit, crude, values)
         reason = None
     except ArbUnsupported as exc:
         ball, reason = None, str(exc)
@@ -984,12 +1002,18 @@ def _per_piece(integrand, points):
     return [integrand] * (len(points) - 1)
 
 
-def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
+def _num(e, values):
+    """The number a point (or end) that holds parameters has at ``values``."""
+    return e if values is None else _exact(to_basic(sp.sympify(e, strict=True).xreplace(values)))
+
+
+def _arb_integral(integrand, var, points, dps, eval_limit, crude=None, values=None):
     goal = _bits(dps)
     prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
 
     def compiled(expr):
-        main = expr if _is_compiled(expr) else compile_acb(expr, var)
+        main = expr if _is_compiled(expr) else (compile_acb(expr, var) if values is None
+                                                else bound_acb(expr, var, values))
         if crude is None:
             return main
 
@@ -1002,7 +1026,8 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
         if e not in fs:
             fs[e] = compiled(e)
     with flint.ctx.workprec(prec):
-        exact = [_exact(p) for p in points]
+        exact = [_exact(p) if values is None else _num(p, values) for p in points]
+        ends = exact if values is None else [sp.sympify(p, strict=True) for p in points]
         total = flint.acb(0)
         tol = flint.arb(2) ** -(goal + 8)
 
@@ -1017,7 +1042,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
                 raise ArbUnsupported("Arb could not bound a piece (a singularity at an end point that "
                                      "ball arithmetic cannot enclose, or the evaluation limit)")
             return v
-        for e, lo, hi in zip(_per_piece(integrand, points), exact[:-1], exact[1:]):
+        for e, lo, hi, lo_s, hi_s in zip(_per_piece(integrand, points), exact[:-1], exact[1:], ends[:-1], ends[1:]):
             try:
                 total += piece(fs[e], lo, hi)
             except ArbUnsupported:
@@ -1025,7 +1050,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None):
                 if (crude is not None and lo == 0) or not (isinstance(lo, sp.Basic) and isinstance(hi, sp.Basic)) \
                         or not isinstance(e, sp.Basic):
                     raise
-                total += _substituted(e, var, lo, hi, piece)
+                total += _substituted(e, var, lo_s, hi_s, piece, values)
         if 0 not in total.imag:
             raise ArbUnsupported(f"the integral is not real: {total}")
         re_ = total.real
@@ -1090,7 +1115,7 @@ def substitute_end(expr, var, end, d, q: int = 2):
     return sp.expand_mul(g), w
 
 
-def _substituted(integrand, var, lo, hi, piece):
+def _substituted(integrand, var, lo, hi, piece, values=None):
     """The piece [lo, hi] whose integrand has an algebraic end-point
     singularity (1/sqrt(a^2 - t^2) at t = a, 1/sqrt(s^2 - b^2) behind a
     break, a power t^beta, -1 < beta < 0, at 0): split at the middle m and,
@@ -1101,25 +1126,35 @@ def _substituted(integrand, var, lo, hi, piece):
     0/0 by itself).  A
     logarithmic end point (a log singularity, or logarithms whose infinities
     cancel there) goes to :func:`_log_end`.  A singularity that neither
-    removes raises :class:`ArbUnsupported` (the fallback runs)."""
+    removes raises :class:`ArbUnsupported` (the fallback runs).
+
+    ``values``: lo, hi and the integrand hold parameters (see
+    :func:`integrate`): the substituted forms are made with the parameters
+    and the half piece's length as symbols, once per integrand and end
+    (kept), and bound to the numbers here."""
     m = (lo + hi) / 2
-    f = compile_acb(integrand, var)
+    f = compile_acb(integrand, var) if values is None else bound_acb(integrand, var, values)
     total = flint.acb(0)
     for e, other in ((lo, m), (m, hi)):
         try:
-            total += piece(f, e, other)
+            total += piece(f, _num(e, values), _num(other, values))
             continue
         except ArbUnsupported:
             pass
         total_half = None
         # only an end where the integrand has no finite ball is substituted
-        ends = [(end, far) for end, far in ((e, other), (other, e)) if not _bounded_next_to(f, end, far)] or \
+        ends = [(end, far) for end, far in ((e, other), (other, e))
+                if not _bounded_next_to(f, _num(end, values), _num(far, values))] or \
             [(e, other), (other, e)]      # bounded at both ends (the work limit): either may still be substituted
 
         def root_end(end, far):
-            f_end, q = _end_power(integrand, var, end)
-            g, w = substitute_end(f_end, var, end, far - end, q)
-            return piece(compile_acb(g, w), sp.S.Zero, sp.S.One)
+            if values is None:
+                f_end, q = _end_power(integrand, var, end)
+                g, w = substitute_end(f_end, var, end, far - end, q)
+                return piece(compile_acb(g, w), sp.S.Zero, sp.S.One)
+            g, w = _root_end_form(integrand, var, end)
+            return piece(bound_acb(g, w, {**values, _DE: _num(far, values) - _num(end, values)}), sp.S.Zero,
+                         sp.S.One)
 
         def log_end(end, far):
             # a power B^beta, beta < 0, of a base vanishing at the end stays
@@ -1129,7 +1164,7 @@ def _substituted(integrand, var, lo, hi, piece):
             # kernel's logarithm), so it is not tried
             if any(b < 0 for b in _end_betas(integrand, var, end)[1]):
                 raise ArbUnsupported("a negative power vanishing at the end point: no logarithmic end point")
-            return _log_end(integrand, var, end, far, piece)
+            return _log_end(integrand, var, end, far, piece, values)
         # an integrand with logarithms tries their subtraction first
         ways = (log_end, root_end) if integrand.has(sp.log, sp.acosh, sp.asinh, sp.atanh) else (root_end, log_end)
         for way in ways:
@@ -1148,6 +1183,43 @@ def _substituted(integrand, var, lo, hi, piece):
                                  "subtraction of its logarithms removes")
         total += total_half
     return total
+
+
+#: the length of a half piece in the forms made once with parameters (may be negative)
+_DE = sp.Dummy("d")
+#: (integrand, var, end, ...) -> a singular end's symbolic form, made once with parameters
+_FORMS: dict = {}
+_FORMS_MAX = 256
+
+
+def _kept(key, make):
+    """The form ``make()`` made once per key (a failure too: it is raised
+    again, not looked for at every point); the oldest dropped past
+    :data:`_FORMS_MAX`."""
+    if key not in _FORMS:
+        try:
+            _FORMS[key] = (make(), None)
+        except ArbUnsupported as exc:
+            _FORMS[key] = (None, str(exc))
+        if len(_FORMS) > _FORMS_MAX:
+            del _FORMS[next(iter(_FORMS))]
+    form, why = _FORMS[key]
+    if why is not None:
+        raise ArbUnsupported(why)
+    return form
+
+
+def _root_end_form(integrand, var, end):
+    """(the integrand in w, w) of :func:`substitute_end` at ``end`` (symbols
+    allowed) with the half piece's length the symbol :data:`_DE`: made once
+    per (integrand, end).  A Piecewise (whose branch is decided on numbers)
+    is not taken."""
+    def make():
+        if integrand.has(sp.Piecewise):
+            raise ArbUnsupported("a Piecewise integrand with parameters: no end substitution made once")
+        f_end, q = _end_power(integrand, var, end)
+        return substitute_end(f_end, var, end, _DE, q)
+    return _kept(("root", integrand, var, end), make)
 
 
 def _arcs_at_end(g, u):
@@ -1264,13 +1336,14 @@ _LOG_POWERS = 3
 _LOG_END_POWER = 8
 
 
-def _order_at_zero(F, u):
+def _order_at_zero(F, u, at=None):
     """The power m of u with which F vanishes (m > 0) or blows up (m < 0) at
     u = 0+, read from its balls at u = 2^-40 and 2^-80 (a hint only:
     whatever m is, ln|F| = m ln u + ln|F u^-m| holds; a wrong m leaves a
-    quotient that ball arithmetic cannot bound, and the route fails)."""
+    quotient that ball arithmetic cannot bound, and the route fails).
+    ``at``: the numbers of F's parameters (None: it has none)."""
     try:
-        f = compile_acb(F, u)
+        f = compile_acb(F, u) if at is None else bound_acb(F, u, at)
         with flint.ctx.workprec(320):
             v1, v2 = (f(flint.acb(flint.arb(2) ** -e), False).abs_lower() for e in (40, 80))
             if not (v1 > 0 and v2 > 0 and v1.is_finite() and v2.is_finite()):
@@ -1282,11 +1355,11 @@ def _order_at_zero(F, u):
     return k if abs(m - k) < 0.05 else None
 
 
-def _split_log(arg, absolute, u, L):
+def _split_log(arg, absolute, u, L, at=None):
     """ln|arg| (``absolute``) or ln(arg) as m L + ln of a quotient that is
     finite at u = 0 (L stands for ln u), factor by factor under ln|.| (ln|x
     y| = ln|x| + ln|y|); None where a factor's order or quotient is not
-    found."""
+    found.  ``at``: the parameters' numbers (:func:`_order_at_zero`)."""
     factors = sp.Mul.make_args(arg) if absolute else (arg,)
     out = sp.S.Zero
     for fac in factors:
@@ -1294,7 +1367,7 @@ def _split_log(arg, absolute, u, L):
         if not base.has(u):
             out += ex * (sp.log(sp.Abs(base)) if absolute else sp.log(base))
             continue
-        m = _order_at_zero(base, u)
+        m = _order_at_zero(base, u, at)
         if m is None:
             return None
         if m == 0:
@@ -1304,17 +1377,17 @@ def _split_log(arg, absolute, u, L):
             out += ex * L
             continue
         q = sp.expand(base * u**-m)
-        if not _finite_next_to_zero(q, u):
+        if not _finite_next_to_zero(q, u, at):
             q = sp.cancel(sp.together(q))
-        if not _finite_next_to_zero(q, u):
+        if not _finite_next_to_zero(q, u, at):
             q = _conjugate_quotient(base, u, m)
-        if q is None or not _finite_next_to_zero(q, u):
+        if q is None or not _finite_next_to_zero(q, u, at):
             # a simple zero: F(u)/u by the mean value theorem
             if m != 1 or base.xreplace({u: sp.S.Zero}) != 0 or \
                     base.has(sp.Abs, sp.sign, sp.Heaviside, sp.Piecewise, sp.Min, sp.Max):
                 return None
             q = _Slope(base, sp.diff(base, u), u)
-            if not _finite_next_to_zero(q, u):
+            if not _finite_next_to_zero(q, u, at):
                 return None
         out += ex * (m * L + (sp.log(sp.Abs(q)) if absolute else sp.log(q)))
     return out
@@ -1343,9 +1416,9 @@ def _unsigned(f):
     return f.args[0] if isinstance(f, sp.Abs) else f
 
 
-def _finite_next_to_zero(expr, u) -> bool:
+def _finite_next_to_zero(expr, u, at=None) -> bool:
     try:
-        f = compile_acb(expr, u)
+        f = compile_acb(expr, u) if at is None else bound_acb(expr, u, at)
         with flint.ctx.workprec(128):
             return f(flint.acb(flint.arb(0).union(flint.arb(2) ** -40)), False).is_finite()
     except (ArbUnsupported, ZeroDivisionError, ValueError, TypeError):
@@ -1359,7 +1432,7 @@ def _normal_radicands(e, u):
                      lambda z: sp.expand_power_base(sp.together(z.base) ** z.exp, force=False))
 
 
-def _log_end(integrand, var, end, far, piece):
+def _log_end(integrand, var, end, far, piece, values=None):
     """int from ``end`` to ``far`` of an integrand with logarithmic
     singularities at ``end`` (an unbounded ln^k, or logarithms whose
     infinities cancel there: the rounded punch's pressure at the end of its
@@ -1376,57 +1449,42 @@ def _log_end(integrand, var, end, far, piece):
     bracket is bounded on a real ball [0, d] (d <= e^-k) by
     sum_k max|A_k'| d |ln d|^k + |A_0| (the ball of A_0), which Arb's
     bisection refines.  :class:`ArbUnsupported` where the integrand does
-    not take that form."""
-    d = far - end
-    L, w = sp.Dummy("L"), sp.Dummy("w")
-    try:
-        # the integrand in a variable without assumptions (SymPy's sign
-        # queries on a positive one cost more than the integral); only the
-        # logarithms' arguments are analysed with u > 0
-        g = _inside_branch(sp.piecewise_fold(integrand.xreplace({var: end + d * w}) * d), w)
-        g = g.replace(lambda z: isinstance(z, (sp.acosh, sp.asinh, sp.atanh)), lambda z: z.rewrite(sp.log))
-        logs = {}
-        for lg in g.atoms(sp.log):
-            arg = lg.args[0]
-            absolute = all(isinstance(b, sp.Abs) or (b.is_number and b.is_positive)
-                           for b in (f.base if f.is_Pow and f.exp.is_Integer else f for f in sp.Mul.make_args(arg)))
-            inner = sp.Mul(*[_unsigned(f) for f in sp.Mul.make_args(arg)]) if absolute else arg
-            if not inner.has(w):
-                continue
-            split = _split_log(_normal_radicands(inner.xreplace({w: _u}), _u), absolute, _u, L)
-            if split is None:
-                raise ArbUnsupported(f"the logarithm {lg} has no quotient finite at the end point")
-            logs[lg] = split.xreplace({_u: w})
-        if not logs:
-            raise ArbUnsupported("no logarithm at the end point")
-        expanded = sp.expand_mul(g.xreplace(logs))
-        parts = sp.collect(expanded, L, evaluate=False)
-    except (TypeError, ValueError, ZeroDivisionError, sp.PolynomialError) as exc:
-        raise ArbUnsupported(f"the logarithmic end point could not be split: {exc}") from None
-    coef = {}
-    for key, val in parts.items():
-        k = 0 if key == 1 else (1 if key == L else (int(key.exp) if key.is_Pow and key.base == L and key.exp.is_Integer else -1))
-        if not 0 <= k <= _LOG_POWERS or val.has(L):
-            raise ArbUnsupported("the integrand is not a polynomial in the logarithm at the end point")
-        coef[k] = coef.get(k, sp.S.Zero) + val
-    consts, bounds = {}, []
-    for k, A in coef.items():
-        if k == 0:
-            continue
-        if A.has(_Slope):
-            raise ArbUnsupported("a coefficient of the logarithm needs a mean-value quotient")
-        c = A.xreplace({w: sp.S.Zero})
-        if c.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or not c.is_number:
-            raise ArbUnsupported("a coefficient of the logarithm has no value at the end point")
-        consts[k] = c
-        bounds.append((k, compile_acb(sp.diff(A.replace(lambda z: isinstance(z, sp.Abs), lambda z: _RealAbs(z.args[0])),
-                                              w), w)))
-    f0 = compile_acb(coef.get(0, sp.S.Zero), w)
+    not take that form.
+
+    ``values``: the integrand, ``end`` and ``far`` hold parameters (see
+    :func:`integrate`): the split (:func:`_log_end_form`) is made once per
+    (integrand, end) with the parameters and the length far - end as
+    symbols, the orders of the logarithms' arguments read at the first
+    values it meets (a hint only: where another point's order differs the
+    quotient has no finite ball there, and the route fails there, it is
+    not wrong), and the forms are bound to each point's numbers."""
+    if values is None:
+        form = _log_end_form(integrand, var, end, far - end, None)
+        at = None
+    else:
+        at = {**values, _DE: _num(far, values) - _num(end, values)}
+
+        def make():
+            if integrand.has(sp.Piecewise):
+                raise ArbUnsupported("a Piecewise integrand with parameters: no logarithmic end made once")
+            return _log_end_form(integrand, var, end, _DE, at)
+        form = _kept(("log", integrand, var, end, tuple(values)), make)
+    g, w, L, coef, consts, slopes = form
+
+    def bind(e, v):
+        return compile_acb(e, v) if at is None else _bind(e, v, at)
+    cballs = {}
+    for k, c in consts.items():
+        cb = to_acb(c) if at is None else bind(c, w)(flint.acb(0), False)
+        if not cb.is_finite():
+            raise ArbUnsupported("a coefficient of the logarithm has no finite value at the end point")
+        cballs[k] = cb
+    bounds = [(k, bind(dA, w)) for k, dA in slopes]
+    f0 = bind(coef.get(0, sp.S.Zero), w)
     kmax = max(consts, default=0)
     # the split form, A_k(u) - c_k and ln u = L apart: composed with u = v^q
     # below, no function's cut is met by a ball that winds around u = 0
-    split = compile_acb(coef.get(0, sp.S.Zero) + sum((A - consts[k]) * L**k for k, A in coef.items() if k),
-                        [w, L])
+    split = bind(coef.get(0, sp.S.Zero) + sum((A - consts[k]) * L**k for k, A in coef.items() if k), [w, L])
     q = _LOG_END_POWER
 
     def crude(ub):
@@ -1459,14 +1517,83 @@ def _log_end(integrand, var, end, far, piece):
             v = split((ub, q * z.log(analytic=an == ANALYTIC)), an)
         return v * q * z ** (q - 1)
     u0 = sp.Rational(1, 2**q)
-    total = piece(h, sp.S.Zero, sp.Rational(1, 2)) + piece(compile_acb(g, w), u0, sp.S.One)
+    total = piece(h, sp.S.Zero, sp.Rational(1, 2)) + piece(bind(g, w), u0, sp.S.One)
     ln_u0 = flint.arb(2).log() * -q
-    for k, c in consts.items():
+    for k, c in cballs.items():
         # int_0^u0 ln^k u du = u0 sum_j (-1)^(k-j) k!/j! ln^j u0
         closed = sum(flint.arb((-1) ** (k - j) * math.factorial(k) // math.factorial(j)) * ln_u0 ** j
                      for j in range(k + 1))
-        total += to_acb(c) * to_acb(u0) * closed
+        total += c * to_acb(u0) * closed
     return total
+
+
+def _bind(expr, var, values):
+    """:func:`bound_acb` for one variable or a list of them (``z`` a tuple of
+    their balls): compiled once with the parameters as symbols."""
+    if not isinstance(var, (list, tuple)):
+        return bound_acb(expr, var, values)
+    params = tuple(values)
+    F = _compiled(expr, tuple(var) + params, len(params))
+    nums = tuple(values[q] for q in params)
+    balls: dict = {}
+
+    def f(z, an):
+        prec = flint.ctx.prec
+        if prec not in balls:
+            balls[prec] = tuple(to_acb(v) for v in nums)
+        return F((*z, balls[prec]), an)
+    return f
+
+
+def _log_end_form(integrand, var, end, d, at):
+    """The symbolic split of :func:`_log_end`: (g, w, L, {k: A_k}, {k: c_k},
+    [(k, A_k')]) for t = end + d w; ``at``: the parameters' numbers (None:
+    there are none) where the orders of the logarithms' arguments are read.
+    :class:`ArbUnsupported` where the integrand does not take that form."""
+    L, w = sp.Dummy("L"), sp.Dummy("w")
+    try:
+        # the integrand in a variable without assumptions (SymPy's sign
+        # queries on a positive one cost more than the integral); only the
+        # logarithms' arguments are analysed with u > 0
+        g = _inside_branch(sp.piecewise_fold(integrand.xreplace({var: end + d * w}) * d), w)
+        g = g.replace(lambda z: isinstance(z, (sp.acosh, sp.asinh, sp.atanh)), lambda z: z.rewrite(sp.log))
+        logs = {}
+        for lg in g.atoms(sp.log):
+            arg = lg.args[0]
+            # a factor free of w that is positive (a number; a positive parameter)
+            absolute = all(isinstance(b, sp.Abs) or (not b.has(w) and b.is_positive)
+                           for b in (f.base if f.is_Pow and f.exp.is_Integer else f for f in sp.Mul.make_args(arg)))
+            inner = sp.Mul(*[_unsigned(f) for f in sp.Mul.make_args(arg)]) if absolute else arg
+            if not inner.has(w):
+                continue
+            split = _split_log(_normal_radicands(inner.xreplace({w: _u}), _u), absolute, _u, L, at)
+            if split is None:
+                raise ArbUnsupported(f"the logarithm {lg} has no quotient finite at the end point")
+            logs[lg] = split.xreplace({_u: w})
+        if not logs:
+            raise ArbUnsupported("no logarithm at the end point")
+        expanded = sp.expand_mul(g.xreplace(logs))
+        parts = sp.collect(expanded, L, evaluate=False)
+    except (TypeError, ValueError, ZeroDivisionError, sp.PolynomialError) as exc:
+        raise ArbUnsupported(f"the logarithmic end point could not be split: {exc}") from None
+    coef = {}
+    for key, val in parts.items():
+        k = 0 if key == 1 else (1 if key == L else (int(key.exp) if key.is_Pow and key.base == L and key.exp.is_Integer else -1))
+        if not 0 <= k <= _LOG_POWERS or val.has(L):
+            raise ArbUnsupported("the integrand is not a polynomial in the logarithm at the end point")
+        coef[k] = coef.get(k, sp.S.Zero) + val
+    consts, slopes = {}, []
+    for k, A in coef.items():
+        if k == 0:
+            continue
+        if A.has(_Slope):
+            raise ArbUnsupported("a coefficient of the logarithm needs a mean-value quotient")
+        c = A.xreplace({w: sp.S.Zero})
+        if c.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or (not c.is_number if at is None else c.free_symbols - set(at)):
+            raise ArbUnsupported("a coefficient of the logarithm has no value at the end point")
+        consts[k] = c
+        slopes.append((k, sp.diff(A.replace(lambda z: isinstance(z, sp.Abs), lambda z: _RealAbs(z.args[0])), w)))
+    return g, w, L, coef, consts, slopes
 
 
 def _inside_branch(g, u):

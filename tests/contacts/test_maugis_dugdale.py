@@ -276,10 +276,11 @@ def test_law_of_the_generic_layer(mds):
         assert digits_agreeing(generic.half_width, po.half_width) >= 6
 
 
-def test_state_refuses_a_half_width_that_is_not_one_real_number():
+def test_state_refuses_a_half_width_that_is_not_one_real_number(mds):
     """half_width(P) returns one a per branch (a tuple); passing it to state
-    is a DomainError naming the problem, not a foreign AttributeError."""
-    md = lcs.parabola().maugis_dugdale()
+    is a DomainError naming the problem, not a foreign AttributeError.  (The module's
+    parabola contact: a fresh one would derive and verify its conditions again first.)"""
+    md = mds["parabola"]
     vals = dict(E_star=1, R=1, gamma="1e-4", sigma_0="1/40")
     with pytest.raises(DomainError, match="one a per branch"):
         md.state((sp.Rational(7, 100),), 20, **vals)

@@ -53,6 +53,12 @@ def mds():
     return {k: mk().maugis_dugdale() for k, (mk, _, _) in PROFILES.items()}
 
 
+@pytest.fixture(scope="module")
+def parabola_md():
+    """The parabola's Maugis-Dugdale contact, derived and verified once for the tests that use it."""
+    return lcs.parabola().maugis_dugdale()
+
+
 def values(name, s0):
     return dict(E_star=1, gamma=W, R=1, sigma_0=sp.Rational(s0), **PROFILES[name][1])
 
@@ -255,10 +261,11 @@ def test_jkr_limit_new_profiles(mds, name):
 
 
 @pytest.mark.slow
-def test_exact_cylinder_small_a_is_baney_hui():
+def test_exact_cylinder_small_a_is_baney_hui(mds, parabola_md):
     """At a small a/R the exact cylinder's normalised pull-off is the parabola's (Baney & Hui at
-    lambda = 1); the difference falls like (A/R)^2 as the work of adhesion (hence A) falls."""
-    cyl, par = lcs.exact_cylinder().maugis_dugdale(), lcs.parabola().maugis_dugdale()
+    lambda = 1); the difference falls like (A/R)^2 as the work of adhesion (hence A) falls.
+    (The module's contacts: their conditions are derived and verified once, not per test.)"""
+    cyl, par = mds["exact_cylinder"], parabola_md
     diffs = []
     for w in (sp.Rational(1, 10**4), sp.Rational(1, 10**7)):
         lam, A, F = chk.baney_hui_units(sp.Integer(1), w, sp.Integer(1), S.sigma_0)
@@ -316,10 +323,10 @@ def test_generic_descent_infimum_and_tiny_minimum():
 
 
 @pytest.mark.slow
-def test_half_width_and_branches_from_the_layer():
+def test_half_width_and_branches_from_the_layer(parabola_md):
     """half_width(P) and branches of the MD contact come from the generic equilibria over its
     ForceLaw; each root is checked by the contact's own state (P(a) = load, the sign of dP/da)."""
-    md = lcs.parabola().maugis_dugdale()
+    md = parabola_md
     v = dict(E_star=1, R=1, gamma=1, sigma_0=sp.Rational(1, 2))
     po = md.pull_off_at(15, **v)
     Pz = md.numeric_law(**v).force_zero_width(20)        # P(0+): the unstable branch ends there

@@ -247,6 +247,9 @@ def test_compliance_of_koiters_punch_by_quadrature():
             A = mpmath.mpf(A)
             assert _agree(g.mp_punch_compliance(A, 3, {}, quadrature=True), -2 * mpmath.log(mpmath.sin(mpmath.pi * A / 2))
                           / (3 * mpmath.pi)) >= 28
+            # its slope, the integral differentiated under the integral sign (the
+            # JKR reference's energy balance), against d/dA of the closed form
+            assert _agree(g.mp_punch_compliance_slope(A, 3, {}), -mpmath.cot(mpmath.pi * A / 2) / 3) >= 28
 
 
 @pytest.mark.slow

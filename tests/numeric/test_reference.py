@@ -257,3 +257,25 @@ def test_references_done_ahead_give_the_same_record():
         assert 0 < len(calls) < n_here          # some taken from the second child, the further ones here
         assert all(p[S.a] < sp.Rational(8, 10) for p in here.points)
     assert here.outside == 5 and not here.passed
+
+
+def test_an_integral_with_parameters_makes_its_log_end_forms_once_and_encloses_the_integral():
+    """integrate(values=...): the logarithmic end point t = b of
+    (1 + t) ln|t - b| is split symbolically once (b a symbol), bound to each
+    point's number; each enclosure holds the integral by its antiderivative
+    in u = t - b, F(u) = (1 + b)(u ln|u| - u) + u^2 ln|u|/2 - u^2/4."""
+    from linecontact_sym.numeric import reference as R
+    t, b = sp.Dummy("t"), sp.Symbol("b", positive=True)
+    f = (1 + t) * sp.log(sp.Abs(t - b))
+    R._FORMS.clear()
+    for bv in (sp.Rational(1, 3), sp.Rational(3, 5)):
+        r = R.integrate(f, t, [0, b / 2, b, (b + 1) / 2, 1], 40, values={b: bv})
+        with mpmath.workdps(60):
+            B = mpmath.mpf(bv.p) / bv.q
+
+            def F(u):
+                return (1 + B) * (u * mpmath.log(abs(u)) - u) + u**2 * mpmath.log(abs(u)) / 2 - u**2 / 4
+            assert r.method == "arb" and r.contains(F(1 - B) - F(-B)) and r.digits > 40
+    # one form for both sides of t = b (the half piece's signed length a
+    # symbol too), made at the first point, used at the second
+    assert [k[0] for k in R._FORMS] == ["log"]

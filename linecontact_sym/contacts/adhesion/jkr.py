@@ -124,14 +124,18 @@ def phat_energy(A, gamma, E, dps, quadrature=True, geometry=ISOLATED, values=Non
     form differentiated numerically and the root by findroot (an mpf).
     Another geometry (``values``: its parameters): its punch's compliance
     (:meth:`~linecontact_sym.method.geometry.Geometry.mp_punch_compliance`,
-    a periodic array: Koiter's punch under the periodic Green's function, by
-    quadrature or closed), differentiated numerically, the root by findroot."""
+    a periodic array: Koiter's punch under the periodic Green's function),
+    with ``quadrature`` its defining integral differentiated under the
+    integral sign (``mp_punch_compliance_slope``: one quadrature, where a
+    finite difference of the quadrature took two at twice the digits), else
+    the closed form differentiated numerically; the root by findroot."""
     if not geometry.is_isolated:
         with workdps(dps + 10):
             A, g, E = to_mpf(A), to_mpf(gamma), to_mpf(E)
             if g == 0:
                 return mpmath.mpf(0)
-            dC = mpmath.diff(lambda u: geometry.mp_punch_compliance(u, E, values, quadrature=quadrature), A)
+            dC = geometry.mp_punch_compliance_slope(A, E, values) if quadrature else \
+                mpmath.diff(lambda u: geometry.mp_punch_compliance(u, E, values), A)
             G = lambda Pv: Pv**2 / 4 * abs(dC) - g  # noqa: E731
             guess = mpmath.sqrt(4 * g / abs(dC))
             return mpmath.findroot(G, (guess * mpmath.mpf("0.5"), guess * 2), solver="anderson")

@@ -39,7 +39,7 @@ from ...core.errors import DomainError
 from ...core.roots import UNDEFINED, Outside, real_value
 from ...method.geometry import ISOLATED
 from ...method.transforms import NumericProfile, inside
-from ...numeric.arb_functions import MPMATH_ARB
+from ...numeric.arb_functions import lambdify_law
 from ...core.precision import workdps
 
 #: extra working digits of the numeric searches
@@ -144,10 +144,12 @@ class ForceLaw:
         P0 = expr.xreplace(pf)
         if P0.free_symbols - {S.a}:
             raise DomainError(f"missing values for {sorted(map(str, P0.free_symbols - {S.a}))}")
-        # Bessel and elliptic Pi through Arb (numeric.arb_functions.MPMATH_ARB): a law is evaluated
-        # thousands of times by the root and minimum searches
-        fP = sp.lambdify(S.a, P0, modules=[dict(MPMATH_ARB), "mpmath"])
-        fdP = sp.lambdify(S.a, sp.diff(P0, S.a), modules=[dict(MPMATH_ARB), "mpmath"])
+        # a law is evaluated thousands of times by the root and minimum searches (and at every
+        # node of the Maugis-Dugdale gap's quadrature): a form with Bessel functions in Arb, whole
+        # (numeric.arb_functions.lambdify_law), the others in mpmath with Bessel and elliptic Pi
+        # through Arb (MPMATH_ARB)
+        fP = lambdify_law([S.a], P0)
+        fdP = lambdify_law([S.a], sp.diff(P0, S.a))
         conds = [cd.xreplace(pf) for cd in conditions if cd.has(S.a)]
         ok = sp.lambdify(S.a, sp.And(*conds), "mpmath") if conds else None
 

@@ -37,7 +37,7 @@ from ....core.errors import DomainError, NoPullOffError, VerificationError
 from ....core.precision import workdps
 from ....core.roots import UNDEFINED, Outside, domain_end, real_value
 from ....method.transforms import inside
-from ....numeric.arb_functions import MPMATH_ARB
+from ....numeric.arb_functions import lambdify_law
 
 @dataclass
 class MDState:
@@ -91,9 +91,10 @@ def profile_kinks(profile, fixed):
 
 
 def _lam(expr, args):
-    """``expr`` as an mpmath function of ``args`` (Bessel and elliptic Pi through Arb: the
-    law is evaluated thousands of times in a pull-off search)."""
-    return sp.lambdify(args, expr, modules=[dict(MPMATH_ARB), "mpmath"])
+    """``expr`` as an mpmath function of ``args`` (a form with Bessel functions in Arb, the
+    others with Bessel and elliptic Pi through Arb: the law is evaluated thousands of times
+    in a pull-off search; :func:`~linecontact_sym.numeric.arb_functions.lambdify_law`)."""
+    return lambdify_law(args, expr)
 
 
 def _real(fn):
@@ -171,8 +172,10 @@ class QuadGap:
         """g0(C; A)."""
         with workdps(mpmath.mp.dps + self._extra(C)):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
-            I = mpmath.acosh(C / A) * self.P0(A) + self._integral(
-                lambda th: self.P0(C * mpmath.sin(th)) / mpmath.sin(th), A, C)
+            def integrand(th):
+                sin = mpmath.sin(th)
+                return self.P0(C * sin) / sin
+            I = mpmath.acosh(C / A) * self.P0(A) + self._integral(integrand, A, C)
             v = self.f(C) - 2 * I / (mpmath.pi * self._E())
         return +v
 
@@ -187,6 +190,10 @@ class QuadGap:
     def g_a(self, A, C):
         """dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a)."""
         return -2 / (mpmath.pi * self._E()) * mpmath.acosh(C / A) * self.dP0(A)
+
+
+#: relative Newton step at which the working-precision estimate of c_D - a stops (c_of)
+ESTIMATE_TOL = mpmath.mpf(10)**-7
 
 
 class MDLaw:
@@ -298,18 +305,53 @@ class MDLaw:
                               f"domain x = {mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
         return (self.x_end - A) * (1 - mpmath.mpf(10)**-(mpmath.mp.dps - 5))
 
-    def _solve_s(self, F, dF, s0, tol, s_max=None, A=None):
+    def _solve_s(self, F, dF, s0, tol, s_max=None, A=None, with_slope=False, near=False):
         """Root of the increasing F on 0 < s < s_max from the guess s0: bracket
         by doubling / halving (never past s_max, where the profile stops being
         real: a :class:`DomainError` when F < 0 still there, i.e. the cohesive
         zone would have to reach past the profile's end), then Newton kept
-        inside the bracket."""
-        F = _real(F)
+        inside the bracket.  F and dF are evaluated once per point (the guess
+        is both the first end of the bracket and Newton's start).
+        ``near``: s0 is an estimate within quadratic reach of the root (c_of's
+        solve at the working precision): the second end of the bracket is first
+        probed just beyond the Newton step from s0 (past it by the larger of
+        tol s0 / 4 and 1000 step**2 / s0, far more than that step's own error),
+        where F has the other sign when s0 is that close; only if it has not,
+        the doubling / halving from s0.  Newton then starts at the probe.
+        ``with_slope``: (s, dF at the last Newton point, within tol s of s,
+        or None where there was none)."""
+        F_real, seen, slopes = _real(F), {}, {}
+
+        def F(v):
+            if v not in seen:
+                seen[v] = F_real(v)
+            return seen[v]
+
+        def slope(v):
+            if v not in slopes:
+                try:
+                    slopes[v] = real_value(dF(v))
+                except UNDEFINED:
+                    slopes[v] = None
+            return slopes[v]
         if s_max is not None and not s0 < s_max:
             s0 = s_max / 2
         lo = hi = s0
         n = 0
-        if F(s0) <= 0:
+        start = s0
+        probed = False
+        if near:
+            f0, d0 = F(s0), slope(s0)
+            if d0 is not None and d0 > 0 and f0 != 0:
+                step = -f0 / d0
+                past = max(tol * s0 / 4, 1000 * step * step / s0)
+                probe = s0 + step + (past if step > 0 else -past)
+                if probe > 0 and (s_max is None or probe < s_max) and (F(probe) > 0) != (f0 > 0):
+                    lo, hi = (s0, probe) if probe > s0 else (probe, s0)
+                    start, probed = probe, True
+        if probed:
+            pass
+        elif F(s0) <= 0:
             lo = s0
             hi = s0 * 2 if s_max is None else min(s0 * 2, s_max)
             while F(hi) <= 0:
@@ -331,48 +373,74 @@ class MDLaw:
                 n += 1
                 if n > 4000:
                     raise DomainError("no cohesive-zone half-width found: the gap exceeds h0 at c_D -> a")
-        s = s0 if lo <= s0 <= hi else (lo + hi) / 2   # a good guess stays the start
+        s = start if lo <= start <= hi else (lo + hi) / 2   # a good guess stays the start
+        d = None
         for _ in range(200):
             f = F(s)
             if f > 0:
                 hi = s
             else:
                 lo = s
-            try:
-                d = real_value(dF(s))
-            except UNDEFINED:
-                d = None
+            d = slope(s)
             s_new = s - f / d if d is not None and d > 0 else None
             if s_new is None or not lo < s_new < hi:
                 s_new = mpmath.sqrt(lo * hi) if hi / lo > 4 else (lo + hi) / 2
             if abs(s_new - s) <= tol * s:
-                return s_new
+                return (s_new, d) if with_slope else s_new
             s = s_new
             if (hi - lo) <= tol * lo:
-                return s
-        return s
+                break
+            d = None      # the slope was at the previous point
+        return (s, d) if with_slope else s
 
     def c_of(self, A, dps: int):
         """c_D at the half-width A (mpf), to dps digits."""
+        C, guard, _ = self._c_and_slope(A, dps)
+        return C, guard
+
+    def _c_and_slope(self, A, dps: int):
+        """(c_D, the guard digits, dG/dc of the gap condition at the last Newton point, within
+        10**-(dps+4) (c_D - a) of c_D, or None) at the half-width A: :meth:`c_of`, and the slope
+        :meth:`P_and_slope` needs for dc_D/da without one more quadrature."""
         with workdps(15):   # c_D - a is at least of the order of the JKR-limit zone: digits to resolve it
             extra = max(0, int(mpmath.log10(mpmath.mpf(A) / self._s_guess(A))))
         with workdps(25 + extra):
             A25 = mpmath.mpf(A)
-            guess = self._s_guess(A25)
-            if self._warm is not None and self._warm[1] > A25:     # the last solution: scans move smoothly
-                guess = self._warm[1] - A25
+            guess = self._warm_guess(A25)
+            # the estimate stops at a Newton step below ESTIMATE_TOL: quadratic convergence leaves it
+            # about ESTIMATE_TOL**2 off, and the solve at dps + guard digits below corrects it anyway
             s_est = self._solve_s(lambda s: self._G(A25, A25 + s), lambda s: self._Gc(A25, A25 + s),
-                                  guess, mpmath.mpf(10)**-12, self._s_max(A25), A25)
-            self._warm = (A25, A25 + s_est)
+                                  guess, ESTIMATE_TOL, self._s_max(A25), A25)
+            self._warm = (self._warm or [])[-1:] + [(A25, s_est)]
             # acosh(c/a) near c = a loses log10(a/s) digits; at small a, terms of size c/a cancel in
             # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
             r = mpmath.log10(A25 / s_est)
             guard = 14 + (int(r) if r > 0 else 2 * int(-r))
         with workdps(dps + guard):
             A = mpmath.mpf(A)
-            s = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
-                              mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A)
-            return A + s, guard
+            s, slope = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
+                                     mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A,
+                                     with_slope=True, near=True)
+            return A + s, guard, slope
+
+    def _warm_guess(self, A):
+        """The start of the estimate of s = c_D - a at A from the last two solutions (scans, root
+        searches and the descent move smoothly): s(a) extrapolated as a power law between them
+        where A lies within a factor 4 of both, else c_D kept from the last one (where it lies
+        above A), else the JKR-limit zone.  Only the work depends on it: the bracket decides."""
+        h = self._warm or []
+        if len(h) == 2 and all(A / 4 < a < 4 * A for a, _ in h):
+            (a1, s1), (a2, s2) = h
+            span = mpmath.log(a2 / a1)
+            # extrapolated at most twice the span of the two (two nearly equal half-widths of a root
+            # search would amplify the estimates' own errors), and within a factor 4 of s2
+            if abs(span) > mpmath.mpf(10)**-4 and abs(mpmath.log(A / a2)) <= 2 * abs(span):
+                g = s2 * (s2 / s1)**(mpmath.log(A / a2) / span)
+                if mpmath.isfinite(g) and s2 / 4 < g < 4 * s2:
+                    return g
+        if h and h[-1][0] + h[-1][1] > A:
+            return h[-1][0] + h[-1][1] - A
+        return self._s_guess(A)
 
     def _s_guess(self, A):
         # the Dugdale gap is ~ 4 sigma0 s/(pi E*) for s << a: s ~ pi E* h0/(4 sigma0)
@@ -391,10 +459,12 @@ class MDLaw:
 
     def P_and_slope(self, A, dps: int):
         """(P, dP/da, c_D) at A, each to about dps digits."""
-        C, guard = self.c_of(A, dps)
+        C, guard, Gc = self._c_and_slope(A, dps)
         with workdps(dps + guard):
             A = mpmath.mpf(A)
-            dc = -self._Ga(A, C) / self._Gc(A, C)
+            # dG/dc at the last Newton point: c_D moved by at most 10**-(dps+4) (c_D - a) from it, a
+            # relative change of that order in dc_D/da (G is smooth in c on the scale c_D - a)
+            dc = -self._Ga(A, C) / (self._Gc(A, C) if Gc is None else Gc)
             P = self._P(A, C)
             dP = self._Pa(A, C) + self._Pc(A, C) * dc
             return +P, +dP, +C
