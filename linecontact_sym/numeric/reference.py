@@ -687,9 +687,12 @@ def bound_acb(expr, var, values: dict):
     ``values`` (symbol -> number): compiled once per (expression, symbols)
     with the parameters as symbols, their exact balls made once per working
     precision, so that a reference evaluated at many points does no SymPy
-    work per point (``integrate`` and ``log_end_integral`` take it)."""
+    work per point (``integrate`` and ``log_end_integral`` take it).
+    ``var`` may be a list or tuple of symbols: ``z`` is then a tuple of
+    their balls."""
     params = tuple(values)
-    F = _compiled(expr, (var,) + params, len(params))
+    several = isinstance(var, (list, tuple))
+    F = _compiled(expr, (tuple(var) if several else (var,)) + params, len(params))
     nums = tuple(values[q] for q in params)
     balls: dict = {}
 
@@ -697,7 +700,7 @@ def bound_acb(expr, var, values: dict):
         prec = flint.ctx.prec
         if prec not in balls:
             balls[prec] = tuple(to_acb(v) for v in nums)
-        return F((z, balls[prec]), an)
+        return F((*z, balls[prec]) if several else (z, balls[prec]), an)
     return f
 
 
@@ -1472,7 +1475,7 @@ def _log_end(integrand, var, end, far, piece, values=None):
     g, w, L, coef, consts, slopes = form
 
     def bind(e, v):
-        return compile_acb(e, v) if at is None else _bind(e, v, at)
+        return compile_acb(e, v) if at is None else bound_acb(e, v, at)
     cballs = {}
     for k, c in consts.items():
         cb = to_acb(c) if at is None else bind(c, w)(flint.acb(0), False)
@@ -1525,24 +1528,6 @@ def _log_end(integrand, var, end, far, piece, values=None):
                      for j in range(k + 1))
         total += c * to_acb(u0) * closed
     return total
-
-
-def _bind(expr, var, values):
-    """:func:`bound_acb` for one variable or a list of them (``z`` a tuple of
-    their balls): compiled once with the parameters as symbols."""
-    if not isinstance(var, (list, tuple)):
-        return bound_acb(expr, var, values)
-    params = tuple(values)
-    F = _compiled(expr, tuple(var) + params, len(params))
-    nums = tuple(values[q] for q in params)
-    balls: dict = {}
-
-    def f(z, an):
-        prec = flint.ctx.prec
-        if prec not in balls:
-            balls[prec] = tuple(to_acb(v) for v in nums)
-        return F((*z, balls[prec]), an)
-    return f
 
 
 def _log_end_form(integrand, var, end, d, at):
