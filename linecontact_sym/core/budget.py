@@ -210,9 +210,14 @@ def child_left():
 
 def _arm(seconds):
     """Arm this process's CPU-time timer (ITIMER_PROF: user + system time of
-    the process); its signal, at its default action, ends the process."""
-    signal.signal(signal.SIGPROF, signal.SIG_DFL)
-    signal.setitimer(signal.ITIMER_PROF, max(float(seconds), 1e-3))
+    the process); its signal, at its default action, ends the process.
+    Where there is no such timer (or signals cannot be set here), nothing:
+    only the wall-clock guard remains."""
+    try:
+        signal.signal(signal.SIGPROF, signal.SIG_DFL)
+        signal.setitimer(signal.ITIMER_PROF, max(float(seconds), 1e-3))
+    except (AttributeError, OSError, ValueError):
+        pass
 
 
 def _disarm():
@@ -231,10 +236,7 @@ def _child(conn, fn, args, kwargs, seconds):
         # (copy-on-write) at each full collection: tens of ms per child.
         gc.freeze()
         _IN_CHILD["deadline"] = Deadline(seconds)
-        try:
-            _arm(seconds)
-        except (AttributeError, OSError, ValueError):   # no CPU timer here: only the wall-clock guard remains
-            pass
+        _arm(seconds)
         try:
             result = ("ok", fn(*args, **kwargs))
         except BaseException as exc:  # sent back and re-raised in the parent
@@ -329,10 +331,7 @@ def _reap(proc, recv):
     proc.join()
     outer = _IN_CHILD["deadline"]
     if outer is not None and outer.budget is not None:
-        try:
-            _arm(outer.left())
-        except (AttributeError, OSError, ValueError):
-            pass
+        _arm(outer.left())
 
 
 def run_with_budget(fn, *args, seconds: float = DEFAULT_BUDGET, **kwargs):
@@ -391,10 +390,7 @@ def _stages_child(conn, stages, args, seconds, margin):
                 break
             if k:
                 conn.send_bytes(pickle.dumps(("start", k)))
-            try:
-                _arm(deadline.left())
-            except (AttributeError, OSError, ValueError):
-                pass
+            _arm(deadline.left())
             ok = True
             try:
                 value = stage(*args) if k == 0 else stage(value)
@@ -519,10 +515,7 @@ def charge_child(seconds: float) -> None:
     if left <= 0:
         signal.signal(signal.SIGPROF, signal.SIG_DFL)
         os.kill(os.getpid(), signal.SIGPROF)
-    try:
-        _arm(left)
-    except (AttributeError, OSError, ValueError):
-        pass
+    _arm(left)
 
 
 def _cores() -> int:
@@ -619,24 +612,17 @@ class Ahead:
 
 
 def _ahead_child(wfd, produce, seconds):
-    import multiprocessing.connection as _conn
-    send = _conn.Connection(wfd, readable=False)
+    send = _mp.connection.Connection(wfd, readable=False)
     gc.freeze()                             # as in _child: no collection walks the parent's objects
     _IN_CHILD["deadline"] = Deadline(seconds)
-    try:
-        _arm(seconds)
-    except (AttributeError, OSError, ValueError):
-        pass
+    _arm(seconds)
     last = time.process_time()
     try:
         for item in produce():
             now = time.process_time()
             _disarm()
             send.send_bytes(pickle.dumps((item, now - last)))
-            try:
-                _arm(max(_IN_CHILD["deadline"].left(), 1e-3))
-            except (AttributeError, OSError, ValueError):
-                pass
+            _arm(max(_IN_CHILD["deadline"].left(), 1e-3))
             last = time.process_time()
     except Exception:       # the consumer does the rest itself (and meets the same error)
         pass
