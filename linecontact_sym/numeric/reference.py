@@ -704,6 +704,13 @@ def bound_acb(expr, var, values: dict):
     return f
 
 
+def _compile_at(expr, var, values=None):
+    """:func:`compile_acb` of ``expr`` in ``var``, or with ``values`` (its
+    parameters' numbers) :func:`bound_acb`: compiled once with the
+    parameters as symbols."""
+    return compile_acb(expr, var) if values is None else bound_acb(expr, var, values)
+
+
 def _is_compiled(e) -> bool:
     """Is ``e`` a compiled integrand (``f(z, analytic)``), not a SymPy expression?"""
     return callable(e) and not isinstance(e, sp.Basic)
@@ -1015,8 +1022,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None, values=No
     prec = _bits(dps) + 30 if crude is None else 2 * goal + 40
 
     def compiled(expr):
-        main = expr if _is_compiled(expr) else (compile_acb(expr, var) if values is None
-                                                else bound_acb(expr, var, values))
+        main = expr if _is_compiled(expr) else _compile_at(expr, var, values)
         if crude is None:
             return main
 
@@ -1136,7 +1142,7 @@ def _substituted(integrand, var, lo, hi, piece, values=None):
     and the half piece's length as symbols, once per integrand and end
     (kept), and bound to the numbers here."""
     m = (lo + hi) / 2
-    f = compile_acb(integrand, var) if values is None else bound_acb(integrand, var, values)
+    f = _compile_at(integrand, var, values)
     total = flint.acb(0)
     for e, other in ((lo, m), (m, hi)):
         try:
@@ -1346,7 +1352,7 @@ def _order_at_zero(F, u, at=None):
     quotient that ball arithmetic cannot bound, and the route fails).
     ``at``: the numbers of F's parameters (None: it has none)."""
     try:
-        f = compile_acb(F, u) if at is None else bound_acb(F, u, at)
+        f = _compile_at(F, u, at)
         with flint.ctx.workprec(320):
             v1, v2 = (f(flint.acb(flint.arb(2) ** -e), False).abs_lower() for e in (40, 80))
             if not (v1 > 0 and v2 > 0 and v1.is_finite() and v2.is_finite()):
@@ -1421,7 +1427,7 @@ def _unsigned(f):
 
 def _finite_next_to_zero(expr, u, at=None) -> bool:
     try:
-        f = compile_acb(expr, u) if at is None else bound_acb(expr, u, at)
+        f = _compile_at(expr, u, at)
         with flint.ctx.workprec(128):
             return f(flint.acb(flint.arb(0).union(flint.arb(2) ** -40)), False).is_finite()
     except (ArbUnsupported, ZeroDivisionError, ValueError, TypeError):
@@ -1474,20 +1480,18 @@ def _log_end(integrand, var, end, far, piece, values=None):
         form = _kept(("log", integrand, var, end, tuple(values)), make)
     g, w, L, coef, consts, slopes = form
 
-    def bind(e, v):
-        return compile_acb(e, v) if at is None else bound_acb(e, v, at)
     cballs = {}
     for k, c in consts.items():
-        cb = to_acb(c) if at is None else bind(c, w)(flint.acb(0), False)
+        cb = to_acb(c) if at is None else bound_acb(c, w, at)(flint.acb(0), False)
         if not cb.is_finite():
             raise ArbUnsupported("a coefficient of the logarithm has no finite value at the end point")
         cballs[k] = cb
-    bounds = [(k, bind(dA, w)) for k, dA in slopes]
-    f0 = bind(coef.get(0, sp.S.Zero), w)
+    bounds = [(k, _compile_at(dA, w, at)) for k, dA in slopes]
+    f0 = _compile_at(coef.get(0, sp.S.Zero), w, at)
     kmax = max(consts, default=0)
     # the split form, A_k(u) - c_k and ln u = L apart: composed with u = v^q
     # below, no function's cut is met by a ball that winds around u = 0
-    split = bind(coef.get(0, sp.S.Zero) + sum((A - consts[k]) * L**k for k, A in coef.items() if k), [w, L])
+    split = _compile_at(coef.get(0, sp.S.Zero) + sum((A - consts[k]) * L**k for k, A in coef.items() if k), [w, L], at)
     q = _LOG_END_POWER
 
     def crude(ub):
@@ -1520,7 +1524,7 @@ def _log_end(integrand, var, end, far, piece, values=None):
             v = split((ub, q * z.log(analytic=an == ANALYTIC)), an)
         return v * q * z ** (q - 1)
     u0 = sp.Rational(1, 2**q)
-    total = piece(h, sp.S.Zero, sp.Rational(1, 2)) + piece(bind(g, w), u0, sp.S.One)
+    total = piece(h, sp.S.Zero, sp.Rational(1, 2)) + piece(_compile_at(g, w, at), u0, sp.S.One)
     ln_u0 = flint.arb(2).log() * -q
     for k, c in cballs.items():
         # int_0^u0 ln^k u du = u0 sum_j (-1)^(k-j) k!/j! ln^j u0
