@@ -21,7 +21,7 @@ from ..core import symbols as S
 from ..core.budget import run_with_budget
 from ..core.conversion import to_basic, to_mpf
 from ..core.errors import ClaimError, DomainError, LineContactError
-from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, flamant_magnitude,
+from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, break_value, flamant_magnitude,
                          flamant_relative_displacement, flamant_resultant, frozen_lambdify, griffith_punch_force, num_eval,
                          numeric_minimum, resolution)
 from .memo import point_key, remember, remembered
@@ -214,18 +214,12 @@ def _pressure_physics(profile, force_fn, bps=()):
             if fx != 0:
                 scale = abs(fx)
             else:
-                breaks = [_break_value(b.xreplace(fixed), dps) for b in bps]
+                breaks = [break_value(b.xreplace(fixed), dps) for b in bps]
                 scale = flamant_magnitude(printed_expr.xreplace(fixed), av, xv, E, breaks)
         return [Comparison("Flamant: u_z(0) - u_z(x) = f(x) under the contact", D, fx, scale,
                            resolution(errD, scale)),
                 Comparison("Flamant: resultant = P(a)", res, Pa, None, resolution(errR, Pa))]
     return physics
-
-
-def _break_value(b, dps):
-    """A breakpoint as an exact number where it is one (Arb splits there
-    exactly), else an mpf of dps + 20 digits."""
-    return b if b.is_Rational else to_mpf(sp.N(b, dps + 20))
 
 
 def _where(claim):

@@ -292,15 +292,16 @@ def _callable(p):
     return f
 
 
+def break_value(b, dps):
+    """A breakpoint as an exact number where it is one (Arb splits there
+    exactly), else an mpf of dps + 20 digits."""
+    return b if b.is_Rational else to_mpf(sp.N(b, dps + 20))
+
+
 def _at_values(p, breaks, values, dps):
-    """The pressure and its break points at the parameters' values (a break
-    point an exact number where it is rational, else an mpf of dps + 20
-    digits)."""
-    bs = []
-    for b in breaks:
-        b = to_basic(b).xreplace(values)
-        bs.append(b if b.is_Rational else to_mpf(sp.N(b, dps + 20)))
-    return p.xreplace(values), bs
+    """The pressure and its break points at the parameters' values
+    (:func:`break_value`)."""
+    return p.xreplace(values), [break_value(to_basic(b).xreplace(values), dps) for b in breaks]
 
 
 def _pressure_symbol(p, values=None):
@@ -515,4 +516,4 @@ class Comparison:
 
 __all__ = ["DPS", "Undefined", "Divergent", "DerivedUndefined", "finite_real", "quad_integral", "num_eval",
            "flamant_relative_displacement", "flamant_resultant", "flamant_magnitude", "resolution", "numeric_minimum", "frozen_lambdify", "griffith_punch_force",
-           "Comparison"]
+           "Comparison", "break_value"]
