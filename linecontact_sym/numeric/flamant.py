@@ -59,19 +59,22 @@ def kernel_points(lo, hi, inner=()):
     return out
 
 
+def _at(e, values):
+    """The number of an end or point that holds parameters, at ``values``."""
+    return to_basic(sp.sympify(e, strict=True).xreplace(values))
+
+
 def kernel_points_at(lo, hi, inner, values):
     """:func:`kernel_points` of ends and points that hold parameters: kept
     as expressions (the integrator makes its end forms once for them),
     ordered and taken strictly inside (lo, hi) by their numbers at
     ``values``; a point at the number of another is one point."""
-    def num(e):
-        return to_basic(sp.sympify(e, strict=True).xreplace(values))
     lo, hi = sp.sympify(lo, strict=True), sp.sympify(hi, strict=True)
-    lo_v, hi_v = num(lo), num(hi)
+    lo_v, hi_v = _at(lo, values), _at(hi, values)
     pts = [(lo_v, lo), (hi_v, hi)]
     for b in inner:
         b = sp.sympify(b, strict=True)
-        bv = num(b)
+        bv = _at(b, values)
         if _is_true(lo_v < bv) and _is_true(bv < hi_v) and not any(_is_true(sp.Eq(bv, v)) for v, _ in pts):
             pts.append((bv, b))
     pts.sort(key=lambda t: to_mpf(t[0]))
@@ -317,12 +320,10 @@ def flamant_displacement(pieces, x, E, dps: int, breaks=(), values=None):
     xs, refs = (list(x), refs) if several else ([x], [refs])
     vals = values or {}
 
-    def at(e):
-        return to_basic(sp.sympify(e, strict=True).xreplace(vals))
-
     def fallback(xv):
-        est = flamant_tanh_sinh([(sp.sympify(p, strict=True).xreplace(vals), s, at(lo), at(hi))
-                                 for p, s, lo, hi in pieces], xv, E, dps, [at(b) for b in breaks], real_part=True)
+        est = flamant_tanh_sinh([(sp.sympify(p, strict=True).xreplace(vals), s, _at(lo, vals), _at(hi, vals))
+                                 for p, s, lo, hi in pieces], xv, E, dps, [_at(b, vals) for b in breaks],
+                                real_part=True)
         if est is None:
             raise LineContactError("neither Arb nor tanh-sinh could evaluate the Flamant integral")
         return est[0]
