@@ -277,9 +277,9 @@ def one_pass(bounds, names, f):
     one function with f's expression in it (:func:`_inlined_pass`): the
     same operations on the same floats, without a loop or a call per point
     (the parabola's force: 0.75 -> 0.3 us); else it is the loop below."""
-    if bounds is None or not frozenset(names) <= bounds.keys():
-        return None
     checks = bound_checks(bounds, names)
+    if checks is None:
+        return None
     inlined = _inlined_pass(checks, f)
     if inlined is not None:
         return inlined
@@ -315,7 +315,10 @@ def one_pass(bounds, names, f):
 def bound_checks(bounds, names):
     """(name, positive) per name: the bound test of :func:`inline_point`
     ('positive' and 'nonnegative': 0 < v < inf, 0 being left to the full
-    path; 'any': finite and nonzero)."""
+    path; 'any': finite and nonzero).  None where ``bounds`` is None or does
+    not cover ``names`` (no one pass)."""
+    if bounds is None or not frozenset(names) <= bounds.keys():
+        return None
     return tuple((n, bounds[n] in ("positive", "nonnegative")) for n in names)
 
 
@@ -459,7 +462,7 @@ def scalar_plan(nf):
     bounds = None
     if not params:    # no check (any finite number), or a bounds-only check: one pass (one_pass)
         bounds = dict.fromkeys(names, "any") if nf.domain is None else getattr(nf.domain, "bounds", None)
-    one = one_pass(bounds, names, f)
+    checks, one = bound_checks(bounds, names), None
 
     def fast(kw):
         if one is not None:
@@ -482,11 +485,12 @@ def scalar_plan(nf):
         except (ValueError, ZeroDivisionError, OverflowError, TypeError, KeyError):
             return None
         return np.float64(v) if math.isfinite(v) else None
-    if one is not None:     # fast generated as one function with f's expression in it (inline_point)
-        inlined = inline_point(bound_checks(bounds, names), f, _EXPORT_TEMPLATE, "_lcs_general(_lcs_values)",
+    if checks is not None:  # fast generated as one function with f's expression in it (inline_point)
+        inlined = inline_point(checks, f, _EXPORT_TEMPLATE, "_lcs_general(_lcs_values)",
                                {"_lcs_f64": f64, "_lcs_general": general})
         if inlined is not None:
             return inlined
+        one = one_pass(bounds, names, f)    # f is not a one-line function: the loop
     return fast
 
 
