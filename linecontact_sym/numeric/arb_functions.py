@@ -132,7 +132,7 @@ def arb_lambdify(args, expr):
     Gaussian bump: dP0/da, seven Bessel I and a dozen operations, at every
     node), about ten times faster so."""
     args = list(args)
-    mp_fn = sp.lambdify(args, expr, modules=[dict(MPMATH_ARB), "mpmath"])
+    mp_fn = _mpmath_lambdify(args, expr)
     try:
         F = compile_acb(expr, args, holomorphic=False)
     except ArbUnsupported:
@@ -174,4 +174,10 @@ def lambdify_law(args, expr):
     mpmath than the conversion to balls and back, about 25 us)."""
     if sp.sympify(expr, strict=True).has(*SLOW_IN_MPMATH):
         return arb_lambdify(args, expr)
+    return _mpmath_lambdify(args, expr)
+
+
+def _mpmath_lambdify(args, expr):
+    """mpmath's lambdified function of ``expr``, its Bessel and elliptic Pi
+    through Arb (:data:`MPMATH_ARB`)."""
     return sp.lambdify(list(args), expr, modules=[dict(MPMATH_ARB), "mpmath"])
