@@ -396,8 +396,12 @@ class MaugisDugdaleContact(AdhesiveContact):
 
     @property
     def jkr(self):
-        """The JKR contact of the same work of adhesion (this package's law)."""
-        return self.contact.adhesive(self.w)
+        """The JKR contact of the same work of adhesion (this package's law): one per contact, so
+        that its pull-offs at values (the Maugis parameter, the model choice) are searched once."""
+        cache = self._caches()
+        if "_jkr" not in cache:
+            cache["_jkr"] = self.contact.adhesive(self.w)
+        return cache["_jkr"]
 
     def _jkr_values(self, values):
         vals = self._numeric_values(values)
