@@ -79,9 +79,11 @@ class Independent:
         self.f = sp.lambdify(x, f, "mpmath")
         self.f1 = sp.lambdify(x, sp.diff(f, x), "mpmath")
         self.h1 = sp.lambdify(x, sp.diff(x * sp.diff(f, x), x), "mpmath")   # h'(t), h = t f'(t)
-        self.kinks = [mpmath.mpf(str(sp.N(b.xreplace(pf), 60))) for b in md.profile.breakpoints
-                      if sp.N(b.xreplace(pf)) > 0]
         with mpmath.workdps(60):        # held at 60 digits (an mpf made at 15 digits stays at 15)
+            # the kinks too: a kink rounded to 15 digits (1e-17 off) leaves h' a jump inside a piece,
+            # where Gauss-Legendre runs to its highest degree (its nodes cost seconds at 25 digits)
+            self.kinks = [mpmath.mpf(str(sp.N(b.xreplace(pf), 60))) for b in md.profile.breakpoints
+                          if sp.N(b.xreplace(pf)) > 0]
             self.E = mpmath.mpf(str(sp.N(self.fixed[S.E_star], 60)))
             self.sig = mpmath.mpf(str(sp.N(self.fixed[S.sigma_0], 60)))
             self.h0 = mpmath.mpf(str(sp.N(self.fixed[S.gamma] / self.fixed[S.sigma_0], 60)))
