@@ -201,8 +201,22 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
         inner = [to_basic(b) for b in breaks]
         whole = [(p, s, lo, hi) for p, s, lo, hi in ps if p.has(s) and
                  (inner or (lo == 0 and not finite_at(p if vals is None else p.xreplace(vals), s, 0)))]
-        at_zero = None
-        for i, xv in enumerate(abs(to_basic(q)) for q in xs):
+        xvs = [abs(to_basic(q)) for q in xs]
+        at_zero = []
+        if any(xv != 0 for xv in xvs):
+            # u_z(0): -2 int p(s) ln s ds, the same for every x, first: where Arb cannot enclose it, no
+            # displacement can be (each sums it), and none is tried (a thin cohesive zone: each piece
+            # next to it would run to the evaluation limit again, per x, only to be discarded)
+            try:
+                for p, s, lo, hi in ps:
+                    if (p, s, lo, hi) not in whole:
+                        at_zero += [(-2 * k * m, r) for m, r in _log_terms(p, s, lo, hi, sp.S.Zero, 1, sp.S.Zero,
+                                                                             vals, dps)]
+            except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
+                xvs = [xv if xv == 0 else None for xv in xvs]
+        for i, xv in enumerate(xvs):
+            if xv is None:
+                continue
             if xv == 0:
                 out[i] = RefValue(mpmath.mpf(0), mpmath.mpf(0), "arb")
                 continue
@@ -227,13 +241,6 @@ def flamant_arb(pieces, x, E, dps: int, breaks=(), values=None):
                     at = None if vals is None else {**vals, _X: xv}
                     terms += [(k * m, r) for m, r in _log_terms(p, s, lo, hi, xv, 1, sp.log((xv if at is None else _X)
                                                                                              + s), at, dps)]
-                if at_zero is None:
-                    # u_z(0): -2 int p(s) ln s ds, the same for every x
-                    at_zero = []
-                    for p, s, lo, hi in ps:
-                        if (p, s, lo, hi) not in whole:
-                            at_zero += [(-2 * k * m, r) for m, r in _log_terms(p, s, lo, hi, sp.S.Zero, 1, sp.S.Zero,
-                                                                                 vals, dps)]
                 ref = lincomb(terms + at_zero, dps)
                 out[i] = ref if ref.certified else None
             except (ArbUnsupported, LineContactError, TypeError, ValueError, ZeroDivisionError):
