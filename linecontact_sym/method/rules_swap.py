@@ -223,6 +223,9 @@ def _edge_limits(branches, reg):
 
 
 _INFINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
+#: the functions of x a branch may hold for :func:`_join_limit`: log and atanh (expanded at the
+#: join where singular) and functions continuous wherever their argument is finite and real
+_CONTINUOUS = (sp.log, sp.atanh, sp.asin, sp.acos, sp.atan, sp.asinh, sp.acosh)
 
 
 def _value_at(expr, values):
@@ -273,7 +276,11 @@ def _join_limit(e, edge, values):
     the limit is F(e).  None where any of this does not hold (the caller
     takes ``sympy.limit``).  ``values``: exact values of the parameters and
     of a in the branch's region, only to tell a non-zero coefficient (which
-    is then not identically 0) and the sign of d."""
+    is then not identically 0) and the sign of d.  Only for branches whose
+    functions of x are log, atanh and the continuous inverse functions
+    (:data:`_CONTINUOUS`)."""
+    if any(f.has(S.x) and not isinstance(f, _CONTINUOUS) for f in e.atoms(sp.Function)):
+        return None                         # elliptic Pi(n|m) (infinite at n = 1), Piecewise ...: sympy.limit
     L = sp.Dummy("L")
     at = {S.x: edge}
     rep = {}
