@@ -100,13 +100,20 @@ def test_rounded_punch_tangential_and_gap(punch):
     assert g > 0
 
 
-def test_circular_corner_punch_search_ends():
+@pytest.fixture(scope="module")
+def circular_corner():
+    """f = R - sqrt(R^2 - (x - b)^2) beyond a flat of half-width b: no closed
+    force law (its attempt runs to budget=2), one contact for the two tests below."""
+    x, R, b = S.x, S.R, S.b
+    return lcs.LineContact(sp.Piecewise((0, x < b), (R - sp.sqrt(R**2 - (x - b)**2), True)),
+                           params={R: (2.0, 4.0), b: (0.2, 0.8)}, budget=2)
+
+
+def test_circular_corner_punch_search_ends(circular_corner):
     """f = R - sqrt(R^2 - (x - b)^2) beyond the flat: no closed force law; the
     stationary-point search skips the flat (dP/da = 0 there) instead of
     subdividing it without end (20000 intervals)."""
-    x, R, b = S.x, S.R, S.b
-    c = lcs.LineContact(sp.Piecewise((0, x < b), (R - sp.sqrt(R**2 - (x - b)**2), True)),
-                        params={R: (2.0, 4.0), b: (0.2, 0.8)}, budget=2)
+    c = circular_corner
     a = c.half_width(sp.Rational(1, 10), budget=600, E_star=1, R=3, b=sp.Rational(1, 2))
     with workdps(40):
         def P(A):   # Eq. (10*) by mpmath after t = A sin(phi), from the corner on
@@ -186,15 +193,12 @@ def test_quartic_pull_off_closed_and_remembered():
     assert again.cached == "disk" and again.expr == d.expr
 
 
-def test_numeric_search_stops_at_its_budget():
+def test_numeric_search_stops_at_its_budget(circular_corner):
     """The circular-corner punch's numeric pull-off needs tens of seconds of
     quadratures: with budget=1 it raises BudgetExceeded (a deadline checked
     between evaluations), instead of running to the end."""
     from linecontact_sym.core.errors import BudgetExceeded
-    x, R, b = S.x, S.R, S.b
-    c = lcs.LineContact(sp.Piecewise((0, x < b), (R - sp.sqrt(R**2 - (x - b)**2), True)),
-                        params={R: (2.0, 4.0), b: (0.2, 0.8)}, budget=2)
-    ad = c.adhesive()
+    ad = circular_corner.adhesive()
     with pytest.raises(BudgetExceeded, match="budget of 1 CPU s"):
         ad.pull_off_at(budget=1, E_star=1, R=3, b=sp.Rational(1, 2), gamma=sp.Rational(1, 100))
 
