@@ -160,10 +160,9 @@ def _si_value(name, number, unit_text):
     return repr(float(si))
 
 
-def _unit_registry(pint, _reg=[]):   # noqa: B006 -- one registry per process
-    if not _reg:
-        _reg.append(pint.UnitRegistry())
-    return _reg[0]
+def _unit_registry(pint):
+    """pint's application registry: one per process, built on first use."""
+    return pint.get_application_registry()
 
 
 def _contact(args, profile, values=None):

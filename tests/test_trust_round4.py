@@ -311,7 +311,7 @@ def test_item4_paper_jobs_are_capped_at_the_work(monkeypatch, tmp_path):
 
 # ------------------------------------------------------------------ 5: units never dropped (issue item 3)
 pint = pytest.importorskip("pint")
-ureg = pint.UnitRegistry()
+ureg = pint.get_application_registry()      # one registry per process: pint builds it once (about 0.7 CPU s)
 Q_ = ureg.Quantity
 U_REF = math.pi * 210e9 * 1e-3**2 / (4 * 5e-3)       # Eq. (13) in SI: 32986722.86 N/m
 

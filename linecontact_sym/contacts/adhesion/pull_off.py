@@ -71,15 +71,56 @@ def solve_stationary(P):
 
 
 def unsolvable(expr):
-    """Why ``sympy.solve(expr = 0, a)`` is not worth trying, or None: ``expr``
-    holds a non-elementary function of a (:func:`~linecontact_sym.method.rules.special_of`:
-    Bessel, elliptic, hypergeometric ...), which SymPy cannot invert.  It
-    raises NotImplementedError then, even where the function is a factor
-    ((a - 2) besselj(1, a)), after up to 5 CPU s (the Gaussian bump's
-    besseli laws), or runs into the budget (the exact cylinder's elliptic
-    laws); a strategy that cannot apply says so at once."""
+    """Why ``sympy.solve(expr = 0, a)`` is not worth trying, or None; a
+    strategy that cannot apply says so at once.
+
+    * ``expr`` holds a non-elementary function of a
+      (:func:`~linecontact_sym.method.rules.special_of`: Bessel, elliptic,
+      hypergeometric ...), which SymPy cannot invert.  It raises
+      NotImplementedError then, even where the function is a factor
+      ((a - 2) besselj(1, a)), after up to 5 CPU s (the Gaussian bump's
+      besseli laws), or runs into the budget (the exact cylinder's elliptic
+      laws).
+    * A factor of a piece of ``expr`` mixes a (inverse) trigonometric
+      function of a with other terms in a (:func:`mixed_trigonometric`).
+      SymPy raises "multiple generators [...]: No algorithms are implemented
+      to solve equation" for such an equation, also where it is one factor
+      or one piece; for the worn cylinder's adhesive dP/da (asin(b/a) beside
+      sqrt(a) and sqrt(a^2 - b^2)) after 9-11 CPU s."""
     f = special_of(expr, S.a)
-    return None if f is None else f"it cannot invert {f.func.__name__} of a (not tried)"
+    if f is not None:
+        return f"it cannot invert {f.func.__name__} of a (not tried)"
+    t = mixed_trigonometric(expr, S.a)
+    if t is not None:
+        return (f"{t} beside other terms in a: SymPy has no algorithm for such an equation "
+                f"(it raises 'multiple generators'; not tried)")
+    return None
+
+
+def mixed_trigonometric(expr, var):
+    """The first (inverse) trigonometric function of ``var`` that shares a
+    factor of a piece of ``expr`` (the numerator over a common denominator)
+    with other terms in ``var``, or None.  Such a factor is one equation in
+    two unrelated generators (asin(b/a) and sqrt(a)); SymPy inverts a
+    factor with trigonometric functions of ``var`` only (its trigonometric
+    solver: sin(a) - cos(a)), or with one of them alone (asin(b/a) - pi/6),
+    and neither is refused here.  exp, log and the hyperbolic functions are
+    left to SymPy (its Lambert W route)."""
+    from sympy.functions.elementary.trigonometric import InverseTrigonometricFunction, TrigonometricFunction
+    pieces = [e for e, _ in expr.args] if isinstance(expr, sp.Piecewise) else [expr]
+    if expr.has(sp.Piecewise) and not isinstance(expr, sp.Piecewise):
+        folded = sp.piecewise_fold(expr)
+        pieces = [e for e, _ in folded.args] if isinstance(folded, sp.Piecewise) else [folded]
+    for piece in pieces:
+        if piece.has(sp.Piecewise):
+            continue
+        num = sp.together(piece).as_numer_denom()[0]
+        for factor in sp.Mul.make_args(sp.factor_terms(num)):
+            trig = sorted((f for f in factor.atoms(TrigonometricFunction, InverseTrigonometricFunction)
+                           if var in f.free_symbols), key=sp.default_sort_key)
+            if trig and var in factor.xreplace({f: sp.Dummy() for f in trig}).free_symbols:
+                return trig[0]
+    return None
 
 
 def solve_load(P, load):
