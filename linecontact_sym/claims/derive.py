@@ -24,7 +24,7 @@ from ..core.errors import ClaimError, DomainError, LineContactError
 from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined, break_value, flamant_magnitude,
                          flamant_relative_displacement, flamant_resultant, frozen_lambdify, griffith_punch_force, num_eval,
                          numeric_minimum, resolution)
-from .memo import point_key, remember, remembered
+from .memo import minimum_key, point_key, remember, remembered
 from .results import REQUIRED_DIGITS, PointResult
 from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
 from ..core.precision import workdps
@@ -381,10 +381,18 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
     if not force.closed_form:   # P(a) is a system (an inner solve): the contact's method B minimum
         from ..contacts.adhesion.pull_off import reference as pull_off_reference
         def minimum(vals, dps):
-            try:
-                return sign * pull_off_reference(ad, vals, dps).force
-            except LineContactError as exc:
-                raise DerivedUndefined(f"P(a) has no minimum over a > 0: {exc}")
+            # computed once per law and point (remembered as the points' comparisons are,
+            # :mod:`.memo`): the same minimum serves every printed form compared with it
+            key = minimum_key(engine, profile, vals, dps)
+            m = remembered(key, mpmath.mpf)
+            if m is None:
+                try:
+                    m = pull_off_reference(ad, vals, dps).force
+                except LineContactError as exc:
+                    raise DerivedUndefined(f"P(a) has no minimum over a > 0: {exc}")
+                if isinstance(m, mpmath.mpf):
+                    remember(key, m)
+            return sign * m
         label = None if ad.law.independent_minimum else \
             "numeric, grid search on the quadrature P0 (shares the law's inner solve: not independent)"
         return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr, label)

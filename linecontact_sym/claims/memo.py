@@ -22,7 +22,7 @@ from ..method import store
 from .references import Comparison
 from .results import PointResult
 
-__all__ = ["source_version", "point_key", "symbolic_key", "remembered", "remember"]
+__all__ = ["source_version", "point_key", "symbolic_key", "minimum_key", "remembered", "remember"]
 
 _SOURCE: dict = {}
 
@@ -63,6 +63,18 @@ def point_key(derived, printed_expr, vals, dps, physics):
         return None
 
 
+def minimum_key(derived, profile, vals, dps):
+    """The store key of the independent numeric minimum of an adhesive law's
+    P(a) at one point (the pull-off claims' reference, which does not depend
+    on the printed form: a second claim at the same point, a misprinted
+    table entry, reads it back), or None when it cannot be keyed."""
+    try:
+        return store.make_key("claims.minimum", source_version(), derived.method, profile, derived.expr,
+                              tuple(derived.conditions), dict(vals), int(dps))
+    except Exception:  # noqa: BLE001 -- an unkeyable record is simply not remembered
+        return None
+
+
 def symbolic_key(printed, derived_expr, vals, budget):
     """The store key of the symbolic comparison of a printed form (its
     verdict depends on the budget it had)."""
@@ -95,6 +107,8 @@ def _mpf(v):
 def _record(value):
     """A point's result as the plain data the store keeps (JSON: the store
     unpickles nothing), or the value itself (text)."""
+    if isinstance(value, mpmath.mpf):
+        return {"number": _number(value)}
     if not isinstance(value, PointResult):
         return value
     comps = [[c.what, _number(c.printed), _number(c.target), _number(c.scale), c.resolution]
@@ -103,6 +117,8 @@ def _record(value):
 
 
 def _value(data):
+    if isinstance(data, dict) and "number" in data:
+        return _mpf(data["number"])
     if isinstance(data, dict) and "PointResult" in data:
         kind, status, digits, comps, reason = data["PointResult"]
         return PointResult({}, kind, status, digits,

@@ -53,6 +53,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 
 import flint
 import mpmath
@@ -368,7 +369,7 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
     extra = expr.free_symbols - set(index)
     if extra:
         raise ArbUnsupported(f"symbols {sorted(map(str, extra))} have no value in the integrand {expr}")
-    acb, arb = flint.acb, flint.arb
+    acb, arb, ctx = flint.acb, flint.arb, flint.ctx
     moving = len(index) - fixed if several else len(index)
     symbols = tuple(index)[:moving]
     params = bool(fixed) and several
@@ -399,14 +400,15 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
         """A repeated subexpression: its ball for the last (ball, mode,
         precision) it was asked for is kept (the ball itself is held, so
         its identity names it)."""
-        last = [None, None, None, None]
+        last_z = last_an = last_prec = last_v = None
 
         def g(z, an):
-            prec = flint.ctx.prec
-            if last[0] is z and last[1] == an and last[2] == prec:
-                return last[3]
+            nonlocal last_z, last_an, last_prec, last_v
+            prec = ctx.prec
+            if last_z is z and last_an == an and last_prec == prec:
+                return last_v
             v = f(z, an)
-            last[:] = [z, an, prec, v]
+            last_z, last_an, last_prec, last_v = z, an, prec, v
             return v
         return g
 
@@ -416,13 +418,22 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
         integrand are not rebuilt at every node), in the real mode or the
         complex one."""
         memo = {}
+        # the last (precision, mode, parameters) asked and its ball: the
+        # memo's entry for them, read without building its key (an
+        # integrand's constants are asked at every node of a quadrature)
+        last_prec = last_real = last_at = last_v = None
 
         def g(z, an):
-            key = (flint.ctx.prec, an == REAL)
-            v = memo.get(key)
+            nonlocal last_prec, last_real, last_at, last_v
+            prec, real = ctx.prec, an == REAL
             at = z[-1] if params else None
+            if last_prec == prec and last_real == real and last_at is at:
+                return last_v
+            key = (prec, real)
+            v = memo.get(key)
             if v is None or v[0] is not at:
-                v = memo[key] = (at, f(z, REAL if an == REAL else False))
+                v = memo[key] = (at, f(z, REAL if real else False))
+            last_prec, last_real, last_at, last_v = prec, real, at, v[1]
             return v[1]
         return g
 
@@ -454,7 +465,9 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
             ex = e.exp
             if ex.is_Integer:
                 k = int(ex)
-                return lambda z, an: fb(z, an) ** k if k >= 0 else 1 / fb(z, an) ** (-k)
+                if k >= 0:
+                    return lambda z, an: fb(z, an) ** k
+                return lambda z, an: 1 / fb(z, an) ** (-k)
             if ex == sp.S.Half:
                 return lambda z, an: _root(fb(z, an), an, "sqrt")
             if ex == -sp.S.Half:
@@ -522,6 +535,10 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
             return bes
         if type(e) in _UNARY and len(e.args) == 1:
             fx = build(e.args[0])
+            name = _MEROMORPHIC.get(type(e))
+            if name is not None:       # _method(name) called in the same frame
+                m = operator.methodcaller(name)
+                return lambda z, an: m(fx(z, an))
             op = _UNARY[type(e)]
             return lambda z, an: op(fx(z, an), an)
         if isinstance(e, _RealAbs):
@@ -556,20 +573,34 @@ def _folded(e, build, constant, symbols):
 
 def _combined(fs, add):
     """The compiled sum (``add``) or product of the compiled terms ``fs``."""
+    f0, rest = fs[0], tuple(fs[1:])
+    # two terms (most nodes) without the loop; the same operations in the same order
+    f1 = rest[0] if len(rest) == 1 else None
     if add:
+        if f1 is not None:
+            def total2(z, an):
+                return f0(z, an) + f1(z, an)
+            return total2
+
         def total(z, an):
-            s_ = fs[0](z, an)
-            for f in fs[1:]:
+            s_ = f0(z, an)
+            for f in rest:
                 s_ = s_ + f(z, an)
             return s_
         return total
 
+    # f * p: Arb's acb_mul(f, p) on real balls is arb_mul(p, f),
+    # the real product in the order of the factors (its radius
+    # rounding is not symmetric)
+    if f1 is not None:
+        def product2(z, an):
+            p_ = f0(z, an)
+            return f1(z, an) * p_
+        return product2
+
     def product(z, an):
-        # f * p: Arb's acb_mul(f, p) on real balls is arb_mul(p, f),
-        # the real product in the order of the factors (its radius
-        # rounding is not symmetric)
-        p_ = fs[0](z, an)
-        for f in fs[1:]:
+        p_ = f0(z, an)
+        for f in rest:
             p_ = f(z, an) * p_
         return p_
     return product
