@@ -212,6 +212,8 @@ def _edge_limits(branches, reg):
             if jump.is_zero is False:     # a kink: the pressure is infinite at e
                 continue
             lim = _join_limit(e, edge, reg.sample(J))
+            if lim is not None:
+                lim = _logs_expanded_above(lim, reg.edges[J])
             if lim is None:
                 try:
                     lim = sp.limit(e, S.x, edge, "-")
@@ -327,6 +329,23 @@ def _join_limit(e, edge, values):
         if v is None or abs(v) < 1e-20 or (isinstance(w, sp.atanh) and abs(abs(v) - 1) < 1e-20):
             return None
     return lim
+
+
+def _logs_expanded_above(expr, lower):
+    """``expr`` with each logarithm expanded over the factors of its argument
+    where a > ``lower`` (the region of the branch): with a = lower + t,
+    t > 0, SymPy sees the sign of factors such as a - b and a + b, and
+    splits the log only over factors it proves positive (no ``force``).
+    :func:`_join_limit`'s logs of derivatives at the join
+    (b log(1/(a - b)) - b log(1/(a^2 - b^2)) + ...) then cancel to what the
+    tidying writes as log(b^(2b)/a^(2b)), as ``sympy.limit``'s result did."""
+    t = sp.Dummy("t", positive=True)
+
+    def split(L):
+        inner = sp.factor(L.args[0].xreplace({S.a: lower + t}))
+        return sp.expand_log(sp.log(inner), deep=True).xreplace({t: S.a - lower})
+    logs = {L: split(L) for L in expr.atoms(sp.log) if L.has(S.a)}
+    return sp.expand_mul(expr.xreplace(logs)) if logs else expr
 
 
 def _undefined_at_edge(e):

@@ -287,3 +287,31 @@ def test_legendre_reduction_against_quadrature():
         assert abs(mpmath.mpf(sp.N(e2.xreplace(pt), DPS + 10)) - pv) <= abs(pv) * mpmath.mpf(10)**-25
     with pytest.raises(NotReducible):
         reduce_integral(sp.exp(t), t, a, 0, a, pt)
+
+
+# ---------------------------------------------------------------- the limit at a tangent-continuous join
+def test_join_limit_against_sympy_limit_and_its_refusals():
+    """rules_swap._join_limit (the pressure's branch at a join x = b where
+    the log singularities of two sides cancel) against sympy.limit on hand-made
+    branches of the rounded punch's kind; where the logs do not cancel, or a
+    function it does not expand appears (elliptic Pi), it gives None and the
+    caller takes sympy.limit.  _logs_expanded_above then writes the logs of
+    the derivatives at the join so that they cancel where a > b."""
+    from linecontact_sym.method.rules_swap import _join_limit, _logs_expanded_above
+    at = {a: 3, b: 1, E: 1, R: 2}
+    sq = sp.sqrt(a**2 - b**2) / sp.sqrt(a**2 - x**2)
+    cancel = -2 * b * sp.atanh(sq) + 2 * x * sp.atanh(x * sq / b) - 2 * sp.sqrt(a**2 - x**2) * sp.asin(b / a)
+    logs = b * sp.log(b - x) - x * sp.log(b**2 - x**2) + sp.log(b + x) * x
+    for e in (cancel, logs):
+        lim = _join_limit(e, b, at)
+        assert lim is not None and not lim.has(x)
+        near = sp.N(e.xreplace({**at, x: 1 - sp.Rational(1, 10**40)}), 80)   # the branch next to the join
+        assert abs(sp.N(lim.xreplace(at), 80) - near) < 1e-35
+        tidy = _logs_expanded_above(lim, b)
+        assert abs(sp.N((tidy - lim).xreplace(at), 40)) < 1e-35
+    def singular_at_a_equal_b(e):
+        return [L for L in e.atoms(sp.log) if L.args[0].xreplace({a: b}) in (0, sp.zoo)]
+    assert singular_at_a_equal_b(_join_limit(cancel, b, at))                             # log(1/(a - b)) ...
+    assert not singular_at_a_equal_b(_logs_expanded_above(_join_limit(cancel, b, at), b))    # ... cancelled
+    assert _join_limit(b * sp.log(b - x), b, at) is None                       # an infinite limit: not cancelling
+    assert _join_limit(sp.log(b - x) * sp.elliptic_pi(x / a, b / a) - sp.log(b - x), b, at) is None
