@@ -279,3 +279,31 @@ def test_an_integral_with_parameters_makes_its_log_end_forms_once_and_encloses_t
     # one form for both sides of t = b (the half piece's signed length a
     # symbol too), made at the first point, used at the second
     assert [k[0] for k in R._FORMS] == ["log"]
+
+
+def test_flamant_arb_never_certifies_a_displacement_without_its_whole_u_z0(monkeypatch):
+    """u_z(0) - u_z(x) sums the term u_z(0) = -2/(pi E*) int p(s) ln s ds of
+    every piece.  Where Arb cannot enclose that term for one piece, no
+    displacement is given (None), never one certified without that piece's
+    term (the code once kept the pieces it had made and summed them into
+    every later x)."""
+    from linecontact_sym.numeric import flamant
+    s = sp.Symbol("s", positive=True)
+    p = sp.sqrt(1 - s**2)
+    pieces = [(p, s, 0, sp.Rational(1, 2)), (p, s, sp.Rational(1, 2), 1)]
+    xs = [sp.Rational(3, 10), sp.Rational(7, 10)]
+    whole = flamant.flamant_arb(pieces, xs, 1, 30)
+    assert all(r is not None and r.certified for r in whole)
+    real = flamant._log_terms
+    calls = []
+
+    def failing_second_u_z0(p_, s_, lo, hi, c, m, smooth, values, dps):
+        if c == 0 and smooth == 0 and lo == sp.Rational(1, 2):      # u_z(0)'s term of the second piece
+            calls.append(lo)
+            raise flamant.ArbUnsupported("planted")
+        return real(p_, s_, lo, hi, c, m, smooth, values, dps)
+    monkeypatch.setattr(flamant, "_log_terms", failing_second_u_z0)
+    got = flamant.flamant_arb(pieces, xs, 1, 30)
+    assert calls
+    for r, w in zip(got, whole):
+        assert r is None or abs(r - w) <= r.rad + w.rad, (r, w)
