@@ -29,7 +29,9 @@ derivation cache in a temporary directory, "warm" = the same cache again):
 
 Every row states the machine: nproc, CPU model, the load average before and
 after (this machine is shared: a load above the core count stretches every
-wall-clock time), the mpmath backend.  Times are wall clock unless marked CPU.
+wall-clock time), the mpmath backend, and whether the package's bytecode is
+current (before the run, and at the seed row: the fast loop's notebook test
+writes it).  Times are wall clock unless marked CPU.
 """
 from __future__ import annotations
 
@@ -60,7 +62,22 @@ def machine() -> dict:
         pass
     import mpmath.libmp
     return {"nproc": os.cpu_count(), "cpu": model, "python": platform.python_version(),
-            "mpmath backend": mpmath.libmp.BACKEND, "load": os.getloadavg()}
+            "mpmath backend": mpmath.libmp.BACKEND, "load": os.getloadavg(), "bytecode": bytecode()}
+
+
+def bytecode() -> str:
+    """Whether the package's modules have current bytecode (``__pycache__``):
+    without it every fresh interpreter compiles the sources it imports
+    (about 0.4 CPU s for the whole package), as on a machine with
+    PYTHONDONTWRITEBYTECODE set that never ran anything that writes it."""
+    import importlib.util
+    srcs = [os.path.join(d, f) for d, _, fs in os.walk(os.path.join(ROOT, "linecontact_sym")) for f in fs
+            if f.endswith(".py")]
+    current = sum(1 for f in srcs if os.path.exists(importlib.util.cache_from_source(f))
+                  and os.path.getmtime(importlib.util.cache_from_source(f)) >= os.path.getmtime(f))
+    return f"package bytecode current for {current} of {len(srcs)} modules" + \
+        (f" (PYTHONDONTWRITEBYTECODE={os.environ['PYTHONDONTWRITEBYTECODE']})"
+         if os.environ.get("PYTHONDONTWRITEBYTECODE") else "")
 
 
 def fresh(code: str, cache: str, timeout=900) -> tuple:
@@ -217,7 +234,7 @@ def main(argv=None):
                           "import linecontact_sym as lcs") + "print('R', f'{n} of 18 closed and verified; Arb " \
                 "certified {cert} of {pts} points')\n"
             secs, res = fresh(seeds, cache + "-seeds")
-            rows.append(("18 seed derivations, cold", f"{secs:.1f} s", f"{res}; target <= 4 s"))
+            rows.append(("18 seed derivations, cold", f"{secs:.1f} s", f"{res}; target <= 4 s; {bytecode()}"))
             for verify in (True, False):
                 code = timed("md = lcs.LineContact(lcs.x**2 / (2 * lcs.R), verify=%s).maugis_dugdale()\n"
                              "for q in ('zone_force', 'cohesive_gap', 'pressure'):\n"
@@ -247,6 +264,7 @@ def main(argv=None):
         in_process_rows(rows)
     m1 = machine()
     print(f"machine: {m0['nproc']} cores, {m0['cpu']}, Python {m0['python']}, mpmath backend {m0['mpmath backend']}")
+    print(m0["bytecode"], "(before the run)")
     print(f"load average (1/5/15 min) before {'/'.join(f'{v:.1f}' for v in m0['load'])}, "
           f"after {'/'.join(f'{v:.1f}' for v in m1['load'])}; benchmark took {time.perf_counter() - t_start:.0f} s")
     w = max(len(r[0]) for r in rows)
