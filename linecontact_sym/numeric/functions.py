@@ -3,6 +3,8 @@ compiled derivation (:mod:`.exports`) behind the contact's domain check, with
 the scalar fast path of :mod:`.fastpath` for calls on plain Python numbers."""
 from __future__ import annotations
 
+from decimal import Decimal
+
 import numpy as np
 
 from ..core.errors import DomainError, LineContactError, singular_point
@@ -62,9 +64,13 @@ def make_callable(derivation, backend: str = "numpy", dps: int = 30, params: dic
 
 def fold_x(v):
     """|v| of a number, an array, a list of numbers or a pint quantity (other
-    values as given: the checks that follow name them)."""
+    values as given: the checks that follow name them).  A Decimal keeps
+    every digit (``copy_abs``: ``abs`` rounds to the decimal context's
+    precision, 28 digits by default)."""
     if isinstance(v, bool):
         return v
+    if isinstance(v, Decimal):
+        return v.copy_abs()
     if isinstance(v, (list, tuple)):
         try:
             return np.abs(np.asarray(v, dtype=float))

@@ -22,7 +22,7 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 import linecontact_sym as lcs
 
@@ -96,6 +96,9 @@ ENTRY = {
 @pytest.mark.parametrize("entry", sorted(ENTRY))
 @settings(max_examples=6)
 @given(num=st.integers(1, 18), den_=st.integers(0, 6), form=st.sampled_from(FORMS))
+# found by hypothesis in CI: |x| of a 31-digit Decimal was rounded to the decimal context's 28 digits
+# (fold_x's abs) before the mpmath export saw it, 27.9 correct digits at dps=40
+@example(num=16, den_=0, form="Decimal31")
 def test_every_number_type_on_every_entry_point(hertz, entry, num, den_, form):
     r = sp.Rational(num, 19) + sp.Rational(den_, 1000)
     label, v, V = next(f for f in _forms(r) if f[0] == form)
