@@ -36,7 +36,7 @@ from ..core.errors import LineContactError
 from ..core.precision import workdps
 from ..core.quadrature import EndpointGuard, quad_dps
 from .reference import (ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral,
-                        substitute_end)
+                        substitute_end, value_at)
 
 __all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "tanh_sinh", "kernel_points", "kernel_points_at",
            "finite_at"]
@@ -59,22 +59,17 @@ def kernel_points(lo, hi, inner=()):
     return out
 
 
-def _at(e, values):
-    """The number of an end or point that holds parameters, at ``values``."""
-    return to_basic(sp.sympify(e, strict=True).xreplace(values))
-
-
 def kernel_points_at(lo, hi, inner, values):
     """:func:`kernel_points` of ends and points that hold parameters: kept
     as expressions (the integrator makes its end forms once for them),
     ordered and taken strictly inside (lo, hi) by their numbers at
     ``values``; a point at the number of another is one point."""
     lo, hi = sp.sympify(lo, strict=True), sp.sympify(hi, strict=True)
-    lo_v, hi_v = _at(lo, values), _at(hi, values)
+    lo_v, hi_v = value_at(lo, values), value_at(hi, values)
     pts = [(lo_v, lo), (hi_v, hi)]
     for b in inner:
         b = sp.sympify(b, strict=True)
-        bv = _at(b, values)
+        bv = value_at(b, values)
         if _is_true(lo_v < bv) and _is_true(bv < hi_v) and not any(_is_true(sp.Eq(bv, v)) for v, _ in pts):
             pts.append((bv, b))
     pts.sort(key=lambda t: to_mpf(t[0]))
@@ -133,7 +128,7 @@ def _log_terms(p, s, lo, hi, c, m, smooth, values, dps):
     parameters and x (``_X``, at ``values[_X]``) as symbols, the last part of
     a non-constant piece in s = hi - d u^2 (the contact edge's sqrt-type
     branch point becomes holomorphic)."""
-    lo_v, hi_v = (lo, hi) if values is None else (to_basic(lo.xreplace(values)), to_basic(hi.xreplace(values)))
+    lo_v, hi_v = value_at(lo, values), value_at(hi, values)
     inside = _is_true(lo_v < c) and _is_true(c < hi_v)
     pts = kernel_points(lo_v, hi_v, [c] if inside else [])
     c_sym = c if values is None or c == 0 else _X
@@ -328,8 +323,9 @@ def flamant_displacement(pieces, x, E, dps: int, breaks=(), values=None):
     vals = values or {}
 
     def fallback(xv):
-        est = flamant_tanh_sinh([(sp.sympify(p, strict=True).xreplace(vals), s, _at(lo, vals), _at(hi, vals))
-                                 for p, s, lo, hi in pieces], xv, E, dps, [_at(b, vals) for b in breaks],
+        est = flamant_tanh_sinh([(sp.sympify(p, strict=True).xreplace(vals), s, value_at(lo, vals),
+                                  value_at(hi, vals)) for p, s, lo, hi in pieces], xv, E, dps,
+                                [value_at(b, vals) for b in breaks],
                                 real_part=True)
         if est is None:
             raise LineContactError("neither Arb nor tanh-sinh could evaluate the Flamant integral")

@@ -64,7 +64,7 @@ from ..core.conversion import number, to_basic, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps
 
-__all__ = ["RefValue", "integrate", "estimate", "combine", "lincomb", "quotient_bound",
+__all__ = ["RefValue", "integrate", "value_at", "estimate", "combine", "lincomb", "quotient_bound",
            "log_end_integral", "bound_acb", "substitute_end", "compile_acb", "to_acb", "mpf_of_arb", "ANALYTIC", "REAL", "ArbUnsupported",
            "EVAL_LIMIT", "ARB", "MPMATH"]
 
@@ -251,18 +251,14 @@ def _cut(fn, *segments, real=None):
     return g
 
 
-def _method(name):
-    return lambda z, an: getattr(z, name)()
-
-
 #: functions holomorphic wherever they are finite (poles give non-finite balls by themselves)
 _MEROMORPHIC = {sp.exp: "exp", sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: "sec",
                 sp.csc: "csc", sp.sinh: "sinh", sp.cosh: "cosh", sp.tanh: "tanh", sp.coth: "coth",
                 sp.sech: "sech", sp.csch: "csch", sp.gamma: "gamma", sp.erf: "erf", sp.erfc: "erfc",
                 sp.sinc: "sinc"}
 
+#: the other functions of one argument: ``op(ball, mode)`` (a meromorphic one is its ball's method)
 _UNARY = {
-    **{f: _method(name) for f, name in _MEROMORPHIC.items()},
     sp.log: lambda z, an: _nan() if an == REAL and _beyond(z, None, 0) else z.log(analytic=an == ANALYTIC),
     sp.Abs: lambda z, an: z.real_abs(analytic=an == ANALYTIC),
     sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None), real="asin"),
@@ -533,10 +529,10 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
                     return _nan()
                 return getattr(w, meth)(fo(z, an))
             return bes
-        if type(e) in _UNARY and len(e.args) == 1:
+        if (type(e) in _MEROMORPHIC or type(e) in _UNARY) and len(e.args) == 1:
             fx = build(e.args[0])
             name = _MEROMORPHIC.get(type(e))
-            if name is not None:       # _method(name) called in the same frame
+            if name is not None:       # the ball's method, called in the same frame
                 m = operator.methodcaller(name)
                 return lambda z, an: m(fx(z, an))
             op = _UNARY[type(e)]
@@ -797,7 +793,7 @@ def integrate(integrand, var, points, dps: int = 45, fallback=None, eval_limit: 
         if fallback is None:
             def fallback():
                 return _mpmath_integral([e.xreplace(values) for e in _per_piece(integrand, points)], var,
-                                        [_num(p, values) for p in points], dps)
+                                        [value_at(p, values) for p in points], dps)
     if removable and crude is None and isinstance(integrand, sp.Basic) and points[0] == 0:
         crude = _removable_quotient(integrand, var)
         if crude is not None and len(points) == 2:
@@ -1043,9 +1039,10 @@ def _per_piece(integrand, points):
     return [integrand] * (len(points) - 1)
 
 
-def _num(e, values):
-    """The number a point (or end) that holds parameters has at ``values``."""
-    return e if values is None else _exact(to_basic(sp.sympify(e, strict=True).xreplace(values)))
+def value_at(e, values):
+    """The number a point (or end) that holds parameters has at ``values``
+    (SymPy, exact where the values are); ``e`` itself where ``values`` is None."""
+    return e if values is None else to_basic(sp.sympify(e, strict=True).xreplace(values))
 
 
 def _arb_integral(integrand, var, points, dps, eval_limit, crude=None, values=None):
@@ -1066,7 +1063,7 @@ def _arb_integral(integrand, var, points, dps, eval_limit, crude=None, values=No
         if e not in fs:
             fs[e] = compiled(e)
     with flint.ctx.workprec(prec):
-        exact = [_exact(p) if values is None else _num(p, values) for p in points]
+        exact = [_exact(p) if values is None else value_at(p, values) for p in points]
         ends = exact if values is None else [sp.sympify(p, strict=True) for p in points]
         total = flint.acb(0)
         tol = flint.arb(2) ** -(goal + 8)
@@ -1177,14 +1174,14 @@ def _substituted(integrand, var, lo, hi, piece, values=None):
     total = flint.acb(0)
     for e, other in ((lo, m), (m, hi)):
         try:
-            total += piece(f, _num(e, values), _num(other, values))
+            total += piece(f, value_at(e, values), value_at(other, values))
             continue
         except ArbUnsupported:
             pass
         total_half = None
         # only an end where the integrand has no finite ball is substituted
         ends = [(end, far) for end, far in ((e, other), (other, e))
-                if not _bounded_next_to(f, _num(end, values), _num(far, values))] or \
+                if not _bounded_next_to(f, value_at(end, values), value_at(far, values))] or \
             [(e, other), (other, e)]      # bounded at both ends (the work limit): either may still be substituted
 
         def root_end(end, far):
@@ -1193,7 +1190,7 @@ def _substituted(integrand, var, lo, hi, piece, values=None):
                 g, w = substitute_end(f_end, var, end, far - end, q)
                 return piece(compile_acb(g, w), sp.S.Zero, sp.S.One)
             g, w = _root_end_form(integrand, var, end)
-            return piece(bound_acb(g, w, {**values, _DE: _num(far, values) - _num(end, values)}), sp.S.Zero,
+            return piece(bound_acb(g, w, {**values, _DE: value_at(far, values) - value_at(end, values)}), sp.S.Zero,
                          sp.S.One)
 
         def log_end(end, far):
@@ -1502,7 +1499,7 @@ def _log_end(integrand, var, end, far, piece, values=None):
         form = _log_end_form(integrand, var, end, far - end, None)
         at = None
     else:
-        at = {**values, _DE: _num(far, values) - _num(end, values)}
+        at = {**values, _DE: value_at(far, values) - value_at(end, values)}
 
         def make():
             if integrand.has(sp.Piecewise):
