@@ -187,6 +187,10 @@ class GapSwap(Rule):
                      f"per piece ({kind})",))
 
 
+#: what a value that is not finite has in it
+_INFINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
+
+
 def _edge_limits(branches, reg):
     """Branches for x at an interior breakpoint e where the formula is 0/0 or
     inf - inf but the pressure is finite (a tangent-continuous join: the log
@@ -205,7 +209,7 @@ def _edge_limits(branches, reg):
                 continue
             edge = reg.edges[I + 1]
             at = e.xreplace({S.x: edge})
-            if not at.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            if not at.has(*_INFINITE):
                 continue
             pieces = reg.profile.pieces
             jump = sp.cancel((pieces[I + 1].derivative - pieces[I].derivative).xreplace({S.x: edge}))
@@ -219,12 +223,11 @@ def _edge_limits(branches, reg):
                     lim = sp.limit(e, S.x, edge, "-")
                 except (NotImplementedError, ValueError, TypeError):
                     continue
-            if not lim.has(sp.oo, -sp.oo, sp.zoo, sp.nan, sp.Limit):
+            if not lim.has(*_INFINITE, sp.Limit):
                 out.append((lim, sp.And(sp.Gt(S.a, reg.edges[J]), reg.a_condition(J), sp.Eq(S.x, edge))))
     return out
 
 
-_INFINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 #: the functions of x a branch may hold for :func:`_join_limit`: log and atanh (expanded at the
 #: join where singular) and functions continuous wherever their argument is finite and real
 _CONTINUOUS = (sp.log, sp.atanh, sp.asin, sp.acos, sp.atan, sp.asinh, sp.acosh)

@@ -107,10 +107,8 @@ def mixed_trigonometric(expr, var):
     and neither is refused here.  exp, log and the hyperbolic functions are
     left to SymPy (its Lambert W route)."""
     from sympy.functions.elementary.trigonometric import InverseTrigonometricFunction, TrigonometricFunction
-    pieces = [e for e, _ in expr.args] if isinstance(expr, sp.Piecewise) else [expr]
-    if expr.has(sp.Piecewise) and not isinstance(expr, sp.Piecewise):
-        folded = sp.piecewise_fold(expr)
-        pieces = [e for e, _ in folded.args] if isinstance(folded, sp.Piecewise) else [folded]
+    folded = sp.piecewise_fold(expr) if expr.has(sp.Piecewise) else expr
+    pieces = [e for e, _ in folded.args] if isinstance(folded, sp.Piecewise) else [folded]
     for piece in pieces:
         if piece.has(sp.Piecewise):
             continue
