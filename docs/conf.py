@@ -143,7 +143,10 @@ def _generate_gallery(figures):
             out += [f"## {cap.split(': ')[0].split(' (')[0]}", "", f"![{stem}](gallery/{stem}.png)", "",
                     cap, "", "```python", "import linecontact_sym as lcs", code, "```", ""]
     for png in sorted(DOCS.glob("*.png")):
-        used = [md.stem for md in sorted(DOCS.glob("*.md")) if png.name in md.read_text(encoding="utf-8")]
+        # the pages that show it (not this gallery's own page: its copy from an earlier build
+        # named every figure, so a second build said "Shown in gallery", a first did not)
+        used = [md.stem for md in sorted(DOCS.glob("*.md"))
+                if md.name != "gallery.md" and png.name in md.read_text(encoding="utf-8")]
         out += [f"## {png.stem.replace('_', ' ')}", "", f"![{png.stem}]({png.name})", ""]
         if used:
             out += ["Shown in " + ", ".join(f"[{u}]({u}.md)" for u in used) + ".", ""]
