@@ -32,6 +32,7 @@ import numbers
 import numpy as np
 import sympy as sp
 
+from . import symbols as S
 from .errors import DomainError
 
 #: name -> (low, low included, high, high included, what it is)
@@ -39,6 +40,15 @@ RANGES = {
     "nu": (-1, False, sp.Rational(1, 2), True, "Poisson's ratio"),
     "mu": (0, False, sp.oo, False, "the friction coefficient"),
 }
+
+#: the symbols declared positive whose value 0 every contact refuses at its entry
+#: (contacts.base: a symbol declared positive may be 0 only where it is x, the
+#: depth z or a cohesive law's parameter of domain 'nonnegative', JKR's gamma):
+#: the half-width, E*, the radius, the flat's half-width b, the power law's n and c,
+#: the wedge angle and the Maugis-Dugdale sigma_0 and c_D (not the friction coefficient:
+#: the sliding stress field takes mu = 0, the frictionless field).
+#: An export seeks no removable limit at 0 for them (numeric.exports).
+NEVER_ZERO = frozenset({S.a, S.E_star, S.R, S.b, S.n, S.c, S.theta, S.sigma_0, S.c_D})
 
 
 def _numeric(v):
@@ -156,4 +166,4 @@ def check_values(values: dict, zero_ok=()) -> None:
         check_stick(values.get("a"), values.get("c_s"), values.get("c_r"))
 
 
-__all__ = ["RANGES", "check_value", "check_stick", "check_points", "check_values", "check_tolerance", "check_positive"]
+__all__ = ["RANGES", "NEVER_ZERO", "check_value", "check_stick", "check_points", "check_values", "check_tolerance", "check_positive"]

@@ -40,6 +40,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.conversion import point_value, to_mpf
 from ..core.errors import DomainError, LineContactError, singular_point
+from ..core.ranges import NEVER_ZERO
 from ..core.lazy import lazy_module
 from ..core.printing import lambdify
 from ..parsing import to_sympy
@@ -181,12 +182,28 @@ def compile_plain_numpy(expr, args, patch=None):
     return lambdify_numpy(expr, args, stable=False, patch=patch)
 
 
+#: the removable limits this process has sought, (expression, symbol) -> limit or None:
+#: each new contact of a profile compiles the same exports (the exact cylinder's
+#: dP/da at a -> 0+, 1 CPU s, once per contact before)
+_LIMITS: dict = {}
+_LIMITS_KEPT = 512
+
+
 def _removable_limit(expr, sym):
     """lim_{sym -> 0+} expr if expr is undefined (nan) at sym = 0 but the limit
     is finite; else None (at once for what is not an expression: SymPy
     takes no limit of a Tuple)."""
     if not isinstance(expr, sp.Expr) or expr.has(sp.Integral) or sym not in expr.free_symbols or sp.count_ops(expr) > 300:
         return None
+    key = (expr, sym)
+    if key not in _LIMITS:
+        if len(_LIMITS) >= _LIMITS_KEPT:
+            _LIMITS.pop(next(iter(_LIMITS)))
+        _LIMITS[key] = _sought_limit(expr, sym)
+    return _LIMITS[key]
+
+
+def _sought_limit(expr, sym):
     try:
         e0 = expr.subs(sym, 0)
     except Exception:
@@ -307,9 +324,11 @@ def _conditions(derivation):
 
 def _zero_in_domain(derivation):
     """The arguments that may be 0 in the quantity's domain (where a removable
-    singularity needs its limit): not the half-width a nor E*, and not x for
-    a gap (|x| >= a > 0).  Each limit tried costs up to seconds of SymPy."""
-    never = {S.a, S.E_star} | ({S.x} if derivation.quantity == "gap" else set())
+    singularity needs its limit): not those every contact refuses at 0
+    (:data:`~linecontact_sym.core.ranges.NEVER_ZERO`: a, E*, R, ...), and not
+    x for a gap (|x| >= a > 0).  Each limit tried costs up to seconds of SymPy
+    (the exact cylinder's at R -> 0+ fails after 1-3 CPU s)."""
+    never = NEVER_ZERO | ({S.x} if derivation.quantity == "gap" else set())
     return tuple(s for s in derivation.variables_all if s not in never)
 
 
