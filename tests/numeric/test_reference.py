@@ -198,6 +198,51 @@ def test_removable_quotient_bound_holds_on_complex_balls():
         assert not crude2(flint.acb(flint.arb(0.5, 0.7)), True).is_finite()
 
 
+def test_arcs_on_complex_balls_are_enclosed_by_the_mean_value_form():
+    """asin and acos of a wide complex ball about the real segment: the
+    mean-value enclosure about the ball's midpoint holds the function at
+    the ball's corners and centre and is far tighter than Arb's own ball
+    (radius 0.012 against 0.096 at 0.574 +- 0.0088 +- 0.0038 i); a ball touching a branch cut stays
+    non-finite in the analytic mode; and a quadrature of the rounded
+    punch's logarithm in asin takes a quarter of the evaluations (2,601
+    with Arb's balls alone) to the same digits, its enclosure holding
+    mpmath's value."""
+    import flint
+    from linecontact_sym.numeric.reference import compile_acb
+    with flint.ctx.workprec(180), mpmath.workdps(50):
+        for fn, mfn in ((sp.asin, mpmath.asin), (sp.acos, mpmath.acos)):
+            f = compile_acb(fn(t), t)
+            for c, hr, hi in ((0.574, 0.0088, 0.0038), (-0.3, 0.2, 0.1), (0.8, 0.04, 0.02)):
+                z = flint.acb(flint.arb(c, hr), flint.arb(0, hi))
+                v = f(z, True)
+                assert v.is_finite() and max(v.real.rad(), v.imag.rad()) < 4 * (hr + hi)
+                for dx, dy in ((0, 0), (hr, hi), (-hr, hi), (hr, -hi), (-hr, -hi)):
+                    w = mpmath.mpc(c + dx, dy)
+                    assert mpmath.mpf(v.real.lower()) <= mpmath.re(mfn(w)) <= mpmath.mpf(v.real.upper())
+                    assert mpmath.mpf(v.imag.lower()) <= mpmath.im(mfn(w)) <= mpmath.mpf(v.imag.upper())
+            assert not f(flint.acb(flint.arb(0.97, 0.05), flint.arb(0, 0.01)), True).is_finite()
+        z = flint.acb(flint.arb(0.574, 0.0088), flint.arb(0, 0.0038))
+        assert z.asin().real.rad() > 4 * compile_acb(sp.asin(t), t)(z, True).real.rad()
+    b = sp.Rational(3, 10)
+    g = t * sp.log(sp.Abs(sp.sin(sp.asin(b) + sp.asin(t)) / sp.sin(sp.asin(t) - sp.asin(b))))
+    main = compile_acb(g, t)
+    count = [0]
+
+    def counted(z, an):
+        count[0] += 1
+        return main(z, an)
+    r = integrate(counted, None, [sp.Rational(1, 2), sp.Rational(9, 10)], 45, fallback=lambda: mpmath.nan)
+    assert r.method == ARB and r.digits >= 45
+    assert count[0] < 1000, count[0]
+    with mpmath.workdps(60):
+        bm = mpmath.mpf(3) / 10
+        ref = mpmath.quad(lambda s: s * mpmath.log(abs(mpmath.sin(mpmath.asin(bm) + mpmath.asin(s))
+                                                       / mpmath.sin(mpmath.asin(s) - mpmath.asin(bm)))),
+                          [mpmath.mpf(1) / 2, mpmath.mpf(9) / 10])
+        assert r.contains(ref, mpmath.mpf(10)**-55)
+        assert not r.contains(ref * (1 + mpmath.mpf(10)**-35))
+
+
 def test_exact_cylinder_gap_integral_certified_with_few_evaluations():
     """The gap's J = int_0^a P(s)/(s sqrt(x^2 - s^2)) ds of the exact
     cylinder (P with elliptic K and E, P(0) = 0): the enclosure holds
