@@ -281,6 +281,20 @@ def _mean_value(fn, slope, z, segments):
 _MV_RAD = flint.arb(2) ** -20
 
 
+def _acosh_slope(z):
+    """1/(sqrt(z - 1) sqrt(z + 1)) on a ball, None where an enclosure of
+    z -+ 1 touches sqrt's cut."""
+    lo, hi = z - 1, z + 1
+    return None if _touches(lo, None, 0) or _touches(hi, None, 0) else lo.rsqrt() * hi.rsqrt()
+
+
+def _asinh_slope(z):
+    """1/sqrt(1 + z^2) on a ball (|Im z| < 1: asinh's cuts i[1, oo), -i[1, oo)
+    are not met), None where the enclosure of 1 + z^2 touches sqrt's cut."""
+    q = 1 + z * z
+    return None if _touches(q, None, 0) else q.rsqrt()
+
+
 def _inverse_root_slope(z):
     """1/sqrt(1 - z^2) on a ball (asin's slope, acos's up to its sign), None
     where the enclosure of 1 - z^2 touches sqrt's cut (-oo, 0]."""
@@ -301,7 +315,7 @@ _UNARY = {
     sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None), real="asin", slope=_inverse_root_slope),
     sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None), real="acos", slope=_inverse_root_slope),
     sp.atanh: _cut(lambda z: z.atanh(), (None, -1), (1, None), real="atanh"),
-    sp.acosh: _cut(lambda z: z.acosh(), (None, 1), real="acosh"),
+    sp.acosh: _cut(lambda z: z.acosh(), (None, 1), real="acosh", slope=_acosh_slope),
     sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0), real="lgamma"),
     sp.elliptic_k: _cut(lambda m: flint.acb.elliptic_k(m), (1, None)),
     sp.elliptic_e: _cut(lambda m: flint.acb.elliptic_e(m), (1, None)),     # complete E(m) (one argument)
@@ -312,7 +326,8 @@ _UNARY = {
 # atan and asinh have their branch points at +-i, off the real line: a ball
 # near the real segment never reaches them unless it is huge
 _UNARY[sp.atan] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else z.atan()
-_UNARY[sp.asinh] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else z.asinh()
+_UNARY[sp.asinh] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else \
+    _mean_value(lambda w: w.asinh(), _asinh_slope, z, ()) if z.imag.abs_upper() < 1 else z.asinh()
 
 
 def _several(method, cuts):
