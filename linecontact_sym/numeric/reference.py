@@ -239,16 +239,67 @@ def _guarded(z, an, segments) -> bool:
     return bool(an) and any(_touches(z, lo, hi) for lo, hi in segments)
 
 
-def _cut(fn, *segments, real=None):
+def _cut(fn, *segments, real=None, slope=None):
     """``fn(z)`` guarded by its branch cuts (real segments); ``real``: the
-    name of Arb's real function, used in mode :data:`REAL` on a real ball."""
+    name of Arb's real function, used in mode :data:`REAL` on a real ball;
+    ``slope``: fn' on a ball (:func:`_mean_value`)."""
     def g(z, an):
         if _guarded(z, an, segments):
             return _nan()
         if real is not None and an == REAL and z.imag.is_zero():
             return flint.acb(getattr(z.real, real)())
-        return fn(z)
+        return fn(z) if slope is None else _mean_value(fn, slope, z, segments)
     return g
+
+
+def _mean_value(fn, slope, z, segments):
+    """``fn(z)`` or, where it is tighter, the mean-value enclosure
+    fn(m) + B(0, max|fn'| |z - m|) about the midpoint m of a wide ball ``z``
+    that touches none of fn's branch cuts (fn holomorphic on the rectangle,
+    which is convex: the segment from m to any of its points stays in it),
+    max|fn'| bounded by ``slope(z)`` (None: no finite bound).  Both are
+    rigorous enclosures.  Arb's asin of a complex ball about the real
+    segment is far wider: of 0.574 +- 0.0088 +- 0.0038 i, radii 0.096 and
+    0.071 against 0.012 here; sin(asin(b/a) - asin(s/a)) in the rounded
+    punch's pressure then held 0, and acb.integral bisected its pieces down
+    to 1/64 of their width (the Flamant checks' 3,600 evaluations per
+    logarithmic end point, 1,500 with this)."""
+    v = fn(z)
+    rr, ri = z.real.rad(), z.imag.rad()
+    if not (rr > _MV_RAD or ri > _MV_RAD) or any(_touches(z, lo, hi) for lo, hi in segments):
+        return v
+    d = slope(z)
+    if d is None or not d.is_finite():
+        return v
+    e = flint.arb(0, (d.abs_upper() * (rr * rr + ri * ri).sqrt()).abs_upper())
+    w = fn(flint.acb(z.real.mid(), z.imag.mid())) + flint.acb(e, e)
+    return w if max(w.real.rad(), w.imag.rad()) < max(v.real.rad(), v.imag.rad()) else v
+
+
+#: radius (real or imaginary) above which :func:`_mean_value` is tried: a
+#: quadrature node's ball (2**-180 wide) keeps Arb's own value
+_MV_RAD = flint.arb(2) ** -20
+
+
+def _acosh_slope(z):
+    """1/(sqrt(z - 1) sqrt(z + 1)) on a ball, None where an enclosure of
+    z -+ 1 touches sqrt's cut."""
+    lo, hi = z - 1, z + 1
+    return None if _touches(lo, None, 0) or _touches(hi, None, 0) else lo.rsqrt() * hi.rsqrt()
+
+
+def _asinh_slope(z):
+    """1/sqrt(1 + z^2) on a ball (|Im z| < 1: asinh's cuts i[1, oo), -i[1, oo)
+    are not met), None where the enclosure of 1 + z^2 touches sqrt's cut."""
+    q = 1 + z * z
+    return None if _touches(q, None, 0) else q.rsqrt()
+
+
+def _inverse_root_slope(z):
+    """1/sqrt(1 - z^2) on a ball (asin's slope, acos's up to its sign), None
+    where the enclosure of 1 - z^2 touches sqrt's cut (-oo, 0]."""
+    q = 1 - z * z
+    return None if _touches(q, None, 0) else 1 / q.sqrt()
 
 
 #: functions holomorphic wherever they are finite (poles give non-finite balls by themselves)
@@ -261,10 +312,10 @@ _MEROMORPHIC = {sp.exp: "exp", sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.c
 _UNARY = {
     sp.log: lambda z, an: _nan() if an == REAL and _beyond(z, None, 0) else z.log(analytic=an == ANALYTIC),
     sp.Abs: lambda z, an: z.real_abs(analytic=an == ANALYTIC),
-    sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None), real="asin"),
-    sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None), real="acos"),
+    sp.asin: _cut(lambda z: z.asin(), (None, -1), (1, None), real="asin", slope=_inverse_root_slope),
+    sp.acos: _cut(lambda z: z.acos(), (None, -1), (1, None), real="acos", slope=_inverse_root_slope),
     sp.atanh: _cut(lambda z: z.atanh(), (None, -1), (1, None), real="atanh"),
-    sp.acosh: _cut(lambda z: z.acosh(), (None, 1), real="acosh"),
+    sp.acosh: _cut(lambda z: z.acosh(), (None, 1), real="acosh", slope=_acosh_slope),
     sp.loggamma: _cut(lambda z: z.lgamma(), (None, 0), real="lgamma"),
     sp.elliptic_k: _cut(lambda m: flint.acb.elliptic_k(m), (1, None)),
     sp.elliptic_e: _cut(lambda m: flint.acb.elliptic_e(m), (1, None)),     # complete E(m) (one argument)
@@ -275,7 +326,8 @@ _UNARY = {
 # atan and asinh have their branch points at +-i, off the real line: a ball
 # near the real segment never reaches them unless it is huge
 _UNARY[sp.atan] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else z.atan()
-_UNARY[sp.asinh] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else z.asinh()
+_UNARY[sp.asinh] = lambda z, an: _nan() if an == ANALYTIC and z.imag.abs_upper() >= 1 else \
+    _mean_value(lambda w: w.asinh(), _asinh_slope, z, ()) if z.imag.abs_upper() < 1 else z.asinh()
 
 
 def _several(method, cuts):

@@ -198,6 +198,64 @@ def test_removable_quotient_bound_holds_on_complex_balls():
         assert not crude2(flint.acb(flint.arb(0.5, 0.7)), True).is_finite()
 
 
+def test_arcs_on_complex_balls_are_enclosed_by_the_mean_value_form():
+    """asin, acos, acosh and asinh of a wide complex ball about the real segment: the
+    mean-value enclosure about the ball's midpoint holds the function at
+    the ball's corners and centre and is far tighter than Arb's own ball
+    (radius 0.012 against 0.096 at 0.574 +- 0.0088 +- 0.0038 i); a ball touching a branch cut stays
+    non-finite in the analytic mode; and a quadrature of the rounded
+    punch's logarithm in asin takes a quarter of the evaluations (2,601
+    with Arb's balls alone) to the same digits, its enclosure holding
+    mpmath's value."""
+    import flint
+    from linecontact_sym.numeric.reference import compile_acb
+    with flint.ctx.workprec(180), mpmath.workdps(50):
+        arcs = ((0.574, 0.0088, 0.0038), (-0.3, 0.2, 0.1), (0.8, 0.04, 0.02))
+        for fn, mfn, balls, cut in ((sp.asin, mpmath.asin, arcs, (0.97, 0.05, 0.01)),
+                                    (sp.acos, mpmath.acos, arcs, (-0.97, 0.05, 0.01)),
+                                    (sp.acosh, mpmath.acosh, ((1.5, 0.01, 0.005), (3.0, 0.5, 0.2)), (1.02, 0.05, 0.01)),
+                                    (sp.asinh, mpmath.asinh, ((0.8, 0.01, 0.005), (-0.5, 0.2, 0.3)), (0.1, 0.05, 1.2))):
+            f = compile_acb(fn(t), t)
+            for c, hr, hi in balls:
+                z = flint.acb(flint.arb(c, hr), flint.arb(0, hi))
+                v = f(z, True)
+                assert v.is_finite() and max(v.real.rad(), v.imag.rad()) < 4 * (hr + hi)
+                for dx, dy in ((0, 0), (hr, hi), (-hr, hi), (hr, -hi), (-hr, -hi)):
+                    w = mpmath.mpc(c + dx, dy)
+                    assert mpmath.mpf(v.real.lower()) <= mpmath.re(mfn(w)) <= mpmath.mpf(v.real.upper())
+                    assert mpmath.mpf(v.imag.lower()) <= mpmath.im(mfn(w)) <= mpmath.mpf(v.imag.upper())
+            c, hr, hi = cut       # a ball over a branch cut: not holomorphic there
+            assert not f(flint.acb(flint.arb(c, hr), flint.arb(0, hi)), True).is_finite()
+        z = flint.acb(flint.arb(0.574, 0.0088), flint.arb(0, 0.0038))
+        assert z.asin().real.rad() > 4 * compile_acb(sp.asin(t), t)(z, True).real.rad()
+    b = sp.Rational(3, 10)
+    g = t * sp.log(sp.Abs(sp.sin(sp.asin(b) + sp.asin(t)) / sp.sin(sp.asin(t) - sp.asin(b))))
+    main = compile_acb(g, t)
+    count = [0]
+
+    def counted(z, an):
+        count[0] += 1
+        return main(z, an)
+    r = integrate(counted, None, [sp.Rational(1, 2), sp.Rational(9, 10)], 45, fallback=lambda: mpmath.nan)
+    assert r.method == ARB and r.digits >= 45
+    assert count[0] < 1000, count[0]
+    with mpmath.workdps(60):
+        bm = mpmath.mpf(3) / 10
+        ref = mpmath.quad(lambda s: s * mpmath.log(abs(mpmath.sin(mpmath.asin(bm) + mpmath.asin(s))
+                                                       / mpmath.sin(mpmath.asin(s) - mpmath.asin(bm)))),
+                          [mpmath.mpf(1) / 2, mpmath.mpf(9) / 10])
+        assert r.contains(ref, mpmath.mpf(10)**-55)
+        assert not r.contains(ref * (1 + mpmath.mpf(10)**-35))
+    # asinh: 5,404 evaluations with Arb's balls alone
+    count[0] = 0
+    main = compile_acb(t * sp.asinh(3 * t) * sp.log(t + 1), t)
+    r = integrate(counted, None, [sp.Rational(1, 10), 2], 45, fallback=lambda: mpmath.nan)
+    assert r.method == ARB and r.digits >= 45 and count[0] < 1500, count[0]
+    with mpmath.workdps(60):
+        ref = mpmath.quad(lambda s: s * mpmath.asinh(3 * s) * mpmath.log(s + 1), [mpmath.mpf(1) / 10, 2])
+        assert r.contains(ref, mpmath.mpf(10)**-55) and not r.contains(ref * (1 + mpmath.mpf(10)**-35))
+
+
 def test_exact_cylinder_gap_integral_certified_with_few_evaluations():
     """The gap's J = int_0^a P(s)/(s sqrt(x^2 - s^2)) ds of the exact
     cylinder (P with elliptic K and E, P(0) = 0): the enclosure holds
