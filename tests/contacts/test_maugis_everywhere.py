@@ -125,12 +125,21 @@ class Independent:
 
     def state(self, A, c_guess):
         """(c_D, P) at A: findroot (secant) of gap(c) = h0 from c_guess (1 +- 1e-6): the root of the
-        independent equations, whatever the guess's own error."""
+        independent equations, whatever the guess's own error.  findroot stops when the step before
+        the last one fell below tol = 10**-(dps - 3) (relative to max(1, c)): the secant's order 1.6
+        leaves the last iterate ~1e-35 off, below the working precision; a tol below the working
+        precision (it was 10**-(2 dps - 10)) is never met, and the secant then ran its 30 steps on
+        the quadrature's rounding noise where 4-6 resolve the root."""
         A = mpmath.mpf(A)
         s = c_guess - A
-        C = mpmath.findroot(lambda c: self.gap(A, c) - self.h0, (A + s * (1 + mpmath.mpf(10)**-6),
-                                                                 A + s * (1 - mpmath.mpf(10)**-6)),
-                            solver="secant", tol=mpmath.mpf(10)**(-2 * mpmath.mp.dps + 10))
+        seen = {}            # findroot evaluates its first point twice, and the root once more to verify it
+
+        def G(c):
+            if c not in seen:
+                seen[c] = self.gap(A, c) - self.h0
+            return seen[c]
+        C = mpmath.findroot(G, (A + s * (1 + mpmath.mpf(10)**-6), A + s * (1 - mpmath.mpf(10)**-6)),
+                            solver="secant", tol=mpmath.mpf(10)**(-(mpmath.mp.dps - 3)))
         return C, self.force(A, C)
 
     def zero_width_zone(self, c_guess):
