@@ -258,11 +258,10 @@ class SeriesModel:
         poly = sp.Poly(ser, S.x) if ser.free_symbols and S.x in ser.free_symbols else None
         if poly is None or any(m[0] < 0 for m in poly.monoms()):
             raise LineContactError("the profile has no Taylor series at x = 0")
-        try:
-            exact = sp.simplify(fp - ser) == 0
-        except Exception:
-            exact = False
-        if exact:
+        # the slope is its own series only if it is a polynomial of degree <= K: decided
+        # on the polynomial, not by simplify(fp - ser), which ran for minutes on the
+        # slope of R (cosh(x/R) - 1) (trigsimp of sinh(x/R) less 20 terms)
+        if fp.is_polynomial(S.x) and sp.expand(fp - ser) == 0:
             raise LineContactError("the profile is a polynomial: the closed form is the series")
         coeffs = []
         for k in range(K + 1):
@@ -270,7 +269,8 @@ class SeriesModel:
             if ck == 0:
                 continue
             Bk = sp.sqrt(sp.pi) * sp.gamma(sp.Rational(k, 2) + 1) / (2 * sp.gamma(sp.Rational(k, 2) + sp.Rational(3, 2)))
-            coeffs.append((k, sp.simplify(ck * Bk)))
+            cb = ck * Bk
+            coeffs.append((k, cb if _monomial(cb) else sp.simplify(cb)))
         if len(coeffs) < 6:
             raise LineContactError("too few series terms")
         self.coeffs = coeffs
@@ -282,8 +282,8 @@ class SeriesModel:
         self._math = None
         self._names: dict = {}
         self._ratios = _ratio_plan(self.args, self.terms)
-        self.profile_terms = [sp.integrate(sp.Poly(ser, S.x).coeff_monomial(S.x**k) * S.x**k, (S.x, 0, S.x))
-                              for k, _ in coeffs]
+        # the profile's terms, int_0^x c_k t^k dt
+        self.profile_terms = [poly.coeff_monomial(S.x**k) * S.x**(k + 1) / (k + 1) for k, _ in coeffs]
 
     def model_name(self, N):
         if N not in self._names:
@@ -424,6 +424,12 @@ def _ratio_plan(args, terms):
     if mono is None or len(coeffs) < 3:
         return None
     return _RatioPlan(args, terms, mono, coeffs)
+
+
+def _monomial(e):
+    """Whether ``e`` is a number times powers of symbols (which simplify leaves as it is)."""
+    return all(f.is_Number or f.is_NumberSymbol or f.is_Symbol or (f.is_Pow and f.base.is_Symbol and f.exp.is_Number)
+               for f in (e.args if e.is_Mul else (e,)))
 
 
 def _model(contact):

@@ -102,6 +102,26 @@ def test_model_path_hertz_for_small_cylinder():
     assert not r2.path.startswith("model")
 
 
+def _cosh_model_terms(a):
+    from linecontact_sym.numeric.evaluate import SeriesModel
+    m = SeriesModel(lcs.LineContact(lcs.R * (sp.cosh(lcs.x / lcs.R) - 1)))
+    return [k for k, _ in m.coeffs], m.term_values(dict(a=a, R=1, E_star=1), dps=40), m.model_name(2)
+
+
+def test_series_model_of_a_hyperbolic_slope_is_built_at_once():
+    """The series model asked whether the slope sinh(x/R) of R (cosh(x/R) - 1)
+    is its own Taylor polynomial by simplify(slope - series): trigsimp ran for
+    minutes, so evaluate(rtol=1e-16) of this force never returned.  Run under a
+    CPU budget so that a return of it fails instead of hanging; the terms sum to
+    P = pi E* a I_1(a/R)/2 (mpmath's Bessel function)."""
+    from linecontact_sym.core.budget import run_with_budget
+    ks, terms, name = run_with_budget(_cosh_model_terms, mpmath.mpf("0.5"), seconds=30.0)
+    assert ks == list(range(1, 40, 2)) and name == "x**2/(2*R) + x**4/(24*R**3)"
+    with mpmath.workdps(40):
+        exact = mpmath.pi * mpmath.mpf("0.5") * mpmath.besseli(1, mpmath.mpf("0.5")) / 2
+        assert abs(mpmath.fsum(terms) - exact) <= mpmath.mpf(10)**-35 * exact
+
+
 @pytest.mark.parametrize("rtol", [1e-3, 1e-8, 1e-13, 1e-30])
 @pytest.mark.parametrize("ratio", [1e-8, 1e-3, 0.1, 0.5, 0.9])
 def test_every_path_meets_rtol_and_bound_is_honest(ratio, rtol):
