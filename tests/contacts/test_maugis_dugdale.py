@@ -305,3 +305,45 @@ def test_planted_wrong_condition_fails_certification(mds, q):
     wrong = d.expr * (1 + sp.Rational(1, 10**35))
     bad = verify(wrong, d.reference, md._sampler("any"), d.conditions, n_points=2)
     assert bad.min_digits > 30 and bad.outside == 2 and not bad.passed
+
+
+@pytest.mark.slow
+def test_a_tampered_record_of_the_conditions_is_rechecked(tmp_path, monkeypatch):
+    """The conditions are remembered on disk (another contact of the same profile and law does not
+    verify them again); a record whose closed form was changed (and its checksum recomputed) is
+    re-checked against the independent reference at a random point, dropped with a warning and
+    derived afresh."""
+    import hashlib
+    import json
+    import warnings
+    from linecontact_sym.method import store
+    d = tmp_path / "cache"
+    d.mkdir(mode=0o700)
+    monkeypatch.setenv(store.CACHE_ENV, str(d))
+    store.clear_memory()
+    try:
+        expr = lcs.parabola(verify=False).maugis_dugdale().derivation("pressure").expr
+        n = 0
+        for p in d.rglob("*.json"):
+            data = json.loads(p.read_bytes()[len(store._MAGIC) + 65:].decode())
+            for pair in data.get("dict", []):
+                if pair[0] == "derivations":
+                    for r in pair[1]["tuple"]:
+                        for f in r["dict"]:
+                            if f[0] == "expr":
+                                f[1] = {"sympy": f"Mul(Integer(-1), {f[1]['sympy']})"}
+                                n += 1
+                    payload = json.dumps(data, separators=(",", ":")).encode()
+                    p.write_bytes(store._MAGIC + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload)
+        assert n == 1
+        store.clear_memory()               # a new process: the record comes from disk
+        with pytest.warns(store.UntrustedCacheWarning, match="independent check"):
+            again = lcs.parabola(verify=False).maugis_dugdale().derivation("pressure")
+        assert again.expr == expr and not again.cached
+        store.clear_memory()               # the fresh derivation replaced the record: read without a warning
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", store.UntrustedCacheWarning)
+            third = lcs.parabola(verify=False).maugis_dugdale().derivation("pressure")
+        assert third.expr == expr and third.cached == "disk"
+    finally:
+        store.clear_memory()

@@ -142,6 +142,8 @@ class QuadGap:
     def __init__(self, f, f1, P0, dP0, breaks, E, h0):
         self.f, self.f1, self.P0, self.dP0, self.breaks = f, f1, P0, dP0, list(breaks)
         self.E, self.h0 = E, h0
+        # E* at each working precision and |h0| at 15 digits, made once (SymPy's evalf, not per call)
+        self._E_at, self._h15 = {}, None
 
     def _pieces(self, A, C):
         """theta at the breakpoints below A and at A (the last one without asin(A/C) near 1)."""
@@ -162,11 +164,16 @@ class QuadGap:
     def _extra(self, C):
         with workdps(15):
             fC = abs(self.f(mpmath.mpf(C)))
-            h = abs(mpmath.mpf(sp.N(self.h0, 15)))
+            if self._h15 is None:
+                self._h15 = abs(mpmath.mpf(sp.N(self.h0, 15)))
+            h = self._h15
             return 6 + (int(mpmath.log10(fC / h)) if fC > h else 0)
 
     def _E(self):
-        return mpmath.mpf(sp.N(self.E, mpmath.mp.dps + 5))
+        key = mpmath.mp.prec
+        if key not in self._E_at:
+            self._E_at[key] = mpmath.mpf(sp.N(self.E, mpmath.mp.dps + 5))
+        return self._E_at[key]
 
     def g(self, A, C):
         """g0(C; A)."""
