@@ -825,8 +825,8 @@ def _quad_error(d, point):
         for (q, I), cf in zip(quads, coeffs):
             vals = [point[s.name] for s in q.params]
             _, e = q(*vals, with_error=True)
-            total += abs(float(cf(*[point[n] for n in names]))) * float(e)
-    return total
+            total = total + np.abs(np.asarray(cf(*[point[n] for n in names]), float)) * np.asarray(e, float)
+    return total if np.ndim(total) else float(total)      # per point for arrays of points
 
 
 def _mpmath_fn(d):
@@ -876,11 +876,15 @@ def _arb_quadrature(d, quantity, values, rtol, t0, notes):
     refs = []
     for I in ints:
         s_, lo, hi = I.limits[0]
-        lo, hi = lo.xreplace(exact), hi.xreplace(exact)
-        f = I.function.xreplace(exact)
-        if f.free_symbols - {s_} or not (lo.is_number and hi.is_number):
+        lo_v, hi_v = lo.xreplace(exact), hi.xreplace(exact)
+        try:
+            if I.function.free_symbols - {s_} - set(exact) or not bool(lo_v < hi_v):
+                return None
+        except TypeError:          # the order of the end points not decided
             return None
-        r = integrate(f, s_, [lo, hi], dps=dps, fallback=lambda: mpmath.nan, eval_limit=ARB_QUAD_LIMIT)
+        # the integrand compiled once with the parameters as symbols (values=): the next point is cheap
+        r = integrate(I.function, s_, [lo, hi], dps=dps, fallback=lambda: mpmath.nan, eval_limit=ARB_QUAD_LIMIT,
+                      values=exact)
         if not r.certified:
             return None
         refs.append(r)

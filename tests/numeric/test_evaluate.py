@@ -171,6 +171,16 @@ def test_quantity_without_closed_form():
         assert r2.enclosure[0] - mpmath.mpf(10)**-45 <= eq12 <= r2.enclosure[1] + mpmath.mpf(10)**-45
     with pytest.raises(CertificationError):
         evaluate(c, "pressure", certified=True, **vals)
+    # at arrays of points: the float64 quadrature's error estimate per point (it was one float
+    # for all: a TypeError), the points beyond float64 each one enclosure, as one by one
+    xs = [0.2, 0.45]
+    r = evaluate(c, "pressure", rtol=1e-10, **{**vals, "x": xs})
+    assert r.path == "float64" and r.error.shape == (2,)
+    deep = evaluate(c, "pressure", rtol=1e-22, **{**vals, "x": xs})
+    assert list(deep.details["paths"]) == ["arb"] * 2 and deep.value[0] == r2.value
+    assert abs(r.value[0] - r1.value) <= 1e-15 * r1.value
+    one = evaluate(c, "pressure", rtol=1e-22, **{**vals, "x": 0.45})
+    assert deep.value[1] == one.value and abs(r.value[1] - one.value) <= 1e-10 * one.value
 
 
 def test_dps_means_rtol():
