@@ -554,6 +554,12 @@ def compile_acb(expr, var, holomorphic: bool = True, fixed: int = 0):
                     return _nan()
                 return w.hypgeom_2f1(fa(z, an), fb_(z, an), fc(z, an))
             return h2
+        if isinstance(e, sp.hyper) and len(e.ap) <= len(e.bq) and all(q.is_number for q in e.ap + e.bq):
+            # pFq with p <= q: entire in its argument (no cut), constant parameters (Arb's acb_hypgeom_pfq)
+            if any(q.is_integer and q <= 0 for q in e.bq):
+                raise ArbUnsupported(f"a lower parameter of {e} is a non-positive integer")
+            fa, fb_, fz = [build(q) for q in e.ap], [build(q) for q in e.bq], build(e.argument)
+            return lambda z, an: fz(z, an).hypgeom([f(z, an) for f in fa], [f(z, an) for f in fb_])
         if key == "hyp2f1c":
             # 2F1 at z given also its complement zc = 1 - z: at z > 1/2 the
             # argument is taken as 1 - zc (both are rigorous balls of it; zc

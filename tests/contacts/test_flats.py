@@ -250,3 +250,11 @@ def test_pressure_without_closed_force_law_is_one_quadrature():
         with workdps(90):
             by_hand = mpmath.sqrt(a**2 - x**2) / mpmath.pi * mpmath.quad(g, [0, ph0, mpmath.pi / 2])
         assert abs(got - by_hand) < mpmath.mpf(10)**-25
+        # the evaluation's error is a true bound: its enclosure (Arb, one quadrature) holds the
+        # same formula by hand at its (binary) x = 0.2, and it meets rtol
+        xb = mpmath.mpf(0.2)
+        gb = lambda ph: (a * mpmath.sin(ph) * f1(a * mpmath.sin(ph)) - xb * f1(xb)) / (a**2 * mpmath.sin(ph)**2 - xb**2)  # noqa: E731
+        with workdps(90):
+            by_hand_b = mpmath.sqrt(a**2 - xb**2) / mpmath.pi * mpmath.quad(gb, [0, mpmath.asin(xb / a), mpmath.pi / 2])
+            assert ev.certified and ev.error <= 1e-20 * abs(ev.value)
+            assert ev.enclosure[0] - mpmath.mpf(10)**-60 <= by_hand_b <= ev.enclosure[1] + mpmath.mpf(10)**-60

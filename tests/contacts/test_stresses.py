@@ -303,3 +303,28 @@ def test_stress_plot_needs_only_the_profile_parameters(hertz):
     ax = hertz.plot(R=1, n=(41, 21))
     assert ax.get_title().endswith(r"($\nu = 0.3$)")
     plt.close("all")
+
+
+def test_unchecked_search_finds_the_same_maximum():
+    """find_maximum(check=False) (the critical-friction searches) skips only
+    the gradient-root check: value, place, interior and surface are the same
+    numbers, analytic maxima below and on the surface."""
+    from linecontact_sym.contacts.stresses.extrema import find_maximum
+    below = lambda x, z: z * np.exp(-x**2 - z**2)                       # noqa: E731  max 1/sqrt(2e) at (0, 1/sqrt 2)
+    on = lambda x, z: np.exp(-(x - 0.3)**2 - z) * (1 + 0 * z)           # noqa: E731  max 1 at (0.3, 0)
+    for fn, surface in ((below, False), (on, True)):
+        full, fast = find_maximum(fn, 1.0, symmetric=True), find_maximum(fn, 1.0, symmetric=True, check=False)
+        assert (fast.value, fast.x, fast.z, fast.on_surface, fast.interior, fast.surface) == \
+            (full.value, full.x, full.z, full.on_surface, full.interior, full.surface)
+        assert full.on_surface is surface and math.isnan(fast.check) and math.isnan(fast.digits)
+    assert abs(find_maximum(below, 1.0, check=False).value - 1 / math.sqrt(2 * math.e)) < 1e-14
+
+
+def test_one_equivalent_stress_is_the_same_as_in_all():
+    fe = hertz_closed(mu=0.2)
+    X, Z = np.meshgrid(np.linspace(-1.5, 1.5, 9), [1e-3, 0.4, 1.2])
+    every = fe(X, Z)
+    for k in ("principal_shear", "von_mises", "tresca", "sigma_x", "sigma_y"):
+        assert np.array_equal(fe(X, Z, k), every[k])
+    with pytest.raises(DomainError, match="unknown stress quantity"):
+        fe(X, Z, "sigma_q")

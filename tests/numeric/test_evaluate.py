@@ -156,10 +156,31 @@ def test_quantity_without_closed_form():
     vals = dict(a=0.5, x=0.2, R=1.0, E_star=1.0)
     r1 = evaluate(c, "pressure", rtol=1e-10, **vals)
     r2 = evaluate(c, "pressure", rtol=1e-22, **vals)
-    assert r1.path == "float64" and r2.path.startswith("mpmath@")
+    # beyond float64: one Arb enclosure of the integral (no second quadrature to compare with)
+    assert r1.path == "float64" and r2.path == "arb" and r2.certified and r2.error <= 1e-22 * abs(r2.value)
     assert abs(r1.value - r2.value) <= 1e-10 * abs(r2.value)
+    # the enclosure holds the value by another formula: Eq. (12) over the Bessel force law
+    # P = pi E* a I_1(a)/2 of cosh(x) - 1, at the same (binary) x and a, 60 digits
+    with mpmath.workdps(60):
+        x, a = mpmath.mpf(0.2), mpmath.mpf(0.5)
+
+        def dP(s):
+            return mpmath.pi / 2 * (mpmath.besseli(1, s) + s * (mpmath.besseli(0, s) + mpmath.besseli(2, s)) / 2)
+        eq12 = mpmath.quad(lambda v: dP(mpmath.sqrt(x**2 + v**2)) / mpmath.sqrt(x**2 + v**2),
+                           [0, mpmath.sqrt(a**2 - x**2)]) / mpmath.pi
+        assert r2.enclosure[0] - mpmath.mpf(10)**-45 <= eq12 <= r2.enclosure[1] + mpmath.mpf(10)**-45
     with pytest.raises(CertificationError):
         evaluate(c, "pressure", certified=True, **vals)
+    # at arrays of points: the float64 quadrature's error estimate per point (it was one float
+    # for all: a TypeError), the points beyond float64 each one enclosure, as one by one
+    xs = [0.2, 0.45]
+    r = evaluate(c, "pressure", rtol=1e-10, **{**vals, "x": xs})
+    assert r.path == "float64" and r.error.shape == (2,)
+    deep = evaluate(c, "pressure", rtol=1e-22, **{**vals, "x": xs})
+    assert list(deep.details["paths"]) == ["arb"] * 2 and deep.value[0] == r2.value
+    assert abs(r.value[0] - r1.value) <= 1e-15 * r1.value
+    one = evaluate(c, "pressure", rtol=1e-22, **{**vals, "x": 0.45})
+    assert deep.value[1] == one.value and abs(r.value[1] - one.value) <= 1e-10 * one.value
 
 
 def test_dps_means_rtol():

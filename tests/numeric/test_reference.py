@@ -365,3 +365,15 @@ def test_flamant_arb_never_certifies_a_displacement_without_its_whole_u_z0(monke
     assert calls
     for r, w in zip(got, whole):
         assert r is None or abs(r - w) <= r.rad + w.rad, (r, w)
+
+
+def test_entire_hypergeometric_pfq_is_enclosed():
+    """pFq with p <= q (entire: 1F2, 0F1) in Arb; 3F2 (a cut at [1, oo)) is not encoded: mpmath."""
+    t = sp.Dummy("t")
+    e = t * sp.hyper([3], [sp.Rational(3, 2), sp.Rational(7, 2)], t**2 / 4) + sp.hyper([], [2], -t)
+    r = integrate(e, t, [0, 2], dps=30)
+    with mpmath.workdps(50):
+        ref = mpmath.quad(lambda s: s * mpmath.hyp1f2(3, 1.5, 3.5, s**2 / 4) + mpmath.hyp0f1(2, -s), [0, 2])
+        assert r.method == ARB and r.digits >= 30 and r.contains(ref, slack=mpmath.mpf(10)**-45)
+    r3 = integrate(sp.hyper([1, 1, 1], [2, 2], t / 2), t, [0, 1], dps=20)
+    assert r3.method == MPMATH and "hyper" in r3.note

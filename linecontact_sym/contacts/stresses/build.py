@@ -327,8 +327,22 @@ def _offset_density(D, b, side):
         return None
 
 
+def _normal_part(sf, vals):
+    """(normal potential, P/(2a)) at the values: neither depends on the friction
+    coefficient, so they are built once for every mu (a search in mu, as
+    :meth:`friction_limit`, builds a field per mu), kept with the fields."""
+    friction = sf.mu.free_symbols - set(sf.contact.params)
+    key = ("normal",) + tuple(sorted((k.name, float(v)) for k, v in vals.items() if k not in friction))
+    if key not in sf._fields:
+        normal = _potential(sf, vals, vals[S.a])
+        force = float(sf.contact.derivation("force").evalf(dps=15, **{k.name: v for k, v in vals.items()
+                                                                       if k in (S.a, S.E_star) + sf.contact.params}))
+        sf._fields[key] = (normal, force / (2 * float(vals[S.a])))
+    return sf._fields[key]
+
+
 def build_field(sf, vals) -> F.FieldEvaluator:
-    normal = _potential(sf, vals, vals[S.a])
+    normal, mean_pressure = _normal_part(sf, vals)
     nuv = sf.nu.xreplace(vals)
     nu = float(nuv) if nuv.is_number else float("nan")  # not given: sigma_y, von Mises, Tresca are NaN
     mu = float(sf.mu.xreplace(vals)) if sf.tangential in ("sliding", "partial_slip") else 0.0
@@ -342,9 +356,7 @@ def build_field(sf, vals) -> F.FieldEvaluator:
         tangential = F.CauchyPotential(sp.lambdify(S.x, q, "numpy"), float(vals[S.a]), bps + [-b for b in bps])
     elif sf.tangential not in (None, "sliding"):
         tangential = F.CauchyPotential(sf.tangential, float(vals[S.a]), sf.breaks)
-    force = float(sf.contact.derivation("force").evalf(dps=15, **{k.name: v for k, v in vals.items()
-                                                                   if k in (S.a, S.E_star) + sf.contact.params}))
-    return F.FieldEvaluator(normal, tangential, nu, friction=mu, mean_pressure=force / (2 * float(vals[S.a])))
+    return F.FieldEvaluator(normal, tangential, nu, friction=mu, mean_pressure=mean_pressure)
 
 
 __all__ = ["derive_components", "remembered_components", "remembered", "component_reference", "build_field", "flamant_reference", "sampler"]

@@ -54,7 +54,7 @@ class StressMaximum:
     """The largest value of an equivalent stress and where it is.
 
     value, x, z        the maximum (z = 0: on the surface), by the search
-    check, check_x, check_z   the same by the independent check
+    check, check_x, check_z   the same by the independent check (NaN: not checked)
     digits             significant digits on which value and check agree
     on_surface         True when the global maximum lies on the surface
     interior           (value, x, z) of the largest interior maximum or None
@@ -129,7 +129,7 @@ def _gradient_root(f, a, x0, z0, symmetric):
     return f(xv, zv), xv, zv
 
 
-def _surface(fs, a, x_span=1.5, n=1501):
+def _surface(fs, a, x_span=1.5, n=1501, check=True):
     """Largest value along the surface by a grid refined with bounded Brent,
     the check by a bracketed root of df/dx; the plateau flag."""
     X = np.linspace(-x_span * a, x_span * a, n)
@@ -145,6 +145,8 @@ def _surface(fs, a, x_span=1.5, n=1501):
 
     def dfdx(xv):
         return (fs(np.array([xv + h]))[0] - fs(np.array([xv - h]))[0]) / (2 * h)
+    if not check:
+        return val, xb, math.nan, math.nan, plateau
     check, cx = val, xb
     if not plateau and lo < xb < hi:
         try:
@@ -155,11 +157,15 @@ def _surface(fs, a, x_span=1.5, n=1501):
     return val, xb, check, cx, plateau
 
 
-def find_maximum(criterion_fn, a, name="criterion", symmetric=False, starts=None) -> StressMaximum:
+def find_maximum(criterion_fn, a, name="criterion", symmetric=False, starts=None, check=True) -> StressMaximum:
     """The maximum of ``criterion_fn(x, z)`` (vectorised float64, z >= 0) for a
     contact of half-width ``a``: see the module docstring.  ``symmetric``: the
     field is even in x (frictionless), so a maximum on the axis is checked by
     the axis root of d f/dz.  ``starts``: extra starting points (x, z).
+    ``check=False`` (a search that uses only where the maximum is and the
+    interior and surface values, as :func:`critical_friction` does): the
+    gradient-root check of an interior maximum is skipped (check, check_x,
+    check_z and digits are NaN then); everything else is the same.
 
     >>> import numpy as np
     >>> m = find_maximum(lambda x, z: z * np.exp(-x**2 - z**2), 1.0, "test", symmetric=True)
@@ -187,9 +193,12 @@ def find_maximum(criterion_fn, a, name="criterion", symmetric=False, starts=None
     order = np.argsort(-core[ii, jj])[:3]
     grid_starts = [(float(Xg[i + 1, j + 1]), float(Zg[i + 1, j + 1])) for i, j in zip(ii[order], jj[order])]
     interior = _interior_search(f, a, grid_starts + list(starts or ()))
-    sval, sx, scheck, scx, plateau = _surface(lambda X: criterion_fn(X, np.zeros_like(X)), a)
+    sval, sx, scheck, scx, plateau = _surface(lambda X: criterion_fn(X, np.zeros_like(X)), a, check=check)
     best = max(interior) if interior else None
     if best is not None and best[0] > sval:
+        if not check:
+            return StressMaximum(name, best[0], best[1], best[2], math.nan, math.nan, math.nan, math.nan, False,
+                                 best, (sval, sx), plateau)
         gs = min(grid_starts + list(starts or ()), key=lambda p: (p[0] - best[1])**2 + (p[1] - best[2])**2)
         cval, cx, cz = _gradient_root(f, a, gs[0], gs[1], symmetric)
         if not (abs(cx - best[1]) < 1e-3 * a and abs(cz - best[2]) < 1e-3 * a):
@@ -202,8 +211,8 @@ def find_maximum(criterion_fn, a, name="criterion", symmetric=False, starts=None
     if sval > deeper + 0.05 * abs(deeper) + 1e-300:
         return StressMaximum(name, math.inf, sx, 0.0, math.inf, scx, 0.0, 0.0, True, best, (math.inf, sx),
                              plateau, True)
-    return StressMaximum(name, sval, sx, 0.0, scheck, scx, 0.0, _agree(sval, scheck), True, best, (sval, sx),
-                         plateau)
+    return StressMaximum(name, sval, sx, 0.0, scheck, scx, 0.0, _agree(sval, scheck) if check else math.nan,
+                         True, best, (sval, sx), plateau)
 
 
 def critical_friction(criterion_at, a, mu_max=1.0, step=0.05, xtol=1e-9):
@@ -215,8 +224,8 @@ def critical_friction(criterion_at, a, mu_max=1.0, step=0.05, xtol=1e-9):
     rises to the surface)."""
     a = float(a)
 
-    def state(mu, starts=None):
-        return find_maximum(criterion_at(mu), a, starts=starts)
+    def state(mu, starts=None):       # where the maximum is: its gradient-root check is not needed
+        return find_maximum(criterion_at(mu), a, starts=starts, check=False)
 
     mus = np.arange(step, mu_max + step / 2, step)
     prev_mu, prev = 0.0, state(0.0)
@@ -234,7 +243,7 @@ def critical_friction(criterion_at, a, mu_max=1.0, step=0.05, xtol=1e-9):
     def deficit(mu, start):
         """surface maximum - interior maximum (tracked from ``start``), or None
         when the interior maximum has gone (merged into the surface)."""
-        m = find_maximum(criterion_at(mu), a, starts=[start])
+        m = find_maximum(criterion_at(mu), a, starts=[start], check=False)
         if m.interior is None:
             return None, start
         return m.surface[0] - m.interior[0], (m.interior[1], m.interior[2])
@@ -270,7 +279,7 @@ def critical_friction(criterion_at, a, mu_max=1.0, step=0.05, xtol=1e-9):
         mus = [blo - k * (bhi - blo + 1e-3) for k in (0, 1, 2)]
         zs2 = []
         for m_ in mus:
-            mm = find_maximum(criterion_at(m_), a, starts=[start])
+            mm = find_maximum(criterion_at(m_), a, starts=[start], check=False)
             zs2.append(mm.interior[2]**2 if mm.interior else np.nan)
         coef = np.polyfit(mus, zs2, 1)
         muc = float(-coef[1] / coef[0])

@@ -319,8 +319,10 @@ class FieldEvaluator:
 
     def components(self, x, z):
         """sigma_x, sigma_z, tau_xz, sigma_y at the points (x, z), z >= 0."""
-        x, z = np.broadcast_arrays(np.asarray(x, float), np.asarray(z, float))
-        if np.any(z < 0):
+        x, z = np.asarray(x, float), np.asarray(z, float)
+        if x.shape != z.shape:
+            x, z = np.broadcast_arrays(x, z)
+        if (z < 0).any():
             raise DomainError("the depth z must be >= 0 (z > 0 into the body)")
         G, dG = self.normal(x, z)
         H, dH = self.mu * G, self.mu * dG
@@ -329,19 +331,30 @@ class FieldEvaluator:
             H, dH = H + Ht, dH + dHt
         zz = np.maximum(z, SURFACE_DEPTH * self.normal.a)
         sx, sz, txz = kolosov_stresses(G, dG, H, dH, zz, np.real, np.imag, np.pi)
-        sx, sz, txz = (np.broadcast_to(v, x.shape).astype(float) for v in (sx, sz, txz))
+        # float arrays of the points' shape (a constant term broadcast); results already so are kept
+        sx, sz, txz = (v if type(v) is np.ndarray and v.shape == x.shape and v.dtype == np.float64
+                       else np.broadcast_to(v, x.shape).astype(float) for v in (sx, sz, txz))
         return {"sigma_x": sx, "sigma_z": sz, "tau_xz": txz, "sigma_y": self.nu * (sx + sz)}
 
+    #: the equivalent stresses from the components (one place for __call__)
+    _EQUIVALENTS = {"principal_shear": lambda c: principal_shear(c["sigma_x"], c["sigma_z"], c["tau_xz"]),
+                    "von_mises": lambda c: von_mises(c["sigma_x"], c["sigma_y"], c["sigma_z"], c["tau_xz"]),
+                    "tresca": lambda c: tresca(c["sigma_x"], c["sigma_y"], c["sigma_z"], c["tau_xz"])}
+
     def __call__(self, x, z, quantity="all"):
+        if quantity != "all" and quantity not in self._EQUIVALENTS and quantity not in self._COMPONENTS:
+            raise DomainError(f"unknown stress quantity {quantity!r}; one of "
+                              f"{', '.join(self._COMPONENTS + tuple(self._EQUIVALENTS))}")
         c = self.components(x, z)
-        c["principal_shear"] = principal_shear(c["sigma_x"], c["sigma_z"], c["tau_xz"])
-        c["von_mises"] = von_mises(c["sigma_x"], c["sigma_y"], c["sigma_z"], c["tau_xz"])
-        c["tresca"] = tresca(c["sigma_x"], c["sigma_y"], c["sigma_z"], c["tau_xz"])
         if quantity == "all":
+            for k, fn in self._EQUIVALENTS.items():
+                c[k] = fn(c)
             return c
-        if quantity not in c:
-            raise DomainError(f"unknown stress quantity {quantity!r}; one of {', '.join(c)}")
+        if quantity in self._EQUIVALENTS:        # only the one asked for (a search calls this per point)
+            return self._EQUIVALENTS[quantity](c)
         return c[quantity]
+
+    _COMPONENTS = ("sigma_x", "sigma_z", "tau_xz", "sigma_y")
 
 
 __all__ = ["PunchPotential", "CauchyPotential", "ClosedPotential", "Scaled", "FieldEvaluator", "principal_shear",
