@@ -124,6 +124,34 @@ def test_circular_corner_punch_search_ends(circular_corner):
         assert abs(P(a) - mpmath.mpf("0.1")) <= mpmath.mpf(10)**-20
 
 
+def test_unresolved_search_notes_are_true():
+    """A note of the stationary-point search names a possible touching zero
+    only where dP/da comes near 0.  The circular-corner punch's dP0/da grows
+    like 1/sqrt(3.5 - a) at the end of its domain (about 1e10 within 1e-10 of
+    it): the sampled bound cannot exclude that end at any width, and the note
+    once called it "within the search resolution of 0" there."""
+    import re
+    from linecontact_sym.contacts.normal.equilibria import crossings
+
+    def steep(A):      # one sign, rising without bound toward the end a = 2
+        return 1 / mpmath.sqrt(2 - A) if A < 2 else mpmath.mpf(10)**30
+
+    def touching(A):   # a double zero at a = 3/2
+        return (A - mpmath.mpf(3) / 2)**2
+    with workdps(20):
+        for g, zero in ((steep, None), (touching, mpmath.mpf(3) / 2)):
+            notes = []
+            assert crossings(g, mpmath.mpf(1), mpmath.mpf(2), notes=notes) == []
+            near = [mpmath.mpf(v) for n in notes
+                    for v in re.findall(r"within the search resolution of 0 near a = ([0-9.e+-]+)", n)]
+            for A in near:   # true where given: dP/da there is small next to its size on [1, 2]
+                assert abs(g(A)) < 1e-6 * abs(g(mpmath.mpf(1))), notes
+            if zero is None:
+                assert not near and any("next to the end a = 2" in n and "away from 0" in n for n in notes), notes
+            else:
+                assert near and all(abs(A - zero) < 1e-9 for A in near), notes
+
+
 # ------------------------------------------------------------------ budgets
 def test_stick_half_width_budget_is_a_deadline_and_remembered():
     t = lcs.parabola(R=2).tangential()
