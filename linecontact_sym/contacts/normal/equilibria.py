@@ -21,7 +21,10 @@ The admissible range (:func:`admissible_range`): a* is the first a where
 the non-adhesive slope dP0/da turns negative (the edge pressure is
 p ~ dP0/da sqrt(a - |x|)/pi, tensile beyond) or the end of the real domain
 of the law (the exact cylinder at a = R), whichever comes first; without
-either, the search runs up to 4**40 times the law's length scale.
+either, the search runs up to 4**40 times the law's length scale.  Where
+dP0/da >= 0 is proven from the profile (P0 convex, or
+:func:`~.force_law.rising_profile`: h' = f' + t f'' >= 0 on every piece, no
+falling slope jump) there is no a* to search for.
 
 **None missed** (:func:`landscape`).  Every sign change of dP/da on
 [4**-20 s, a*] (s the length scale, :data:`SPAN`) is found by subdivision in ln a, split
@@ -414,8 +417,11 @@ def admissible_range(law):
         if dP0(lo) < 0:
             raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(lo, 6)}: no admissible "
                                            f"half-width (tensile edge pressure)")
-        for (l, r), b in zip(segs, kinks + [None]) if not base.convex else ():
-            # (a convex P0 has dP0/da nondecreasing: >= 0 at lo, >= 0 everywhere)
+        if base.rising and not base.convex:
+            notes.append("dP0/da >= 0 for every a, proven from the profile (h' = f' + t f'' >= 0 on each piece, "
+                         "no falling slope jump: force_law.rising_profile): the admissible range is not searched")
+        for (l, r), b in zip(segs, kinks + [None]) if not (base.convex or base.rising) else ():
+            # (a convex P0 has dP0/da nondecreasing: >= 0 at lo, >= 0 everywhere; a rising one, >= 0 proven)
             for cl, cr in (_falling(base, l, r, balls, notes) if not _on_flat(base, r) else ()):
                 first_neg = root_in_log(base.dP, cl, cr)
                 break
