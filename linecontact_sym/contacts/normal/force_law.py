@@ -256,8 +256,8 @@ class ForceLaw:
         if "_convex" not in cache:
             cache["_convex"] = convex_profile(contact.profile)
         quad.convex = cache["_convex"]
-        if "_rising" not in cache:
-            cache["_rising"] = rising_profile(contact.profile)
+        if "_rising" not in cache:   # (a convex P0 is not searched either: no proof needed)
+            cache["_rising"] = not cache["_convex"] and rising_profile(contact.profile)
         quad.rising = cache["_rising"]
         quad.flat = flat_end(contact.profile, values)
         fd = contact.derivation("force")
@@ -390,7 +390,8 @@ def rising_profile(profile) -> bool:
 
         dP0/da = E* int_0^{pi/2} sin(phi) h'(a sin phi) dphi + E* sum_b J_b b^2 / (a sqrt(a^2 - b^2)),
 
-    the sum over the breakpoints b < a where f' jumps by J_b.  It is >= 0
+    the sum over the breakpoints b < a where f' jumps by J_b (f continuous
+    there: a step of f adds a falling term, and is not taken).  It is >= 0
     where h' = f' + t f'' >= 0 on every piece and every J_b >= 0: then the
     first a where dP0/da turns negative (the admissible range's end a*) does
     not exist, and no search for it is needed (the circular-corner punch:
@@ -417,7 +418,10 @@ def rising_profile(profile) -> bool:
             h1 = (d1 + S.x * sp.diff(d1, S.x)).xreplace({S.x: p.lo + u})
             if not _nonnegative_where_real(h1):
                 return False
-        for left, right, p in zip(slopes, slopes[1:], pieces[1:]):
+        for q, p, left, right in zip(pieces, pieces[1:], slopes, slopes[1:]):
+            # a step of f itself adds -(its size) b/sqrt(a^2 - b^2) to P0 (falling): continuity is asked
+            if sp.simplify(p.expr.xreplace({S.x: p.lo}) - q.expr.xreplace({S.x: p.lo})) != 0:
+                return False
             if not _nonnegative_where_real(sp.simplify(right.xreplace({S.x: p.lo}) - left.xreplace({S.x: p.lo}))):
                 return False
         return True
