@@ -18,6 +18,7 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
+from store_records import rewrite_derivations
 from linecontact_sym.core.errors import DomainError, LineContactError
 from linecontact_sym.method import store
 
@@ -433,24 +434,8 @@ def test_item2_a_tampered_half_width_record_is_rechecked(cache):
     """Records made outside derive() (the half-width a(P)) are re-checked too:
     a(P(a)) = a at a random admissible point."""
     lcs.parabola(verify=False).derivation("half_width")
-    assert _rewrite_derivations(cache, lambda old: f"Mul(Integer(2), {old})") == 1
+    assert rewrite_derivations(cache, lambda old: f"Mul(Integer(2), {old})") == 1
     store.clear_memory()
     with pytest.warns(store.UntrustedCacheWarning, match="independent check"):
         e = lcs.parabola(verify=False).derivation("half_width").expr
     assert sp.simplify(e - 2 * sp.sqrt(lcs.P * lcs.R / (sp.pi * lcs.E_star))) == 0
-
-
-def _rewrite_derivations(d, fn):
-    n = 0
-    for p in d.rglob("*.json"):
-        data = json.loads(p.read_bytes()[len(store._MAGIC) + 65:].decode())
-        for pair in data.get("dict", []):
-            if pair[0] == "derivations":
-                for r in pair[1]["tuple"]:
-                    for f in r["dict"]:
-                        if f[0] == "expr":
-                            f[1] = {"sympy": fn(f[1]["sympy"])}
-                            n += 1
-                payload = json.dumps(data, separators=(",", ":")).encode()
-                p.write_bytes(store._MAGIC + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload)
-    return n

@@ -70,15 +70,42 @@ def force_integral(profile) -> sp.Expr:
     return sp.Add(*parts)
 
 
+_u = sp.Dummy("u", positive=True)
+
+
+def _over_unit_interval(I: sp.Integral) -> sp.Integral:
+    """int_lo^hi g(t) dt as int_0^1 g(lo + (hi - lo) u) (hi - lo) du when a limit
+    depends on a (radicands factored: sqrt(a^2 - a^2 u^2) = a sqrt(1 - u^2))."""
+    if len(I.limits) != 1 or len(I.limits[0]) != 3:
+        return I
+    v, lo, hi = I.limits[0]
+    if S.a not in lo.free_symbols | hi.free_symbols:
+        return I
+    g = I.function.subs(v, lo + (hi - lo) * _u) * (hi - lo)
+    g = g.replace(lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer,
+                  lambda e: sp.Pow(sp.factor_terms(e.base), e.exp))
+    return sp.Integral(g, (_u, 0, 1))
+
+
+def force_slope(P: sp.Expr) -> sp.Expr:
+    """dP/da.  An unevaluated force integral (Eq. 10, int_0^a ... /sqrt(a^2 - t^2)
+    dt) is first written over u in [0, 1], t = a u, so that d/da acts on its
+    integrand: Leibniz's rule on the limit a, where the integrand is singular,
+    gave zoo times a boundary term plus a divergent integral."""
+    if P.has(sp.Integral):
+        P = P.replace(lambda e: isinstance(e, sp.Integral), _over_unit_interval)
+    return sp.diff(P, S.a)
+
+
 def pressure_integral(P: sp.Expr) -> sp.Expr:
     """The unevaluated Eq. (12) for a force law P(a)."""
-    dP = sp.diff(P, S.a).subs(S.a, s)
+    dP = force_slope(P).subs(S.a, s)
     return sp.Integral(dP / (sp.pi * sp.sqrt(s**2 - S.x**2)), (s, S.x, S.a))
 
 
 def gap_integral(profile_expr: sp.Expr, P: sp.Expr) -> sp.Expr:
     """The unevaluated outside gap (Eqs. 3/5) for a force law P(a), |x| > a."""
-    dP = sp.diff(P, S.a).subs(S.a, s)
+    dP = force_slope(P).subs(S.a, s)
     return profile_expr - 2 / (sp.pi * S.E_star) * sp.Integral(sp.acosh(S.x / s) * dP, (s, 0, S.a))
 
 

@@ -142,6 +142,12 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
         expr = _TO_CARLSON.apply(expr)
     quads = {}
     if expr.has(sp.Integral):
+        if any(I.function.has(sp.Integral) for I in expr.atoms(sp.Integral)):
+            # replace works from the inside out: the outer quadrature compiled the inner
+            # one as an undefined function (a NameError at the first call)
+            raise LineContactError("no float64 export of a nested integral (an integral inside an "
+                                   "integrand); the mpmath export or the derivation's reference evaluates it")
+
         def to_quad(I):
             q = VectorQuad(I, compile_plain_numpy, stable=stable, conditions=conditions)
             name = f"_quad{len(quads)}"

@@ -385,14 +385,26 @@ def _apply_masked(rule, expr):
     on the integration variable across the integral sign)."""
     if not expr.has(sp.Integral):
         return rule.apply(expr)
-    ints = {}
-
-    def mask(I):
+    ints, masks = {}, {}
+    for I in _outermost_integrals(expr):
+        # the outermost ones only: an inner integral is masked inside its integrand (masked
+        # from the inside out, a nested one was left behind as its mask, undefined in an export)
         d = sp.Dummy("Int")
         ints[d] = sp.Integral(_apply_masked(rule, I.function), *I.limits)
-        return d
-    masked = expr.replace(lambda e: isinstance(e, sp.Integral), mask)
-    return rule.apply(masked).xreplace(ints)
+        masks[I] = d
+    return rule.apply(expr.xreplace(masks)).xreplace(ints)
+
+
+def _outermost_integrals(expr):
+    """The Integrals of ``expr`` that lie inside no other, each once."""
+    found, todo = {}, [expr]
+    while todo:
+        e = todo.pop()
+        if isinstance(e, sp.Integral):
+            found[e] = None
+        else:
+            todo.extend(e.args)
+    return list(found)
 
 
 def stabilize(expr: sp.Expr, conditions=(), check: bool = True) -> StableForm:

@@ -313,9 +313,8 @@ def test_a_tampered_record_of_the_conditions_is_rechecked(tmp_path, monkeypatch)
     verify them again); a record whose closed form was changed (and its checksum recomputed) is
     re-checked against the independent reference at a random point, dropped with a warning and
     derived afresh."""
-    import hashlib
-    import json
     import warnings
+    from store_records import rewrite_derivations
     from linecontact_sym.method import store
     d = tmp_path / "cache"
     d.mkdir(mode=0o700)
@@ -323,18 +322,7 @@ def test_a_tampered_record_of_the_conditions_is_rechecked(tmp_path, monkeypatch)
     store.clear_memory()
     try:
         expr = lcs.parabola(verify=False).maugis_dugdale().derivation("pressure").expr
-        n = 0
-        for p in d.rglob("*.json"):
-            data = json.loads(p.read_bytes()[len(store._MAGIC) + 65:].decode())
-            for pair in data.get("dict", []):
-                if pair[0] == "derivations":
-                    for r in pair[1]["tuple"]:
-                        for f in r["dict"]:
-                            if f[0] == "expr":
-                                f[1] = {"sympy": f"Mul(Integer(-1), {f[1]['sympy']})"}
-                                n += 1
-                    payload = json.dumps(data, separators=(",", ":")).encode()
-                    p.write_bytes(store._MAGIC + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload)
+        n = rewrite_derivations(d, lambda old: f"Mul(Integer(-1), {old})")
         assert n == 1
         store.clear_memory()               # a new process: the record comes from disk
         with pytest.warns(store.UntrustedCacheWarning, match="independent check"):

@@ -7,12 +7,14 @@ P'(s) worked out by hand), not against the package's own reference
 integrals, branch by branch of its Piecewise."""
 from __future__ import annotations
 
+import mpmath
 import mpmath as mp
 import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym import E_star, R, a, b, x
+from linecontact_sym.core.errors import LineContactError
 from linecontact_sym.method.legendre import NotReducible, reduce_integral
 
 t = sp.Symbol("t", positive=True)
@@ -314,3 +316,29 @@ def test_evaluate_arrays_and_scalars_agree():
     # a point beyond float64 goes its own way within the same call
     r = evaluate(cont, "pressure", rtol=1e-20, a=0.5, x=[0.1, 0.2], R=1.0, E_star=1.0)
     assert all(p.startswith("mpmath@") for p in r.details["paths"])
+
+
+@pytest.mark.slow
+def test_unevaluated_pressure_and_gap_are_true_integrals():
+    """A force law without closed form (the profile asin(x)^2: SymPy leaves
+    Eq. 10's integral unevaluated) gave the pressure and the gap as Leibniz's
+    rule makes them on that integral's limit a, where its integrand is
+    singular: zoo times a boundary term plus a divergent inner integral (and a
+    KeyError 'ComplexInfinity' from the export).  Now int_0^a dt is written
+    over u in [0, 1] first, and the nested integrals returned are finite: the
+    returned expression, computed by nested mpmath quadrature (the mpmath
+    export), equals the package's number (one quadrature of the profile,
+    transforms.pressure_direct_quad for the pressure) to 10 digits.  The float64
+    export refuses a nested integral by name (it had compiled the inner one as
+    an undefined function: a NameError at the first call)."""
+    c = lcs.LineContact(sp.asin(x)**2, budget=3)
+    assert not c.derivation("force").closed_form
+    for q, xv in (("pressure", sp.Rational(1, 5)), ("gap", sp.Rational(7, 10))):
+        d = c.derivation(q)
+        assert not d.closed_form and not d.expr.has(sp.zoo, sp.nan, sp.oo)
+        assert any(I.function.has(sp.Integral) for I in d.expr.atoms(sp.Integral))    # nested
+        got = c.to_numeric(q, backend="mpmath", dps=12)(a=0.5, x=float(xv), E_star=1.0)
+        want = c.evaluate_at(q, dps=15, a=sp.Rational(1, 2), x=xv, E_star=1)
+        assert abs(got - want) <= mpmath.mpf(10)**-10 * abs(want), (q, got, want)
+        with pytest.raises(LineContactError, match="nested integral"):
+            c.to_numeric(q)(a=0.5, x=float(xv), E_star=1.0)
