@@ -242,17 +242,81 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
         ref = _flamant_arb(p, a, xv, E, dps, breaks) if s is not None else None
         if ref is not None:
             return (ref, ref.rad) if with_error else ref
+        pc = _callable(p)
+        real_on_contact(pc, a, breaks)
         est = None if s is None or finite_at(p, s, a) else \
             flamant_tanh_sinh([(p, s, sp.S.Zero, to_basic(a))], xv, E, dps, breaks)
         if est is not None:
             return est if with_error else est[0]
-        p = _callable(p)
+        p = pc
+    else:
+        real_on_contact(p, a, breaks)
     with workdps(quad_dps(dps)):
         a, xv, E = to_mpf(a), to_mpf(xv), to_mpf(E)
         h, pts = _flamant_integrand(p, a, xv, breaks)
-        val, err = mpmath.quad(h, pts, maxdegree=10, error=True)
+        val, err = _guarded_quad(h, pts)
         k = 2 / (mpmath.pi * E)
         return (+(k * val), +(k * err)) if with_error else +(k * val)
+
+
+#: interior sample points of :func:`real_on_contact`, fractions of a
+_SAMPLES = tuple(sp.Rational(k, 16) for k in range(1, 16)) + (sp.Rational(31, 32), sp.Rational(63, 64))
+
+
+def real_on_contact(p, a, breaks=(), digits: int = 20):
+    """Raise :class:`Undefined` at once where the pressure ``p`` (an mpmath
+    callable) is not real or not finite at a sample point of the contact
+    (0, a) (s = k a/16, 31a/32, 63a/64, and the middles of the pieces
+    between ``breaks``; not 0 nor a break point, where a pressure may be
+    unbounded and integrable: the wedge's acosh(a/s)), before any quadrature: a pressure written for
+    another half-width (P/(2 pi sqrt(a^2/4 - s^2)), imaginary on (a/2, a])
+    has no resultant and no Flamant displacement, and a quadrature of its
+    real part would return an unconverged number.  A value found complex or
+    infinite proves it; the samples prove nothing where they pass (the
+    quadratures then watch every node: :func:`_guarded_quad`).
+
+    >>> real_on_contact(lambda s: 1 / mpmath.sqrt(1 - s**2), 1)
+    >>> real_on_contact(lambda s: 1 / mpmath.sqrt(mpmath.mpf(1) / 3 - s**2), 1)
+    Traceback (most recent call last):
+    ...
+    linecontact_sym.claims.references.Undefined: the pressure is not real on the contact: p(0.625) = ...
+    """
+    with workdps(digits):
+        a_v = to_mpf(a)
+        pts = [a_v * to_mpf(q) for q in _SAMPLES]
+        cuts = sorted({to_mpf(b) for b in breaks if 0 < to_mpf(b) < a_v})
+        pts += [(u + v) / 2 for u, v in zip([mpmath.mpf(0)] + cuts, cuts + [a_v])]
+        pts = [sv for sv in pts if sv not in cuts]
+        for sv in pts:
+            try:
+                v = p(sv)
+            except (ZeroDivisionError, ValueError, TypeError) as exc:
+                raise Undefined(f"the pressure has no value at s = {mpmath.nstr(sv, 6)} on the contact "
+                                f"(|s| < a = {mpmath.nstr(a_v, 8)}): {type(exc).__name__} {exc}".rstrip()) from None
+            if not mpmath.isfinite(v):
+                raise Undefined(f"the pressure is not finite on the contact: p({mpmath.nstr(sv, 6)}) = {v} "
+                                f"(|s| < a = {mpmath.nstr(a_v, 8)})")
+            if isinstance(v, mpmath.mpc) and abs(v.imag) > abs(v.real) * mpmath.mpf(10) ** (4 - digits):
+                raise Undefined(f"the pressure is not real on the contact: p({mpmath.nstr(sv, 6)}) = "
+                                f"{mpmath.nstr(v, 5)} (|s| < a = {mpmath.nstr(a_v, 8)})")
+
+
+def _guarded_quad(h, pts):
+    """mpmath.quad of the tanh-sinh route's integrand ``h`` (of phi) whose
+    pressure is read through an :class:`EndpointGuard`: (value, error), or
+    :class:`Undefined` where a node found the pressure complex or not
+    finite away from the ends (what :func:`real_on_contact`'s samples
+    missed)."""
+    try:
+        val, err = mpmath.quad(h, pts, maxdegree=10, error=True)
+    except ZeroDivisionError as exc:
+        raise Undefined(f"the pressure has no value at a node inside the contact: {exc}") from None
+    guard = getattr(h, "guard", None)
+    if guard is not None and guard.complex_at is not None:
+        raise Undefined(f"the pressure is not real on the contact: complex at s = {mpmath.nstr(guard.complex_at, 8)}")
+    if not (mpmath.isfinite(val) and mpmath.isfinite(err)):
+        raise Undefined("the pressure's integral over the contact is not finite")
+    return val, err
 
 
 def flamant_magnitude(p, a, xv, E, breaks=()):
@@ -280,6 +344,7 @@ def _flamant_integrand(p, a, xv, breaks):
     def h(ph):
         sv = a * mpmath.sin(ph)
         return pr(sv) * mpmath.log(abs(xv**2 / sv**2 - 1)) * a * mpmath.cos(ph)
+    h.guard = pr
     return h, _split_points(a, [xv] + [to_mpf(b) for b in breaks])
 
 
@@ -370,15 +435,23 @@ def flamant_resultant(p, a, dps=DPS, breaks=(), with_error=False, values=None):
                 ref = None
             if ref is not None and ref.certified:
                 return (ref, ref.rad) if with_error else ref
+        pc = _callable(p)
+        real_on_contact(pc, a, breaks)
+        if s is not None:
             est = tanh_sinh(2 * p, s, 0, a, list(breaks), dps) if not finite_at(p, s, a) else None
             if est is not None:
                 return est if with_error else est[0]
-        p = _callable(p)
+        p = pc
+    else:
+        real_on_contact(p, a, breaks)
     with workdps(quad_dps(dps)):
         a = to_mpf(a)
         pr = EndpointGuard(p, mpmath.mpf(0), a)
-        val, err = mpmath.quad(lambda ph: pr(a * mpmath.sin(ph)) * a * mpmath.cos(ph),
-                               _split_points(a, [to_mpf(b) for b in breaks]), maxdegree=10, error=True)
+
+        def h(ph):
+            return pr(a * mpmath.sin(ph)) * a * mpmath.cos(ph)
+        h.guard = pr
+        val, err = _guarded_quad(h, _split_points(a, [to_mpf(b) for b in breaks]))
         return (+(2 * val), +(2 * err)) if with_error else +(2 * val)
 
 

@@ -224,6 +224,30 @@ def test_undecided_when_the_engine_fails(monkeypatch):
 
 
 # ------------------------------------------------------------------ numerics
+def test_flamant_references_refuse_a_pressure_not_real_on_the_contact():
+    """P/(2 pi sqrt(a^2/4 - s^2)) (the flat punch with a -> a/2, the diagnosis'
+    width candidate) is imaginary on (a/2, a): it has no resultant and no
+    Flamant displacement.  The references once returned the unconverged real
+    part of a tanh-sinh quadrature at its maximum degree (0.7313 as the
+    resultant here), after seconds; now they refuse at once, naming the point."""
+    s = sp.Symbol("x", positive=True)
+    a, P = sp.Rational(7, 5), sp.Rational(3, 2)
+    half = P / (2 * sp.pi * sp.sqrt(a**2 / 4 - s**2))
+    with pytest.raises(REF.Undefined, match="contact"):
+        REF.flamant_resultant(half, a, 45)
+    with pytest.raises(REF.Undefined, match="contact"):
+        REF.flamant_relative_displacement(half, a, sp.Rational(1, 3), 1, 45)
+    # as an mpmath callable (no Arb attempt): the samples find it complex at s = 0.625
+    with pytest.raises(REF.Undefined, match="not real on the contact"):
+        REF.flamant_resultant(lambda v: 1 / mpmath.sqrt(mpmath.mpf(1) / 3 - v**2), 1, 30)
+    # a real pressure on the same contact is still integrated (the samples cost nothing there)
+    good = REF.flamant_resultant(P / (sp.pi * sp.sqrt(a**2 - s**2)), a, 45)
+    assert abs(good - P) < mpmath.mpf(10) ** -40
+    # the wedge's acosh(a/s) is unbounded at 0 and integrable: not refused
+    wedge = REF.flamant_resultant(lambda v: mpmath.acosh(1 / v), 1, 20)
+    assert abs(wedge - mpmath.pi) < 1e-12
+
+
 def test_quad_detects_divergence_and_integrates_singular_ends():
     t = sp.Symbol("t", positive=True)
     with pytest.raises(REF.Divergent):

@@ -112,7 +112,12 @@ def circular_corner():
 def test_circular_corner_punch_search_ends(circular_corner):
     """f = R - sqrt(R^2 - (x - b)^2) beyond the flat: no closed force law; the
     stationary-point search skips the flat (dP/da = 0 there) instead of
-    subdividing it without end (20000 intervals)."""
+    subdividing it without end (20000 intervals), and the admissible range
+    is not searched at all: dP0/da >= 0 is proven from the profile
+    (h' = f' + t f'' >= 0, no slope jump), where the sampled search could
+    exclude neither end of [b, b + R] (281 quadratures of dP0/da)."""
+    from linecontact_sym.contacts.normal.equilibria import admissible_range, landscape
+    from linecontact_sym.contacts.normal.force_law import ForceLaw
     c = circular_corner
     a = c.half_width(sp.Rational(1, 10), budget=600, E_star=1, R=3, b=sp.Rational(1, 2))
     with workdps(40):
@@ -122,6 +127,41 @@ def test_circular_corner_punch_search_ends(circular_corner):
                 return t * (t - mpmath.mpf("0.5")) / mpmath.sqrt(9 - (t - mpmath.mpf("0.5"))**2)
             return mpmath.quad(g, [mpmath.asin(mpmath.mpf("0.5") / A), mpmath.pi / 2])
         assert abs(P(a) - mpmath.mpf("0.1")) <= mpmath.mpf(10)**-20
+        rising = [P(mpmath.mpf(A)) for A in ("0.6", "1", "2", "3", "3.45")]
+        assert all(u < v for u, v in zip(rising, rising[1:]))   # P0 rises over the range (independently)
+    law = ForceLaw.from_contact(c, {S.E_star: 1, S.R: 3, S.b: sp.Rational(1, 2)})
+    lo, hi, end, _ = admissible_range(law)
+    assert law.rising and end == "domain" and abs(hi - mpmath.mpf("3.5")) < 1e-12
+    land = landscape(law)
+    assert not land.extrema and land.rising_at_end and any("rising_profile" in n for n in land.notes)
+
+
+def test_unresolved_search_notes_are_true():
+    """A note of the stationary-point search names a possible touching zero
+    only where dP/da comes near 0.  The circular-corner punch's dP0/da grows
+    like 1/sqrt(3.5 - a) at the end of its domain (about 1e10 within 1e-10 of
+    it): the sampled bound cannot exclude that end at any width, and the note
+    once called it "within the search resolution of 0" there."""
+    import re
+    from linecontact_sym.contacts.normal.equilibria import crossings
+
+    def steep(A):      # one sign, rising without bound toward the end a = 2
+        return 1 / mpmath.sqrt(2 - A) if A < 2 else mpmath.mpf(10)**30
+
+    def touching(A):   # a double zero at a = 3/2
+        return (A - mpmath.mpf(3) / 2)**2
+    with workdps(20):
+        for g, zero in ((steep, None), (touching, mpmath.mpf(3) / 2)):
+            notes = []
+            assert crossings(g, mpmath.mpf(1), mpmath.mpf(2), notes=notes) == []
+            near = [mpmath.mpf(v) for n in notes
+                    for v in re.findall(r"within the search resolution of 0 near a = ([0-9.e+-]+)", n)]
+            for A in near:   # true where given: dP/da there is small next to its size on [1, 2]
+                assert abs(g(A)) < 1e-6 * abs(g(mpmath.mpf(1))), notes
+            if zero is None:
+                assert not near and any("next to the end a = 2" in n and "away from 0" in n for n in notes), notes
+            else:
+                assert near and all(abs(A - zero) < 1e-9 for A in near), notes
 
 
 # ------------------------------------------------------------------ budgets

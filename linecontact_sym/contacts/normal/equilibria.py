@@ -21,7 +21,10 @@ The admissible range (:func:`admissible_range`): a* is the first a where
 the non-adhesive slope dP0/da turns negative (the edge pressure is
 p ~ dP0/da sqrt(a - |x|)/pi, tensile beyond) or the end of the real domain
 of the law (the exact cylinder at a = R), whichever comes first; without
-either, the search runs up to 4**40 times the law's length scale.
+either, the search runs up to 4**40 times the law's length scale.  Where
+dP0/da >= 0 is proven from the profile (P0 convex, or
+:func:`~.force_law.rising_profile`: h' = f' + t f'' >= 0 on every piece, no
+falling slope jump) there is no a* to search for.
 
 **None missed** (:func:`landscape`).  Every sign change of dP/da on
 [4**-20 s, a*] (s the length scale, :data:`SPAN`) is found by subdivision in ln a, split
@@ -269,6 +272,7 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
             if mpmath.log(r / l) < BALL_GIVEUP:
                 y = None
                 balls.gave_up += 1
+        vs = None
         if y is None:   # no ball here (not available, not finite, outside the closed form's conditions)
             # five samples in ln a (ends, quartiles, midpoint: the halves' midpoints are the quartiles,
             # so a split costs no new sample); three let a dip hide between the midpoint and an end
@@ -282,18 +286,47 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
                 if first:
                     break
             else:
-                touching.append(m)
+                touching.append((m, _unresolved(l, r, lo, hi, vs)))
             continue
         stack.append((m, r))
         stack.append((l, m))
     if notes is not None:
         # an unresolved neighbour of a sign change found is that sign change, not a second zero
         near = [(cl * (1 - 4 * MIN_WIDTH), cr * (1 + 4 * MIN_WIDTH)) for cl, cr in out]
-        for m in sorted(touching):
+        for m, note in sorted(touching, key=lambda t: t[0]):
             if not any(lo_ <= m <= hi_ for lo_, hi_ in near):
-                notes.append(f"dP/da comes within the search resolution of 0 near a = {mpmath.nstr(m, 12)} "
-                             f"without changing sign (a possible touching zero, treated as none)")
+                notes.append(note)
     return sorted(out)
+
+
+def _unresolved(l, r, lo, hi, vs):
+    """The note of an interval [l, r] of the search on [lo, hi] that reached
+    the search resolution neither excluded nor holding a sign change; ``vs``
+    its five samples of dP/da (None: its ball of dP/da contains 0).
+
+    The note says what was seen: a ball containing 0 or samples that come
+    near 0 is a possible touching zero; samples of one sign whose size
+    grows monotonically toward an end of [lo, hi] that the interval
+    touches (the circular-corner punch's dP/da ~ 1/sqrt(a_end - a) at the
+    end of its domain, about 1e10 there) are no evidence of a zero: the
+    sampled bound cannot exclude such an end at any width, and the note
+    says so instead of calling it near 0."""
+    m = mpmath.sqrt(l * r)
+    if vs is not None:
+        mags = [abs(v) for v in vs]
+        span = f"sampled between {mpmath.nstr(min(vs), 4)} and {mpmath.nstr(max(vs), 4)}"
+        for end, seq in ((hi, mags), (lo, mags[::-1])):
+            touches = r == hi if end is hi else l == lo
+            if touches and all(u < v for u, v in zip(seq, seq[1:])) and seq[-1] > 2 * seq[0]:
+                return (f"dP/da is unresolved next to the end a = {mpmath.nstr(end, 12)} of a searched segment: "
+                        f"one sign there ({span} over the last relative {mpmath.nstr(mpmath.log(r / l), 2)} "
+                        f"of a), its size rising monotonically toward the end, away from 0 (a singular end "
+                        f"of dP/da, which the sampled bound cannot exclude at any width); no sign change, "
+                        f"treated as none")
+        return (f"dP/da comes within the search resolution of 0 near a = {mpmath.nstr(m, 12)} without changing "
+                f"sign ({span}: a possible touching zero, treated as none)")
+    return (f"dP/da comes within the search resolution of 0 near a = {mpmath.nstr(m, 12)} without changing "
+            f"sign (its ball there contains 0: a possible touching zero, treated as none)")
 
 
 def _on_flat(law, r) -> bool:
@@ -384,8 +417,11 @@ def admissible_range(law):
         if dP0(lo) < 0:
             raise InadmissibleProfileError(f"dP0/da < 0 already at a = {mpmath.nstr(lo, 6)}: no admissible "
                                            f"half-width (tensile edge pressure)")
-        for (l, r), b in zip(segs, kinks + [None]) if not base.convex else ():
-            # (a convex P0 has dP0/da nondecreasing: >= 0 at lo, >= 0 everywhere)
+        if base.rising and not base.convex:
+            notes.append("dP0/da >= 0 for every a, proven from the profile (h' = f' + t f'' >= 0 on each piece, "
+                         "no falling slope jump: force_law.rising_profile): the admissible range is not searched")
+        for (l, r), b in zip(segs, kinks + [None]) if not (base.convex or base.rising) else ():
+            # (a convex P0 has dP0/da nondecreasing: >= 0 at lo, >= 0 everywhere; a rising one, >= 0 proven)
             for cl, cr in (_falling(base, l, r, balls, notes) if not _on_flat(base, r) else ()):
                 first_neg = root_in_log(base.dP, cl, cr)
                 break

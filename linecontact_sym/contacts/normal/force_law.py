@@ -129,6 +129,7 @@ class ForceLaw:
         self.conditions = tuple(conditions)   # where ``expr`` holds (relations in a)
         self.base = self           # the non-adhesive law P0 (admissibility is read from it)
         self.convex = False        # P0 proven convex on (0, oo) (:func:`convex_profile`)
+        self.rising = False        # dP0/da >= 0 proven for every a > 0 (:func:`rising_profile`)
         self.flat = None           # the profile is 0 on [0, flat]: P0 = 0 for a <= flat (:func:`flat_end`)
         self.monotone_term = False  # (a law on top of P0) see :meth:`on_top`
         self._landscape = None
@@ -255,6 +256,9 @@ class ForceLaw:
         if "_convex" not in cache:
             cache["_convex"] = convex_profile(contact.profile)
         quad.convex = cache["_convex"]
+        if "_rising" not in cache:   # (a convex P0 is not searched either: no proof needed)
+            cache["_rising"] = not cache["_convex"] and rising_profile(contact.profile)
+        quad.rising = cache["_rising"]
         quad.flat = flat_end(contact.profile, values)
         fd = contact.derivation("force")
         if mode == "quad" or not fd.closed_form:
@@ -262,7 +266,7 @@ class ForceLaw:
         pf = {k: v for k, v in values.items() if k not in (S.a, S.x)}
         breaks = [sp.N(bp.xreplace(pf), 80) for bp in contact.profile.breakpoints]
         law = cls.from_closed_form(fd.expr, values, fd.conditions, [bp for bp in breaks if bp > 0], fallback=quad)
-        law.convex, law.flat = quad.convex, quad.flat
+        law.convex, law.rising, law.flat = quad.convex, quad.rising, quad.flat
         return law
 
     def mapped(self, geometry, values) -> "ForceLaw":
@@ -379,6 +383,66 @@ def convex_profile(profile) -> bool:
         return False
 
 
+def rising_profile(profile) -> bool:
+    """Is dP0/da >= 0 for every a > 0 (where the law is real), proven from the
+    profile?  With h(t) = t f'(t), P0(a) = E* int_0^{pi/2} h(a sin phi) dphi
+    (Eq. 10* after t = a sin phi), so
+
+        dP0/da = E* int_0^{pi/2} sin(phi) h'(a sin phi) dphi + E* sum_b J_b b^2 / (a sqrt(a^2 - b^2)),
+
+    the sum over the breakpoints b < a where f' jumps by J_b (f continuous
+    there: a step of f adds a falling term, and is not taken).  It is >= 0
+    where h' = f' + t f'' >= 0 on every piece and every J_b >= 0: then the
+    first a where dP0/da turns negative (the admissible range's end a*) does
+    not exist, and no search for it is needed (the circular-corner punch:
+    the sampled search could not exclude either end of its range, 281
+    quadratures of dP0/da).  On a piece lo < x < hi, x = lo + u with u > 0
+    (beyond hi too: a stronger statement), the parameters positive; a
+    power with a half-integer exponent (a square root) is real and >= 0
+    wherever the law is real (its f' at every t < a is, or P0 is not), and
+    is replaced by a positive symbol to that power.  SymPy's assumptions
+    decide; False when undecided.
+
+    >>> from linecontact_sym.method.profile import Profile
+    >>> x, R, b = S.x, S.R, S.b
+    >>> rising_profile(Profile(sp.Piecewise((0, x < b), (R - sp.sqrt(R**2 - (x - b)**2), True))))
+    True
+    >>> rising_profile(Profile(x**2 / (2 * R) - x**4 / R**3))   # P0 rises, then falls
+    False
+    """
+    try:
+        u = sp.Dummy("u", positive=True)
+        pieces = profile.pieces
+        slopes = [sp.diff(p.expr, S.x) for p in pieces]
+        for p, d1 in zip(pieces, slopes):
+            h1 = (d1 + S.x * sp.diff(d1, S.x)).xreplace({S.x: p.lo + u})
+            if not _nonnegative_where_real(h1):
+                return False
+        for q, p, left, right in zip(pieces, pieces[1:], slopes, slopes[1:]):
+            # a step of f itself adds -(its size) b/sqrt(a^2 - b^2) to P0 (falling): continuity is asked
+            if sp.simplify(p.expr.xreplace({S.x: p.lo}) - q.expr.xreplace({S.x: p.lo})) != 0:
+                return False
+            if not _nonnegative_where_real(sp.simplify(right.xreplace({S.x: p.lo}) - left.xreplace({S.x: p.lo}))):
+                return False
+        return True
+    except Exception:   # an assumption query SymPy cannot answer
+        return False
+
+
+def _nonnegative_where_real(e) -> bool:
+    """Is ``e`` >= 0 by SymPy's assumptions once each square root (a power
+    with a half-integer exponent) is a positive symbol to that power?"""
+    roots = {}
+
+    def root(z):
+        w = roots.get(z.base)
+        if w is None:
+            w = roots[z.base] = sp.Dummy("w", positive=True)
+        return w ** (2 * z.exp)
+    e = e.replace(lambda z: z.is_Pow and z.exp.is_Rational and z.exp.q == 2, root)
+    return bool(e.is_nonnegative)
+
+
 def to_basic_number(v):
     """A SymPy number for a value (exact where given exactly)."""
     v = to_basic(v)
@@ -387,4 +451,4 @@ def to_basic_number(v):
     return v
 
 
-__all__ = ["ForceLaw", "PullOff", "ScanHint", "GUARD", "convex_profile", "flat_end"]
+__all__ = ["ForceLaw", "PullOff", "ScanHint", "GUARD", "convex_profile", "rising_profile", "flat_end"]
