@@ -45,10 +45,11 @@ RANGES = {
 #: (contacts.base: a symbol declared positive may be 0 only where it is x, the
 #: depth z or a cohesive law's parameter of domain 'nonnegative', JKR's gamma):
 #: the half-width, E*, the radius, the flat's half-width b, the power law's n and c,
-#: the wedge angle and the Maugis-Dugdale sigma_0 and c_D (not the friction coefficient:
-#: the sliding stress field takes mu = 0, the frictionless field).
+#: the wedge angle, the stick half-widths c_s and c_r (0 would be gross slip) and the
+#: Maugis-Dugdale sigma_0 and c_D (not the friction coefficient: the sliding stress
+#: field takes mu = 0, the frictionless field).
 #: An export seeks no removable limit at 0 for them (numeric.exports).
-NEVER_ZERO = frozenset({S.a, S.E_star, S.R, S.b, S.n, S.c, S.theta, S.sigma_0, S.c_D})
+NEVER_ZERO = frozenset({S.a, S.E_star, S.R, S.b, S.n, S.c, S.theta, S.c_s, S.c_r, S.sigma_0, S.c_D})
 
 
 def _numeric(v):

@@ -69,11 +69,14 @@ def test_no_limit_is_sought_where_every_contact_refuses_zero():
         for q in type(obj).quantities().values():
             assert not names & set(q.nonnegative), (kind, q)
     assert not names & set(lcs.SlidingStressField.from_frictionless(c)._zero_ok)
-    # the entry check's generic rule refuses 0 for each (end to end: the parabola's R)
+    # the entry check's generic rule refuses 0 for each (end to end: the parabola's R, and
+    # the stick half-width of its tangential contact's slip)
     for sym in NEVER_ZERO:
         with pytest.raises(DomainError, match="positive"):
             _checked_value(sym.name, 0.0, sym)
     with pytest.raises(DomainError, match="positive"):
         c.check_domain("force", dict(a=0.5, R=0.0, E_star=1.0))
+    with pytest.raises(DomainError, match="positive"):
+        c.tangential().check_domain("slip", dict(a=1.0, R=1.0, E_star=1.0, mu=0.3, x=0.9, c_s=0.0))
     d = SimpleNamespace(quantity="force", variables_all=(S.a, S.E_star, S.R, S.x, S.z, S.gamma, S.mu, S.c_s))
-    assert exports._zero_in_domain(d) == (S.x, S.z, S.gamma, S.mu, S.c_s)
+    assert exports._zero_in_domain(d) == (S.x, S.z, S.gamma, S.mu)
