@@ -70,7 +70,7 @@ from ..method.derivation import values_by_name
 from .accuracy import EPS, condition_number_float
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
-from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, lambdify_mpmath,
+from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, has_nested_integral, lambdify_mpmath,
                       lambdify_mpmath_quad, compile_callable, stable_form)
 from .fastpath import bound_checks, inline_point, one_pass, scalar_kit, vector_float64
 from .switches import safe_step, switch_near_end
@@ -860,8 +860,8 @@ def _arb_quadrature(d, quantity, values, rtol, t0, notes):
     cache = _CACHE.of(d)
     if "arbq" not in cache:
         ints = sorted(d.expr.atoms(sp.Integral), key=sp.default_sort_key)
-        ok = ints and all(len(I.limits) == 1 and len(I.limits[0]) == 3 and not I.function.has(sp.Integral)
-                          for I in ints)
+        ok = ints and not has_nested_integral(d.expr) and all(len(I.limits) == 1 and len(I.limits[0]) == 3
+                                                              for I in ints)
         dums = [sp.Dummy(f"I{k}") for k in range(len(ints))]
         cache["arbq"] = (ints, dums, d.expr.xreplace(dict(zip(ints, dums)))) if ok else None
     plan = cache["arbq"]

@@ -31,6 +31,7 @@ x**2)/a) at x = 0) are patched with the symbolic limit.
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import mpmath
@@ -142,7 +143,7 @@ def lambdify_numpy(expr, args, stable: bool = True, conditions=(), original=None
         expr = _TO_CARLSON.apply(expr)
     quads = {}
     if expr.has(sp.Integral):
-        if any(I.function.has(sp.Integral) for I in expr.atoms(sp.Integral)):
+        if has_nested_integral(expr):
             # replace works from the inside out: the outer quadrature compiled the inner
             # one as an undefined function (a NameError at the first call)
             raise LineContactError("no float64 export of a nested integral (an integral inside an "
@@ -188,11 +189,9 @@ def compile_plain_numpy(expr, args, patch=None):
     return lambdify_numpy(expr, args, stable=False, patch=patch)
 
 
-#: the removable limits this process has sought, (expression, symbol) -> limit or None:
-#: each new contact of a profile compiles the same exports (the exact cylinder's
-#: dP/da at a -> 0+, 1 CPU s, once per contact before)
-_LIMITS: dict = {}
-_LIMITS_KEPT = 512
+def has_nested_integral(expr) -> bool:
+    """Does an unevaluated Integral of ``expr`` hold another in its integrand?"""
+    return any(I.function.has(sp.Integral) for I in expr.atoms(sp.Integral))
 
 
 def _removable_limit(expr, sym):
@@ -201,14 +200,12 @@ def _removable_limit(expr, sym):
     takes no limit of a Tuple)."""
     if not isinstance(expr, sp.Expr) or expr.has(sp.Integral) or sym not in expr.free_symbols or sp.count_ops(expr) > 300:
         return None
-    key = (expr, sym)
-    if key not in _LIMITS:
-        if len(_LIMITS) >= _LIMITS_KEPT:
-            _LIMITS.pop(next(iter(_LIMITS)))
-        _LIMITS[key] = _sought_limit(expr, sym)
-    return _LIMITS[key]
+    return _sought_limit(expr, sym)
 
 
+# each limit is sought once in this process: every new contact of a profile compiles
+# the same exports (the exact cylinder's dP/da at a -> 0+, 1 CPU s, once per contact before)
+@functools.lru_cache(maxsize=512)
 def _sought_limit(expr, sym):
     try:
         e0 = expr.subs(sym, 0)
