@@ -311,22 +311,20 @@ def _unresolved(l, r, lo, hi, vs):
     end of its domain, about 1e10 there) are no evidence of a zero: the
     sampled bound cannot exclude such an end at any width, and the note
     says so instead of calling it near 0."""
-    m = mpmath.sqrt(l * r)
+    seen = "its ball there contains 0"
     if vs is not None:
         mags = [abs(v) for v in vs]
-        span = f"sampled between {mpmath.nstr(min(vs), 4)} and {mpmath.nstr(max(vs), 4)}"
+        seen = f"sampled between {mpmath.nstr(min(vs), 4)} and {mpmath.nstr(max(vs), 4)}"
         for end, seq in ((hi, mags), (lo, mags[::-1])):
             touches = r == hi if end is hi else l == lo
             if touches and all(u < v for u, v in zip(seq, seq[1:])) and seq[-1] > 2 * seq[0]:
                 return (f"dP/da is unresolved next to the end a = {mpmath.nstr(end, 12)} of a searched segment: "
-                        f"one sign there ({span} over the last relative {mpmath.nstr(mpmath.log(r / l), 2)} "
+                        f"one sign there ({seen} over the last relative {mpmath.nstr(mpmath.log(r / l), 2)} "
                         f"of a), its size rising monotonically toward the end, away from 0 (a singular end "
                         f"of dP/da, which the sampled bound cannot exclude at any width); no sign change, "
                         f"treated as none")
-        return (f"dP/da comes within the search resolution of 0 near a = {mpmath.nstr(m, 12)} without changing "
-                f"sign ({span}: a possible touching zero, treated as none)")
-    return (f"dP/da comes within the search resolution of 0 near a = {mpmath.nstr(m, 12)} without changing "
-            f"sign (its ball there contains 0: a possible touching zero, treated as none)")
+    return (f"dP/da comes within the search resolution of 0 near a = {mpmath.nstr(mpmath.sqrt(l * r), 12)} "
+            f"without changing sign ({seen}: a possible touching zero, treated as none)")
 
 
 def _on_flat(law, r) -> bool:
