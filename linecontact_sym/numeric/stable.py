@@ -233,6 +233,10 @@ class SquareDifferences(StableRule):
     name = "square-differences"
     heads = (sp.sin, sp.cos, sp.sinh, sp.cosh)
 
+    def applies(self, expr) -> bool:
+        """A squared sin, cos, sinh or cosh occurs."""
+        return any(p.exp == 2 and isinstance(p.base, self.heads) for p in expr.atoms(sp.Pow))
+
     def apply(self, expr):
         return square_differences(expr)
 
