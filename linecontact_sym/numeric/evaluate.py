@@ -226,7 +226,12 @@ _PLAIN = frozenset((float, int))
 
 
 def _as_float(v):
-    return float(v) if type(v) in (float, int) else float(to_mpf(v))
+    """A value as a float: +-inf where it is beyond the float range (an exact 10**400), which
+    :func:`~.accuracy.float64_safe` then refuses (the mpmath path takes the exact value)."""
+    try:
+        return float(v) if type(v) in (float, int) else float(to_mpf(v))
+    except OverflowError:
+        return math.inf if v > 0 else -math.inf
 
 
 _as_mpf = to_mpf      # the one converter (core.conversion), exact where the value is
