@@ -851,7 +851,8 @@ def half_width_at(law, load, dps: int = 30):
             # evaluate_at(a=L/2) returns answers L/2 (the roots above are interior crossings)
             top_a = law.geometry.mp_a_max(getattr(law, "geometry_values", {})) if law.geometry.closes_at_end \
                 else mpmath.inf
-            if end == "domain" and mpmath.isfinite(top_a) and hi >= top_a * (1 - mpmath.mpf(10)**-12):
+            # (the range ends there as the law's domain, or where dP0/da = 0 rounds negative at the crest)
+            if mpmath.isfinite(top_a) and hi >= top_a * (1 - mpmath.mpf(10)**-12):
                 try:
                     full = law.P(top_a)           # the load of full contact, at the end itself
                 except (ValueError, ZeroDivisionError):
