@@ -403,12 +403,13 @@ def test_full_contact_at_holds_the_digits_its_record_states(contacts):
     """full_contact_at(dps=30) returned a 53-bit number with 'digits = 30': checked against
     Johnson's equation (own findroot at 50 digits), alpha = 0.5."""
     ad = contacts["sinusoid"].adhesive(gam)
+    # called at mpmath's default precision, as a user does
+    fc = ad.full_contact_at(dps=30, h=1, L=1, E_star=1, gamma=sp.Rational(1, 8) * sp.pi**2)
+    assert fc.digits >= 30 and fc.force._mpf_[3] >= 100          # the mantissa holds 30 digits
     with mpmath.workdps(50):
         al = mpmath.mpf(1) / 2
         f, df = _johnson(al)
         u_fc = mpmath.findroot(df, 1.2)
-        fc = ad.full_contact_at(dps=30, h=1, L=1, E_star=1, gamma=sp.Rational(1, 8) * sp.pi**2)
-        assert fc.digits >= 30 and fc.force._mpf_[3] >= 100          # the mantissa holds 30 digits
         assert _agree(fc.force, mpmath.pi * f(u_fc)) >= 29
 
 
