@@ -36,6 +36,16 @@ picks the cheapest evaluation that meets it:
     Arb evaluates the integrand, its radius the error (a true bound), in
     place of two mpmath quadratures compared (an estimate, and several
     seconds with special-function integrands); the mpmath path otherwise.
+    ``certified=True`` takes the same enclosure for such a quantity (a
+    :class:`~.certified.CertificationError` where Arb cannot enclose it).
+    The enclosure is [mid - rad, mid + rad] exactly: its width is twice the
+    error the result states, at the precision asked.
+
+Float64 is taken only at normal values and arguments within
+:data:`~.accuracy.FLOAT64_SAFE` (1e-75 .. 1e75): an underflow to 0 or a
+subnormal intermediate (a^2 at a = 1e-160) is never a float64 result with a
+relative error; such points take the mpmath path (the series model: its
+terms in mpmath).
 
 The returned :class:`Evaluation` says which path was taken, with the error
 estimate (or the enclosure) and a note on why.
