@@ -842,7 +842,7 @@ def _try_model(m, quantity, values, rtol, t0):
             val = +mpmath.fsum(m.term_values(values, dps=digits)[:N])
         with workdps(digits):
             # the tail bound and the rounding of the N terms at this precision
-            err = +(mpmath.mpf(bound) + N * mpmath.mpf(10)**(-digits) * abs(val))
+            err = +(mpmath.mpf(bound) + (2 * N + 2) * mpmath.mpf(10)**(-digits) * abs(val))
     name = m.model_name(N)
     note = (_MODEL_NOTE, N, name, float(bound), rb)      # formatted when read
     return Evaluation(quantity, val, "model:" + name, err, rtol, note=note,
