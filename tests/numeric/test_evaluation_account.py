@@ -84,11 +84,12 @@ def test_certified_refusal_names_the_reason():
 
 
 def _cylinder_force(A, R, dps=30):
-    """Eq. (10) of R - sqrt(R^2 - x^2) (E* = 1): a^2 int_0^(pi/2) sin^2/sqrt(R^2 - a^2 sin^2) dphi."""
+    """Eq. (10) of R - sqrt(R^2 - x^2) (E* = 1): (a^2/R) int_0^(pi/2) sin^2/sqrt(1 - (a/R)^2 sin^2) dphi."""
     with mpmath.workdps(dps):
         A, R = mpmath.mpf(A), mpmath.mpf(R)
-        return A**2 * mpmath.quad(lambda ph: mpmath.sin(ph)**2 / mpmath.sqrt(R**2 - A**2 * mpmath.sin(ph)**2),
-                                  [0, mpmath.pi / 2])
+        # (scaled to O(1): quad's tolerance is absolute)
+        return A**2 / R * mpmath.quad(lambda ph: mpmath.sin(ph)**2 / mpmath.sqrt(1 - (A / R)**2 * mpmath.sin(ph)**2),
+                                      [0, mpmath.pi / 2])
 
 
 @pytest.mark.slow
