@@ -12,7 +12,8 @@ gives a right answer whose stated error holds, or, where no answer exists,
 a package error (``LineContactError``) within the case's time limit.  A
 foreign exception, a hang (time limit, SIGALRM), a wrong number or an error
 smaller than the true one is not ok.  Prints per group: cases, ok, and the
-failures; the last line ``cases N ok K``.  Groups: exports, honesty,
+failures; the last line ``cases N ok K``.  Groups: exports (evaluate's
+stated error, and the float64 export itself within 8 eps kappa), honesty,
 enclosures, periodic.  About 3-6 minutes on a loaded 2-core machine.
 """
 from __future__ import annotations
@@ -132,6 +133,43 @@ def exports_cases():
                     return ok, f"value {res.value} ref {mpmath.nstr(ref, 17)} err {mpmath.nstr(err, 3)} " \
                                f"stated {float(res.error):.2e} via {res.path}"
                 out.append((f"{name} {q} 2a/L={2 * A:.10g}" + (f" x/a={r}" if r is not None else ""), case, 120))
+
+                def export(name=name, A=A, q=q, r=r):
+                    """The float64 export itself: within 8 eps max(1, kappa) of the unrewritten formula
+                    at 60 digits, kappa its componentwise condition number in a, x, L (60-digit differences)."""
+                    from linecontact_sym.numeric.functions import make_callable
+                    c = contact(name)
+                    vals = {"a": A, "L": 1.0, "E_star": 2.0}
+                    vals.update({"h": 0.3} if name != "wedge" else {"theta": 0.2})
+                    if r is not None:
+                        vals["x"] = r * A
+                    v = float(np.asarray(make_callable(c.derivation(q), "numpy")(**vals)))
+                    X = vals.get("x", 0.0)
+                    ref = ref_periodic(name, q, A, X, 1.0)
+                    with mpmath.workdps(60):
+                        if ref == 0:
+                            return abs(v) < 1e-290, f"{v} (ref 0)"
+                        kappa = mpmath.mpf(1)
+                        hh = mpmath.mpf(10)**-25
+                        for arg in ("a", "x", "L"):
+                            if arg == "x" and (r is None or X == 0):
+                                continue
+                            pt = {"a": mpmath.mpf(A), "x": mpmath.mpf(X), "L": mpmath.mpf(1)}
+                            up, dn = dict(pt), dict(pt)
+                            up[arg] *= 1 + hh
+                            dn[arg] *= 1 - hh
+                            if up["x"] > up["a"] or dn["x"] > dn["a"]:
+                                up["x"] = min(up["x"], up["a"])
+                                dn["x"] = min(dn["x"], dn["a"])
+                            fu = ref_periodic(name, q, up["a"], up["x"], up["L"])
+                            fd = ref_periodic(name, q, dn["a"], dn["x"], dn["L"])
+                            kappa = max(kappa, abs((fu - fd) / (2 * hh * ref)))
+                        rel = abs((mpmath.mpf(v) - ref) / ref)
+                        ok = rel <= 8 * EPS * kappa
+                    return ok, f"float64 {v!r} rel. error {mpmath.nstr(rel, 3)} = " \
+                               f"{mpmath.nstr(rel / (EPS * kappa), 3)} eps kappa (kappa {mpmath.nstr(kappa, 3)})"
+                out.append((f"export {name} {q} 2a/L={2 * A:.10g}" + (f" x/a={r}" if r is not None else ""),
+                            export, 120))
     return out
 
 
