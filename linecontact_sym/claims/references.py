@@ -32,7 +32,8 @@ from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_s
 from ..core.precision import workdps
 from ..core.errors import LineContactError
 from ..numeric.flamant import finite_at, flamant_arb, flamant_tanh_sinh, kernel_points, kernel_points_at, tanh_sinh
-from ..numeric.reference import ArbUnsupported, integrate
+from ..numeric.arb_compile import ArbUnsupported
+from ..numeric.reference import integrate
 
 #: working precision of the comparisons (digits)
 DPS = 45
