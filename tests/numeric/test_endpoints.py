@@ -92,7 +92,8 @@ CASES = [
 ]
 
 
-@pytest.mark.parametrize("f, lo, hi, end, q, ref, singular", CASES)
+@pytest.mark.parametrize("f, lo, hi, end, q, ref, singular", CASES,
+                         ids=["inverse_sqrt", "power_minus_two_thirds", "sqrt_branch_point"])
 def test_one_substitution_takes_its_power_from_the_end_and_arb_encloses_the_integral(f, lo, hi, end, q, ref,
                                                                                      singular):
     """substitute_end at the singular end: q from the end's exponent, an
@@ -144,7 +145,7 @@ def _piece(fn, lo, hi):
     (sp.exp(t) * sp.log(1 - t) ** 2, lambda: _series(lambda n: mpmath.e * (-1) ** n / mpmath.factorial(n), 0, k=2)),
     # 1/sqrt at one end, ln at the other: 2 - 1
     (1 / sp.sqrt(t) + sp.log(1 - t), lambda: mpmath.mpf(1)),
-])
+], ids=["log", "log_squared", "inverse_sqrt_and_log"])
 def test_a_singular_piece_is_enclosed_whichever_end_is_singular(f, ref):
     """singular_piece over [0, 1]: each half with a singular end transformed
     (the power substitution, or the logarithms subtracted: ln^2 too, whose
