@@ -66,19 +66,21 @@ def _root_out(base, r, w):
     return w ** (k * r) * sp.Mul(*rest) ** r if k else base ** r
 
 
-def substitute_end(expr, var, end, d):
+def substitute_end(expr, var, end, d, branches: bool = True):
     """``expr`` d``var`` on the half piece from ``end`` (a singular end: a
     power (t - e)^beta of a factor vanishing there, -1 < beta, or a
     sqrt-type branch point) to end + d, in var = end + d w^q, w in [0, 1],
     the power q chosen from the end's exponent (:func:`_end_power`: 2 for
     beta >= -1/2, larger below): (the integrand in w, w, q).  The Jacobian
-    q d w^(q-1) included, a Piecewise folded and its branch on the half
-    piece taken, an asin or acos at its branch point +-1 there rewritten
-    (:func:`_arcs_at_end`), and the powers of w out of each factored
-    radicand (:func:`_root_out`), so that they cancel the Jacobian's and
-    the integrand is holomorphic at w = 0 (or vanishes there like a power
-    >= 3 of w, which ball arithmetic bounds).  A power beta <= -1 (the
-    integral diverges) or one that needs q > 2000 raises
+    q d w^(q-1) included, a Piecewise folded and, with ``branches``, its
+    branch on the half piece taken and an asin or acos at its branch point
+    +-1 there rewritten (:func:`_arcs_at_end`: what ball arithmetic needs;
+    a pointwise evaluation, mpmath's, does without), and the powers of w
+    out of each factored radicand (:func:`_root_out`), so that they cancel
+    the Jacobian's (no digits lost to cancellation in a^2 - t^2 next to the
+    end) and the integrand is holomorphic at w = 0 (or vanishes there like
+    a power >= 3 of w, which ball arithmetic bounds).  A power beta <= -1
+    (the integral diverges) or one that needs q > 2000 raises
     :class:`~.arb_compile.ArbUnsupported`.
     ``end`` and ``d`` may be symbols (a form made once for many points).
     In a variable without assumptions: SymPy's sign queries on a positive
@@ -86,13 +88,14 @@ def substitute_end(expr, var, end, d):
 
     >>> t = sp.Dummy("t")
     >>> g, w, q = substitute_end((1 - t)**sp.Rational(-2, 3), t, 1, -1)
-    >>> q, g.has(sp.Pow(w, -1)), sp.integrate(g, (w, 0, 1))      # int_0^1 (1 - t)^(-2/3) dt, oriented from t = 1
-    (12, False, -3)
+    >>> q, g, sp.integrate(g, (w, 0, 1))      # int_0^1 (1 - t)^(-2/3) dt = 3, oriented from t = 1
+    (12, -12*_w**3, -3)
     """
     expr, q = _end_power(expr, var, end)
     w = _w
-    g = expr.xreplace({var: end + d * w**q}) * q * d * w**(q - 1)
-    g = _arcs_at_end(_inside_branch(sp.piecewise_fold(g), w), w)
+    g = sp.piecewise_fold(expr.xreplace({var: end + d * w**q}) * q * d * w**(q - 1))
+    if branches:
+        g = _arcs_at_end(_inside_branch(g, w), w)
     g = g.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(w),
                   lambda z: _root_out(sp.factor(z.base), z.exp, w))
     return sp.expand_mul(g), w, q

@@ -253,24 +253,23 @@ def tanh_sinh(g, s, lo, hi, inner, dps: int, edge: bool = True, real_part: bool 
     SymPy integrand (every parameter a number) whose pressure may have an
     inverse-square-root singularity at s = hi: split as
     :func:`kernel_points` (at ``inner`` and the middles), the last piece, with
-    ``edge``, in s = hi - d u^2 with the radicands factored (the u^2 they
-    vanish with leaves the root exactly, so no digits cancel in hi^2 - s^2,
-    as they do in hi sin(phi)); logarithmic points (s = 0, x, a break) are
+    ``edge``, in s = hi - d u^q (:func:`~.endpoints.substitute_end`: q from
+    the exponent at hi, 2 for an inverse square root) with the radicands
+    factored (the u^q they vanish with leaves the root exactly, so no digits
+    cancel in hi^2 - s^2, as they do in hi sin(phi)); logarithmic points (s = 0, x, a break) are
     piece ends, where tanh-sinh converges.  None where the integrand cannot
     be prepared or is complex on a piece (the caller's route runs);
     ``real_part``: the real part of a complex value is taken instead."""
     try:
         lo, hi = to_basic(lo), to_basic(hi)
         pts = kernel_points(lo, hi, [to_basic(b) for b in inner])
-        u = sp.Dummy("u", positive=True)
         pieces = []
         for a, b in zip(pts[:-1], pts[1:]):
             if edge and b == hi:
-                d = hi - a
-                h = sp.piecewise_fold(g.xreplace({s: hi - d * u**2}) * 2 * d * u)
-                h = h.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(u),
-                              lambda z: sp.factor(z.base) ** z.exp)
-                pieces.append((sp.lambdify(u, h, "mpmath"), [sp.S.Zero, sp.S.One]))
+                # s = hi - (hi - a) u^q, oriented from hi (the form's integral is minus the piece's);
+                # mpmath evaluates point by point: no branch needs deciding on balls
+                h, u, _ = substitute_end(g, s, hi, a - hi, branches=False)
+                pieces.append((sp.lambdify(u, -h, "mpmath"), [sp.S.Zero, sp.S.One]))
             else:
                 pieces.append((sp.lambdify(s, g, "mpmath"), [a, b]))
     except (TypeError, ValueError, ZeroDivisionError, LineContactError):
@@ -296,7 +295,7 @@ def flamant_tanh_sinh(pieces, x, E, dps: int, breaks=(), real_part: bool = False
     """u_z(0) - u_z(x) (module docstring) by tanh-sinh, (value, error):
     ``pieces`` [(p, s, lo, hi)] with ``p`` SymPy in ``s`` (every parameter a
     number), the kernel ln|x^2/s^2 - 1| as it stands, each piece split at
-    x and ``breaks`` by :func:`tanh_sinh` (its last part in s = hi - d u^2
+    x and ``breaks`` by :func:`tanh_sinh` (its last part in s = hi - d u^q
     where p has no finite value at hi: the inverse square root of a contact
     edge).  None where a piece cannot be prepared (or, but with
     ``real_part``, is complex)."""

@@ -157,9 +157,16 @@ def test_a_singular_piece_is_enclosed_whichever_end_is_singular(f, ref):
 
 
 def test_the_flamant_edge_takes_the_same_substitution():
-    """The Flamant routine's contact edge is the same mechanism: q from the
+    """The Flamant routines' contact edge is the same mechanism: q from the
     pressure's exponent there (2 for the inverse square root of a punch's
-    edge, 12 for a power -2/3), not a fixed 2."""
+    edge, 12 for a power -2/3), not a fixed 2; in the Arb forms and in the
+    tanh-sinh route, whose edge piece of s^2 (1 - s)^(-3/4) (q = 16) gives
+    B(3, 1/4) = 128/45 to its 30 digits."""
     s = sp.Symbol("s", positive=True)
     assert flamant._edge_form(1 / sp.sqrt(1 - s**2), s, 1)[2] == 2
     assert flamant._edge_form((1 - s) ** sp.Rational(-2, 3), s, 1)[2] == 12
+    v, err = flamant.tanh_sinh(s**2 * (1 - s) ** sp.Rational(-3, 4), s, 0, 1, [], 30)
+    with mpmath.workdps(50):
+        ref = mpmath.beta(3, mpmath.mpf(1) / 4)
+        assert abs(ref - mpmath.mpf(128) / 45) < mpmath.mpf(10) ** -45
+        assert abs(v - ref) < ref * mpmath.mpf(10) ** -30 and err < mpmath.mpf(10) ** -30
