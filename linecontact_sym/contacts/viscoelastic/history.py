@@ -75,8 +75,11 @@ def history_callable(expr, values, what):
         raise DomainError(f"the {what} history needs values for {sorted(map(str, e.free_symbols - {S.t}))}")
     f = sp.lambdify(S.t, e, "mpmath")
     df = sp.lambdify(S.t, sp.diff(e, S.t), "mpmath")
-    start = sp.limit(e, S.t, 0, "+")
-    return e, f, df, mpmath.mpf(sp.N(start, mpmath.mp.dps + 5))
+    try:
+        start = mpmath.mpf(sp.N(sp.limit(e, S.t, 0, "+"), mpmath.mp.dps + 5))
+    except (NotImplementedError, ValueError, TypeError):   # SymPy's limit fails (Min, ...): the value just after 0
+        start = mpmath.re(f(mpmath.mpf(10)**(-mpmath.mp.dps - 5)))
+    return e, f, df, start
 
 
 def scan_maximum(f, lo, hi, breaks, what):
