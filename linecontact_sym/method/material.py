@@ -231,7 +231,12 @@ class NumericMaterial:
         for name, v in (("E(0+)", self.E0_exact), ("E(oo)", self.E_inf_exact)):
             if v.is_number and v.is_negative:
                 raise DomainError(f"the relaxation modulus {material} has {name} = {v} < 0")
-        J = material.creep().xreplace(vals)
+        self._vals = vals
+        self._J = None
+
+    def _creep(self):
+        """J*(t) at the numbers, as an mpmath callable (derived on first use: only creep needs it)."""
+        J = self.material.creep().xreplace(self._vals)
         if J.has(sp.InverseLaplaceTransform):
             Jh = sp.lambdify(_s, J.args[0], "mpmath")
             self.creep_closed = False
@@ -254,6 +259,8 @@ class NumericMaterial:
         """J*(t) (0 for t < 0)."""
         if tv <= 0:
             return mpmath.mpf(0) if tv < 0 or self.eta != 0 else 1 / mpmath.mpf(sp.N(self.E0_exact, mpmath.mp.dps + 5))
+        if self._J is None:
+            self._creep()
         return mpmath.re(self._J(tv))
 
     @property

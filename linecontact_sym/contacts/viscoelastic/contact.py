@@ -207,7 +207,7 @@ class ViscoelasticLineContact:
         if key not in self._cache:
             J = self.material.creep()
             P_t = sp.sympify(P_t)
-            P0 = sp.limit(P_t, S.t, 0, "+")
+            P0 = H.start_value(P_t)
             X = P0 * J if P0 != 0 else sp.S.Zero
             dP = sp.diff(P_t, S.t)
             if dP != 0:

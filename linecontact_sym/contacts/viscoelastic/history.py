@@ -67,8 +67,34 @@ class Numbers:
         return mpmath.mpf(0) if y <= 0 else half_width_at(self.law, y, mpmath.mp.dps)
 
 
+_CALLABLES = {}
+
+
 def history_callable(expr, values, what):
-    """(f, f', f(0+), breakpoints in (0, oo)) of a history expression in t at numbers."""
+    """(expression, f, f', f(0+)) of a history expression in t at numbers
+    (remembered: an evaluation at many times or points builds them once)."""
+    key = (sp.sympify(expr), tuple(sorted((k, str(v)) for k, v in values.items())), what, mpmath.mp.prec)
+    if key not in _CALLABLES:
+        if len(_CALLABLES) > 256:
+            _CALLABLES.clear()
+        _CALLABLES[key] = _history_callable(expr, values, what)
+    return _CALLABLES[key]
+
+
+def start_value(expr):
+    """lim_{t -> 0+} of a history (of its first Piecewise piece: SymPy's limit of
+    a whole Piecewise goes through its sets, slowly)."""
+    e = sp.sympify(expr)
+    if isinstance(e, sp.Piecewise):
+        tiny = sp.Rational(1, 10**40)
+        for piece, cond in e.args:
+            if cond is sp.true or bool(cond.subs(S.t, tiny)):
+                e = piece
+                break
+    return sp.limit(e, S.t, 0, "+")
+
+
+def _history_callable(expr, values, what):
     sub = {sym: user_value(values[sym.name], sym.name) for sym in expr.free_symbols - {S.t} if sym.name in values}
     e = sp.sympify(expr).xreplace(sub)
     if e.free_symbols - {S.t}:
@@ -76,7 +102,7 @@ def history_callable(expr, values, what):
     f = sp.lambdify(S.t, e, "mpmath")
     df = sp.lambdify(S.t, sp.diff(e, S.t), "mpmath")
     try:
-        start = mpmath.mpf(sp.N(sp.limit(e, S.t, 0, "+"), mpmath.mp.dps + 5))
+        start = mpmath.mpf(sp.N(start_value(e), mpmath.mp.dps + 5))
     except (NotImplementedError, ValueError, TypeError):   # SymPy's limit fails (Min, ...): the value just after 0
         start = mpmath.re(f(mpmath.mpf(10)**(-mpmath.mp.dps - 5)))
     return e, f, df, start
@@ -132,7 +158,7 @@ def invert_increasing(f, target, lo, hi):
     side = 0
     for _ in range(mpmath.mp.prec + 10):
         # regula falsi with the Illinois halving, kept inside the bracket
-        mid = hi - fhi * (hi - lo) / (fhi - flo)
+        mid = hi - fhi * (hi - lo) / (fhi - flo) if fhi != flo else (lo + hi) / 2
         if not lo < mid < hi:
             mid = (lo + hi) / 2
         fm = f(mid) - target
@@ -233,7 +259,10 @@ class HalfWidthHistory:
             s1 = t if loading else invert_increasing(self.a, A, mpmath.mpf(0), self.level.t_m)
             sx = invert_increasing(self.a, x, mpmath.mpf(0), s1) if x > self.a0 else mpmath.mpf(0)
             pts = [sx] + [b for b in self.breaks if sx < b < s1] + [s1]
-            out += _quad(lambda s: m.E(t - s) * num.dPi(self.a(s)) * self.da(s) / mpmath.sqrt(self.a(s)**2 - x * x), pts)
+            def g(s):
+                A2 = self.a(s)**2 - x * x
+                return m.E(t - s) * num.dPi(self.a(s)) * self.da(s) / mpmath.sqrt(A2) if A2 > 0 else mpmath.mpf(0)
+            out += _quad(g, pts)
             if loading and m.eta != 0:
                 out += mpmath.mpf(sp.N(m.eta, mpmath.mp.dps + 5)) * num.dPi(A) * self.da(t) / mpmath.sqrt(A * A - x * x)
         return out / mpmath.pi
