@@ -122,8 +122,8 @@ def test_closed_force_history_maxwell(prof):
 
 def test_ting_differs_from_naive_lee_radok():
     """In the receding phase the hereditary integral continued through unloading is
-    wrong: at t = 1.5 (Maxwell, parabola) it is 0.9 times smaller... and Ting's value
-    is the package's."""
+    wrong (at t = 1.5, Maxwell, parabola: a tension, -1.6 times Ting's force), and
+    Ting's value is the package's."""
     fp = PROFILES["parabola"][1]
     E = MATERIALS["maxwell"][1]
     v = visco("parabola", "maxwell")
@@ -133,7 +133,7 @@ def test_ting_differs_from_naive_lee_radok():
         good = ting(E, fp, tv)
     got = v.evaluate_at("force", 3 * HALF, CYCLE, dps=15, R=1)
     assert abs(got / good - 1) < 1e-12
-    assert abs(naive / good - 1) > 0.2       # not a rounding difference
+    assert naive < 0 < good                  # the naive integral pulls: not a rounding difference
 
 
 @pytest.mark.slow

@@ -94,7 +94,7 @@ class ViscoelasticLineContact:
     >>> import sympy as sp, linecontact_sym as lcs
     >>> v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=1))
     >>> v.force_history(sp.Rational(1, 10) * lcs.t)          # a(t) = t/10
-    pi*(t - 1 + exp(-t))/(100*R)
+    (pi*t - pi)/(100*R) + pi*exp(-t)/(100*R)
     """
 
     def __init__(self, contact, material):
@@ -133,8 +133,9 @@ class ViscoelasticLineContact:
             dPi = sp.diff(self.Pi, S.a).subs(S.a, a1s)
             kernel = sp.expand(m.relaxation.subs(S.t, S.t - _s))
             integrand = dPi * sp.diff(a1s, _s)
-            terms = sp.Add.make_args(kernel)
-            self._cache[key] = sp.Add(*[_integrate(sp.powsimp(tm * integrand), _s, 0, _u, budget) for tm in terms])
+            terms = sp.Add.make_args(kernel)      # one budget for all the terms
+            self._cache[key] = sp.Add(*[_integrate(sp.powsimp(tm * integrand), _s, 0, _u, budget / len(terms))
+                                        for tm in terms])
         return self._cache[key]
 
     def _entry_time(self, a1, level, t_m):
@@ -317,7 +318,7 @@ class ViscoelasticLineContact:
                     out += m.E(tv) * mpmath.quad(lambda b: num.dPi(b) * mpmath.log(2 * Lm / b), [0, top])
                 if A > hist.a0:
                     s1 = tv if loading else H.invert_increasing(hist.a, A, mpmath.mpf(0), lev.t_m)
-                    out += H._quad(lambda s: m.E(tv - s) * lev.dY(s) * lnw(s), lev._pts(s1))
+                    out += H.quad_pieces(lambda s: m.E(tv - s) * lev.dY(s) * lnw(s), lev.points(s1))
                     if loading and m.eta != 0:
                         raise DomainError("the dissipated work of a Kelvin-Voigt material needs the depth rate; "
                                           "not built")

@@ -34,7 +34,7 @@ class MultipleMaximaError(LineContactError, ValueError):
     single-maximum solution does not cover it."""
 
 
-def _quad(f, pts):
+def quad_pieces(f, pts):
     pts = sorted(set(pts))
     if len(pts) < 2 or pts[-1] <= pts[0]:
         return mpmath.mpf(0)
@@ -187,7 +187,7 @@ class Level:
         self.num, self.Y, self.dY, self.Y0, self.t_m, self.breaks = num, Y, dY, Y0, t_m, list(breaks)
         self.inv_cache = {}
 
-    def _pts(self, hi):
+    def points(self, hi):
         return [mpmath.mpf(0)] + [b for b in self.breaks if 0 < b < hi] + [hi]
 
     def entry_time(self, y):
@@ -203,7 +203,7 @@ class Level:
         out = Et * min(y, self.Y0)
         if y > self.Y0:
             s1 = t if loading else self.entry_time(y)
-            out += _quad(lambda s: m.E(t - s) * self.dY(s), self._pts(s1))
+            out += quad_pieces(lambda s: m.E(t - s) * self.dY(s), self.points(s1))
         if loading and m.eta != 0:
             out += mpmath.mpf(sp.N(m.eta, mpmath.mp.dps + 5)) * self.dY(t)
         return out
@@ -211,7 +211,7 @@ class Level:
     def G(self, s1, t):
         """F at the level Y(s1) in the receding phase (increasing in s1)."""
         m = self.num.m
-        return m.E(t) * self.Y0 + _quad(lambda s: m.E(t - s) * self.dY(s), self._pts(s1))
+        return m.E(t) * self.Y0 + quad_pieces(lambda s: m.E(t - s) * self.dY(s), self.points(s1))
 
 
 # ---------------------------------------------------------------- half-width given: force, pressure
@@ -262,7 +262,7 @@ class HalfWidthHistory:
             def g(s):
                 A2 = self.a(s)**2 - x * x
                 return m.E(t - s) * num.dPi(self.a(s)) * self.da(s) / mpmath.sqrt(A2) if A2 > 0 else mpmath.mpf(0)
-            out += _quad(g, pts)
+            out += quad_pieces(g, pts)
             if loading and m.eta != 0:
                 out += mpmath.mpf(sp.N(m.eta, mpmath.mp.dps + 5)) * num.dPi(A) * self.da(t) / mpmath.sqrt(A * A - x * x)
         return out / mpmath.pi
@@ -283,7 +283,7 @@ class LoadHistory:
             _, self.X, self.dX, _ = history_callable(X_expr, values, "creep level")
         else:
             def X(s):
-                return self.P0 * m.J(s) + _quad(lambda u: m.J(s - u) * self.dP(u), [0] + [b for b in self.breaks if b < s] + [s])
+                return self.P0 * m.J(s) + quad_pieces(lambda u: m.J(s - u) * self.dP(u), [0] + [b for b in self.breaks if b < s] + [s])
 
             def dX(s, h=None):
                 h = s * mpmath.mpf(10)**(-mpmath.mp.dps // 3)
@@ -311,5 +311,5 @@ class LoadHistory:
         return self.num.a_of(self.X(s1))
 
 
-__all__ = ["Numbers", "Level", "HalfWidthHistory", "LoadHistory", "MultipleMaximaError", "scan_maximum",
+__all__ = ["Numbers", "Level", "quad_pieces", "start_value", "HalfWidthHistory", "LoadHistory", "MultipleMaximaError", "scan_maximum",
            "invert_increasing", "history_callable", "SCAN"]
