@@ -151,6 +151,16 @@ def test_pressure_integrates_to_the_force():
     assert abs(tot / P - 1) < 1e-6
 
 
+
+def test_pressure_history_form():
+    """p(x, t) as a formula: 0 outside the contact, an unevaluated Integral inside
+    (SymPy finds no closed form for the parabola under Maxwell)."""
+    p = visco("parabola", "maxwell").pressure_history(CYCLE)
+    assert p.xreplace({t: 3, R: 1, lcs.x: sp.Rational(1, 20)}) == 0
+    assert p.xreplace({t: sp.Rational(1, 2), R: 1, lcs.x: sp.Rational(1, 10)}) == 0
+    assert p.xreplace({t: sp.Rational(1, 2), R: 1, lcs.x: sp.Rational(1, 40)}).has(sp.Integral)
+
+
 # ---------------------------------------------------------------- creep
 def test_creep_step_load_closed_form_sls():
     """a(t) under a step load P0 (SLS): Pi(a) = P0 J(t) with the textbook compliance
@@ -256,3 +266,44 @@ def test_more_than_one_maximum_is_refused():
         v.force_history(twice)
     with pytest.raises(MultipleMaximaError):
         v.evaluate_at("force", 2, twice, R=1)
+
+
+def test_constant_modulus_is_the_elastic_contact():
+    """Elastic is the material with E*(t) constant: the force history is E Pi(a(t))
+    exactly (Pi(a) = 3 pi a^4/4 for x^4, from Eq. 10 by hand)."""
+    E = sp.Symbol("E", positive=True)
+    v = lcs.LineContact(lcs.x**4, verify=False).viscoelastic(lcs.Material(E))
+    assert sp.simplify(v.force_history(t / 10) - E * 3 * sp.pi * (t / 10)**4 / 4) == 0
+
+
+def test_kelvin_voigt_creep_under_a_step():
+    """Kelvin-Voigt under a step load P0: Pi(a) = P0 (1 - exp(-E t/eta))/E (no instantaneous
+    contact: J(0) = 0), parabola R = 1, solved here."""
+    v = visco("parabola", "kelvin_voigt")                       # E = 1, eta = 1/2
+    for tv in (sp.Rational(1, 10), sp.Integer(3)):
+        ref = mpmath.sqrt(4 * 2 * (1 - mpmath.exp(-2 * float(tv))) / mpmath.pi)
+        assert abs(v.half_width_at(tv, sp.Integer(2), dps=15, R=1) / ref - 1) < 1e-12
+
+
+def test_periodic_array_step():
+    """A periodic array (force law linear in E*): after a step to a0 the load per
+    period is E*(t) Pi(a0), Pi of 1 - cos x on the period 2 pi is pi sin(a/2)^2
+    (Westergaard, evaluated here)."""
+    v = lcs.LineContact(1 - sp.cos(lcs.x), period=2 * sp.pi, verify=False).viscoelastic(
+        lcs.standard_linear_solid(E0=3, E_inf=1, tau=1))
+    ref = (1 + 2 * mpmath.exp(-2)) * mpmath.pi * mpmath.sin(mpmath.mpf(1) / 4)**2
+    assert abs(v.evaluate_at("force", 2, HALF + 0 * t, dps=15) / ref - 1) < 1e-12
+
+
+@pytest.mark.slow
+def test_dissipated_work_of_a_cycle():
+    """The indenter's work over a closed cycle (depth from the distance L): positive
+    for Maxwell, linear in the relaxing part of an almost elastic SLS, and growing
+    with L (a 2-D viscoelastic half-plane dissipates in its far field)."""
+    cyc = lambda m, L: lcs.parabola(verify=False).viscoelastic(m).dissipated_work(  # noqa: E731
+        CYCLE, t_end=2, L=L, points=100, R=1)
+    W = cyc(lcs.maxwell(E0=2, tau=1), 10)
+    assert W > 0 and cyc(lcs.maxwell(E0=2, tau=1), 100) > W
+    w1 = cyc(lcs.standard_linear_solid(E0=1 + sp.Rational(1, 10**6), E_inf=1, tau=1), 10)
+    w2 = cyc(lcs.standard_linear_solid(E0=1 + sp.Rational(2, 10**6), E_inf=1, tau=1), 10)
+    assert 0 < w1 < 1e-9 and abs(w2 / w1 - 2) < 1e-3

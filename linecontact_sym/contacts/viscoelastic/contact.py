@@ -179,7 +179,7 @@ class ViscoelasticLineContact:
             out.append((rec, cond))
         return sp.Piecewise(*out)
 
-    def pressure_history(self, a_t, budget: float = HISTORY_BUDGET / 4):
+    def pressure_history(self, a_t, budget: float = HISTORY_BUDGET / 10):
         """p(x, t) for |x| < a(t) (0 beyond): the punches b in (|x|, a(t)) each
         with E*(t - t_b),  p = (1/pi) int_|x|^a(t) Pi'(b) E(t - t_b)/sqrt(b^2 - x^2) db
         [+ eta Pi'(a) a'(t)/(pi sqrt(a^2 - x^2)) while loading]; t_b the entry time of
@@ -192,11 +192,13 @@ class ViscoelasticLineContact:
             tb = sp.Piecewise((0, _b <= a0), (tb, True))
         integrand = sp.diff(self.Pi, S.a).subs(S.a, _b) * m.relaxation.subs(S.t, S.t - tb) / sp.sqrt(_b**2 - S.x**2)
 
+        body = _integrate(integrand, _b, S.x, _u, budget) / sp.pi      # integrated once, the upper limit u
+
         def p_at(top, loading):
-            v = _integrate(integrand, _b, S.x, top, budget) / sp.pi
+            v = body.subs(_u, top)
             if loading and m.impulse != 0:
                 v += m.impulse * sp.diff(self.Pi, S.a).subs(S.a, top) * sp.diff(top, S.t) / (sp.pi * sp.sqrt(top**2 - S.x**2))
-            return v
+            return sp.Piecewise((v, S.x < top), (0, True))      # no pressure outside the contact
         if ph.t_m is None:
             return p_at(a1, True)
         return sp.Piecewise((p_at(a1, True), S.t <= ph.t_m), *[(p_at(e, False), c) for e, c in ph.receding])
