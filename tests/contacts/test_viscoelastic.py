@@ -152,6 +152,7 @@ def test_pressure_integrates_to_the_force():
 
 
 
+@pytest.mark.slow
 def test_pressure_history_form():
     """p(x, t) as a formula: 0 outside the contact, an unevaluated Integral inside
     (SymPy finds no closed form for the parabola under Maxwell)."""
@@ -307,3 +308,9 @@ def test_dissipated_work_of_a_cycle():
     w1 = cyc(lcs.standard_linear_solid(E0=1 + sp.Rational(1, 10**6), E_inf=1, tau=1), 10)
     w2 = cyc(lcs.standard_linear_solid(E0=1 + sp.Rational(2, 10**6), E_inf=1, tau=1), 10)
     assert 0 < w1 < 1e-9 and abs(w2 / w1 - 2) < 1e-3
+
+
+def test_history_data_between_the_elastic_limits():
+    """While the contact grows (SLS), E*(oo) Pi(a) <= P(t) <= E*(0) Pi(a): the arrays of the plot."""
+    d = visco("parabola", "sls").history_data(CYCLE, 1, points=8, R=1)
+    assert d["t"].shape == (8,) and np.all(d["P_Einf"] < d["P"]) and np.all(d["P"] < d["P_E0"])

@@ -290,6 +290,34 @@ class ViscoelasticLineContact:
             choice = next(k for k in ("elastic E*(0)", "elastic E*(oo)", "viscoelastic") if errs[k] <= rtol)
             return ModelChoice(choice, {k: float(v) for k, v in errs.items()}, [float(tv) for tv in ts])
 
+    def history_data(self, history, t_end, points: int = 101, dps: int = 15, **values) -> dict:
+        """Arrays over (0, t_end]: t, a(t), P(t), and the elastic limits
+        E*(0) Pi(a(t)), E*(oo) Pi(a(t)) (float64; the numbers by :meth:`evaluate_at`'s quadrature)."""
+        import numpy as np
+        num = self._numbers(values)
+        with workdps(dps):
+            T = mpmath.mpf(sp.N(sp.sympify(t_end), dps + 5))
+            hist = H.HalfWidthHistory(num, history, values, T)
+            ts = [T * k / points for k in range(1, points + 1)]
+            a = [hist.a(tv) for tv in ts]
+            Pe = [num.Pi(av) for av in a]
+            E0, Ei = num.m.E0, num.m.E_inf
+            return {"t": np.array([float(v) for v in ts]), "a": np.array([float(v) for v in a]),
+                    "P": np.array([float(hist.force(tv)) for tv in ts]),
+                    "P_E0": np.array([float(E0 * p) if E0 != mpmath.inf else np.inf for p in Pe]),
+                    "P_Einf": np.array([float(Ei * p) for p in Pe])}
+
+    def plot(self, history, t_end, what: str = "history", path=None, points: int = 101, **values):
+        """``what='history'``: P(t) with its elastic limits over a(t); ``'hysteresis'``:
+        the loop P(a) of a cycle (see :mod:`linecontact_sym.views.viscoelastic_plots`)."""
+        from ...views.viscoelastic_plots import history_figure, hysteresis_figure
+        data = self.history_data(history, t_end, points, **values)
+        if what == "history":
+            return history_figure(data, path, title=self.material.name)
+        if what == "hysteresis":
+            return hysteresis_figure(data, path, title=self.material.name)
+        raise DomainError(f"unknown plot {what!r}: 'history' or 'hysteresis'")
+
     def dissipated_work(self, a_t, t_end, L, points: int = 400, **values):
         """The work per unit length done by the indenter over (0, t_end],
         W = int P dd, the depth d(t) measured from a point at the distance L
