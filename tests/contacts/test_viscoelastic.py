@@ -314,3 +314,18 @@ def test_history_data_between_the_elastic_limits():
     """While the contact grows (SLS), E*(oo) Pi(a) <= P(t) <= E*(0) Pi(a): the arrays of the plot."""
     d = visco("parabola", "sls").history_data(CYCLE, 1, points=8, R=1)
     assert d["t"].shape == (8,) and np.all(d["P_Einf"] < d["P"]) and np.all(d["P"] < d["P_E0"])
+
+
+@pytest.mark.slow
+def test_a_wrong_closed_form_is_not_returned(monkeypatch):
+    """The closed form is checked against the quadrature of the superposition at one
+    point per phase: a SymPy integral that came out wrong (here: doubled) gives way
+    to the unevaluated Integral."""
+    from linecontact_sym.contacts.viscoelastic import contact as vc
+    good = vc._integrate
+    monkeypatch.setattr(vc, "_integrate", lambda *a: 2 * good(*a))
+    v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=1))
+    F = v.force_history(CYCLE)
+    assert F.has(sp.Integral)
+    ref = mpmath.quad(lambda s: 2 * mpmath.exp(-(0.5 - s)) * mpmath.pi * s / 200, [0, 0.5])   # by hand, R = 1
+    assert abs(sp.N(F.xreplace({t: sp.Rational(1, 2), R: 1}), 15) / ref - 1) < 1e-12

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import random
+
 import mpmath
 import sympy as sp
 
@@ -124,19 +126,44 @@ class ViscoelasticLineContact:
                             key=lambda s: s.name))
 
     # ------------------------------------------------------------ closed forms
-    def _loading_integral(self, a1, budget):
-        """int_0^u E_reg(t - s) Pi'(a1(s)) a1'(s) ds as a function of the upper limit u."""
-        key = ("load", a1)
+    def _loading_integral(self, a1, budget, closed: bool = True):
+        """int_0^u E_reg(t - s) Pi'(a1(s)) a1'(s) ds as a function of the upper limit u,
+        term by term of E_reg as given (one budget for all the terms); ``closed=False``:
+        the unevaluated integrals."""
+        key = ("load", a1, closed)
         if key not in self._cache:
             m = self.material
             a1s = a1.subs(S.t, _s)
             dPi = sp.diff(self.Pi, S.a).subs(S.a, a1s)
-            kernel = sp.expand(m.relaxation.subs(S.t, S.t - _s))
-            integrand = dPi * sp.diff(a1s, _s)
-            terms = sp.Add.make_args(kernel)      # one budget for all the terms
-            self._cache[key] = sp.Add(*[_integrate(sp.powsimp(tm * integrand), _s, 0, _u, budget / len(terms))
-                                        for tm in terms])
+            integrand = sp.expand_power_base(sp.powsimp(dPi * sp.diff(a1s, _s)))
+            terms = sp.Add.make_args(m.relaxation)
+            out = []
+            for tm in terms:
+                f = sp.powsimp(tm.subs(S.t, S.t - _s) * integrand)
+                out.append(_integrate(f, _s, 0, _u, budget / len(terms)) if closed else sp.Integral(f, (_s, 0, _u)))
+            self._cache[key] = sp.Add(*out)
         return self._cache[key]
+
+    def _checked(self, F, a_t, build):
+        """F if it agrees with the quadrature of the superposition (:meth:`evaluate_at`)
+        at one point of each phase, with the parameters drawn in [1/2, 1]; else the
+        unevaluated form ``build()`` (a closed form SymPy got wrong is never returned)."""
+        if not F.has(sp.Integral) and not F.has(sp.nan, sp.zoo):
+            syms = sorted(F.free_symbols - {S.t}, key=lambda s: s.name)
+            rng = random.Random(41)
+            vals = {s_: sp.Rational(rng.randint(6, 12), 12) for s_ in syms}
+            ph = phases(a_t)
+            t_m = ph.t_m.xreplace(vals) if ph.t_m is not None else sp.Integer(1)
+            for tv in (t_m / 2, t_m * sp.Rational(5, 4)) if ph.t_m is not None else (t_m / 2,):
+                try:
+                    ref = self.evaluate_at("force", tv, a_t.xreplace(vals), dps=15,
+                                           **{k.name: v for k, v in vals.items()})
+                except (LineContactError, ValueError, ZeroDivisionError):
+                    continue                    # outside a domain at these numbers: not checked here
+                got = sp.N(F.xreplace({**vals, S.t: tv}), 20)
+                if not got.is_number or not got.is_finite or abs(complex(got) - complex(ref)) > 1e-9 * abs(ref) + 1e-300:
+                    return build()
+        return F
 
     def _entry_time(self, a1, level, t_m):
         """s with a1(s) = level on the loading piece (SymPy solve; the root
@@ -159,10 +186,14 @@ class ViscoelasticLineContact:
         s1 = t while a grows (Lee-Radok), s1 the loading time with
         a(s1) = a(t) after the maximum (Ting).  Closed where SymPy integrates,
         else an unevaluated Integral (numbers: :meth:`evaluate_at`)."""
+        F = self._force_history(a_t, budget, True)
+        return self._checked(F, sp.sympify(a_t), lambda: self._force_history(a_t, budget, False))
+
+    def _force_history(self, a_t, budget, closed):
         ph = phases(a_t)
         m, a1 = self.material, ph.loading
         a0 = sp.limit(a1, S.t, 0, "+")
-        I = self._loading_integral(a1, budget)
+        I = self._loading_integral(a1, budget, closed)
         step = m.relaxation * self.Pi.subs(S.a, a0) if a0 != 0 else sp.S.Zero
         load = step + I.subs(_u, S.t)
         if m.impulse != 0:
