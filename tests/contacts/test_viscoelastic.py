@@ -329,3 +329,18 @@ def test_a_wrong_closed_form_is_not_returned(monkeypatch):
     assert F.has(sp.Integral)
     ref = mpmath.quad(lambda s: 2 * mpmath.exp(-(0.5 - s)) * mpmath.pi * s / 200, [0, 0.5])   # by hand, R = 1
     assert abs(sp.N(F.xreplace({t: sp.Rational(1, 2), R: 1}), 15) / ref - 1) < 1e-12
+
+
+def test_creep_closed_form_only_for_a_load_that_never_decreases():
+    v = visco("parabola", "maxwell")
+    with pytest.raises(DomainError, match="Ting"):
+        v.half_width_history(sp.Piecewise((t, t <= 1), (2 - t, True)))
+
+
+@pytest.mark.slow
+def test_creep_ramp_then_hold_closed_form():
+    v = visco("parabola", "maxwell")
+    # a ramp then hold: a(t) = sqrt(4 X/pi), X = int J dP by hand (J = (1 + t)/2, Maxwell E0 = 2, tau = 1)
+    a_t = v.half_width_history(sp.Piecewise((t, t <= 1), (1, True)))
+    X = (2 + 2**2 / 2 - (1 + 1 / 2)) / 2              # int_0^1 J(2 - u) du = int_1^2 J(w) dw at t = 2
+    assert abs(float(a_t.xreplace({t: 2, R: 1})) / np.sqrt(4 * X / np.pi) - 1) < 1e-13

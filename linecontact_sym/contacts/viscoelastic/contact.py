@@ -254,6 +254,13 @@ class ViscoelasticLineContact:
         Pi(a(t)) = X(t), :meth:`creep_level`): the engine's elastic a(P) at
         E* = 1 and P = X(t).  After the maximum of X the contact recedes by
         Ting's rule, which has no closed form: numbers from :meth:`half_width_at`."""
+        h = sp.sympify(P_t)
+        for e, _ in (h.args if isinstance(h, sp.Piecewise) else [(h, sp.true)]):
+            d = sp.simplify(sp.diff(e, S.t))
+            if not d.is_nonnegative:
+                raise DomainError(f"the load {h} may decrease (dP/dt = {d} on a piece): then the contact recedes "
+                                  "by Ting's rule, which has no closed form; half_width_at gives numbers "
+                                  "(a closed a(t) is built for a load that never decreases: step, ramp, hold)")
         X = self.creep_level(P_t, budget)
         aP = self.contact.half_width(S.P).expr
         return aP.xreplace({S.P: X, S.E_star: sp.Integer(1)})
