@@ -39,15 +39,13 @@ Constructors (each parameter a positive number or SymPy symbol):
 """
 from __future__ import annotations
 
-import math
 
 import mpmath
 import sympy as sp
 
 from ..core import symbols as S
 from ..core.budget import run_with_budget
-from ..core.errors import BudgetExceeded, DomainError, LineContactError
-from ..core.precision import workdps
+from ..core.errors import BudgetExceeded, DomainError
 from ..parsing import user_value
 
 #: CPU seconds for the derivation of a creep function
