@@ -338,19 +338,3 @@ def test_model_maugis_dugdale(capsys):
     code, out, _ = run(capsys, "model", "x**2/(2*R)", "--set", "R=1", "E_star=1", "gamma=1", "sigma_0=30",
                        "--rtol", "0.01", "--json")
     assert code == 0 and json.loads(out)["model"] == "JKR"
-
-
-def test_viscoelastic_derive_and_eval(capsys):
-    """derive/eval with a material: the Maxwell force history of a ramp-recede, and
-    Ting's number at t = 3/2, which is int_0^{1/2} 2 exp(-(3/2 - s)) (pi s/200) ds by hand
-    (a(s) = s/10 reaches a(3/2) = 1/20 at s = 1/2)."""
-    import mpmath
-    cyc = "Piecewise((t/10, t <= 1), ((2 - t)/10, t <= 2), (0, True))"
-    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--material", "maxwell:E0=2,tau=1", "--history", cyc, "--json")
-    assert code == 0 and "exp(-t)" in json.loads(out)["force_history"]
-    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "force", "--material", "maxwell:E0=2,tau=1", "--history", cyc,
-                       "--set", "R=1", "--at", "t=1.5", "--dps", "20", "--json")
-    ref = mpmath.quad(lambda s: 2 * mpmath.exp(-(1.5 - s)) * mpmath.pi * s / 200, [0, 0.5])
-    assert code == 0 and abs(float(json.loads(out)["rows"][0]["value"]) / ref - 1) < 1e-12
-    code, _, err = run(capsys, "eval", "x**2/(2*R)", "force", "--material", "burgers:E0=1", "--history", "t", "--at", "t=1")
-    assert code != 0 and "burgers" in err

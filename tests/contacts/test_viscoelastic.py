@@ -344,3 +344,26 @@ def test_creep_ramp_then_hold_closed_form():
     a_t = v.half_width_history(sp.Piecewise((t, t <= 1), (1, True)))
     X = (2 + 2**2 / 2 - (1 + 1 / 2)) / 2              # int_0^1 J(2 - u) du = int_1^2 J(w) dw at t = 2
     assert abs(float(a_t.xreplace({t: 2, R: 1})) / np.sqrt(4 * X / np.pi) - 1) < 1e-13
+
+
+def run_cli(capsys, *argv):
+    from linecontact_sym import cli
+    code = cli.main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_viscoelastic_derive_and_eval(capsys):
+    """derive/eval with a material: the Maxwell force history of a ramp-recede, and
+    Ting's number at t = 3/2, which is int_0^{1/2} 2 exp(-(3/2 - s)) (pi s/200) ds by hand
+    (a(s) = s/10 reaches a(3/2) = 1/20 at s = 1/2)."""
+    import json
+    cyc = "Piecewise((t/10, t <= 1), ((2 - t)/10, t <= 2), (0, True))"
+    code, out, _ = run_cli(capsys, "derive", "x**2/(2*R)", "--material", "maxwell:E0=2,tau=1", "--history", cyc, "--json")
+    assert code == 0 and "exp(-t)" in json.loads(out)["force_history"]
+    code, out, _ = run_cli(capsys, "eval", "x**2/(2*R)", "force", "--material", "maxwell:E0=2,tau=1", "--history", cyc,
+                       "--set", "R=1", "--at", "t=1.5", "--dps", "20", "--json")
+    ref = mpmath.quad(lambda s: 2 * mpmath.exp(-(1.5 - s)) * mpmath.pi * s / 200, [0, 0.5])
+    assert code == 0 and abs(float(json.loads(out)["rows"][0]["value"]) / ref - 1) < 1e-12
+    code, _, err = run_cli(capsys, "eval", "x**2/(2*R)", "force", "--material", "burgers:E0=1", "--history", "t", "--at", "t=1")
+    assert code != 0 and "burgers" in err
