@@ -13,6 +13,6 @@ physical effect, one subpackage each:
 all of them, :mod:`.sampling` the verification points, :mod:`.catalogue` the
 paper's profiles as ready-made contacts.  Importing the package registers every
 contact kind (:data:`~.base.CONTACT_KINDS`)."""
-from . import normal, adhesion, tangential, stresses  # importing registers the kinds
+from . import normal, adhesion, tangential, stresses, asymmetric  # importing registers the kinds
 
-__all__ = ["normal", "adhesion", "tangential", "stresses"]
+__all__ = ["normal", "adhesion", "tangential", "stresses", "asymmetric"]

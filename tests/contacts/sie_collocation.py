@@ -101,3 +101,14 @@ def right_corner(fprime, e, a, load, E=1, N=24):
     colloc = [mpmath.cos(2 * k * mpmath.pi / (2 * N + 1)) for k in range(1, N + 1)]
     phi, th = _solve(nodes, weights, colloc, e, a, E, fprime, load=load)
     return Solution(nodes, weights, phi, th, e, a, E, lambda t: mpmath.sqrt((1 + t) / (1 - t)))
+
+
+def displacement_difference(sol, x1, x0):
+    """u(x1) - u(x0) of the collocated pressure, u(x) = -(2/(pi E*)) int p(t) ln|x - t| dt
+    (u positive into the body; x1, x0 outside the contact or at its ends), by
+    tanh-sinh quadrature of the interpolated pressure in tau."""
+    def g(tau):
+        xt = sol.e + sol.a * tau
+        return sol.weight(tau) * sol.phi_at(tau) * (mpmath.log(abs(x1 - xt)) - mpmath.log(abs(x0 - xt)))
+    total = mpmath.quad(g, [-1, 0, 1])
+    return -2 / mpmath.pi * sol.a * total     # p = E* w phi: E* cancels

@@ -88,6 +88,7 @@ from ...core.conversion import to_mpf
 from ...core.errors import DomainError, ProfileError
 from ...core.precision import workdps
 from ...method.profile import Profile
+from ...parsing import user_value
 from ..normal.contact import LineContact
 from ..normal.force_law import ForceLaw
 from .split import even_part, odd_integral
@@ -275,8 +276,7 @@ class OffsetNumbers:
         missing = [v.name for v in core.variables if v.name not in values]
         if missing:
             raise DomainError(f"the asymmetric contact needs values for {', '.join(missing)}")
-        self.values = {v: sp.nsimplify(values[v.name]) if isinstance(values[v.name], float) else
-                       sp.sympify(values[v.name]) for v in core.variables}
+        self.values = {v: user_value(values[v.name]) for v in core.variables}
         self.E = to_mpf(self.values[S.E_star])
         self._laws: dict = {}
         self._fns: dict = {}
