@@ -122,8 +122,7 @@ class AsymmetricState:
         key = (which, self.regime)
         if key not in cache:
             core = self.contact.core
-            if not core.closed() or any(not c.derivation(which).closed_form for c in
-                                        (core.even, core.odd) if c is not None):
+            if not core.closed() or not core.closed(which):
                 cache[key] = None
             else:
                 th, P0 = sp.Symbol("theta_n", real=True), sp.Symbol("P0_n", real=True)

@@ -124,9 +124,86 @@ def _d_in_s(expr, s):
     return d.xreplace({S.x: s}) if odd else sp.sign(s) * d.xreplace({S.x: sp.Abs(s)})
 
 
+#: the positive distance of the centre from a kink of the profile, the parameter
+#: of the parts in one case (e = b + eps or e = b - eps)
+EPS = sp.Symbol("epsilon_e", positive=True)
+
+
+def kinks(f, x=S.x_real) -> list:
+    """The points b where a Piecewise (or Abs, Min, Max, sign, Heaviside) of
+    f switches in x, as expressions in the parameters."""
+    g = f
+    for k in [t for t in f.atoms(sp.Abs, sp.Min, sp.Max, sp.sign, sp.Heaviside) if t.has(x)]:
+        g = g.xreplace({k: k.rewrite(sp.Piecewise)})
+    found = []
+    for pw in g.atoms(sp.Piecewise):
+        for _, cond in pw.args:
+            for rel in cond.atoms(sp.core.relational.Relational):
+                if not rel.has(x):
+                    continue
+                sol = sp.solve(sp.Eq(rel.lhs, rel.rhs), x)
+                if len(sol) != 1:
+                    raise ProfileError(f"cannot read the breakpoint of {rel} in the profile {f}")
+                if not any(sp.simplify(sol[0] - b) == 0 for b in found):
+                    found.append(sol[0])
+    return found
+
+
+class _Case:
+    """The parts of the profile about the centre where e is on one side of the
+    profile's kink b (or everywhere: no kink): E, H and s^2/2 as engine contacts,
+    in the parameter ``par`` (e itself, or eps = sign (e - b) > 0)."""
+
+    def __init__(self, f, condition, par, centre, aux, kw, name, budget):
+        self.condition, self.par, self.centre = condition, par, centre
+        #: the centre e in terms of the case's parameter, and back
+        self.back = {} if par == S.e else {par: sp.expand((S.e - centre.xreplace({par: 0})) /
+                                                         sp.diff(centre, par))}
+        self.parts = {"E": even_part(f, e=centre), "H": odd_integral(f, e=centre, seconds=budget)}
+
+        def contact(expr, what):
+            if expr is None:
+                raise ProfileError(f"the profile {name}: SymPy finds no antiderivative, needed for its "
+                                   f"odd part (H(s) = int_0^s h); give a profile whose antiderivative closes")
+            expr = sp.piecewise_fold(expr)
+            if not expr.has(S.x):
+                if sp.simplify(expr) != 0:
+                    raise ProfileError(f"the {what} part of {name} is a constant {expr} != 0")
+                return None
+            used = {p: r for p, r in aux.items() if p in expr.free_symbols}
+            return LineContact(Profile(expr, used, name=f"{what} part of {name} about e", auxiliary=True), **kw)
+        self.even = contact(self.parts["E"], "even")
+        self.odd = contact(self.parts["H"], "odd-integral")
+
+    def par_value(self, ev):
+        """The case's parameter at a number e."""
+        if self.par == S.e:
+            return ev
+        return to_mpf(self.back[self.par].xreplace({S.e: sp.Float(ev, mpmath.mp.dps + 5)}).evalf(mpmath.mp.dps + 5)) \
+            if not isinstance(ev, sp.Basic) else self.back[self.par].xreplace({S.e: ev})
+
+    def holds(self, ev) -> bool:
+        """Is the number e in this case?"""
+        if self.condition is sp.true:
+            return True
+        return bool(self.condition.xreplace({S.e: sp.Float(ev, mpmath.mp.dps + 5)}))
+
+    def expr(self, contact, quantity):
+        """An engine result of a part in e (the case's parameter mapped back)."""
+        if contact is None:
+            return sp.S.Zero
+        return contact.derivation(quantity).expr.xreplace(self.back)
+
+
 class OffsetContact:
     """The contact on [e - a, e + a] of a profile on the whole line: see the
-    module docstring (problem, reduction, API, sign conventions)."""
+    module docstring (problem, reduction, API, sign conventions).
+
+    A profile with a kink b (one Piecewise switch, an Abs) splits into two
+    cases, e > b and e < b: in each the parts are Piecewise in s with their
+    switch at |e - b| (the parameter eps = |e - b| > 0 of the engine); the
+    symbolic results are Piecewise in e, the numbers pick the case of e.
+    More than one kink is refused (a ProfileError)."""
 
     def __init__(self, f, params=None, *, x=S.x_real, name=None, budget=DEFAULT_BUDGET, verify=True,
                  points: int = 5, e_range=(-1, 1)):
@@ -146,22 +223,19 @@ class OffsetContact:
         else:
             declared = {p: None for p in (params or ())}
         self.params = tuple(sorted(self.f.free_symbols - {S.x_real}, key=lambda v: v.name))
-        aux = {**declared, S.e: e_range}
-        self.parts = {"E": even_part(self.f), "H": odd_integral(self.f, seconds=budget)}
         kw = dict(budget=budget, verify=verify, points=points)
-
-        def contact(expr, what):
-            if expr is None:
-                raise ProfileError(f"the profile {self.name}: SymPy finds no antiderivative, needed for its "
-                                   f"odd part (H(s) = int_0^s h); give a profile whose antiderivative closes")
-            if not expr.has(S.x):
-                if expr != 0:
-                    raise ProfileError(f"the {what} part of {self.name} is a constant {expr} != 0")
-                return None
-            used = {p: r for p, r in aux.items() if p in expr.free_symbols}
-            return LineContact(Profile(expr, used, name=f"{what} part of {self.name} about e", auxiliary=True), **kw)
-        self.even = contact(self.parts["E"], "even")
-        self.odd = contact(self.parts["H"], "odd-integral")
+        bs = kinks(self.f)
+        if len(bs) > 1:
+            raise ProfileError(f"the profile {self.name} switches at {len(bs)} points ({bs}); the asymmetric "
+                               f"contact reads one kink (two cases of the centre) for now")
+        if not bs:
+            self.cases = (_Case(self.f, sp.true, S.e, S.e, {**declared, S.e: e_range}, kw, self.name, budget),)
+        else:
+            b = bs[0]
+            self.cases = tuple(_Case(self.f, cond, EPS, b + sign * EPS, {**declared, EPS: None}, kw, self.name,
+                                     budget)
+                               for cond, sign in ((S.e >= b, 1), (S.e < b, -1)))
+        self.kinks = tuple(bs)
         self.rotation = LineContact(S.x**2 / 2, **kw)
         self.budget, self.verify = budget, verify
         self._memo: dict = {}
@@ -170,49 +244,79 @@ class OffsetContact:
         return f"OffsetContact({self.f})"
 
     @property
+    def even(self):
+        """The engine contact of E (one case; with a kink the case e >= b)."""
+        return self.cases[0].even
+
+    @property
+    def odd(self):
+        """The engine contact of H (one case; with a kink the case e >= b)."""
+        return self.cases[0].odd
+
+    @property
+    def parts(self):
+        return self.cases[0].parts
+
+    @property
     def variables(self):
         """The symbols a number needs besides e, a (and x): E_star and the profile's parameters."""
         return (S.E_star,) + self.params
 
+    def case_of(self, ev) -> _Case:
+        """The case a number e lies in."""
+        for c in self.cases:
+            if c.holds(ev):
+                return c
+        raise DomainError(f"e = {ev} is in no case of {self.name}")
+
     # ------------------------------------------------------------ symbolic
-    def _part(self, contact, quantity):
-        if contact is None:
-            return sp.S.Zero
-        return contact.derivation(quantity).expr
+    def _combine(self, make):
+        """make(case) for every case, as a Piecewise in e where there are two."""
+        if len(self.cases) == 1:
+            return make(self.cases[0])
+        return sp.Piecewise(*[(make(c), c.condition) for c in self.cases[:-1]], (make(self.cases[-1]), True))
 
     def derivations(self):
         """{name: Derivation} of every engine result used (for the records)."""
         out = {}
-        for label, c in (("E", self.even), ("H", self.odd), ("rotation", self.rotation)):
-            if c is not None:
-                for q in ("force", "pressure", "gap"):
-                    out[f"{q}[{label}]"] = c.derivation(q)
+        for k, case in enumerate(self.cases):
+            for label, c in (("E", case.even), ("H", case.odd)):
+                if c is not None:
+                    for q in ("force", "pressure", "gap"):
+                        out[f"{q}[{label}{'' if len(self.cases) == 1 else k}]"] = c.derivation(q)
+        for q in ("force", "pressure", "gap"):
+            out[f"{q}[rotation]"] = self.rotation.derivation(q)
         return out
 
-    def closed(self) -> bool:
-        """Did the engine close the force laws of E and H?"""
-        return all(c is None or c.derivation("force").closed_form for c in (self.even, self.odd))
+    def closed(self, quantity: str = "force") -> bool:
+        """Did the engine close ``quantity`` of every part?"""
+        return all(c is None or c.derivation(quantity).closed_form
+                   for case in self.cases for c in (case.even, case.odd))
 
     def force(self):
         """P(e, a) = P_E(a), Eq. (10*) of the even part (the bounded part; a punch adds P0)."""
-        return self._part(self.even, "force")
+        return self._combine(lambda c: c.expr(c.even, "force"))
 
     def odd_force(self):
         """P_H(a): Eq. (10*) of H."""
-        return self._part(self.odd, "force")
+        return self._combine(lambda c: c.expr(c.odd, "force"))
 
     def rotation_force(self):
         """P_2(a): Eq. (10*) of the unit rotation profile s^2/2."""
-        return self._part(self.rotation, "force")
+        return self.rotation.derivation("force").expr
+
+    def _d_odd(self, case):
+        PH = case.expr(case.odd, "force")
+        return sp.Derivative(PH, S.a) if PH.has(sp.Integral) else sp.diff(PH, S.a)
 
     def tilt(self):
         """theta(e, a) = (2/(pi E* a)) dP_H/da: the tilt at which the
         pressure on [e - a, e + a] is bounded at both ends."""
         if "tilt" not in self._memo:
-            PH = self.odd_force()
-            dPH = sp.Derivative(PH, S.a) if PH.has(sp.Integral) else sp.diff(PH, S.a)
-            th = 2 * dPH / (sp.pi * S.E_star * S.a)
-            self._memo["tilt"] = sp.factor_terms(sp.expand(th)) if not th.has(sp.Integral) else th
+            def one(case):
+                th = 2 * self._d_odd(case) / (sp.pi * S.E_star * S.a)
+                return sp.factor_terms(sp.expand(th)) if not th.has(sp.Integral, sp.Derivative) else th
+            self._memo["tilt"] = self._combine(one)
         return self._memo["tilt"]
 
     def _theta(self, theta):
@@ -228,21 +332,28 @@ class OffsetContact:
 
     def edge_factors(self, theta=None, punch=0):
         """(K_-, K_+): p ~ K_-/sqrt(a + s) at the left end, K_+/sqrt(a - s) at the right."""
-        # the derivative at a fixed tilt (theta(e, a) depends on a)
-        PH, th = self.odd_force(), self._theta(theta)
-        dPH = sp.Derivative(PH, S.a) if PH.has(sp.Integral) else sp.diff(PH, S.a)
-        dPF = dPH - th * sp.diff(self.rotation_force(), S.a)
         k = sp.pi * sp.sqrt(2 * S.a)
-        if PH.has(sp.Integral):
-            return (punch + dPF) / k, (punch - dPF) / k
-        return sp.simplify((punch + dPF) / k), sp.simplify((punch - dPF) / k)
+        th = self._theta(theta)
+        d2 = sp.diff(self.rotation_force(), S.a)
+
+        def one(case, side):
+            # the derivative at a fixed tilt (theta(e, a) depends on a)
+            dPF = self._d_odd(case) - th * d2
+            out = (punch + side * dPF) / k
+            return out if out.has(sp.Integral, sp.Derivative) else sp.simplify(out)
+        return self._combine(lambda c: one(c, 1)), self._combine(lambda c: one(c, -1))
 
     def pressure(self, theta=None, punch=0):
         """p(x) on e - a < x < e + a (x = x_real): p_E + d/ds p_F + P0/(pi sqrt(a^2 - s^2))."""
         s = S.x_real - S.e
-        pE = _in_s(self._part(self.even, "pressure"), s)
-        pF = self._part(self.odd, "pressure") - self._theta(theta) * self._part(self.rotation, "pressure")
-        out = pE + _d_in_s(pF, s)
+        th = self._theta(theta)
+        p2 = self.rotation.derivation("pressure").expr
+
+        def one(case):
+            pE = _in_s(case.expr(case.even, "pressure"), s)
+            pF = case.expr(case.odd, "pressure") - th * p2
+            return pE + _d_in_s(pF, s)
+        out = self._combine(one)
         if punch != 0:
             out += punch / (sp.pi * sp.sqrt(S.a**2 - s**2))
         return out
@@ -250,9 +361,14 @@ class OffsetContact:
     def gap(self, theta=None, punch=0):
         """g(x) outside the contact (|x - e| > a): g_E + d/ds g_F - (2 P0/(pi E*)) acosh(|s|/a)."""
         s = S.x_real - S.e
-        gE = _in_s(self._part(self.even, "gap"), s)
-        gF = self._part(self.odd, "gap") - self._theta(theta) * self._part(self.rotation, "gap")
-        out = gE + _d_in_s(gF, s)
+        th = self._theta(theta)
+        g2 = self.rotation.derivation("gap").expr
+
+        def one(case):
+            gE = _in_s(case.expr(case.even, "gap"), s)
+            gF = case.expr(case.odd, "gap") - th * g2
+            return gE + _d_in_s(gF, s)
+        out = self._combine(one)
         if punch != 0:
             out -= 2 * punch / (sp.pi * S.E_star) * sp.acosh(sp.Abs(s) / S.a)
         return out
@@ -269,7 +385,7 @@ class OffsetNumbers:
 
     Closed forms are lambdified once; where the engine left a force law as
     an Integral, the engine's quadrature law (:class:`~..normal.force_law.ForceLaw`)
-    at that e is used (built once per e)."""
+    at that e is used (built once per e).  With a kink, each number e picks its case."""
 
     def __init__(self, core: OffsetContact, values):
         self.core = core
@@ -282,47 +398,55 @@ class OffsetNumbers:
         self._fns: dict = {}
 
     # -- force laws of the parts at (e, a)
-    def _law(self, contact, ev):
-        key = (id(contact), ev)
+    def _law(self, case, contact, ev):
+        pv = case.par_value(ev)
+        key = (id(contact), pv)
         if key not in self._laws:
-            vals = {S.e: sp.Float(ev, mpmath.mp.dps + 10), **self.values}
-            used = {k: v for k, v in vals.items() if k in contact.variables or k == S.e}
+            vals = {case.par: sp.Float(pv, mpmath.mp.dps + 10), **self.values}
+            used = {k: v for k, v in vals.items() if k in contact.variables or k == case.par}
             self._laws[key] = ForceLaw.from_contact(contact, used)
         return self._laws[key]
 
-    def _closed_fn(self, contact, quantity, derivative=False):
+    def _closed_fn(self, case, contact, quantity, derivative=False):
         key = (id(contact), quantity, derivative)
         if key not in self._fns:
             expr = contact.derivation(quantity).expr
             if derivative:
-                expr = sp.diff(expr, S.a)
-            expr = expr.xreplace({k: v for k, v in self.values.items()})
-            self._fns[key] = sp.lambdify([S.e, S.a, S.x], expr, "mpmath")
+                expr = sp.diff(expr, S.a if quantity == "force" else S.x)
+            expr = expr.xreplace(self.values)
+            self._fns[key] = sp.lambdify([case.par, S.a, S.x], expr, "mpmath")
         return self._fns[key]
 
-    def _P(self, contact, e, a, derivative=False):
+    def _P(self, part, e, a, derivative=False):
+        e, a = mpmath.mpf(e), mpmath.mpf(a)
+        case = self.core.case_of(e)
+        contact = getattr(case, part)
         if contact is None:
             return mpmath.mpf(0)
         if contact.derivation("force").closed_form:
-            return mpmath.mpf(self._closed_fn(contact, "force", derivative)(e, a, 0).real)
-        law = self._law(contact, e)
+            return _real(self._closed_fn(case, contact, "force", derivative)(case.par_value(e), a, 0))
+        law = self._law(case, contact, e)
         return law.dP(a) if derivative else law.P(a)
 
     def P(self, e, a):
         """P(e, a) = P_E(a) (the bounded part)."""
-        return self._P(self.core.even, mpmath.mpf(e), mpmath.mpf(a))
+        return self._P("even", e, a)
 
     def P_H(self, e, a):
-        return self._P(self.core.odd, mpmath.mpf(e), mpmath.mpf(a))
+        return self._P("odd", e, a)
 
     def dP_H(self, e, a):
-        return self._P(self.core.odd, mpmath.mpf(e), mpmath.mpf(a), derivative=True)
+        return self._P("odd", e, a, derivative=True)
+
+    def _rot(self, a, derivative=False):
+        case = self.core.cases[0]
+        return _real(self._closed_fn(case, self.core.rotation, "force", derivative)(0, mpmath.mpf(a), 0))
 
     def P_2(self, a):
-        return self._P(self.core.rotation, 0, mpmath.mpf(a))
+        return self._rot(a)
 
     def dP_2(self, a):
-        return self._P(self.core.rotation, 0, mpmath.mpf(a), derivative=True)
+        return self._rot(a, True)
 
     def tilt(self, e, a):
         """theta(e, a) = (2/(pi E* a)) dP_H/da."""
@@ -351,33 +475,35 @@ class OffsetNumbers:
         if abs(s) >= a:
             raise DomainError(f"x = {xv} is outside the contact [{e - a}, {e + a}]")
         th = self._th(e, a, theta)
-        core = self.core
-        pE = self._p(core.even, e, a, abs(s))
-        dH = self._dp(core.odd, e, a, s)
-        d2 = self._dp(core.rotation, e, a, s)
+        case = self.core.case_of(e)
+        pE = self._p(case, case.even, e, a, abs(s))
+        dH = self._dp(case, case.odd, e, a, s)
+        d2 = self._dp(self.core.cases[0], self.core.rotation, e, a, s)
         return pE + dH - th * d2 + mpmath.mpf(punch) / (mpmath.pi * mpmath.sqrt((a - s) * (a + s)))
 
-    def _p(self, contact, e, a, t):
+    def _p(self, case, contact, e, a, t):
         if contact is None:
             return mpmath.mpf(0)
         d = contact.derivation("pressure")
+        pv = case.par_value(e)
         if d.closed_form:
-            return mpmath.mpf(self._closed_fn(contact, "pressure")(e, a, t).real)
-        vals = {**self.values, S.e: e, S.a: a, S.x: t}
+            return _real(self._closed_fn(case, contact, "pressure")(pv, a, t))
+        vals = {**self.values, case.par: pv, S.a: a, S.x: t}
         with workdps(mpmath.mp.dps + 10):
-            return d.reference({k: v for k, v in vals.items()}, mpmath.mp.dps)
+            return d.reference({k: v for k, v in vals.items() if k in d.variables_all or k in (S.a, S.x)},
+                               mpmath.mp.dps)
 
-    def _dp(self, contact, e, a, s):
+    def _dp(self, case, contact, e, a, s):
         """d/ds p(|s|) of a part."""
         if contact is None:
             return mpmath.mpf(0)
         d = contact.derivation("pressure")
         sign = 1 if s >= 0 else -1
         if d.closed_form:
-            key = (id(contact), "dpressure")
-            if key not in self._fns:
-                expr = sp.diff(d.expr, S.x).xreplace(self.values)
-                self._fns[key] = sp.lambdify([S.e, S.a, S.x], expr, "mpmath")
-            return sign * mpmath.mpf(self._fns[key](e, a, abs(s)).real)
+            return sign * _real(self._closed_fn(case, contact, "pressure", True)(case.par_value(e), a, abs(s)))
         with workdps(mpmath.mp.dps + 15):
-            return sign * mpmath.diff(lambda t: self._p(contact, e, a, t), abs(s))
+            return sign * mpmath.diff(lambda t: self._p(case, contact, e, a, t), abs(s))
+
+
+def _real(v):
+    return mpmath.mpf(v.real) if isinstance(v, mpmath.mpc) else mpmath.mpf(v)
