@@ -188,3 +188,71 @@ def test_validation_errors():
         flat_punch(1).contact_at(P=-1, theta=0, E_star=1)
     with pytest.raises(ProfileError, match="positive number"):
         flat_punch(-1)
+
+
+# ---------------------------------------------------------------- the asymmetric wedge (a kink)
+K1, K2 = sp.symbols("k1 k2", positive=True)
+
+
+@pytest.fixture(scope="module")
+def wedge():
+    return lcs.LineContact(sp.Piecewise((K1 * X, X >= 0), (-K2 * X, True)), symmetric=False, **FAST)
+
+
+def test_wedge_tilt_is_the_mean_slope(wedge):
+    # two cases of the centre; for a > |e| the tilt is (1/pi) int f'(e + a sin phi) dphi
+    assert len(wedge.core.cases) == 2
+    e, a = S.e, S.a
+    mean = (K1 - K2) / 2 + (K1 + K2) * sp.asin(e / a) / sp.pi
+    th = wedge.core.tilt()
+    for ev, av in ((sp.Rational(1, 5), sp.Rational(1, 2)), (-sp.Rational(1, 3), 2)):
+        got = th.subs({e: ev, a: av, K1: 1, K2: sp.Rational(7, 3), S.E_star: 3})
+        assert abs(sp.N(got - mean.subs({e: ev, a: av, K1: 1, K2: sp.Rational(7, 3)}), 30)) < 1e-25
+
+
+@pytest.mark.parametrize("given", [dict(theta=0), dict(moment="0.2"), dict(theta="-0.3")])
+def test_wedge_states_against_chebyshev_moments(wedge, given):
+    """The wedge's slope jumps: collocation converges like 1/N (and erratically
+    with where the jump falls), so the reference is its N -> oo limit, the
+    Chebyshev moments of f' by quadrature split at the kink, and the pressure
+    by the inversion formula; both share nothing with the superposition."""
+    fp = lambda x: 1 if x > 0 else -2  # noqa: E731
+    with mpmath.workdps(20):
+        s = wedge.contact_at(P=1, E_star=1, k1=1, k2=2, **given)
+        th, P, M = C.chebyshev_moments(fp, s.e, s.a, 1, [0])
+        assert digits(P, 1) > 18 and digits(th + 1, s.theta + 1) > 18 and digits(M, s.moment) > 18
+
+
+@pytest.mark.slow
+def test_wedge_pressure_against_inversion(wedge):
+    """The log pressure of the wedge (the engine's pressures of both cases' parts, about 20 s)."""
+    fp = lambda x: 1 if x > 0 else -2  # noqa: E731
+    with mpmath.workdps(20):
+        s = wedge.contact_at(P=1, E_star=1, k1=1, k2=2, moment="0.2")
+        for xv in (s.left + (s.right - s.left) / 3, 2 * s.e, s.right - (s.right - s.left) / 10):
+            # 2e: the mirror image of the apex, where the closed form cancels (extra digits there)
+            assert digits(s.pressure(xv), C.inversion_pressure(fp, s.left, s.right, xv, [0])) > 12
+        # log singularity at the apex: the pressure grows without bound
+        assert s.pressure(mpmath.mpf("1e-12")) > s.pressure(mpmath.mpf("1e-3")) + 1
+
+
+def test_exponential_states_against_collocation():
+    c = lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
+    with mpmath.workdps(25):
+        for given in (dict(theta="0.1"), dict(moment="-0.05")):
+            s = c.contact_at(P=1, E_star=2, **given)
+            sol = C.bounded(lambda x: mpmath.exp(x) - 1, s.e, s.a, E=2, N=20)
+            assert digits(sol.theta, s.theta) > 20 and digits(sol.load, 1) > 20
+            assert digits(sol.moment, s.moment) > 20
+
+
+@pytest.mark.slow
+def test_exponential_pressure_against_collocation():
+    """The engine leaves Eq. (12) of the cosh profile as an Integral: the pressure is its
+    reference quadrature, the odd part's s-derivative by mpmath.diff (about 15 s)."""
+    c = lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
+    with mpmath.workdps(25):
+        s = c.contact_at(P=1, E_star=2, moment="-0.05")
+        sol = C.bounded(lambda x: mpmath.exp(x) - 1, s.e, s.a, E=2, N=20)
+        xv = s.e + s.a / 3
+        assert digits(s.pressure(xv), sol.pressure(xv)) > 15

@@ -147,17 +147,48 @@ class AsymmetricState:
             out = np.zeros_like(xs)
             if fn is not None:
                 with np.errstate(all="ignore"):
-                    out[inside] = fn[0](xs[inside], *self._args("numpy"))
+                    out[inside] = np.real(fn[0](xs[inside].astype(complex), *self._args("numpy")))
+                # near |x - e| = eps the float64 closed form cancels: those points at mpmath
+                bad = inside & ~np.isfinite(out)
+                for ep in self._mirror():
+                    bad |= inside & (np.abs(np.abs(xs - float(self.e)) - float(ep)) < 1e-5 * float(self.a))
+                out[bad] = [float(self.pressure(v)) for v in xs[bad]]
             else:
                 out[inside] = [float(self.pressure(v)) for v in xs[inside]]
             return out
         xv = to_mpf(x)
         if not self.left < xv < self.right:
             return mpmath.mpf(0)
-        if fn is not None:
-            v = fn[1](xv, *self._args("mp"))
-            return mpmath.mpf(getattr(v, "real", v))
-        return self._numbers().pressure(xv, self.e, self.a, self.theta, self.punch)
+        if fn is None:
+            return self._numbers().pressure(xv, self.e, self.a, self.theta, self.punch)
+        return self._closed_mp(fn[1], xv)
+
+    def _mirror(self):
+        """The distances eps = |e - b| of the centre from the profile's kinks b:
+        at |x - e| = eps the closed pressure's logarithms of the even and odd
+        parts cancel (at the mirror image 2e - b of a kink the pressure is smooth)."""
+        core = self.contact.core
+        vals = {v: self.values[v.name] for v in core.params if v.name in self.values}
+        out = []
+        for b in core.kinks:
+            bv = to_mpf(sp.N(sp.sympify(b).xreplace(vals), mpmath.mp.dps + 10))
+            out.append(abs(self.e - bv))
+        return out
+
+    def _closed_mp(self, fn, xv):
+        """A closed form at x, with the digits its cancellation near |x - e| = eps
+        costs added (and at that point the mean of two points beside it)."""
+        dps = mpmath.mp.dps
+        dist = min((abs(abs(xv - self.e) - ep) for ep in self._mirror()), default=mpmath.inf)
+        if dist == 0:
+            with workdps(3 * dps):
+                d = mpmath.mpf(10)**(-dps) * max(abs(xv), 1)
+                v = (_finite(fn(xv - d, *self._args("mp"))) + _finite(fn(xv + d, *self._args("mp")))) / 2
+            return +v
+        extra = 0 if dist > self.a / 1000 else min(int(-mpmath.log10(dist / self.a)) + 5, 2 * dps)
+        with workdps(dps + extra):
+            v = _finite(fn(xv, *self._args("mp")))
+        return +v
 
     def gap(self, x):
         """g(x) outside the contact (0 inside); closed forms only (else
@@ -177,6 +208,13 @@ class AsymmetricState:
             return mpmath.mpf(0)
         v = fn[1](xv, *self._args("mp"))
         return mpmath.mpf(getattr(v, "real", v))
+
+
+def _finite(v):
+    v = mpmath.mpf(v.real) if isinstance(v, mpmath.mpc) else mpmath.mpf(v)
+    if not mpmath.isfinite(v):
+        raise ValueError("not finite")
+    return v
 
 
 class AsymmetricLineContact:
@@ -375,21 +413,27 @@ def _solve(contact, n, P, given, values):
 
 
 def _bounded(contact, n, P, kind, g, values, scale):
-    """Both edges smooth: P(e, a) = P with theta(e, a) = theta, or M(e, a) = M."""
-    def centre(a):
-        if kind == "theta":
-            return _bracket_root(lambda e: n.tilt(e, a) - g, mpmath.mpf(0), a / 4)
-        return _bracket_root(lambda e: n.moment(e, a) - g, g / P, a / 4)
-
+    """Both edges smooth: for each centre e the half-width a(e) of P(e, a) = P
+    (P rises with a), then theta(e, a(e)) = theta or M(e, a(e)) = M for e
+    (stepping out from e = 0, or from the line of action M/P)."""
     memo = {}
 
-    def excess(a):
-        if a not in memo:
-            e = centre(a)
-            memo[a] = (e, n.P(e, a) - P)
-        return memo[a][1]
-    a = _bracket_positive(excess, scale)
-    e = centre(a)
+    def half_width(e):
+        if e not in memo:
+            memo[e] = _bracket_positive(lambda a: n.P(e, a) - P, memo.get("last", scale))
+            memo["last"] = memo[e]
+        return memo[e]
+
+    if kind == "theta":
+        def residual(e):
+            return n.tilt(e, half_width(e)) - g
+        e0 = mpmath.mpf(0)
+    else:
+        def residual(e):
+            return n.moment(e, half_width(e)) - g
+        e0 = g / P
+    e = _bracket_root(residual, e0, half_width(e0) / 4)
+    a = half_width(e)
     return _state(contact, n, e, a, n.tilt(e, a), mpmath.mpf(0), "bounded", P, values)
 
 

@@ -154,8 +154,10 @@ class _Case:
     profile's kink b (or everywhere: no kink): E, H and s^2/2 as engine contacts,
     in the parameter ``par`` (e itself, or eps = sign (e - b) > 0)."""
 
-    def __init__(self, f, condition, par, centre, aux, kw, name, budget):
+    def __init__(self, f, condition, par, centre, aux, kw, name, budget, kink=None, sign=1):
         self.condition, self.par, self.centre = condition, par, centre
+        #: the kink b and the side: eps = sign (e - b) >= 0 in this case (None: no kink)
+        self.kink, self.sign = kink, sign
         #: the centre e in terms of the case's parameter, and back
         self.back = {} if par == S.e else {par: sp.expand((S.e - centre.xreplace({par: 0})) /
                                                          sp.diff(centre, par))}
@@ -174,19 +176,6 @@ class _Case:
             return LineContact(Profile(expr, used, name=f"{what} part of {name} about e", auxiliary=True), **kw)
         self.even = contact(self.parts["E"], "even")
         self.odd = contact(self.parts["H"], "odd-integral")
-
-    def par_value(self, ev):
-        """The case's parameter at a number e."""
-        if self.par == S.e:
-            return ev
-        return to_mpf(self.back[self.par].xreplace({S.e: sp.Float(ev, mpmath.mp.dps + 5)}).evalf(mpmath.mp.dps + 5)) \
-            if not isinstance(ev, sp.Basic) else self.back[self.par].xreplace({S.e: ev})
-
-    def holds(self, ev) -> bool:
-        """Is the number e in this case?"""
-        if self.condition is sp.true:
-            return True
-        return bool(self.condition.xreplace({S.e: sp.Float(ev, mpmath.mp.dps + 5)}))
 
     def expr(self, contact, quantity):
         """An engine result of a part in e (the case's parameter mapped back)."""
@@ -233,7 +222,7 @@ class OffsetContact:
         else:
             b = bs[0]
             self.cases = tuple(_Case(self.f, cond, EPS, b + sign * EPS, {**declared, EPS: None}, kw, self.name,
-                                     budget)
+                                     budget, kink=b, sign=sign)
                                for cond, sign in ((S.e >= b, 1), (S.e < b, -1)))
         self.kinks = tuple(bs)
         self.rotation = LineContact(S.x**2 / 2, **kw)
@@ -261,13 +250,6 @@ class OffsetContact:
     def variables(self):
         """The symbols a number needs besides e, a (and x): E_star and the profile's parameters."""
         return (S.E_star,) + self.params
-
-    def case_of(self, ev) -> _Case:
-        """The case a number e lies in."""
-        for c in self.cases:
-            if c.holds(ev):
-                return c
-        raise DomainError(f"e = {ev} is in no case of {self.name}")
 
     # ------------------------------------------------------------ symbolic
     def _combine(self, make):
@@ -396,10 +378,22 @@ class OffsetNumbers:
         self.E = to_mpf(self.values[S.E_star])
         self._laws: dict = {}
         self._fns: dict = {}
+        pv = {k: v for k, v in self.values.items()}
+        self._kinks = [None if c.kink is None else sp.N(sp.sympify(c.kink).xreplace(pv), 60) for c in core.cases]
+
+    def case(self, e):
+        """(case, its parameter value) at the number e: eps = sign (e - b) >= 0, or e itself."""
+        for c, b in zip(self.core.cases, self._kinks):
+            if b is None:
+                return c, e
+            ep = c.sign * (e - to_mpf(b))
+            if ep > 0 or (ep == 0 and c.sign > 0):
+                return c, ep
+        raise DomainError(f"e = {e} is in no case of {self.core.name}")
 
     # -- force laws of the parts at (e, a)
     def _law(self, case, contact, ev):
-        pv = case.par_value(ev)
+        pv = self.case(ev)[1]
         key = (id(contact), pv)
         if key not in self._laws:
             vals = {case.par: sp.Float(pv, mpmath.mp.dps + 10), **self.values}
@@ -419,12 +413,12 @@ class OffsetNumbers:
 
     def _P(self, part, e, a, derivative=False):
         e, a = mpmath.mpf(e), mpmath.mpf(a)
-        case = self.core.case_of(e)
+        case, pv = self.case(e)
         contact = getattr(case, part)
         if contact is None:
             return mpmath.mpf(0)
         if contact.derivation("force").closed_form:
-            return _real(self._closed_fn(case, contact, "force", derivative)(case.par_value(e), a, 0))
+            return _real(self._closed_fn(case, contact, "force", derivative)(pv, a, 0))
         law = self._law(case, contact, e)
         return law.dP(a) if derivative else law.P(a)
 
@@ -475,7 +469,7 @@ class OffsetNumbers:
         if abs(s) >= a:
             raise DomainError(f"x = {xv} is outside the contact [{e - a}, {e + a}]")
         th = self._th(e, a, theta)
-        case = self.core.case_of(e)
+        case = self.case(e)[0]
         pE = self._p(case, case.even, e, a, abs(s))
         dH = self._dp(case, case.odd, e, a, s)
         d2 = self._dp(self.core.cases[0], self.core.rotation, e, a, s)
@@ -485,7 +479,7 @@ class OffsetNumbers:
         if contact is None:
             return mpmath.mpf(0)
         d = contact.derivation("pressure")
-        pv = case.par_value(e)
+        pv = self.case(e)[1] if contact is not self.core.rotation else 0
         if d.closed_form:
             return _real(self._closed_fn(case, contact, "pressure")(pv, a, t))
         vals = {**self.values, case.par: pv, S.a: a, S.x: t}
@@ -500,7 +494,8 @@ class OffsetNumbers:
         d = contact.derivation("pressure")
         sign = 1 if s >= 0 else -1
         if d.closed_form:
-            return sign * _real(self._closed_fn(case, contact, "pressure", True)(case.par_value(e), a, abs(s)))
+            pv = self.case(e)[1] if contact is not self.core.rotation else 0
+            return sign * _real(self._closed_fn(case, contact, "pressure", True)(pv, a, abs(s)))
         with workdps(mpmath.mp.dps + 15):
             return sign * mpmath.diff(lambda t: self._p(case, contact, e, a, t), abs(s))
 
