@@ -114,19 +114,25 @@ class AsymmetricState:
         return self.moment / self.load
 
     def _numbers(self):
-        return self.contact.core.numbers(**self.values)
+        cache = self.contact._state_fns
+        key = ("numbers", tuple(sorted((k, str(v)) for k, v in self.values.items())))
+        if key not in cache:
+            cache[key] = self.contact.core.numbers(**self.values)
+        return cache[key]
 
     def _fn(self, which):
-        """The closed pressure or gap at this state as a NumPy function of x, or None."""
+        """The closed pressure or gap at this state (its case of the centre)
+        as NumPy and mpmath functions of x, or None."""
         cache = self.contact._state_fns
-        key = (which, self.regime)
+        core = self.contact.core
+        k = core.cases.index(self._numbers().case(self.e)[0])
+        key = (which, k)
         if key not in cache:
-            core = self.contact.core
-            if not core.closed() or not core.closed(which):
+            if not core.closed(case=k) or not core.closed(which, case=k):
                 cache[key] = None
             else:
                 th, P0 = sp.Symbol("theta_n", real=True), sp.Symbol("P0_n", real=True)
-                expr = getattr(core, which)(theta=th, punch=P0)
+                expr = getattr(core, which)(theta=th, punch=P0, case=k)
                 args = [S.x_real, S.e, S.a, th, P0, S.E_star] + list(core.params)
                 cache[key] = sp.lambdify(args, expr, "numpy"), sp.lambdify(args, expr, "mpmath")
         return cache[key]

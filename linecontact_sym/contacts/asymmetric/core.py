@@ -252,8 +252,11 @@ class OffsetContact:
         return (S.E_star,) + self.params
 
     # ------------------------------------------------------------ symbolic
-    def _combine(self, make):
-        """make(case) for every case, as a Piecewise in e where there are two."""
+    def _combine(self, make, case=None):
+        """make(case) for every case, as a Piecewise in e where there are two
+        (``case``: the index of one case, its expression alone)."""
+        if case is not None:
+            return make(self.cases[case])
         if len(self.cases) == 1:
             return make(self.cases[0])
         return sp.Piecewise(*[(make(c), c.condition) for c in self.cases[:-1]], (make(self.cases[-1]), True))
@@ -270,10 +273,11 @@ class OffsetContact:
             out[f"{q}[rotation]"] = self.rotation.derivation(q)
         return out
 
-    def closed(self, quantity: str = "force") -> bool:
-        """Did the engine close ``quantity`` of every part?"""
+    def closed(self, quantity: str = "force", case=None) -> bool:
+        """Did the engine close ``quantity`` of every part (of one case)?"""
+        cases = self.cases if case is None else (self.cases[case],)
         return all(c is None or c.derivation(quantity).closed_form
-                   for case in self.cases for c in (case.even, case.odd))
+                   for cs in cases for c in (cs.even, cs.odd))
 
     def force(self):
         """P(e, a) = P_E(a), Eq. (10*) of the even part (the bounded part; a punch adds P0)."""
@@ -325,8 +329,9 @@ class OffsetContact:
             return out if out.has(sp.Integral, sp.Derivative) else sp.simplify(out)
         return self._combine(lambda c: one(c, 1)), self._combine(lambda c: one(c, -1))
 
-    def pressure(self, theta=None, punch=0):
-        """p(x) on e - a < x < e + a (x = x_real): p_E + d/ds p_F + P0/(pi sqrt(a^2 - s^2))."""
+    def pressure(self, theta=None, punch=0, case=None):
+        """p(x) on e - a < x < e + a (x = x_real): p_E + d/ds p_F + P0/(pi sqrt(a^2 - s^2))
+        (``case``: the index of one case of the centre, its expression alone)."""
         s = S.x_real - S.e
         th = self._theta(theta)
         p2 = self.rotation.derivation("pressure").expr
@@ -335,12 +340,12 @@ class OffsetContact:
             pE = _in_s(case.expr(case.even, "pressure"), s)
             pF = case.expr(case.odd, "pressure") - th * p2
             return pE + _d_in_s(pF, s)
-        out = self._combine(one)
+        out = self._combine(one, case)
         if punch != 0:
             out += punch / (sp.pi * sp.sqrt(S.a**2 - s**2))
         return out
 
-    def gap(self, theta=None, punch=0):
+    def gap(self, theta=None, punch=0, case=None):
         """g(x) outside the contact (|x - e| > a): g_E + d/ds g_F - (2 P0/(pi E*)) acosh(|s|/a)."""
         s = S.x_real - S.e
         th = self._theta(theta)
@@ -350,7 +355,7 @@ class OffsetContact:
             gE = _in_s(case.expr(case.even, "gap"), s)
             gF = case.expr(case.odd, "gap") - th * g2
             return gE + _d_in_s(gF, s)
-        out = self._combine(one)
+        out = self._combine(one, case)
         if punch != 0:
             out -= 2 * punch / (sp.pi * S.E_star) * sp.acosh(sp.Abs(s) / S.a)
         return out
@@ -475,29 +480,56 @@ class OffsetNumbers:
         d2 = self._dp(self.core.cases[0], self.core.rotation, e, a, s)
         return pE + dH - th * d2 + mpmath.mpf(punch) / (mpmath.pi * mpmath.sqrt((a - s) * (a + s)))
 
+    def _dPk(self, case, contact, e, r, k):
+        """d^k P/da^k of a part at the half-width r (k = 1, 2): the closed force
+        law differentiated, else the engine's quadrature law (dP, and mpmath.diff of it)."""
+        pv = self.case(e)[1] if contact is not self.core.rotation else 0
+        if contact.derivation("force").closed_form:
+            key = (id(contact), "force", k)
+            if key not in self._fns:
+                expr = sp.diff(contact.derivation("force").expr, S.a, k).xreplace(self.values)
+                self._fns[key] = sp.lambdify([case.par, S.a, S.x], expr, "mpmath")
+            return _real(self._fns[key](pv, r, 0))
+        law = self._law(case, contact, e)
+        return law.dP(r) if k == 1 else mpmath.diff(law.dP, r)
+
     def _p(self, case, contact, e, a, t):
+        """Eq. (12) of a part at |s| = t: lambdified where closed, else
+        (1/pi) int_0^W P'(r)/r dw, r = sqrt(t^2 + w^2), W = sqrt(a^2 - t^2)
+        (Eq. 12 in t = sqrt(x^2 + w^2): a smooth integrand, also at t = 0)."""
         if contact is None:
             return mpmath.mpf(0)
         d = contact.derivation("pressure")
-        pv = self.case(e)[1] if contact is not self.core.rotation else 0
         if d.closed_form:
+            pv = self.case(e)[1] if contact is not self.core.rotation else 0
             return _real(self._closed_fn(case, contact, "pressure")(pv, a, t))
-        vals = {**self.values, case.par: pv, S.a: a, S.x: t}
+        W = mpmath.sqrt((a - t) * (a + t))
         with workdps(mpmath.mp.dps + 10):
-            return d.reference({k: v for k, v in vals.items() if k in d.variables_all or k in (S.a, S.x)},
-                               mpmath.mp.dps)
+            def g(w):
+                r = mpmath.sqrt(t**2 + w**2)
+                return self._dPk(case, contact, e, r, 1) / r
+            return mpmath.quad(g, [0, W]) / mpmath.pi
 
     def _dp(self, case, contact, e, a, s):
-        """d/ds p(|s|) of a part."""
+        """d/ds p(|s|) of a part: lambdified where closed, else Eq. (12)
+        differentiated under the integral (see :meth:`_p`):
+        (1/pi) [int_0^W (P''(r)/r - P'(r)/r^2) (t/r) dw - P'(a) t/(a W)], t = |s|."""
         if contact is None:
             return mpmath.mpf(0)
         d = contact.derivation("pressure")
         sign = 1 if s >= 0 else -1
+        t = abs(s)
         if d.closed_form:
             pv = self.case(e)[1] if contact is not self.core.rotation else 0
-            return sign * _real(self._closed_fn(case, contact, "pressure", True)(pv, a, abs(s)))
-        with workdps(mpmath.mp.dps + 15):
-            return sign * mpmath.diff(lambda t: self._p(case, contact, e, a, t), abs(s))
+            return sign * _real(self._closed_fn(case, contact, "pressure", True)(pv, a, t))
+        W = mpmath.sqrt((a - t) * (a + t))
+        with workdps(mpmath.mp.dps + 10):
+            def g(w):
+                r = mpmath.sqrt(t**2 + w**2)
+                return (self._dPk(case, contact, e, r, 2) / r - self._dPk(case, contact, e, r, 1) / r**2) * t / r
+            inner = mpmath.quad(g, [0, W])
+            edge = self._dPk(case, contact, e, a, 1) * t / (a * W)
+            return sign * (inner - edge) / mpmath.pi
 
 
 def _real(v):
