@@ -66,6 +66,17 @@ def test_parabola_is_hertz_shifted():
     assert sp.simplify(c.pressure() - S.E_star * sp.sqrt(S.a**2 - (X - S.e)**2) / (2 * R)) == 0
 
 
+def test_tilted_parabola_ends_in_closed_form():
+    """Hertz shifted by R theta, found by solving the engine's P(e, a) and theta(e, a)."""
+    R = sp.Symbol("R", positive=True)
+    c = lcs.LineContact(X**2 / (2 * R), symmetric=False, **FAST)
+    (sol,) = c.ends()
+    assert sol["e"] == R * S.tilt
+    assert sp.simplify(sol["a"]**2 - 4 * S.P * R / (sp.pi * S.E_star)) == 0
+    (sol,) = c.ends(moment=S.M)
+    assert sol["e"] == S.M / S.P
+
+
 def test_exponential_bounded_against_collocation():
     c = OffsetContact(sp.exp(X) - 1 - X, **FAST)
     assert c.closed()      # Bessel I force laws of E = e^e (cosh s - 1) and H

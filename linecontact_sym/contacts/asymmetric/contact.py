@@ -299,6 +299,37 @@ class AsymmetricLineContact:
             st = _state(twin, n, zero, a, zero, zero, "bounded", Pv, values)
         return st
 
+    # ------------------------------------------------------------------ closed ends
+    def ends(self, load=S.P, theta=None, moment=None, budget: float | None = None):
+        """The ends of the bounded contact (both edges smooth) in closed form:
+        SymPy solves P(e, a) = load with theta(e, a) = theta (default the
+        symbol theta_t) or M(e, a) = moment, under the budget (CPU s), a(e)
+        from the load first; every branch SymPy finds that it cannot show to
+        be complex or to have a <= 0, as dicts {e, a, left, right} (a cubic
+        profile gives the three roots of a cubic in e: the physical one is
+        the one :meth:`contact_at` finds at numbers); an empty list where
+        SymPy finds none in time or a part is not closed.
+
+        >>> import sympy as sp, linecontact_sym as lcs
+        >>> R = sp.Symbol("R", positive=True)
+        >>> lcs.LineContact(lcs.x_real**2/(2*R), symmetric=False).ends()[0]["e"]
+        R*theta_t
+        """
+        if theta is not None and moment is not None:
+            raise DomainError("give the tilt theta or the moment M, not both")
+        core = self.core
+        target = (core.tilt(), S.tilt if theta is None else sp.sympify(theta)) if moment is None else \
+            (core.moment(), sp.sympify(moment))
+        eqs = [sp.Eq(core.force(), load), sp.Eq(*target)]
+        if any(q.has(sp.Integral, sp.Derivative, sp.Piecewise) for q in (eqs[0].lhs, eqs[1].lhs)):
+            return []
+        from ...core.budget import BudgetExceeded, run_with_budget
+        try:
+            sols = run_with_budget(_solve_ends, eqs, seconds=budget or core.budget)
+        except BudgetExceeded:
+            return []
+        return [{"e": e_, "a": a_, "left": sp.simplify(e_ - a_), "right": sp.simplify(e_ + a_)} for e_, a_ in sols]
+
     # ------------------------------------------------------------------ states
     def contact_at(self, P, theta=None, moment=None, dps: int = STATE_DPS, **values) -> AsymmetricState:
         """The contact at the load ``P`` > 0 with the tilt ``theta``
@@ -318,6 +349,24 @@ class AsymmetricLineContact:
 
 
 # ---------------------------------------------------------------------- solves
+def _solve_ends(eqs):
+    """(e, a) solutions of the two equations with a > 0 (where SymPy can tell):
+    a(e) from the load first, then e from the tilt or moment."""
+    out = []
+    for a_e in sp.solve(eqs[0], S.a):
+        if a_e.is_positive is False:
+            continue
+        second = eqs[1].lhs.xreplace({S.a: a_e}) - eqs[1].rhs
+        for e_ in sp.solve(second, S.e):
+            if e_.is_real is False:
+                continue
+            a_ = sp.simplify(a_e.xreplace({S.e: e_}))
+            if a_.is_positive is False:
+                continue
+            out.append((e_, a_))
+    return out
+
+
 def _bracket_root(fn, x0, step, lo=-mpmath.inf, hi=mpmath.inf, tries=80):
     """A root of an increasing (or decreasing) fn, bracketed by stepping
     out from x0 by doubling steps, then refined (Anderson-Bjorck)."""
