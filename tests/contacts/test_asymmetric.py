@@ -267,3 +267,40 @@ def test_exponential_pressure_against_collocation():
         sol = C.bounded(lambda x: mpmath.exp(x) - 1, s.e, s.a, E=2, N=16)
         xv = s.e + s.a / 3
         assert digits(s.pressure(xv), sol.pressure(xv)) > 12
+
+
+# ---------------------------------------------------------------- float64 at the extremes
+import numpy as np  # noqa: E402
+
+
+def _rel_err(state, xs):
+    """The float64 pressure's error at float64 points against mpmath at the same points, in
+    units of its conditioning eps |x| / (distance to the nearer end): an end that float64
+    cannot represent moves the distance by eps |x|, which no formula can undo."""
+    got = state.pressure(np.array(xs))
+    worst = 0.0
+    with mpmath.workdps(40):
+        for g, v in zip(got, xs):
+            r = state.pressure(mpmath.mpf(v))
+            dist = min(v - state.left, state.right - v)
+            cond = float(np.finfo(float).eps * max(1.0, abs(v) / dist))
+            worst = max(worst, abs(g - float(r)) / abs(float(r)) / cond)
+    return worst
+
+
+@pytest.mark.parametrize("M", ["0.5", "0.4999999999", "0.5000000001"])
+def test_flat_punch_float64_at_the_transition(punch, M):
+    # the factor at the lifting corner vanishes: (C0 + C1 s) cancels there unless written with the factors
+    s = punch.contact_at(P=1, moment=M, E_star=1, dps=40)
+    left = float(s.left)
+    xs = [left + 1e-12, left + 1e-8, left + 1e-4, 0.0, 0.9, float(s.right) - 1e-10]
+    assert _rel_err(s, xs) < 20
+
+
+def test_tiny_tilt_float64(cubic_line):
+    # a smooth profile tilted by 1e-12: the ends differ by almost nothing; near them the
+    # even and odd parts' 1/sqrt terms cancel unless put over one denominator
+    s = cubic_line.contact_at(P=1, theta="-2.1e-12", E_star=2, dps=40)
+    left, right = float(s.left), float(s.right)
+    xs = [left + 1e-12 * (right - left), left + 1e-6, 0.1, right - 1e-9, right - 1e-13]
+    assert _rel_err(s, xs) < 20
