@@ -8,8 +8,8 @@ import mpmath
 import pytest
 import sympy as sp
 
+import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
-from linecontact_sym.contacts.asymmetric import OffsetContact
 
 sys.path.insert(0, os.path.dirname(__file__))
 import sie_collocation as C  # noqa: E402
@@ -30,8 +30,28 @@ FAST = dict(verify=False)
 
 
 @pytest.fixture(scope="module")
-def cubic():
-    return OffsetContact(X**2 / 2 + X**3 / 10, **FAST)
+def cubic_line():
+    return lcs.LineContact(X**2 / 2 + X**3 / 10, symmetric=False, **FAST)
+
+
+@pytest.fixture(scope="module")
+def cubic(cubic_line):
+    return cubic_line.core
+
+
+R_ = sp.Symbol("R", positive=True)
+
+
+@pytest.fixture(scope="module")
+def hertz():
+    """The symmetric parabola and its twin on the whole line (one set of derivations)."""
+    c = lcs.LineContact(lcs.x**2 / (2 * R_), **FAST)
+    return c, c.asymmetric()
+
+
+@pytest.fixture(scope="module")
+def exponential():
+    return lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
 
 
 def test_cubic_symbolic_forms(cubic):
@@ -58,18 +78,18 @@ def test_cubic_bounded_against_collocation(cubic, ev, av):
             assert digits(n.pressure(xv, e, a), sol.pressure(xv)) > 28
 
 
-def test_parabola_is_hertz_shifted():
-    R = sp.Symbol("R", positive=True)
-    c = OffsetContact(X**2 / (2 * R), **FAST)
+def test_parabola_is_hertz_shifted(hertz):
+    R = R_
+    c = hertz[1].core
     assert sp.simplify(c.tilt() - S.e / R) == 0
     assert c.moment_centre() == 0
     assert sp.simplify(c.pressure() - S.E_star * sp.sqrt(S.a**2 - (X - S.e)**2) / (2 * R)) == 0
 
 
-def test_tilted_parabola_ends_in_closed_form():
+def test_tilted_parabola_ends_in_closed_form(hertz):
     """Hertz shifted by R theta, found by solving the engine's P(e, a) and theta(e, a)."""
-    R = sp.Symbol("R", positive=True)
-    c = lcs.LineContact(X**2 / (2 * R), symmetric=False, **FAST)
+    R = R_
+    c = hertz[1]
     (sol,) = c.ends()
     assert sol["e"] == R * S.tilt
     assert sp.simplify(sol["a"]**2 - 4 * S.P * R / (sp.pi * S.E_star)) == 0
@@ -77,8 +97,8 @@ def test_tilted_parabola_ends_in_closed_form():
     assert sol["e"] == S.M / S.P
 
 
-def test_exponential_bounded_against_collocation():
-    c = OffsetContact(sp.exp(X) - 1 - X, **FAST)
+def test_exponential_bounded_against_collocation(exponential):
+    c = exponential.core
     assert c.closed()      # Bessel I force laws of E = e^e (cosh s - 1) and H
     with mpmath.workdps(30):
         e, a = mpmath.mpf("0.3"), mpmath.mpf("0.7")
@@ -90,7 +110,6 @@ def test_exponential_bounded_against_collocation():
 
 
 # ---------------------------------------------------------------- states: contact_at
-import linecontact_sym as lcs  # noqa: E402
 from linecontact_sym.contacts.asymmetric import flat_punch  # noqa: E402
 from linecontact_sym.core.errors import DomainError, ProfileError  # noqa: E402
 
@@ -135,11 +154,6 @@ def test_flat_punch_transition_is_at_eccentricity_half_the_width(punch):
     assert digits(s.theta, 6 / mpmath.pi) > 25
 
 
-@pytest.fixture(scope="module")
-def cubic_line():
-    return lcs.LineContact(X**2 / 2 + X**3 / 10, symmetric=False, **FAST)
-
-
 def test_cubic_rotation_locked_against_collocation(cubic_line):
     with mpmath.workdps(30):
         s = cubic_line.contact_at(P=1, theta="0.2", E_star=2)
@@ -175,9 +189,8 @@ def test_cubic_gap_against_collocation(cubic_line):
             assert digits(s.gap(x1), expect) > 20
 
 
-def test_symmetric_profile_level_is_todays_contact():
-    R = sp.Symbol("R", positive=True)
-    c = lcs.LineContact(lcs.x**2 / (2 * R), **FAST)
+def test_symmetric_profile_level_is_todays_contact(hertz):
+    c = hertz[0]
     s = c.contact_at(P=1, E_star=2, R=3)
     assert s.e == 0 and s.theta == 0 and s.moment == 0 and s.edges == ("smooth", "smooth")
     assert digits(s.a, c.half_width(1, E_star=2, R=3)) > 28
@@ -247,8 +260,8 @@ def test_wedge_pressure_against_inversion(wedge):
         assert s.pressure(mpmath.mpf("1e-12")) > s.pressure(mpmath.mpf("1e-3")) + 1
 
 
-def test_exponential_states_against_collocation():
-    c = lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
+def test_exponential_states_against_collocation(exponential):
+    c = exponential
     with mpmath.workdps(25):
         for given in (dict(theta="0.1"), dict(moment="-0.05")):
             s = c.contact_at(P=1, E_star=2, **given)
@@ -258,10 +271,10 @@ def test_exponential_states_against_collocation():
 
 
 @pytest.mark.slow
-def test_exponential_pressure_against_collocation():
-    """The engine leaves Eq. (12) of the cosh profile as an Integral: the pressure is its
-    reference quadrature, the odd part's s-derivative by mpmath.diff."""
-    c = lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
+def test_exponential_pressure_against_collocation(exponential):
+    """The engine leaves Eq. (12) of the cosh profile as an Integral: the pressure is the Eq. (12)
+    quadrature over the closed (Bessel) force laws, the odd part's s-derivative under the integral."""
+    c = exponential
     with mpmath.workdps(15):
         s = c.contact_at(P=1, E_star=2, moment="-0.05")
         sol = C.bounded(lambda x: mpmath.exp(x) - 1, s.e, s.a, E=2, N=16)
