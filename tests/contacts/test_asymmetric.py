@@ -317,3 +317,13 @@ def test_tiny_tilt_float64(cubic_line):
     left, right = float(s.left), float(s.right)
     xs = [left + 1e-12 * (right - left), left + 1e-6, 0.1, right - 1e-9, right - 1e-13]
     assert _rel_err(s, xs) < 20
+
+
+# ---------------------------------------------------------------- the command line
+def test_cli_eval_theta_and_moment(capsys):
+    from linecontact_sym import cli
+    assert cli.main(["eval", "x**2/2", "e", "--theta", "0.1", "--set", "P=1", "E_star=2", "--dps", "20"]) == 0
+    assert capsys.readouterr().out.split()[-1] == "0.1"       # Hertz shifted by R theta (R = 1)
+    assert cli.main(["eval", "x**2/2", "e", "--moment", "0.3", "--set", "P=2", "E_star=2"]) == 0
+    assert capsys.readouterr().out.split()[-1] == "0.15"      # the line of action M/P
+    assert cli.main(["eval", "x**2/2", "force", "--theta", "0.1", "--set", "P=1", "E_star=2"]) == 2
