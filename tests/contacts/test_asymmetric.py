@@ -327,3 +327,14 @@ def test_cli_eval_theta_and_moment(capsys):
     assert cli.main(["eval", "x**2/2", "e", "--moment", "0.3", "--set", "P=2", "E_star=2"]) == 0
     assert capsys.readouterr().out.split()[-1] == "0.15"      # the line of action M/P
     assert cli.main(["eval", "x**2/2", "force", "--theta", "0.1", "--set", "P=1", "E_star=2"]) == 2
+
+
+def test_state_evaluate_picks_float64_or_mpmath(cubic_line):
+    s = cubic_line.contact_at(P=1, theta="0.2", E_star=2)
+    xs = np.array([float(s.e), float(s.left) + 1e-15])
+    got = s.evaluate("pressure", xs, rtol=1e-10)          # the second point: too close for float64, mpmath
+    with mpmath.workdps(30):
+        ref = [float(s.pressure(mpmath.mpf(v))) for v in xs]
+    assert all(abs(g - r) <= 1e-10 * abs(r) for g, r in zip(got, ref))
+    with pytest.raises(DomainError, match="rtol"):
+        s.evaluate("pressure", 0.1, rtol=0)

@@ -26,6 +26,7 @@ complete to incomplete contact where the factor at one corner vanishes:
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import mpmath
@@ -229,6 +230,51 @@ class AsymmetricState:
         with workdps(dps + extra):
             v = _finite(fn(xv, *self._args("mp")))
         return +v
+
+    def evaluate(self, quantity: str, x, rtol: float = 1e-8):
+        """``pressure`` or ``gap`` at x (a number or an array) to the relative
+        tolerance ``rtol``: float64 (the closed form over one denominator, a
+        punch by its corner factors) where rtol >= 1e-12 and x is not within
+        1e4 eps |x| / rtol of an end (where float64 cannot place x relative
+        to the end well enough), else mpmath at -log10(rtol) + 5 digits and
+        those the closed form loses there, log10(|x|/distance to the end)."""
+        if quantity not in ("pressure", "gap"):
+            raise DomainError(f"evaluate: 'pressure' or 'gap', got {quantity!r}")
+        if not (isinstance(rtol, (int, float)) and 0 < rtol < 1):
+            raise DomainError(f"rtol must be a number in (0, 1), got {rtol!r}")
+        fn = getattr(self, quantity)
+        xs = np.atleast_1d(np.asarray(x, dtype=float))
+        dist = np.minimum(np.abs(xs - float(self.left)), np.abs(xs - float(self.right)))
+        cond = np.finfo(float).eps * np.maximum(1.0, np.abs(xs)) / np.maximum(dist, 1e-300)
+        fast = rtol >= 1e-12 and bool(np.all(1e4 * cond <= rtol))
+        if fast:
+            out = fn(xs)
+        else:
+            # the digits the closed form loses near an end (x - e against a) come on top
+            lost = max(0.0, math.log10(float(np.max(cond)) / np.finfo(float).eps))
+            dps = int(-math.log10(rtol)) + 5 + math.ceil(lost)
+            with workdps(dps):
+                out = np.array([float(fn(mpmath.mpf(v))) for v in xs])
+        return out if np.ndim(x) else float(out[0])
+
+    def plot(self, ax=None, points: int = 401):
+        """The pressure over [left, right] (matplotlib, the ``[plot]`` extra),
+        with the ends marked (a corner dashed); returns the axes."""
+        try:
+            import matplotlib.pyplot as plt
+        except ImportError as exc:                # the optional extra
+            raise ImportError("plot needs matplotlib: pip install 'linecontact_sym[plot]'") from exc
+        if ax is None:
+            ax = plt.subplots(figsize=(6, 3.5))[1]
+        span = float(self.right - self.left)
+        xs = np.linspace(float(self.left) + 1e-4 * span, float(self.right) - 1e-4 * span, points)
+        ax.plot(xs, self.pressure(xs), label=f"theta = {float(self.theta):.4g}, M = {float(self.moment):.4g}")
+        for end, kind in zip((self.left, self.right), self.edges):
+            ax.axvline(float(end), color="0.5", lw=0.8, ls="--" if kind == "corner" else ":")
+        ax.set_xlabel("x")
+        ax.set_ylabel("p(x)")
+        ax.legend()
+        return ax
 
     def gap(self, x):
         """g(x) outside the contact (0 inside); closed forms only (else
