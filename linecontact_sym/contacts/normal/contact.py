@@ -399,6 +399,12 @@ class LineContact(Contact):
         from ..tangential.contact import TangentialLineContact
         return TangentialLineContact(self, friction)
 
+    def viscoelastic(self, material):
+        """This contact on a linear viscoelastic half-plane (Lee-Radok, Ting), see
+        :mod:`linecontact_sym.contacts.viscoelastic`."""
+        from ..viscoelastic.contact import ViscoelasticLineContact
+        return ViscoelasticLineContact(self, material)
+
     def stresses(self, tangential=None, **kw):
         """The subsurface stress field under this contact (plane strain), with
         an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses.contact`."""
