@@ -26,7 +26,7 @@ from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined
                          numeric_minimum, resolution)
 from .memo import minimum_key, point_key, remember, remembered
 from .results import REQUIRED_DIGITS, PointResult
-from .spec import PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
+from .spec import ASYMMETRIC_QUANTITIES, PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
 from ..core.precision import workdps
 
 
@@ -151,6 +151,25 @@ class Context:
             self.contacts[key] = LineContact(profile, params=params or None, budget=self.budget, period=period)
         return self.contacts[key]
 
+    def asymmetric(self, profile, ranges: Callable):
+        """The asymmetric contact of ``profile`` (its x read as the real x, on the
+        whole line), its parameters verified over ``ranges(symbol)``."""
+        from ..contacts.asymmetric.contact import AsymmetricLineContact
+        params = {sym: ranges(sym) for sym in sorted(profile.free_symbols - {S.x}, key=lambda z: z.name)}
+        key = ("asymmetric", profile, tuple(sorted((k.name, v) for k, v in params.items())))
+        if key not in self.contacts:
+            self.contacts[key] = AsymmetricLineContact(profile.xreplace({S.x: S.x_real}), params or None,
+                                                       budget=self.budget)
+        return self.contacts[key]
+
+    def punch(self, half_width):
+        """The rigid flat punch of half-width ``half_width`` (a number; walls at -+ it)."""
+        from ..contacts.asymmetric.contact import flat_punch
+        key = ("punch", half_width)
+        if key not in self.contacts:
+            self.contacts[key] = flat_punch(half_width, budget=self.budget)
+        return self.contacts[key]
+
     def adhesive(self, profile, ranges: Callable, kind: str = "adhesive", period=None):
         """The adhesive form of :meth:`contact` of the given kind (default
         JKR, work of adhesion gamma), the law's parameters symbolic."""
@@ -265,6 +284,8 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
         out = _from_derivation(d)
         out.seconds = time.perf_counter() - t0
         return out
+    if q in ASYMMETRIC_QUANTITIES:
+        return _derive_asymmetric(claim, profile, ctx)
     if q == "flat_punch_pressure":
         return _flat_punch_pressure()
     if q == "flat_punch_displacement":
@@ -430,6 +451,96 @@ def _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr, l
                    engine.verified_digits, evaluator=minimum, comparer=comparer, profile=profile, slope=slope,
                    variables=frozenset(ad.variables) if not isinstance(Pexpr, sp.Expr) else
                    frozenset(Pexpr.free_symbols - {S.a}))
+
+
+# ---------------------------------------------------------------- asymmetric contacts
+def _claim_symbol(claim, name):
+    """The claim's symbol ``name`` (declared in its ``symbols``, or standard)."""
+    from ..parsing import SYMBOLS
+    sym = claim.symbols.get(name) or SYMBOLS.get(name)
+    if sym is None:
+        raise ClaimError(f"{_where(claim)}: quantity {claim.quantity!r} uses the symbol {name}: "
+                         f"declare it (symbols = [\"{name}\"])")
+    return sym
+
+
+def _by_name(vals):
+    return {k.name: v for k, v in vals.items()}
+
+
+def _derive_asymmetric(claim, profile, ctx) -> Derived:
+    """The asymmetric contact's quantities (:data:`~.spec.ASYMMETRIC_QUANTITIES`):
+    P, theta, M of the bounded contact as functions of the centre e and the
+    half-width a (the engine's symbolic results, the claim's e for the real
+    e), the ends at a load and a tilt (the engine's state, solved at the
+    claim's digits), and the flat punch under a load and a moment."""
+    q = claim.quantity
+    t0 = time.perf_counter()
+    if q.startswith("punch."):
+        return _derive_punch(claim, ctx, t0)
+    c = ctx.asymmetric(profile, claim.range_of)
+    params = frozenset(c.params)
+    if q in ("asymmetric.force", "asymmetric.tilt", "asymmetric.moment"):
+        what = q.split(".")[1]
+        e = _claim_symbol(claim, "e")
+        expr = {"force": c.core.force, "tilt": c.core.tilt, "moment": c.core.moment}[what]()
+        method = f"{what} of the bounded contact on [e - a, e + a]: the engine's even/odd parts (OffsetContact)"
+        closed = not expr.has(sp.Integral, sp.Derivative, sp.Piecewise)
+        if closed:
+            return Derived(expr.xreplace({S.e: e}), method, profile=profile, seconds=time.perf_counter() - t0,
+                           variables=frozenset({S.a, S.E_star, e}) | params)
+        attr = {"force": "P", "tilt": "tilt", "moment": "moment"}[what]
+
+        def numbers(vals, dps):
+            v = _by_name(vals)
+            n = c.core.numbers(**{k: v[k] for k in v if k not in ("e", "a")})
+            return getattr(n, attr)(to_mpf(v["e"]), to_mpf(v["a"]))
+        return Derived(None, method + " (quadrature)", closed_form=False, evaluator=numbers, profile=profile,
+                       seconds=time.perf_counter() - t0, variables=frozenset({S.a, S.E_star, e}) | params)
+    what = q.split(".")[1]
+
+    def state(vals, dps):
+        v = _by_name(vals)
+        rest = {k: v[k] for k in v if k not in ("P", "theta", "x")}
+        st = c.contact_at(v["P"], theta=v["theta"], dps=dps, **rest)
+        return st.e if what == "centre" else st.a
+    return Derived(None, f"{what} of the contact at the load P and the tilt theta (engine state, contact_at)",
+                   closed_form=False, evaluator=state, profile=profile, seconds=time.perf_counter() - t0,
+                   variables=frozenset({S.P, S.theta, S.E_star}) | params)
+
+
+def _derive_punch(claim, ctx, t0) -> Derived:
+    """The rigid flat punch of half-width a at the load P and the moment M:
+    its pressure and tilt from the engine's state (complete contact, or an
+    edge lifted), and the moment at which a corner factor of the complete
+    contact vanishes (the engine's corner factors, solved by SymPy)."""
+    q = claim.quantity
+    M = _claim_symbol(claim, "M")
+    if q == "punch.lift_off_moment":
+        core = ctx.punch(1).core          # its symbolic results are in the centre e and the half-width a
+        th = sp.Dummy("theta", real=True)
+        at_centre = {S.e: 0}
+        tilt = sp.solve(sp.Eq(core.moment_centre(theta=th).xreplace(at_centre), M), th)
+        if len(tilt) != 1:
+            raise ClaimError(f"{_where(claim)}: the punch's tilt under a moment is not one solution: {tilt}")
+        factors = core.edge_factors(theta=tilt[0], punch=S.P - core.force())
+        roots = [r for K in factors for r in sp.solve(K.xreplace(at_centre), M)]
+        # a positive moment (the claim's M): the root positive at positive P, a, E*
+        roots = [sp.simplify(r) for r in roots if r.xreplace({v: 1 for v in r.free_symbols}).is_positive]
+        if len(roots) != 1:
+            raise ClaimError(f"{_where(claim)}: no single positive lift-off moment among {roots}")
+        return Derived(roots[0], "a corner factor K of the complete contact (engine) = 0, solved for M",
+                       seconds=time.perf_counter() - t0)
+    what = q.split(".")[1]
+
+    def state(vals, dps):
+        v = _by_name(vals)
+        st = ctx.punch(v["a"]).contact_at(v["P"], moment=v["M"], dps=dps, E_star=v["E_star"])
+        return st.theta if what == "tilt" else st.pressure(to_mpf(v["x"]))
+    variables = {S.P, S.a, S.E_star, M} | ({S.x} if what == "pressure" else set())
+    return Derived(None, f"{what} of the flat punch at the load P and the moment M (engine state, contact_at)",
+                   closed_form=False, evaluator=state, seconds=time.perf_counter() - t0,
+                   variables=frozenset(variables))
 
 
 # ---------------------------------------------------------------- first principles

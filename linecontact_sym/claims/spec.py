@@ -124,6 +124,29 @@ QUANTITIES = {
                             "rate (Griffith) and the stress-intensity factor",
 }
 
+#: the asymmetric contact's quantities (:mod:`linecontact_sym.contacts.asymmetric`): a
+#: profile on the whole line (its x read as the real x), the claim's symbols
+#: ``e`` (centre), ``M`` (moment about x = 0) declared in its ``symbols``;
+#: ``theta`` is the rigid tilt (gap f(x) - theta x - d).  The punch
+#: quantities need no profile: the rigid flat punch of half-width ``a``
+#: (walls at x = -a, a) at the load P and the moment M
+ASYMMETRIC_QUANTITIES = {
+    "asymmetric.force": "P(e, a): the load of the bounded contact on [e - a, e + a] (engine, even part)",
+    "asymmetric.tilt": "theta(e, a): the tilt of the bounded contact on [e - a, e + a] (engine, odd part)",
+    "asymmetric.moment": "M(e, a) = int x p dx: the moment about x = 0 of the bounded contact (engine)",
+    "asymmetric.centre": "e: the centre of the contact at the load P and the tilt theta "
+                         "(engine state, contact_at(P, theta=theta))",
+    "asymmetric.half_width": "a: the half-width of the contact at the load P and the tilt theta "
+                             "(engine state, contact_at(P, theta=theta))",
+    "punch.pressure": "p(x) under the rigid flat punch of half-width a at the load P and the moment M, "
+                      "-a < x < a (engine state, flat_punch(a).contact_at(P, moment=M))",
+    "punch.tilt": "theta: the tilt of the flat punch of half-width a at the load P and the moment M "
+                  "(engine state)",
+    "punch.lift_off_moment": "M at which a corner factor of the completely pressed flat punch of "
+                             "half-width a under the load P vanishes (engine's corner factors, solved by SymPy)",
+}
+QUANTITIES.update(ASYMMETRIC_QUANTITIES)
+
 # every quantity of every contact kind, by its registry name ('force', 'adhesive.force',
 # 'tangential.traction', ...), unless the checker has its own route above
 for _key, (_kind, _name, _q) in qualified_quantities().items():
@@ -131,7 +154,8 @@ for _key, (_kind, _name, _q) in qualified_quantities().items():
                                 f"(engine, {_kind} contact)")
 
 #: quantities derived without a profile
-PROFILE_FREE = ("flat_punch_pressure", "flat_punch_displacement", "punch_adhesion_force", "inverse_profile")
+PROFILE_FREE = ("flat_punch_pressure", "flat_punch_displacement", "punch_adhesion_force", "inverse_profile",
+                "punch.pressure", "punch.tilt", "punch.lift_off_moment")
 
 #: placeholders of general claims (replaced per test profile)
 PLACEHOLDER_F = sp.Function("f")
@@ -146,7 +170,8 @@ DEFAULT_RANGES = {"a": (0.1, 2.0), "x": (0.1, 2.0), "P": (0.1, 3.0), "E_star": (
 #: the range of a symbol that no table names
 FALLBACK_RANGE = (0.5, 2.5)
 #: x relative to a, by quantity (the contacts' quantities: from their registry domain)
-X_RANGES = {"flat_punch_pressure": (0.02, 0.98), "flat_punch_displacement": (1.05, 3.0)}
+X_RANGES = {"flat_punch_pressure": (0.02, 0.98), "flat_punch_displacement": (1.05, 3.0),
+            "punch.pressure": (-0.98, 0.98)}
 _DOMAIN_X = {"inside": (0.02, 0.98), "outside": (1.05, 3.0)}
 for _key, (_kind, _name, _q) in qualified_quantities().items():
     if _q.domain in _DOMAIN_X:
@@ -573,6 +598,6 @@ def substitute_placeholders(expr, profile, derived_force=None, derived_pressure=
     return expr
 
 
-__all__ = ["QUANTITIES", "PROFILE_FREE", "PLACEHOLDERS", "DEFAULT_RANGES", "X_RANGES", "Form", "Claim", "Curve",
+__all__ = ["QUANTITIES", "ASYMMETRIC_QUANTITIES", "PROFILE_FREE", "PLACEHOLDERS", "DEFAULT_RANGES", "X_RANGES", "Form", "Claim", "Curve",
            "Figure", "Paper", "range_of", "load_paper", "resolve_paper", "paper_from_dict", "claim_from_dict",
            "claim_from_cli", "figure_from_dict", "substitute_placeholders"]
