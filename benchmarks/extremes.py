@@ -25,6 +25,13 @@ EXTREME_GRID = {
     "b_over_a": [1e-12, 1e-6, 0.1, 0.5, 0.9, 1 - 1e-6, 1 - 1e-12, 1.0, 1.5],
     # 2a/L of a periodic array (period L): from an isolated-like contact to full contact
     "a_over_half_L": [1e-12, 1e-8, 1e-4, 0.1, 0.5, 0.9, 1 - 1e-4, 1 - 1e-7, 1 - 1e-12],
+    # 2M/(P w) of a flat punch of half-width w under the load P and the moment M: complete
+    # contact (both corners) up to 1, one corner lifted beyond (asymmetric contacts)
+    "lift_off_ratio": [0.0, 0.5, 0.9, 1 - 1e-4, 1 - 1e-8, 1 - 1e-12, 1.0, 1 + 1e-12, 1 + 1e-8, 1 + 1e-4, 1.5],
+    # the tilt theta of a smooth profile (both edges smooth): the ends differ by nearly nothing
+    "tilt": [-1e-4, -1e-8, -2.1e-12, 1e-12, 1e-8, 1e-4, 0.1],
+    # (x - left)/(right - left) across an asymmetric contact, both ends approached
+    "x_across": [1e-12, 1e-8, 1e-4, 0.1, 0.5, 0.9, 1 - 1e-4, 1 - 1e-8, 1 - 1e-12],
     # absolute scales the ratios are applied at
     "a": [1e-3, 1.0, 7.5],
 }
@@ -82,3 +89,17 @@ def extreme_points(names, quantity: str, size: str = "full"):
                 pt[nm] = val
         pts.append({k: pt[k] for k in names if k in pt})
     return pts
+
+
+def asymmetric_points(given: str, size: str = "full"):
+    """Points of an asymmetric state's pressure: ``given`` 'lift_off_ratio'
+    (the flat punch, M = ratio P w/2) or 'tilt' (a smooth profile), each
+    with u = (x - left)/(right - left) of :data:`EXTREME_GRID`; the caller
+    places x in the contact of its state.  ``size='small'`` thins the grid
+    to the transition (or the smallest tilts) and the ends."""
+    G = EXTREME_GRID
+    given_values, us = G[given], G["x_across"]
+    if size == "small":
+        given_values = [1 - 1e-12, 1.0, 1 + 1e-8] if given == "lift_off_ratio" else [-2.1e-12, 1e-8]
+        us = [1e-12, 1e-4, 0.5, 1 - 1e-8]
+    return [{given: g, "u": u} for g in given_values for u in us]
