@@ -344,3 +344,17 @@ def test_state_evaluate_picks_float64_or_mpmath(cubic_line):
     assert all(abs(g - r) <= 1e-10 * abs(r) for g, r in zip(got, ref))
     with pytest.raises(DomainError, match="rtol"):
         s.evaluate("pressure", 0.1, rtol=0)
+
+
+# ---------------------------------------------------------------- several kinks: refused, and why
+def test_several_kinks_are_refused_with_the_switches_named():
+    """A tilt or a moment of a profile with several switches (the worn cylinder
+    on the whole line: -b, 0 from its |x|, b) is a ProfileError naming them and
+    the one-switch case split."""
+    wc = lcs.worn_cylinder(verify=False)
+    vals = dict(E_star=1, R=1, b=sp.Rational(1, 5))
+    for kw in (dict(theta=sp.Rational(1, 10)), dict(moment=sp.Rational(1, 10))):
+        with pytest.raises(ProfileError, match=r"switches at 3 points \(0, -b, b;.*several distances \|e - b_i\|"):
+            wc.contact_at(P=1, **kw, **vals)
+    with pytest.raises(ProfileError, match=r"switches at 2 points \(-1, 1;.*one switch"):
+        lcs.LineContact(sp.Piecewise((0, X < -1), (X**2, X < 1), (1, True)), symmetric=False, **FAST)

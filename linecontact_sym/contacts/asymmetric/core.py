@@ -192,7 +192,11 @@ class OffsetContact:
     cases, e > b and e < b: in each the parts are Piecewise in s with their
     switch at |e - b| (the parameter eps = |e - b| > 0 of the engine); the
     symbolic results are Piecewise in e, the numbers pick the case of e.
-    More than one kink is refused (a ProfileError)."""
+    More than one kink is refused (a ProfileError naming the switches and
+    why): the worn cylinder and the rounded punch on the whole line switch at
+    -b, 0 (their |x|) and b.  Reading them needs the cases of the order of the
+    distances |e - b_i| (each a positive parameter of the engine, with their
+    differences' signs known): not done."""
 
     def __init__(self, f, params=None, *, x=S.x_real, name=None, budget=DEFAULT_BUDGET, verify=True,
                  points: int = 5, e_range=(-1, 1)):
@@ -215,8 +219,15 @@ class OffsetContact:
         kw = dict(budget=budget, verify=verify, points=points)
         bs = kinks(self.f)
         if len(bs) > 1:
-            raise ProfileError(f"the profile {self.name} switches at {len(bs)} points ({bs}); the asymmetric "
-                               f"contact reads one kink (two cases of the centre) for now")
+            raise ProfileError(
+                f"the profile {self.name} switches at {len(bs)} points ({', '.join(map(str, sorted(bs, key=sp.default_sort_key)))}; a switch of "
+                f"an Abs counts, even where the profile is smooth across it): a tilt or a moment is refused. "
+                f"The asymmetric contact splits the centre e at one switch b into two cases (e >= b, e < b; "
+                f"its even and odd parts then switch at |e - b| alone); with several switches the parts switch "
+                f"at several distances |e - b_i| whose order changes with e, which the case split does not "
+                f"read. Level contacts (theta = 0 or M = 0) of a symmetric profile are the symmetric "
+                f"contact's (LineContact(f).contact_at(P)); a profile with one switch (one Piecewise "
+                f"condition or one Abs, e.g. the flank the contact stays on) is read")
         if not bs:
             self.cases = (_Case(self.f, sp.true, S.e, S.e, {**declared, S.e: e_range}, kw, self.name, budget),)
         else:
