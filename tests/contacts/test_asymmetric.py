@@ -358,3 +358,46 @@ def test_several_kinks_are_refused_with_the_switches_named():
             wc.contact_at(P=1, **kw, **vals)
     with pytest.raises(ProfileError, match=r"switches at 2 points \(-1, 1;.*one switch"):
         lcs.LineContact(sp.Piecewise((0, X < -1), (X**2, X < 1), (1, True)), symmetric=False, **FAST)
+
+
+# ---------------------------------------------------------------- the admissible ends
+def _cubic_branches(P, E, th):
+    """The six (e, +-a) of the tilted cubic x^2/2 + x^3/10 by hand: P = pi E* a^2 (3e + 5)/20 and
+    theta = e + 3e^2/10 + 3a^2/20 give (e + 3e^2/10 - theta)(3e + 5) + 3P/(pi E*) = 0."""
+    e = sp.Symbol("e")
+    poly = sp.Poly(sp.expand((e + 3 * e**2 / 10 - th) * (3 * e + 5) + 3 * P / (sp.pi * E)), e)
+    out = []
+    for r in poly.nroots(n=50):
+        a = sp.sqrt(20 * P / (sp.pi * E * (3 * r + 5))).evalf(50)
+        out += [{"e": r, "a": a}, {"e": r, "a": -a}]
+    return out
+
+
+def test_ends_keep_only_the_admissible_branch(cubic_line):
+    """Of the six branches of the cubic at P = 1, theta = 1/5, E* = 2 (one with a complex a,
+    two with a < 0 ... and e = -1.51, a = 2.62: real, but its bounded pressure is negative
+    across part of the contact) one is admissible: the state contact_at solves."""
+    from linecontact_sym.contacts.asymmetric.contact import _admissible_ends, _positive_of_pairs
+    brs = _cubic_branches(1, 2, sp.Rational(1, 5))
+    assert len(brs) == 6
+    kept = _admissible_ends(cubic_line.core, brs, {"E_star": 2})
+    assert len(kept) == 1
+    st = cubic_line.contact_at(P=1, theta=sp.Rational(1, 5), E_star=2)
+    assert digits(kept[0]["e_value"], st.e) > 25 and digits(kept[0]["a_value"], st.a) > 25
+    real_positive = [b for b in brs if b["e"].is_real and b["a"].is_real and b["a"] > 0]
+    assert len(real_positive) == 2            # the pressure's sign decides between them
+    r = sp.sqrt(S.P / S.E_star)
+    assert _positive_of_pairs([-2 * r, 2 * r]) == [2 * r]
+    assert _positive_of_pairs([r, 1 - r]) == [r, 1 - r]     # not a pair: both kept
+
+
+@pytest.mark.slow
+def test_ends_of_the_cubic_symbolic_and_at_numbers(cubic_line):
+    """ends(): the load's pair +-a(e) halves SymPy's six branches to the three roots of the
+    cubic in e; with values, the one admissible branch."""
+    from linecontact_sym.contacts.asymmetric.contact import _admissible_ends
+    branches = cubic_line.ends(load=1, theta="1/5")        # (text: the parser, no eval)
+    assert len(branches) == 3
+    kept = _admissible_ends(cubic_line.core, branches, {"E_star": 2})   # = ends(..., E_star=2)
+    st = cubic_line.contact_at(P=1, theta=sp.Rational(1, 5), E_star=2)
+    assert len(kept) == 1 and digits(kept[0]["e_value"], st.e) > 25 and digits(kept[0]["a_value"], st.a) > 25

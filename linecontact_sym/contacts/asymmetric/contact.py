@@ -419,15 +419,23 @@ class AsymmetricLineContact:
                               "bounded", dict(values), symmetric=contact)
 
     # ------------------------------------------------------------------ closed ends
-    def ends(self, load=S.P, theta=None, moment=None, budget: float | None = None):
+    def ends(self, load=S.P, theta=None, moment=None, budget: float | None = None, **values):
         """The ends of the bounded contact (both edges smooth) in closed form:
         SymPy solves P(e, a) = load with theta(e, a) = theta (default the
         symbol theta_t) or M(e, a) = moment, under the budget (CPU s), a(e)
-        from the load first; every branch SymPy finds that it cannot show to
-        be complex or to have a <= 0, as dicts {e, a, left, right} (a cubic
-        profile gives the three roots of a cubic in e: the physical one is
-        the one :meth:`contact_at` finds at numbers); an empty list where
+        from the load first, as dicts {e, a, left, right}; an empty list where
         SymPy finds none in time or a part is not closed.
+
+        Which branches: where P(e, a) is even in a its roots a(e) come in
+        pairs +-r, and only the one that is positive where real is kept; of
+        the rest every branch SymPy cannot show to be complex or to have
+        a <= 0 (a cubic profile: the three roots of a cubic in e, whose
+        admissible one changes with the parameters).  With ``values`` (E_star
+        and the profile's parameters by name; load and theta or moment
+        numbers) only the branches admissible there are returned: e and a
+        real, a > 0 and the bounded pressure >= 0 across the contact (21
+        points), each dict with its numbers ``e_value``, ``a_value`` (the one
+        :meth:`contact_at` finds).
 
         >>> import sympy as sp, linecontact_sym as lcs
         >>> R = sp.Symbol("R", positive=True)
@@ -437,8 +445,10 @@ class AsymmetricLineContact:
         if theta is not None and moment is not None:
             raise DomainError("give the tilt theta or the moment M, not both")
         core = self.core
-        target = (core.tilt(), S.tilt if theta is None else sp.sympify(theta)) if moment is None else \
-            (core.moment(), sp.sympify(moment))
+        given = lambda v: v if isinstance(v, sp.Basic) else user_value(v)   # noqa: E731 (text: the parser, no eval)
+        load = given(load)
+        target = (core.tilt(), S.tilt if theta is None else given(theta)) if moment is None else \
+            (core.moment(), given(moment))
         eqs = [sp.Eq(core.force(), load), sp.Eq(*target)]
         if any(q.has(sp.Integral, sp.Derivative, sp.Piecewise) for q in (eqs[0].lhs, eqs[1].lhs)):
             return []
@@ -447,7 +457,8 @@ class AsymmetricLineContact:
             sols = run_with_budget(_solve_ends, eqs, seconds=budget or core.budget)
         except BudgetExceeded:
             return []
-        return [{"e": e_, "a": a_, "left": sp.simplify(e_ - a_), "right": sp.simplify(e_ + a_)} for e_, a_ in sols]
+        out = [{"e": e_, "a": a_, "left": _tidy(e_ - a_), "right": _tidy(e_ + a_)} for e_, a_ in sols]
+        return _admissible_ends(core, out, values) if values else out
 
     # ------------------------------------------------------------------ states
     def contact_at(self, P, theta=None, moment=None, dps: int = STATE_DPS, **values) -> AsymmetricState:
@@ -468,18 +479,77 @@ class AsymmetricLineContact:
 
 
 # ---------------------------------------------------------------------- solves
+#: the size (count_ops) up to which the ends are simplified (a root of a cubic by
+#: Cardano's formula, some 80 operations, took SymPy's simplify 3 s each and stays as long)
+TIDY_OPS = 60
+
+
+def _tidy(expr):
+    """SymPy's simplify for a short closed end (the parabola's), else the expression as solved."""
+    return sp.simplify(expr) if sp.count_ops(expr) <= TIDY_OPS else expr
+
+
+def _positive_of_pairs(roots):
+    """Of roots coming in pairs +-r (of an equation even in the unknown),
+    the member of each pair that is positive where real (no extractable minus sign)."""
+    out = []
+    for r in roots:
+        partner = any(sp.simplify(r + q) == 0 for q in roots if q is not r)
+        if partner and r.could_extract_minus_sign():
+            continue
+        out.append(r)
+    return out
+
+
+def _admissible_ends(core, branches, values, dps: int = 30):
+    """The branches of :meth:`AsymmetricLineContact.ends` admissible at the numbers
+    ``values``: e, a real (imaginary parts below 10^-(dps - 10) of their size),
+    a > 0 and the bounded pressure >= 0 at 21 points across [e - a, e + a]."""
+    subs = {v: user_value(values[v.name]) for v in core.variables if v.name in values}
+    n = core.numbers(**values)
+    out = []
+    with workdps(dps + 10):
+        for br in branches:
+            e_, a_ = (sp.sympify(br[k]) for k in ("e", "a"))
+            free = sorted((e_.free_symbols | a_.free_symbols) - set(subs), key=lambda v: v.name)
+            if free:
+                raise DomainError(f"ends: values for {', '.join(map(str, free))} are needed to tell the "
+                                  f"admissible branches")
+            # numbers put in by mpmath, whose principal branches are SymPy's (SymPy's own
+            # substitution into a root of a cubic by Cardano's formula evaluates for minutes)
+            args = sorted(subs, key=lambda v: v.name)
+            ev, av = (mpmath.mpmathify(sp.lambdify(args, z, "mpmath")(*(to_mpf(subs[v]) for v in args)))
+                      for z in (e_, a_))
+            tiny = mpmath.mpf(10)**(10 - dps)
+            if any(abs(mpmath.im(z)) > tiny * (1 + abs(z)) for z in (ev, av)):
+                continue
+            ev, av = mpmath.re(ev), mpmath.re(av)
+            if not av > 0:
+                continue
+            ps = [n.pressure(ev + av * mpmath.mpf(k) / 11, ev, av) for k in range(-10, 11)]
+            if any(p < -tiny * max(abs(q) for q in ps) for p in ps):
+                continue
+            out.append({**br, "e_value": ev, "a_value": av})
+    return out
+
+
 def _solve_ends(eqs):
     """(e, a) solutions of the two equations with a > 0 (where SymPy can tell):
-    a(e) from the load first, then e from the tilt or moment."""
+    a(e) from the load first (of a pair +-r of roots of a load even in a, the
+    positive one), then e from the tilt or moment."""
     out = []
-    for a_e in sp.solve(eqs[0], S.a):
+    roots = sp.solve(eqs[0], S.a)
+    P = eqs[0].lhs
+    if sp.expand(P.xreplace({S.a: -S.a}) - P) == 0:
+        roots = _positive_of_pairs(roots)
+    for a_e in roots:
         if a_e.is_positive is False:
             continue
         second = eqs[1].lhs.xreplace({S.a: a_e}) - eqs[1].rhs
         for e_ in sp.solve(second, S.e):
             if e_.is_real is False:
                 continue
-            a_ = sp.simplify(a_e.xreplace({S.e: e_}))
+            a_ = _tidy(a_e.xreplace({S.e: e_}))
             if a_.is_positive is False:
                 continue
             out.append((e_, a_))
