@@ -368,6 +368,13 @@ class LineContact(Contact):
         from ..tangential.contact import TangentialLineContact
         return TangentialLineContact(self, friction)
 
+    def rolling(self, friction=S.mu):
+        """Steady rolling with traction under Coulomb friction mu (rolling in
+        +x, the stick zone at the leading edge; Carter for the cylinder), see
+        :mod:`linecontact_sym.contacts.rolling.contact`."""
+        from ..rolling.contact import RollingLineContact
+        return RollingLineContact(self, friction)
+
     def stresses(self, tangential=None, **kw):
         """The subsurface stress field under this contact (plane strain), with
         an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses.contact`."""

@@ -1,0 +1,212 @@
+"""The bounded solution of a profile on a non-centred interval [e - a, e + a],
+as the rolling layer needs it: the load P(e, a), the tilt theta(e, a) that
+makes the pressure bounded at both ends, and the pressure.
+
+For a profile f on the whole line, tilt theta (gap f(x) - theta x - d) and
+contact [e - a, e + a], with x = e + a sin(phi) (the superposition of flat
+punches that are not centred, issue 39):
+
+    theta(e, a) = (1/pi) int_{-pi/2}^{pi/2} f'(e + a sin phi) dphi                 (consistency)
+    P(e, a)     = (E* a/2) int_{-pi/2}^{pi/2} f'(e + a sin phi) sin phi dphi        (load)
+    p(x; e, a)  = (E*/2) sqrt(a^2 - (x - e)^2) J(x; e, a),
+    g'(x)       = sign(x - e) sqrt((x - e)^2 - a^2) J(x; e, a)   outside (the gap's slope),
+    J(x; e, a)  = (1/pi) int_{-pi/2}^{pi/2} [f'(t) - f'(x)]/(t - x) dphi,   t = e + a sin phi.
+
+(The T_0 and T_1 coefficients of f'(e + a s) in Chebyshev polynomials, and
+the bounded inversion of (2/(pi E*)) PV int p(t)/(x - t) dt = f'(x) - theta.)
+
+The symbolic side (:class:`Interval`) derives P and theta by SymPy's
+integration of these phi-integrals under the package's budget (closed for
+polynomial slopes; an unevaluated Integral otherwise).  It is the minimal
+interval solver of the rolling layer, written while the asymmetric core
+(:mod:`linecontact_sym.contacts.asymmetric`, issue 39) was being built; the
+numbers (:class:`SlopeNumbers`) are its own in any case (the traction at many
+points, the admissibility checks).
+"""
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from ...core import symbols as S
+from ...core.budget import run_with_budget
+from ...core.errors import BudgetExceeded, ProfileError
+
+#: the centre of the stick zone and the real coordinate on the whole line
+E_C = sp.Symbol("e", real=True)
+X = sp.Symbol("x", real=True)
+_phi = sp.Dummy("phi", real=True)
+
+#: Gauss-Legendre nodes per piece of [-pi/2, pi/2] for the float64 numbers
+GL_NODES = 64
+
+
+def whole_line_slope(contact):
+    """f'(x) on the whole line for a contact of the package: a symmetric
+    (mirrored) profile f(|x|) gives sign(x) f'(|x|), written without the sign
+    where f is even in x as written (x^2, x^4, cosh)."""
+    f = contact.profile.expr
+    t = sp.Dummy("t", real=True)
+    ft = f.xreplace({S.x: t})
+    even = False
+    if not f.has(sp.Piecewise, sp.Abs):
+        try:
+            even = sp.simplify(ft - ft.xreplace({t: -t})) == 0
+        except Exception:   # noqa: BLE001 -- SymPy cannot decide: the safe |x| route
+            even = False
+    d = sp.diff(f, S.x)
+    if even:
+        return d.xreplace({S.x: X})
+    return sp.sign(X) * d.xreplace({S.x: sp.Abs(X)})
+
+
+def whole_line_breaks(contact):
+    """The kinks of the whole-line slope: +-(the profile's breakpoints), and 0
+    where f'(0+) is not 0 (a wedge)."""
+    out = []
+    for bp in contact.profile.breakpoints:
+        out += [bp, -bp]
+    if contact.profile.slope_at_origin != 0:
+        out.append(sp.S.Zero)
+    return out
+
+
+def _integrate(expr):
+    r = sp.integrate(sp.expand(expr), (_phi, -sp.pi / 2, sp.pi / 2))
+    return sp.simplify(r) if not r.has(sp.Integral) else r
+
+
+class Interval:
+    """The symbolic bounded solution on [e - a, e + a] of a whole-line slope
+    ``slope`` (in :data:`X`); the same method names as the asymmetric core
+    (``force()``, ``tilt()``, ``pressure()``)."""
+
+    def __init__(self, slope, budget=20.0):
+        self.slope = slope
+        self.budget = budget
+        self._cache = {}
+
+    def _phi_integral(self, weight):
+        key = ("phi", weight)
+        if key not in self._cache:
+            g = self.slope.xreplace({X: E_C + S.a * sp.sin(_phi)}) * weight
+            closed = None
+            if not g.has(sp.Piecewise, sp.sign, sp.Abs):
+                try:
+                    closed = run_with_budget(_integrate, g, seconds=self.budget)
+                except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
+                    closed = None
+            if closed is None or closed.has(sp.Integral):
+                closed = sp.Integral(g, (_phi, -sp.pi / 2, sp.pi / 2))
+            self._cache[key] = closed
+        return self._cache[key]
+
+    def tilt(self):
+        """theta(e, a)."""
+        return self._phi_integral(sp.S.One) / sp.pi
+
+    def force(self):
+        """P(e, a)."""
+        return S.E_star * S.a / 2 * self._phi_integral(sp.sin(_phi))
+
+    def pressure(self):
+        """p(x; e, a) for |x - e| < a, in :data:`X` (None where J has no closed form)."""
+        if "p" not in self._cache:
+            t = sp.Dummy("t", real=True)
+            dd = sp.cancel((self.slope.xreplace({X: t}) - self.slope) / (t - X))
+            out = None
+            if dd.is_polynomial(t, X):
+                J = sp.expand(dd.xreplace({t: E_C + S.a * sp.sin(_phi)}))
+                try:
+                    Jc = run_with_budget(_integrate, J, seconds=self.budget) / sp.pi
+                    if not Jc.has(sp.Integral):
+                        out = S.E_star / 2 * sp.sqrt(S.a**2 - (X - E_C)**2) * sp.factor(Jc)
+                except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
+                    out = None
+            self._cache["p"] = out
+        return self._cache["p"]
+
+
+class SlopeNumbers:
+    """The numbers of the bounded interval solution for a whole-line slope at
+    fixed parameter values: mpmath (P, theta at the working precision, split
+    at the slope's kinks) and float64 (J, the pressure and the gap's slope
+    at many points, Gauss-Legendre in phi split at the kinks)."""
+
+    def __init__(self, slope, values: dict, E_star, breaks=()):
+        s = slope.xreplace(values)
+        if s.free_symbols - {X}:
+            raise ProfileError(f"values needed for {sorted(map(str, s.free_symbols - {X}))}")
+        self.mp = sp.lambdify(X, s, "mpmath")
+        self.np = sp.lambdify(X, s, "numpy")
+        self.E = E_star
+        self.breaks = sorted(float(b) for b in breaks)
+        self.mp_breaks = [mpmath.mpf(sp.N(b, 40)) for b in breaks]
+
+    def _cuts(self, e, a, brs):
+        """phi where e + a sin(phi) crosses a kink, inside (-pi/2, pi/2)."""
+        out = []
+        for b in brs:
+            u = (b - e) / a
+            if -1 < u < 1:
+                out.append(mpmath.asin(u) if isinstance(u, mpmath.mpf) else np.arcsin(u))
+        return sorted(out)
+
+    def _quad(self, fn, e, a):
+        e, a = mpmath.mpf(e), mpmath.mpf(a)
+        pts = [-mpmath.pi / 2] + self._cuts(e, a, self.mp_breaks) + [mpmath.pi / 2]
+        return mpmath.quad(fn, pts)
+
+    def tilt(self, e, a):
+        """theta(e, a) (mpmath)."""
+        e, a = mpmath.mpf(e), mpmath.mpf(a)
+        return self._quad(lambda p: mpmath.re(self.mp(e + a * mpmath.sin(p))), e, a) / mpmath.pi
+
+    def P(self, e, a):
+        """P(e, a) (mpmath)."""
+        e, a = mpmath.mpf(e), mpmath.mpf(a)
+        return mpmath.mpf(self.E) * a / 2 * self._quad(
+            lambda p: mpmath.re(self.mp(e + a * mpmath.sin(p))) * mpmath.sin(p), e, a)
+
+    # ------------------------------------------------------------ float64
+    def _nodes(self, e, a):
+        g, w = np.polynomial.legendre.leggauss(GL_NODES)
+        cuts = [-np.pi / 2] + self._cuts(float(e), float(a), self.breaks) + [np.pi / 2]
+        phis, ws = [], []
+        for lo, hi in zip(cuts[:-1], cuts[1:]):
+            phis.append(0.5 * (lo + hi) + 0.5 * (hi - lo) * g)
+            ws.append(0.5 * (hi - lo) * w)
+        return np.concatenate(phis), np.concatenate(ws)
+
+    def J(self, x, e, a, chunk=20000):
+        """J(x; e, a) at float64 points (any shape)."""
+        x = np.asarray(x, float)
+        phi, w = self._nodes(e, a)
+        t = float(e) + float(a) * np.sin(phi)
+        ft = np.broadcast_to(np.asarray(self.np(t), float), t.shape)
+        flat = x.ravel()
+        out = np.empty(flat.shape)
+        for i in range(0, flat.size, chunk):
+            xs = flat[i:i + chunk, None]
+            fx = np.broadcast_to(np.asarray(self.np(xs), float), xs.shape)
+            d = t[None, :] - xs
+            with np.errstate(divide="ignore", invalid="ignore"):
+                dd = (ft[None, :] - fx) / d
+            # a node within rounding of x: the divided difference is the local slope of f'
+            bad = np.abs(d) < 1e-7 * max(float(a), 1e-300)
+            if bad.any():
+                h = 1e-6 * float(a)
+                fp = (np.asarray(self.np(xs + h), float) - np.asarray(self.np(xs - h), float)) / (2 * h)
+                dd = np.where(bad, np.broadcast_to(fp, dd.shape), dd)
+            out[i:i + chunk] = dd @ w / np.pi
+        return out.reshape(x.shape)
+
+    def pressure(self, x, e, a):
+        """p(x; e, a), zero outside (float64)."""
+        x = np.asarray(x, float)
+        r2 = float(a)**2 - (x - float(e))**2
+        return np.where(r2 > 0, 0.5 * self.E * np.sqrt(np.clip(r2, 0, None)) * self.J(x, e, a), 0.0)
+
+
+__all__ = ["Interval", "SlopeNumbers", "whole_line_slope", "whole_line_breaks", "E_C", "X", "GL_NODES"]
