@@ -122,7 +122,7 @@ class RollingLineContact(ContactOn):
     def interval(self) -> Interval:
         """The bounded solution on [e - a, e + a] of the profile (whole line)."""
         if "_interval" not in self._cache:
-            self._cache["_interval"] = Interval(whole_line_slope(self.contact), budget=self.contact.budget)
+            self._cache["_interval"] = Interval(whole_line_slope(self.contact), budget=None)
         return self._cache["_interval"]
 
     def _aux(self, what):
@@ -329,7 +329,7 @@ class RollingLineContact(ContactOn):
             elif at_onset:
                 c = mpmath.mpf(0)
             else:
-                c = st.solve_stick(P_aux, A, A, load)
+                c = st.solve_stick(P_aux, A, A, load, P_float=None if closed else num.P_float)
             xi = (-1 if Qm < 0 else 1) * mu * tilt(A - c, c)
             normal, aux, _, fclosed = self._float_parts(vals)
             Af, cf, ef = float(A), float(c), float(A - c)
@@ -355,9 +355,9 @@ class RollingLineContact(ContactOn):
             Q = np.real(make_callable(fP, "numpy", 15, fixed, stable=False)(a=float(A), c_s=cs))
             xi = np.real(make_callable(ft, "numpy", 15, fixed, stable=False)(a=float(A), c_s=cs))
         else:
-            with workdps(15):
-                Q = np.array([float(mu * (P - num.P(A - c, c))) for c in cs])
-                xi = np.array([float(mu * num.tilt(A - c, c)) for c in cs])
+            Af, muf, Pf = float(A), float(mu), float(P)
+            Q = np.array([muf * (Pf - num.P_float(Af - c, c)) for c in cs])
+            xi = np.array([muf * num.tilt_float(Af - c, c) for c in cs])
         return Q / float(mu * P), xi
 
     def report(self, quantities=("tangential_force", "creepage")) -> str:

@@ -77,6 +77,21 @@ def _integrate(expr):
     return sp.simplify(r) if not r.has(sp.Integral) else r
 
 
+def _sin_moments(expr):
+    """int_{-pi/2}^{pi/2} expr dphi for a polynomial in sin(phi) (the
+    polynomial slopes), term by term: the moments of sin^k are 0 for odd k and
+    pi (k - 1)!!/k!! for even k.  None for anything else."""
+    u = sp.Dummy("u")
+    g = sp.expand(expr).xreplace({sp.sin(_phi): u})
+    if g.has(_phi) or not g.is_polynomial(u):
+        return None
+    out = sp.S.Zero
+    for (kk,), coeff in sp.Poly(g, u).terms():
+        if kk % 2 == 0:
+            out += coeff * sp.pi * sp.factorial2(kk - 1) / sp.factorial2(kk)
+    return sp.factor(out)
+
+
 class Interval:
     """The symbolic bounded solution on [e - a, e + a] of a whole-line slope
     ``slope`` (in :data:`X`); the same method names as the asymmetric core
@@ -91,8 +106,8 @@ class Interval:
         key = ("phi", weight)
         if key not in self._cache:
             g = self.slope.xreplace({X: E_C + S.a * sp.sin(_phi)}) * weight
-            closed = None
-            if not g.has(sp.Piecewise, sp.sign, sp.Abs):
+            closed = _sin_moments(g)
+            if closed is None and self.budget and not g.has(sp.Piecewise, sp.sign, sp.Abs):
                 try:
                     closed = run_with_budget(_integrate, g, seconds=self.budget)
                 except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
@@ -117,13 +132,9 @@ class Interval:
             dd = sp.cancel((self.slope.xreplace({X: t}) - self.slope) / (t - X))
             out = None
             if dd.is_polynomial(t, X):
-                J = sp.expand(dd.xreplace({t: E_C + S.a * sp.sin(_phi)}))
-                try:
-                    Jc = run_with_budget(_integrate, J, seconds=self.budget) / sp.pi
-                    if not Jc.has(sp.Integral):
-                        out = S.E_star / 2 * sp.sqrt(S.a**2 - (X - E_C)**2) * sp.factor(Jc)
-                except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
-                    out = None
+                Jc = _sin_moments(dd.xreplace({t: E_C + S.a * sp.sin(_phi)}))
+                if Jc is not None:
+                    out = S.E_star / 2 * sp.sqrt(S.a**2 - (X - E_C)**2) * sp.factor(Jc / sp.pi)
             self._cache["p"] = out
         return self._cache["p"]
 
@@ -178,6 +189,22 @@ class SlopeNumbers:
             phis.append(0.5 * (lo + hi) + 0.5 * (hi - lo) * g)
             ws.append(0.5 * (hi - lo) * w)
         return np.concatenate(phis), np.concatenate(ws)
+
+    def P_float(self, e, a):
+        """P(e, a) in float64 (Gauss-Legendre, split at the kinks)."""
+        if a <= 0:
+            return 0.0
+        phi, w = self._nodes(e, a)
+        ft = np.broadcast_to(np.asarray(self.np(float(e) + float(a) * np.sin(phi)), float), phi.shape)
+        return 0.5 * float(self.E) * float(a) * float(ft * np.sin(phi) @ w)
+
+    def tilt_float(self, e, a):
+        """theta(e, a) in float64 (Gauss-Legendre, split at the kinks)."""
+        if a <= 0:
+            return float(np.asarray(self.np(float(e)), float))
+        phi, w = self._nodes(e, a)
+        ft = np.broadcast_to(np.asarray(self.np(float(e) + float(a) * np.sin(phi)), float), phi.shape)
+        return float(ft @ w) / np.pi
 
     def J(self, x, e, a, chunk=20000):
         """J(x; e, a) at float64 points (any shape)."""

@@ -74,12 +74,27 @@ class RollingState:
         return self.sign * (float(self.mu) * self.normal_pressure(x) - self.corrective(x))
 
 
-def solve_stick(P_aux, right, a_n, load, dps=30):
+def solve_stick(P_aux, right, a_n, load, dps=30, P_float=None):
     """The stick half-width c in (0, a_n] with P_aux(right - c, c) = load
     (0 < load < P): bracketed on (0, a_n] (the load of the stick zone's
     bounded pressure grows from 0 to P as the zone grows to the contact),
-    then Anderson-Bjorck at ``dps`` digits."""
+    then Anderson-Bjorck at ``dps`` digits.  With ``P_float`` (a float64
+    P(e, c)) the root is first located in float64 and the bracket narrowed
+    to 1e-9 around it (a few high-precision evaluations)."""
     with workdps(dps + 10):
+        if P_float is not None:
+            Rf, Lf = float(right), float(load)
+            c0 = None
+            with workdps(15):
+                gf = lambda c: mpmath.mpf(P_float(Rf - float(c), float(c)) - Lf)  # noqa: E731
+                if gf(0) < 0 < gf(a_n):
+                    c0 = root_in_bracket(gf, mpmath.mpf(0), mpmath.mpf(a_n))
+            if c0 is not None:
+                g = lambda c: P_aux(right - c, c) - load  # noqa: E731
+                d = mpmath.mpf("1e-9") * a_n
+                lo, hi = max(mpmath.mpf(c0) - d, a_n * mpmath.mpf(10)**(-dps)), min(mpmath.mpf(c0) + d, a_n)
+                if g(lo) < 0 < g(hi):
+                    return root_in_bracket(g, lo, hi, width=hi - lo)
         g = lambda c: P_aux(right - c, c) - load  # noqa: E731
         hi = mpmath.mpf(a_n)
         ghi = g(hi)
