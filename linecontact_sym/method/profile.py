@@ -171,9 +171,12 @@ class Profile:
         Declared parameters; a dict maps each to a (low, high) range used when
         picking random admissible points for verification.  Symbols created
         with ``positive=True`` count as declared.
+    auxiliary : bool
+        A linear part of another contact (see :attr:`auxiliary`), not an
+        indenter: the test f' >= 0 near x = 0 is skipped.
     """
 
-    def __init__(self, expr, params=None, name: str | None = None):
+    def __init__(self, expr, params=None, name: str | None = None, auxiliary: bool = False):
         expr = _sanitize(expr, params)
         ranges = {}
         declared = set()
@@ -214,7 +217,13 @@ class Profile:
         #: of a parameter-dependent Piecewise, the order of the breakpoints)
         self.assumptions: tuple = ()
         self.range_notes: tuple = ()
-        self._check_real_and_rising()
+        #: a linear part of another contact (the even and odd parts of an asymmetric
+        #: profile, :mod:`linecontact_sym.contacts.asymmetric`), not a physical
+        #: indenter: it may decrease or go negative, so the admissibility test of
+        #: a compact contact (f' >= 0 near 0) is not made; everything else is
+        self.auxiliary = bool(auxiliary)
+        if not self.auxiliary:
+            self._check_real_and_rising()
         self.pieces = self._split()
         self._check_f0()
         self._check_continuity()
