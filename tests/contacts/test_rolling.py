@@ -18,14 +18,14 @@ from linecontact_sym.core import symbols as S
 from linecontact_sym.core.errors import GrossSlidingError, InadmissibleProfileError
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from rolling_bem import CARTER2D, normal_chebyshev, solve_rolling  # noqa: E402
+from rolling_bem import CARTER2D, cell_means, normal_chebyshev, solve_rolling  # noqa: E402
 
 R = sp.Symbol("R", positive=True)
 k = sp.Symbol("k", positive=True)
 ell = sp.Symbol("l", positive=True)
 
 
-def bem(slope, A, E, mu, ratio, ns=(200, 400), degree=40):
+def bem(slope, A, E, mu, ratio, ns=(100, 200), degree=40):
     """The BEM at two cell counts: (Richardson creepage, finer solution, normal load)."""
     p, P, _ = normal_chebyshev(slope, -A, A, E, degree)
     sols = [solve_rolling(p, -A, A, E, mu, ratio * mu * P, n) for n in ns]
@@ -39,7 +39,7 @@ def compare(state, sol, xi_bem, s_tol=2e-3, xi_tol=5e-5, q_tol=2e-2):
     assert len(zones) == 1 and abs(zones[0][1] - float(state.right)) < 1e-12      # found there, not assumed
     assert abs(float(state.s) - sol.stick_start()) < s_tol
     assert abs(float(state.creepage) / xi_bem - 1) < xi_tol
-    q = state.traction(sol.x)
+    q = cell_means(state.traction, sol.edges)            # the BEM's unknowns are cell means
     assert np.max(np.abs(q - sol.q)) < q_tol * np.max(sol.mu * sol.p)
 
 
@@ -85,13 +85,17 @@ def test_carter_closed_forms_come_from_the_engine():
 def test_carter2d_against_the_bem(carter):
     k2 = CARTER2D
     xi, sol, _ = bem(lambda t: t / k2["R"], k2["a"], k2["E_star"], k2["mu"], k2["ratio"], degree=4)
-    compare(_carter2d_state(carter), sol, xi, s_tol=1e-4, xi_tol=2e-5)
+    compare(_carter2d_state(carter), sol, xi, s_tol=3e-4, xi_tol=2e-5)
+
+
+@pytest.fixture(scope="module")
+def quartic():
+    return lcs.LineContact(k * S.x**4, verify=False).rolling(0.3)
 
 
 @pytest.mark.parametrize("ratio", [0.3, 0.8])
-def test_even_power_x4_against_the_bem(ratio):
-    c = lcs.LineContact(k * S.x**4, verify=False)
-    r = c.rolling(0.3)
+def test_even_power_x4_against_the_bem(quartic, ratio):
+    r = quartic
     assert not r.creepage.has(sp.Integral)        # the even power closes
     st = r.state_at(Q=ratio * 0.3 * 3 * np.pi / 4, a=1, E_star=1, k=1)   # P(a) = 3 pi E* k a^4/4
     assert st.closed
@@ -100,9 +104,10 @@ def test_even_power_x4_against_the_bem(ratio):
     compare(st, sol, xi)
 
 
+@pytest.mark.slow
 def test_cosh_against_the_bem():
     """A non-polynomial profile, k (cosh(x/l) - 1)."""
-    c = lcs.LineContact(k * (sp.cosh(S.x / ell) - 1), verify=False)
+    c = lcs.LineContact(k * (sp.cosh(S.x / ell) - 1), verify=False, budget=1)   # no closed form: the numbers
     r = c.rolling(0.3)
     xi, sol, P = bem(lambda t: 2 * np.sinh(2 * t), 1.0, 1.0, 0.3, 0.5)
     st = r.state_at(Q=0.5 * 0.3 * P, a=1, E_star=1, k=1, l=0.5)

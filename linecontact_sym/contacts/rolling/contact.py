@@ -67,7 +67,7 @@ from ..tangential import history as th
 from ..tangential.contact import MU_RANGE, TangentialLineContact
 from ..tangential.states import friction_at
 from . import state as st
-from .interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_slope
+from .interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_profile, whole_line_slope
 
 CONDITIONS = ("valid for: plane strain; steady rolling in +x; elastically similar bodies or Dundurs' beta "
               "neglected; Coulomb friction mu; constant normal load; one stick zone at the leading edge "
@@ -120,14 +120,26 @@ class RollingLineContact(ContactOn):
     # ----------------------------------------------------------- the interval solution
     @property
     def interval(self) -> Interval:
-        """The bounded solution on [e - a, e + a] of the profile (whole line)."""
+        """The stick zone's pressure in a stable closed form (polynomial slopes)."""
         if "_interval" not in self._cache:
-            self._cache["_interval"] = Interval(whole_line_slope(self.contact), budget=None)
+            self._cache["_interval"] = Interval(whole_line_slope(self.contact))
         return self._cache["_interval"]
+
+    @property
+    def offset(self):
+        """The asymmetric core's contact of the same profile on the whole line
+        (:class:`~linecontact_sym.contacts.asymmetric.OffsetContact`): the
+        engine's P(e, a) and theta(e, a) of an interval that is not centred."""
+        if "_offset" not in self._cache:
+            from ..asymmetric import OffsetContact
+            c = self.contact
+            self._cache["_offset"] = OffsetContact(whole_line_profile(c), dict(c.profile.ranges), budget=c.budget,
+                                                   verify=c.verify, points=c.points)
+        return self._cache["_offset"]
 
     def _aux(self, what):
         """P or theta of the stick zone [a - 2 c_s, a] (e = a - c_s, half-width c_s)."""
-        e = self.interval.force() if what == "force" else self.interval.tilt()
+        e = self.offset.force() if what == "force" else self.offset.tilt()
         return e.xreplace({E_C: S.a - S.c_s, S.a: S.c_s})
 
     def _numbers(self, vals) -> SlopeNumbers:

@@ -1,27 +1,23 @@
-"""The bounded solution of a profile on a non-centred interval [e - a, e + a],
-as the rolling layer needs it: the load P(e, a), the tilt theta(e, a) that
-makes the pressure bounded at both ends, and the pressure.
+"""The numbers of the bounded solution of a profile on a non-centred interval
+[e - a, e + a] that the rolling layer needs beyond the asymmetric core
+(:mod:`linecontact_sym.contacts.asymmetric`, whose ``force()`` and
+``tilt()`` give P(e, a) and theta(e, a) symbolically): the pressure in a
+stable closed form for polynomial slopes, the same quantities by direct
+quadrature at numbers, and the function J that carries the admissibility.
 
 For a profile f on the whole line, tilt theta (gap f(x) - theta x - d) and
-contact [e - a, e + a], with x = e + a sin(phi) (the superposition of flat
-punches that are not centred, issue 39):
+contact [e - a, e + a], with x = e + a sin(phi):
 
     theta(e, a) = (1/pi) int_{-pi/2}^{pi/2} f'(e + a sin phi) dphi                 (consistency)
     P(e, a)     = (E* a/2) int_{-pi/2}^{pi/2} f'(e + a sin phi) sin phi dphi        (load)
     p(x; e, a)  = (E*/2) sqrt(a^2 - (x - e)^2) J(x; e, a),
     g'(x)       = sign(x - e) sqrt((x - e)^2 - a^2) J(x; e, a)   outside (the gap's slope),
-    J(x; e, a)  = (1/pi) int_{-pi/2}^{pi/2} [f'(t) - f'(x)]/(t - x) dphi,   t = e + a sin phi.
+    J(x; e, a)  = (1/pi) int_{-pi/2}^{pi/2} [f'(t) - f'(x)]/(t - x) dphi,   t = e + a sin phi
 
-(The T_0 and T_1 coefficients of f'(e + a s) in Chebyshev polynomials, and
-the bounded inversion of (2/(pi E*)) PV int p(t)/(x - t) dt = f'(x) - theta.)
-
-The symbolic side (:class:`Interval`) derives P and theta by SymPy's
-integration of these phi-integrals under the package's budget (closed for
-polynomial slopes; an unevaluated Integral otherwise).  It is the minimal
-interval solver of the rolling layer, written while the asymmetric core
-(:mod:`linecontact_sym.contacts.asymmetric`, issue 39) was being built; the
-numbers (:class:`SlopeNumbers`) are its own in any case (the traction at many
-points, the admissibility checks).
+(the T_0 and T_1 Chebyshev coefficients of f'(e + a s), and the bounded
+inversion of (2/(pi E*)) PV int p(t)/(x - t) dt = f'(x) - theta).  For a
+polynomial slope J is a polynomial (the phi-moments of sin^k), so the
+pressure has no removable 1/sqrt terms (float64 stable up to the edges).
 """
 from __future__ import annotations
 
@@ -30,16 +26,34 @@ import numpy as np
 import sympy as sp
 
 from ...core import symbols as S
-from ...core.budget import run_with_budget
-from ...core.errors import BudgetExceeded, ProfileError
+from ...core.errors import ProfileError
 
-#: the centre of the stick zone and the real coordinate on the whole line
-E_C = sp.Symbol("e", real=True)
-X = sp.Symbol("x", real=True)
+#: the centre of an interval and the real coordinate on the whole line (the asymmetric core's)
+E_C = S.e
+X = S.x_real
 _phi = sp.Dummy("phi", real=True)
 
 #: Gauss-Legendre nodes per piece of [-pi/2, pi/2] for the float64 numbers
 GL_NODES = 64
+
+
+def whole_line_profile(contact):
+    """f(x) on the whole line (in :data:`X`) for a contact of the package: a
+    symmetric (mirrored) profile is f(|x|), written without the |.| where f
+    is even in x as written (x^2, x^4, cosh)."""
+    f = contact.profile.expr
+    return f.xreplace({S.x: X}) if _even(f) else f.xreplace({S.x: sp.Abs(X)})
+
+
+def _even(f):
+    if f.has(sp.Piecewise, sp.Abs):
+        return False
+    t = sp.Dummy("t", real=True)
+    ft = f.xreplace({S.x: t})
+    try:
+        return sp.simplify(ft - ft.xreplace({t: -t})) == 0
+    except Exception:   # noqa: BLE001 -- SymPy cannot decide: the safe |x| route
+        return False
 
 
 def whole_line_slope(contact):
@@ -47,16 +61,8 @@ def whole_line_slope(contact):
     (mirrored) profile f(|x|) gives sign(x) f'(|x|), written without the sign
     where f is even in x as written (x^2, x^4, cosh)."""
     f = contact.profile.expr
-    t = sp.Dummy("t", real=True)
-    ft = f.xreplace({S.x: t})
-    even = False
-    if not f.has(sp.Piecewise, sp.Abs):
-        try:
-            even = sp.simplify(ft - ft.xreplace({t: -t})) == 0
-        except Exception:   # noqa: BLE001 -- SymPy cannot decide: the safe |x| route
-            even = False
     d = sp.diff(f, S.x)
-    if even:
+    if _even(f):
         return d.xreplace({S.x: X})
     return sp.sign(X) * d.xreplace({S.x: sp.Abs(X)})
 
@@ -70,11 +76,6 @@ def whole_line_breaks(contact):
     if contact.profile.slope_at_origin != 0:
         out.append(sp.S.Zero)
     return out
-
-
-def _integrate(expr):
-    r = sp.integrate(sp.expand(expr), (_phi, -sp.pi / 2, sp.pi / 2))
-    return sp.simplify(r) if not r.has(sp.Integral) else r
 
 
 def _sin_moments(expr):
@@ -93,37 +94,13 @@ def _sin_moments(expr):
 
 
 class Interval:
-    """The symbolic bounded solution on [e - a, e + a] of a whole-line slope
-    ``slope`` (in :data:`X`); the same method names as the asymmetric core
-    (``force()``, ``tilt()``, ``pressure()``)."""
+    """The stick zone's bounded pressure p(x; e, a) in closed form where the
+    slope is a polynomial (in :data:`X`, with :data:`E_C`); ``pressure()``
+    None otherwise."""
 
-    def __init__(self, slope, budget=20.0):
+    def __init__(self, slope):
         self.slope = slope
-        self.budget = budget
         self._cache = {}
-
-    def _phi_integral(self, weight):
-        key = ("phi", weight)
-        if key not in self._cache:
-            g = self.slope.xreplace({X: E_C + S.a * sp.sin(_phi)}) * weight
-            closed = _sin_moments(g)
-            if closed is None and self.budget and not g.has(sp.Piecewise, sp.sign, sp.Abs):
-                try:
-                    closed = run_with_budget(_integrate, g, seconds=self.budget)
-                except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
-                    closed = None
-            if closed is None or closed.has(sp.Integral):
-                closed = sp.Integral(g, (_phi, -sp.pi / 2, sp.pi / 2))
-            self._cache[key] = closed
-        return self._cache[key]
-
-    def tilt(self):
-        """theta(e, a)."""
-        return self._phi_integral(sp.S.One) / sp.pi
-
-    def force(self):
-        """P(e, a)."""
-        return S.E_star * S.a / 2 * self._phi_integral(sp.sin(_phi))
 
     def pressure(self):
         """p(x; e, a) for |x - e| < a, in :data:`X` (None where J has no closed form)."""
@@ -152,6 +129,7 @@ class SlopeNumbers:
         self.mp = sp.lambdify(X, s, "mpmath")
         self.np = sp.lambdify(X, s, "numpy")
         self.E = E_star
+        self.Ef = float(E_star)
         self.breaks = sorted(float(b) for b in breaks)
         self.mp_breaks = [mpmath.mpf(sp.N(b, 40)) for b in breaks]
 
@@ -196,7 +174,7 @@ class SlopeNumbers:
             return 0.0
         phi, w = self._nodes(e, a)
         ft = np.broadcast_to(np.asarray(self.np(float(e) + float(a) * np.sin(phi)), float), phi.shape)
-        return 0.5 * float(self.E) * float(a) * float(ft * np.sin(phi) @ w)
+        return 0.5 * self.Ef * float(a) * float(ft * np.sin(phi) @ w)
 
     def tilt_float(self, e, a):
         """theta(e, a) in float64 (Gauss-Legendre, split at the kinks)."""
@@ -233,7 +211,7 @@ class SlopeNumbers:
         """p(x; e, a), zero outside (float64)."""
         x = np.asarray(x, float)
         r2 = float(a)**2 - (x - float(e))**2
-        return np.where(r2 > 0, 0.5 * self.E * np.sqrt(np.clip(r2, 0, None)) * self.J(x, e, a), 0.0)
+        return np.where(r2 > 0, 0.5 * self.Ef * np.sqrt(np.clip(r2, 0, None)) * self.J(x, e, a), 0.0)
 
 
-__all__ = ["Interval", "SlopeNumbers", "whole_line_slope", "whole_line_breaks", "E_C", "X", "GL_NODES"]
+__all__ = ["Interval", "SlopeNumbers", "whole_line_profile", "whole_line_slope", "whole_line_breaks", "E_C", "X", "GL_NODES"]
