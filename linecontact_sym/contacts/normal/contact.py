@@ -372,8 +372,8 @@ class LineContact(Contact):
         """Steady rolling with traction under Coulomb friction mu (rolling in
         +x, the stick zone at the leading edge; Carter for the cylinder), see
         :mod:`linecontact_sym.contacts.rolling.contact`."""
-        from ..rolling.contact import RollingLineContact
-        return RollingLineContact(self, friction)
+        from ..base import contact_kind   # by the registry: the rolling contact stands on the asymmetric core,
+        return contact_kind("rolling")(self, friction)   # which builds LineContacts (no import cycle)
 
     def stresses(self, tangential=None, **kw):
         """The subsurface stress field under this contact (plane strain), with

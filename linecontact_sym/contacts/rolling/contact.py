@@ -319,7 +319,7 @@ class RollingLineContact(ContactOn):
         """
         refuse_units({"Q": Q, **values}, "the rolling state", S.UNITS)
         with workdps(30):
-            vals, law, A = th._numbers(self._t, values)
+            vals, law, A = th.numbers_at(self._t, values)
             mu = friction_at(self._t, vals)
             P = law.P(A)
             Qm = to_mpf(sp.N(th.to_sympy_number(Q), 40))
@@ -357,7 +357,7 @@ class RollingLineContact(ContactOn):
         half-widths from the whole contact (free rolling) to 0 (full slip),
         float64, without root finding (both are functions of c_s)."""
         with workdps(20):
-            vals, law, A = th._numbers(self._t, values)
+            vals, law, A = th.numbers_at(self._t, values)
             mu, P = friction_at(self._t, vals), law.P(A)
         num = self._numbers(vals)
         cs = np.linspace(float(A), 0.0, points)
