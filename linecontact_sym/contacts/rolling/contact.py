@@ -65,7 +65,7 @@ from ..base import ContactOn, Quantity
 from ..sampling import point_sampler
 from ..tangential import history as th
 from ..tangential.contact import MU_RANGE, TangentialLineContact
-from ..tangential.states import friction_at
+from ..tangential.states import friction_at, tidy_root
 from . import state as st
 from .interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_profile, whole_line_slope
 
@@ -179,7 +179,7 @@ class RollingLineContact(ContactOn):
         closed = not expr.has(sp.Integral)
         conds = tuple(self.contact.derivation("force").conditions) + (sp.Lt(S.c_s, S.a),)
         ref = self._reference("force" if name == "tangential_force" else "tilt")
-        how = "the phi-integrals of the stick zone's bounded pressure by quadrature (mpmath, split at the kinks)"
+        how = "the phi-integrals of the stick zone's bounded pressure (split at the kinks)"
         rec, notes = None, (CONDITIONS,)
         if closed and self.contact.verify:
             rec = verify(expr, ref, self._sampler(), conds, n_points=self.contact.points, reference_name=how)
@@ -243,13 +243,13 @@ class RollingLineContact(ContactOn):
         if not eq.has(sp.Integral):
             try:
                 sols = run_with_budget(sp.solve, eq, S.c_s, seconds=min(self.contact.budget, 20))
-                cands = [s for s in sols if sp.count_ops(s) < 80]
+                cands = [tidy_root(s) for s in sols if sp.count_ops(s) < 80]
             except (BudgetExceeded, NotImplementedError, ValueError, TypeError):
                 cands = []
         sampler = self._sampler_Q()
         for cand in cands:
             rec = verify(cand, value, sampler, conds, n_points=self.contact.points if self.contact.verify else 1,
-                         reference_name="the numeric root of P(a - c_s, c_s) = P(a) - |Q|/mu")
+                         reference_name="the root of P(a - c_s, c_s) = P(a) - |Q|/mu (the rolling state's)")
             if rec.passed:
                 step = Step("solve_stick_zone", cand, conds, ("c_s solving P(a - c_s, c_s) = P(a) - |Q|/mu",))
                 return Derivation("stick_half_width", expr=cand, closed_form=True, step=step, conditions=conds,

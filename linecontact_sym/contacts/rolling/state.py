@@ -73,6 +73,14 @@ class RollingState:
         x = np.asarray(x, float)
         return self.sign * (float(self.mu) * self.normal_pressure(x) - self.corrective(x))
 
+    def plot(self, points: int = 401, ax=None, title=None):
+        """mu p and q over the contact with the stick zone marked
+        (:func:`linecontact_sym.views.rolling_plots.traction`)."""
+        from ...views import rolling_plots
+        x = np.linspace(float(self.left), float(self.right), points)
+        return rolling_plots.traction(x, float(self.mu) * self.normal_pressure(x), self.traction(x),
+                                      (float(self.s), float(self.right)), ax=ax, title=title)
+
 
 def solve_stick(P_aux, right, a_n, load, dps=30, P_float=None):
     """The stick half-width c in (0, a_n] with P_aux(right - c, c) = load
