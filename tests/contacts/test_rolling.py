@@ -120,9 +120,10 @@ def test_extremes(carter):
     (xi -> mu a/R), beyond it an error; Q < 0 the mirror image."""
     st0 = _carter2d_state(carter, 0)
     assert st0.stick == (-1, 1) and st0.creepage == 0
-    top = _carter2d_state(carter, 1 - sp.Rational(1, 10**12))
-    assert float(top.c_s) == pytest.approx(np.sqrt(1e-12), rel=1e-6)
-    assert float(top.creepage) == pytest.approx(0.3 / 500 * (1 - 1e-6), rel=1e-9)
+    for ratio in (sp.Rational(1, 10**12), 1 - sp.Rational(1, 10**12)):   # 30 digits at both ends
+        st = _carter2d_state(carter, ratio)
+        carter_xi = sp.Rational(3, 10) / 500 * (1 - sp.sqrt(1 - ratio))      # Carter, typed here
+        assert abs(st.creepage / sp.N(carter_xi, 50) - 1) < 1e-29
     on = _carter2d_state(carter, 1)
     assert on.c_s == 0 and float(on.creepage) == pytest.approx(0.3 / 500, rel=1e-14)
     with pytest.raises(GrossSlidingError):

@@ -69,6 +69,9 @@ from ..tangential.states import friction_at, tidy_root
 from . import state as st
 from .interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_profile, whole_line_slope
 
+#: the stick zone's deficit a - c_s (its centre e* for a symmetric contact)
+_u = sp.Dummy("u", positive=True)
+
 CONDITIONS = ("valid for: plane strain; steady rolling in +x; elastically similar bodies or Dundurs' beta "
               "neglected; Coulomb friction mu; constant normal load; one stick zone at the leading edge "
               "(checked at numbers: convex profiles)")
@@ -322,29 +325,39 @@ class RollingLineContact(ContactOn):
             vals, law, A = th.numbers_at(self._t, values)
             mu = friction_at(self._t, vals)
             P = law.P(A)
-            Qm = to_mpf(sp.N(th.to_sympy_number(Q), 40))
+            Qs = th.to_sympy_number(Q)
+            Qm = to_mpf(sp.N(Qs, 40))
             load, at_onset = st.onset(Qm, mu, P)
             num = self._numbers(vals)
             fP, ft = self.derivation("tangential_force"), self.derivation("creepage")
             closed = fP.closed_form and ft.closed_form
-            if closed:
-                base = {k: v for k, v in vals.items()}
-                Paux = self._aux("force").xreplace(base)
-                Pl = sp.lambdify((S.a, S.c_s), Paux, "mpmath")
-                tl = sp.lambdify((S.a, S.c_s), self._aux("tilt").xreplace(base), "mpmath")
-                P_aux = lambda e, c: Pl(e + c, c)  # noqa: E731 -- (e, c) -> the stick zone [e - c, e + c]
-                tilt = lambda e, c: tl(e + c, c)  # noqa: E731
-            else:
-                P_aux, tilt = num.P, num.tilt
+            # the stick zone [A - 2c, A] by its deficit u = A - c (free rolling: u -> 0, where
+            # P - P(e*, c) cancels): the closed Q(a, c_s) is factored, exact in u; the numbers
+            # get the digits the cancellation takes as extra working precision
+            sign = -1 if Qm < 0 else 1
             if Qm == 0:
-                c = A
+                u = mpmath.mpf(0)
             elif at_onset:
-                c = mpmath.mpf(0)
+                u = A
+            elif closed:
+                Ql = sp.lambdify((S.a, _u), fP.expr.xreplace({S.c_s: S.a - _u}).xreplace(vals), "mpmath")
+                extra = st.near_full_slip_digits(load, P)
+                with workdps(30 + extra):   # Q(u) flattens as Q -> mu P: Q itself to more digits
+                    Qx = abs(to_mpf(sp.N(Qs, 40 + extra)))
+                    u = +st.solve_deficit(lambda uu: Ql(A, uu) - Qx, A)
             else:
-                c = st.solve_stick(P_aux, A, A, load, P_float=None if closed else num.P_float)
-            xi = (-1 if Qm < 0 else 1) * mu * tilt(A - c, c)
+                extra = max(0, int(-mpmath.log10(abs(Qm) / (mu * P)))) + 2 + st.near_full_slip_digits(load, P)
+                with workdps(30 + extra):
+                    c = st.solve_stick(num.P, A, A, P - abs(Qm) / mu, 30 + extra, P_float=num.P_float)
+                    u = A - c
+            c = A - u
+            if closed:
+                tl = sp.lambdify((S.a, _u), ft.expr.xreplace({S.c_s: S.a - _u}).xreplace(vals), "mpmath")
+                xi = sign * tl(A, u)
+            else:
+                xi = sign * mu * num.tilt(u, c)
             normal, aux, _, fclosed = self._float_parts(vals)
-            Af, cf, ef = float(A), float(c), float(A - c)
+            Af, cf, ef = float(A), float(c), float(u)
             state = st.RollingState(Qm, P, mu, -A, A, A - 2 * c, c, xi, closed and fclosed,
                                     _normal=lambda x: normal(x, Af), _aux=lambda x: aux(x, ef, cf))
         if _check and c > 0 and Qm != 0:

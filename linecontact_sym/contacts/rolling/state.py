@@ -11,7 +11,7 @@ import sympy as sp
 
 from ...core.errors import DomainError, GrossSlidingError, InadmissibleProfileError
 from ...core.precision import workdps
-from ...core.roots import root_in_bracket
+from ...core.roots import root_in_bracket, root_in_log
 
 #: points of the float64 admissibility grid over the contact
 CHECK_POINTS = 801
@@ -119,6 +119,31 @@ def solve_stick(P_aux, right, a_n, load, dps=30, P_float=None):
         return root_in_bracket(g, lo, hi if lo < hi / 2 else hi)
 
 
+def near_full_slip_digits(load, P) -> int:
+    """Extra working digits near full slip: Q(c_s) flattens like c_s^2 as the
+    stick zone vanishes (the creepage's condition number in Q grows like
+    1/sqrt(1 - Q/(mu P)))."""
+    if load <= 0:
+        return 0
+    return max(0, int(-mpmath.log10(load / P) / 2)) + 2
+
+
+def solve_deficit(g, A):
+    """The deficit u in (0, A] of the stick zone (its half-width c = A - u)
+    where g(u) = Q(A, A - u) - |Q| changes sign (g(0+) < 0 < g(A)): solved
+    in ln u, so that a tiny deficit (free rolling) keeps its relative digits."""
+    hi = mpmath.mpf(A)
+    lo = hi / 2
+    while g(lo) > 0:
+        lo /= 2
+        if lo < hi * mpmath.mpf(10)**(-2 * mpmath.mp.dps):
+            return lo
+    if g(hi) < 0:
+        raise InadmissibleProfileError("no stick zone found at the leading edge: the tangential force of the "
+                                       "stick zone does not reach Q as the stick zone shrinks to nothing")
+    return root_in_log(g, lo, hi)
+
+
 def check_admissible(state, J_aux, p_n, label, points=CHECK_POINTS):
     """|q| <= mu p in the stick zone (0 <= p* <= 2 p) and slip against the
     traction in the slip zone (J* >= 0 there: the stick zone's tilted gap
@@ -165,4 +190,4 @@ def number_of(v):
     return mpmath.mpf(sp.N(sp.sympify(v, strict=True), mpmath.mp.dps + 5)) if not isinstance(v, mpmath.mpf) else v
 
 
-__all__ = ["RollingState", "solve_stick", "check_admissible", "onset", "CHECK_POINTS"]
+__all__ = ["RollingState", "solve_stick", "solve_deficit", "check_admissible", "onset", "CHECK_POINTS"]
