@@ -54,7 +54,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.conversion import rational, to_mpf
-from ...core.errors import BudgetExceeded, DomainError
+from ...core.errors import BudgetExceeded, DomainError, InadmissibleProfileError, ProfileError
 from ...core.precision import workdps
 from ...core.units import refuse_units
 from ...method.derivation import Derivation, fallback_step
@@ -141,8 +141,13 @@ class RollingLineContact(ContactOn):
         return self._cache["_offset"]
 
     def _aux(self, what):
-        """P or theta of the stick zone [a - 2 c_s, a] (e = a - c_s, half-width c_s)."""
-        e = self.offset.force() if what == "force" else self.offset.tilt()
+        """P or theta of the stick zone [a - 2 c_s, a] (e = a - c_s, half-width c_s): the
+        asymmetric core's, or the defining phi-integral (unevaluated) where the core
+        does not take the profile."""
+        try:
+            e = self.offset.force() if what == "force" else self.offset.tilt()
+        except ProfileError:
+            e = Interval(whole_line_slope(self.contact)).integral(what)
         return e.xreplace({E_C: S.a - S.c_s, S.a: S.c_s})
 
     def _numbers(self, vals) -> SlopeNumbers:
@@ -331,39 +336,61 @@ class RollingLineContact(ContactOn):
             num = self._numbers(vals)
             fP, ft = self.derivation("tangential_force"), self.derivation("creepage")
             closed = fP.closed_form and ft.closed_form
-            # the stick zone [A - 2c, A] by its deficit u = A - c (free rolling: u -> 0, where
-            # P - P(e*, c) cancels): the closed Q(a, c_s) is factored, exact in u; the numbers
-            # get the digits the cancellation takes as extra working precision
-            sign = -1 if Qm < 0 else 1
-            if Qm == 0:
-                u = mpmath.mpf(0)
-            elif at_onset:
-                u = A
-            elif closed:
-                Ql = sp.lambdify((S.a, _u), fP.expr.xreplace({S.c_s: S.a - _u}).xreplace(vals), "mpmath")
-                extra = st.near_full_slip_digits(load, P)
-                with workdps(30 + extra):   # Q(u) flattens as Q -> mu P: Q itself to more digits
-                    Qx = abs(to_mpf(sp.N(Qs, 40 + extra)))
-                    u = +st.solve_deficit(lambda uu: Ql(A, uu) - Qx, A)
-            else:
-                extra = max(0, int(-mpmath.log10(abs(Qm) / (mu * P)))) + 2 + st.near_full_slip_digits(load, P)
-                with workdps(30 + extra):
-                    c = st.solve_stick(num.P, A, A, P - abs(Qm) / mu, 30 + extra, P_float=num.P_float)
-                    u = A - c
+            u, xi, closed, note = self._solve(Qs, Qm, A, P, mu, load, at_onset, vals, num, closed)
             c = A - u
-            if closed:
-                tl = sp.lambdify((S.a, _u), ft.expr.xreplace({S.c_s: S.a - _u}).xreplace(vals), "mpmath")
-                xi = sign * tl(A, u)
-            else:
-                xi = sign * mu * num.tilt(u, c)
             normal, aux, _, fclosed = self._float_parts(vals)
             Af, cf, ef = float(A), float(c), float(u)
-            state = st.RollingState(Qm, P, mu, -A, A, A - 2 * c, c, xi, closed and fclosed,
+            state = st.RollingState(Qm, P, mu, -A, A, A - 2 * c, c, xi, closed and fclosed, note=note,
                                     _normal=lambda x: normal(x, Af), _aux=lambda x: aux(x, ef, cf))
         if _check and c > 0 and Qm != 0:
             st.check_admissible(state, lambda x: num.J(x, ef, cf), lambda x: normal(x, Af),
                                 f"the profile {self.profile.expr}")
         return state
+
+    def _solve(self, Qs, Qm, A, P, mu, load, at_onset, vals, num, closed):
+        """(u, xi, closed, note): the stick zone [A - 2c, A] by its deficit
+        u = A - c (free rolling: u -> 0, where P - P(e*, c) cancels) and the
+        creepage.  The closed Q(a, c_s) is factored, exact in u; the numbers
+        get the digits the cancellation takes as extra working precision.  A
+        closed result is checked against the float64 quadrature of the same
+        integrals at the solution (a closed form outside the cases it covers
+        falls back to the numbers, with a note)."""
+        sign = -1 if Qm < 0 else 1
+        if Qm == 0:
+            return mpmath.mpf(0), mpmath.mpf(0), closed, ""
+        note = ""
+        if closed:
+            fP, ft = self.derivation("tangential_force"), self.derivation("creepage")
+            try:
+                if at_onset:
+                    u = A
+                else:
+                    Ql = sp.lambdify((S.a, _u), fP.expr.xreplace({S.c_s: S.a - _u}).xreplace(vals), "mpmath")
+                    extra = st.near_full_slip_digits(load, P)
+                    with workdps(30 + extra):   # Q(u) flattens as Q -> mu P: Q itself to more digits
+                        Qx = abs(to_mpf(sp.N(Qs, 40 + extra)))
+                        u = +st.solve_deficit(lambda uu: Ql(A, uu) - Qx, A)
+                tl = sp.lambdify((S.a, _u), ft.expr.xreplace({S.c_s: S.a - _u}).xreplace(vals), "mpmath")
+                xi = sign * mpmath.re(tl(A, u))
+                uf, cf, muf = float(u), float(A - u), float(mu)
+                q_num = muf * (float(P) - num.P_float(uf, cf))
+                xi_num = sign * muf * num.tilt_float(uf, cf)
+                scale = muf * max(abs(num.tilt_float(0.0, float(A) * 2)), abs(num.tilt_float(float(A), 0.0)), 1e-300)
+                if not (abs(q_num - float(abs(Qm))) <= 1e-7 * muf * float(P)
+                        and abs(float(xi) - xi_num) <= 1e-7 * scale):
+                    raise ValueError("the closed forms disagree with the quadrature here")
+                return u, xi, True, ""
+            except (ValueError, TypeError, ZeroDivisionError, InadmissibleProfileError) as exc:
+                note = (f"the closed forms were not used at this state ({exc}); the numbers come from the "
+                        f"quadrature of the same integrals")
+        if at_onset:
+            u = A
+        else:
+            extra = max(0, int(-mpmath.log10(abs(Qm) / (mu * P)))) + 2 + st.near_full_slip_digits(load, P)
+            with workdps(30 + extra):
+                c = st.solve_stick(num.P, A, A, P - abs(Qm) / mu, 30 + extra, P_float=num.P_float)
+                u = A - c
+        return u, sign * mu * num.tilt(u, A - u), False, note
 
     def creepage_curve(self, points: int = 41, **values):
         """The creepage-force curve (Q/(mu P), xi) at ``points`` stick

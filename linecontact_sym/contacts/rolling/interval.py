@@ -102,6 +102,14 @@ class Interval:
         self.slope = slope
         self._cache = {}
 
+    def integral(self, what):
+        """The defining phi-integral of P(e, a) (``what='force'``) or of
+        theta(e, a), unevaluated (where the asymmetric core does not take the profile)."""
+        g = self.slope.xreplace({X: E_C + S.a * sp.sin(_phi)})
+        if what == "force":
+            return S.E_star * S.a / 2 * sp.Integral(g * sp.sin(_phi), (_phi, -sp.pi / 2, sp.pi / 2))
+        return sp.Integral(g, (_phi, -sp.pi / 2, sp.pi / 2)) / sp.pi
+
     def pressure(self):
         """p(x; e, a) for |x - e| < a, in :data:`X` (None where J has no closed form)."""
         if "p" not in self._cache:

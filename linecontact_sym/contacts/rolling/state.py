@@ -32,6 +32,7 @@ class RollingState:
     creepage      xi, same sign as Q (Carter: mu (a - c_s)/R)
     closed        True where the numbers came from closed forms of the engine
     checked       what the admissibility check covered (a sentence)
+    note          why closed forms were not used at this state ("" if they were or there are none)
     """
 
     Q: object
@@ -44,6 +45,7 @@ class RollingState:
     creepage: object
     closed: bool
     checked: str = ""
+    note: str = ""
     _normal: object = field(default=None, repr=False)
     _aux: object = field(default=None, repr=False)
 
