@@ -15,6 +15,6 @@ physical effect, one subpackage each:
 all of them, :mod:`.sampling` the verification points, :mod:`.catalogue` the
 paper's profiles as ready-made contacts.  Importing the package registers every
 contact kind (:data:`~.base.CONTACT_KINDS`)."""
-from . import normal, adhesion, tangential, stresses, rolling  # importing registers the kinds
+from . import normal, adhesion, tangential, stresses, asymmetric, rolling  # importing registers the kinds
 
-__all__ = ["normal", "adhesion", "tangential", "stresses", "rolling"]
+__all__ = ["normal", "adhesion", "tangential", "stresses", "asymmetric", "rolling"]

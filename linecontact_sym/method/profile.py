@@ -267,8 +267,11 @@ class Profile:
     def rising_on(self, values, a, n: int = 24):
         """None if f is real and f' >= 0 at n points evenly spread over (0, a]
         (the frictionless compact contact of half-width a needs a profile that
-        does not decrease inside it), else where it fails, in words."""
+        does not decrease inside it), else where it fails, in words.  An
+        :attr:`auxiliary` profile (a linear part, not an indenter) is only
+        asked to be real."""
         fns = self._numeric_fns(values)
+        rising = not getattr(self, "auxiliary", False)
         if fns is None:
             return None
         f, fp = fns
@@ -283,7 +286,7 @@ class Profile:
                 if isinstance(v, mpmath.mpc) and abs(v.imag) > 1e-20 * (abs(v.real) + 1e-300):
                     return f"f is not real at x = {mpmath.nstr(xv, 6)}"
                 d = d.real if isinstance(d, mpmath.mpc) else d
-                if mpmath.isfinite(d) and d < 0:
+                if rising and mpmath.isfinite(d) and d < 0:
                     return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
         return None
 

@@ -101,3 +101,86 @@ def right_corner(fprime, e, a, load, E=1, N=24):
     colloc = [mpmath.cos(2 * k * mpmath.pi / (2 * N + 1)) for k in range(1, N + 1)]
     phi, th = _solve(nodes, weights, colloc, e, a, E, fprime, load=load)
     return Solution(nodes, weights, phi, th, e, a, E, lambda t: mpmath.sqrt((1 + t) / (1 - t)))
+
+
+def displacement_difference(sol, x1, x0):
+    """u(x1) - u(x0) of the collocated pressure, u(x) = -(2/(pi E*)) int p(t) ln|x - t| dt
+    (u positive into the body; x1, x0 outside the contact or at its ends), by
+    tanh-sinh quadrature of the interpolated pressure in tau."""
+    def g(tau):
+        xt = sol.e + sol.a * tau
+        return sol.weight(tau) * sol.phi_at(tau) * (mpmath.log(abs(x1 - xt)) - mpmath.log(abs(x0 - xt)))
+    total = mpmath.quad(g, [-1, 0, 1])
+    return -2 / mpmath.pi * sol.a * total     # p = E* w phi: E* cancels
+
+
+def bounded_float(fprime, e, a, E=1.0, N=400):
+    """:func:`bounded` in float64 (NumPy), for profiles whose slope jumps (a
+    wedge): the collocation then converges slowly, so many nodes are cheap
+    only in float64.  Returns (theta, load, moment, pressure(x))."""
+    import numpy as np
+    i = np.arange(1, N + 1)
+    nodes = np.cos(i * np.pi / (N + 1))
+    weights = np.pi * (1 - nodes**2) / (N + 1)
+    k = np.arange(1, N + 2)
+    colloc = np.cos((2 * k - 1) * np.pi / (2 * N + 2))
+    A = np.empty((N + 1, N + 1))
+    A[:, :N] = 2 / np.pi * weights[None, :] / (colloc[:, None] - nodes[None, :])
+    A[:, N] = 1.0
+    rhs = np.array([fprime(e + a * xi) for xi in colloc])
+    sol = np.linalg.solve(A, rhs)
+    phi, theta = sol[:N], sol[N]
+    load = E * a * np.sum(weights * phi)
+    moment = E * a * np.sum(weights * phi * (e + a * nodes))
+
+    def pressure(x):
+        # phi(tau) by the discrete Chebyshev (second kind) expansion through the nodes
+        tau = (x - e) / a
+        j = np.arange(N)
+        th_i = i * np.pi / (N + 1)
+        U = np.sin((j[:, None] + 1) * th_i[None, :]) / np.sin(th_i)[None, :]
+        c = 2 / (N + 1) * (U * (np.sin(th_i)**2 * phi)[None, :]).sum(axis=1)
+        t = np.arccos(np.clip(tau, -1, 1))
+        Ut = np.sin((j + 1) * t) / np.sin(t)
+        return E * np.sqrt(1 - tau**2) * float(np.dot(c, Ut))
+    return theta, load, moment, pressure
+
+
+def chebyshev_moments(fprime, e, a, E=1, kinks=()):
+    """(theta, P, M) of the bounded solution on [e - a, e + a] from the
+    Chebyshev expansion of f'(e + a cos(phi)) that the collocation converges
+    to (p = E* sqrt(1 - tau^2) sum c_k U_k(tau), 2 c_k the T_{k+1}
+    coefficient of f' - theta):
+
+        theta = (1/pi) int_0^pi f'(e + a cos phi) dphi
+        P     = (E* a/2) int_0^pi f'(e + a cos phi) cos(phi) dphi
+        M_c   = (E* a^2/4) int_0^pi f'(e + a cos phi) cos(2 phi) dphi,   M = e P + M_c
+
+    by tanh-sinh quadrature split where e + a cos(phi) meets a kink: the
+    independent reference for slopes that jump (the wedge), where collocation
+    converges like 1/N."""
+    e, a, E = mpmath.mpf(e), mpmath.mpf(a), mpmath.mpf(E)
+    pts = [mpmath.mpf(0)] + sorted(mpmath.acos((mpmath.mpf(b) - e) / a) for b in kinks if abs(b - e) < a) + [mpmath.pi]
+
+    def q(w):
+        return mpmath.quad(lambda ph: fprime(e + a * mpmath.cos(ph)) * w(ph), pts)
+    theta = q(lambda ph: 1) / mpmath.pi
+    P = E * a / 2 * q(mpmath.cos)
+    Mc = E * a**2 / 4 * q(lambda ph: mpmath.cos(2 * ph))
+    return theta, P, e * P + Mc
+
+
+def inversion_pressure(fprime, left, right, x, kinks=()):
+    """The bounded pressure at x by the inversion of the singular integral
+    equation (Muskhelishvili), p(x) = (E*/(2 pi)) sqrt((r - x)(x - l))
+    PV int_l^r (f'(t) - f'(x)) / (sqrt((r - t)(t - l)) (t - x)) dt (E* = 1; the
+    subtracted f'(x) integrates to 0), split at x and the kinks."""
+    l, r, x = mpmath.mpf(left), mpmath.mpf(right), mpmath.mpf(x)
+    fx = fprime(x)
+
+    def h(t):
+        if t == x:
+            return mpmath.mpf(0)
+        return (fprime(t) - fx) / (mpmath.sqrt((r - t) * (t - l)) * (t - x))
+    pts = sorted([l, x, r] + [mpmath.mpf(b) for b in kinks if l < b < r])
+    return mpmath.sqrt((r - x) * (x - l)) / (2 * mpmath.pi) * mpmath.quad(h, pts)

@@ -88,6 +88,7 @@ from ...core.conversion import to_mpf
 from ...core.errors import DomainError, ProfileError
 from ...core.precision import workdps
 from ...method.profile import Profile
+from ...parsing import user_value
 from ..normal.contact import LineContact
 from ..normal.force_law import ForceLaw
 from .split import even_part, odd_integral
@@ -123,9 +124,75 @@ def _d_in_s(expr, s):
     return d.xreplace({S.x: s}) if odd else sp.sign(s) * d.xreplace({S.x: sp.Abs(s)})
 
 
+#: the positive distance of the centre from a kink of the profile, the parameter
+#: of the parts in one case (e = b + eps or e = b - eps)
+EPS = sp.Symbol("epsilon_e", positive=True)
+
+
+def kinks(f, x=S.x_real) -> list:
+    """The points b where a Piecewise (or Abs, Min, Max, sign, Heaviside) of
+    f switches in x, as expressions in the parameters."""
+    g = f
+    for k in [t for t in f.atoms(sp.Abs, sp.Min, sp.Max, sp.sign, sp.Heaviside) if t.has(x)]:
+        g = g.xreplace({k: k.rewrite(sp.Piecewise)})
+    found = []
+    for pw in g.atoms(sp.Piecewise):
+        for _, cond in pw.args:
+            for rel in cond.atoms(sp.core.relational.Relational):
+                if not rel.has(x):
+                    continue
+                sol = sp.solve(sp.Eq(rel.lhs, rel.rhs), x)
+                if len(sol) != 1:
+                    raise ProfileError(f"cannot read the breakpoint of {rel} in the profile {f}")
+                if not any(sp.simplify(sol[0] - b) == 0 for b in found):
+                    found.append(sol[0])
+    return found
+
+
+class _Case:
+    """The parts of the profile about the centre where e is on one side of the
+    profile's kink b (or everywhere: no kink): E, H and s^2/2 as engine contacts,
+    in the parameter ``par`` (e itself, or eps = sign (e - b) > 0)."""
+
+    def __init__(self, f, condition, par, centre, aux, kw, name, budget, kink=None, sign=1):
+        self.condition, self.par, self.centre = condition, par, centre
+        #: the kink b and the side: eps = sign (e - b) >= 0 in this case (None: no kink)
+        self.kink, self.sign = kink, sign
+        #: the centre e in terms of the case's parameter, and back
+        self.back = {} if par == S.e else {par: sp.expand((S.e - centre.xreplace({par: 0})) /
+                                                         sp.diff(centre, par))}
+        self.parts = {"E": even_part(f, e=centre), "H": odd_integral(f, e=centre, seconds=budget)}
+
+        def contact(expr, what):
+            if expr is None:
+                raise ProfileError(f"the profile {name}: SymPy finds no antiderivative, needed for its "
+                                   f"odd part (H(s) = int_0^s h); give a profile whose antiderivative closes")
+            expr = sp.piecewise_fold(expr)
+            if not expr.has(S.x):
+                if sp.simplify(expr) != 0:
+                    raise ProfileError(f"the {what} part of {name} is a constant {expr} != 0")
+                return None
+            used = {p: r for p, r in aux.items() if p in expr.free_symbols}
+            return LineContact(Profile(expr, used, name=f"{what} part of {name} about e", auxiliary=True), **kw)
+        self.even = contact(self.parts["E"], "even")
+        self.odd = contact(self.parts["H"], "odd-integral")
+
+    def expr(self, contact, quantity):
+        """An engine result of a part in e (the case's parameter mapped back)."""
+        if contact is None:
+            return sp.S.Zero
+        return contact.derivation(quantity).expr.xreplace(self.back)
+
+
 class OffsetContact:
     """The contact on [e - a, e + a] of a profile on the whole line: see the
-    module docstring (problem, reduction, API, sign conventions)."""
+    module docstring (problem, reduction, API, sign conventions).
+
+    A profile with a kink b (one Piecewise switch, an Abs) splits into two
+    cases, e > b and e < b: in each the parts are Piecewise in s with their
+    switch at |e - b| (the parameter eps = |e - b| > 0 of the engine); the
+    symbolic results are Piecewise in e, the numbers pick the case of e.
+    More than one kink is refused (a ProfileError)."""
 
     def __init__(self, f, params=None, *, x=S.x_real, name=None, budget=DEFAULT_BUDGET, verify=True,
                  points: int = 5, e_range=(-1, 1)):
@@ -145,22 +212,19 @@ class OffsetContact:
         else:
             declared = {p: None for p in (params or ())}
         self.params = tuple(sorted(self.f.free_symbols - {S.x_real}, key=lambda v: v.name))
-        aux = {**declared, S.e: e_range}
-        self.parts = {"E": even_part(self.f), "H": odd_integral(self.f, seconds=budget)}
         kw = dict(budget=budget, verify=verify, points=points)
-
-        def contact(expr, what):
-            if expr is None:
-                raise ProfileError(f"the profile {self.name}: SymPy finds no antiderivative, needed for its "
-                                   f"odd part (H(s) = int_0^s h); give a profile whose antiderivative closes")
-            if not expr.has(S.x):
-                if expr != 0:
-                    raise ProfileError(f"the {what} part of {self.name} is a constant {expr} != 0")
-                return None
-            used = {p: r for p, r in aux.items() if p in expr.free_symbols}
-            return LineContact(Profile(expr, used, name=f"{what} part of {self.name} about e", auxiliary=True), **kw)
-        self.even = contact(self.parts["E"], "even")
-        self.odd = contact(self.parts["H"], "odd-integral")
+        bs = kinks(self.f)
+        if len(bs) > 1:
+            raise ProfileError(f"the profile {self.name} switches at {len(bs)} points ({bs}); the asymmetric "
+                               f"contact reads one kink (two cases of the centre) for now")
+        if not bs:
+            self.cases = (_Case(self.f, sp.true, S.e, S.e, {**declared, S.e: e_range}, kw, self.name, budget),)
+        else:
+            b = bs[0]
+            self.cases = tuple(_Case(self.f, cond, EPS, b + sign * EPS, {**declared, EPS: None}, kw, self.name,
+                                     budget, kink=b, sign=sign)
+                               for cond, sign in ((S.e >= b, 1), (S.e < b, -1)))
+        self.kinks = tuple(bs)
         self.rotation = LineContact(S.x**2 / 2, **kw)
         self.budget, self.verify = budget, verify
         self._memo: dict = {}
@@ -169,49 +233,76 @@ class OffsetContact:
         return f"OffsetContact({self.f})"
 
     @property
+    def even(self):
+        """The engine contact of E (one case; with a kink the case e >= b)."""
+        return self.cases[0].even
+
+    @property
+    def odd(self):
+        """The engine contact of H (one case; with a kink the case e >= b)."""
+        return self.cases[0].odd
+
+    @property
+    def parts(self):
+        return self.cases[0].parts
+
+    @property
     def variables(self):
         """The symbols a number needs besides e, a (and x): E_star and the profile's parameters."""
         return (S.E_star,) + self.params
 
     # ------------------------------------------------------------ symbolic
-    def _part(self, contact, quantity):
-        if contact is None:
-            return sp.S.Zero
-        return contact.derivation(quantity).expr
+    def _combine(self, make, case=None):
+        """make(case) for every case, as a Piecewise in e where there are two
+        (``case``: the index of one case, its expression alone)."""
+        if case is not None:
+            return make(self.cases[case])
+        if len(self.cases) == 1:
+            return make(self.cases[0])
+        return sp.Piecewise(*[(make(c), c.condition) for c in self.cases[:-1]], (make(self.cases[-1]), True))
 
     def derivations(self):
         """{name: Derivation} of every engine result used (for the records)."""
         out = {}
-        for label, c in (("E", self.even), ("H", self.odd), ("rotation", self.rotation)):
-            if c is not None:
-                for q in ("force", "pressure", "gap"):
-                    out[f"{q}[{label}]"] = c.derivation(q)
+        for k, case in enumerate(self.cases):
+            for label, c in (("E", case.even), ("H", case.odd)):
+                if c is not None:
+                    for q in ("force", "pressure", "gap"):
+                        out[f"{q}[{label}{'' if len(self.cases) == 1 else k}]"] = c.derivation(q)
+        for q in ("force", "pressure", "gap"):
+            out[f"{q}[rotation]"] = self.rotation.derivation(q)
         return out
 
-    def closed(self) -> bool:
-        """Did the engine close the force laws of E and H?"""
-        return all(c is None or c.derivation("force").closed_form for c in (self.even, self.odd))
+    def closed(self, quantity: str = "force", case=None) -> bool:
+        """Did the engine close ``quantity`` of every part (of one case)?"""
+        cases = self.cases if case is None else (self.cases[case],)
+        return all(c is None or c.derivation(quantity).closed_form
+                   for cs in cases for c in (cs.even, cs.odd))
 
     def force(self):
         """P(e, a) = P_E(a), Eq. (10*) of the even part (the bounded part; a punch adds P0)."""
-        return self._part(self.even, "force")
+        return self._combine(lambda c: c.expr(c.even, "force"))
 
     def odd_force(self):
         """P_H(a): Eq. (10*) of H."""
-        return self._part(self.odd, "force")
+        return self._combine(lambda c: c.expr(c.odd, "force"))
 
     def rotation_force(self):
         """P_2(a): Eq. (10*) of the unit rotation profile s^2/2."""
-        return self._part(self.rotation, "force")
+        return self.rotation.derivation("force").expr
+
+    def _d_odd(self, case):
+        PH = case.expr(case.odd, "force")
+        return sp.Derivative(PH, S.a) if PH.has(sp.Integral) else sp.diff(PH, S.a)
 
     def tilt(self):
         """theta(e, a) = (2/(pi E* a)) dP_H/da: the tilt at which the
         pressure on [e - a, e + a] is bounded at both ends."""
         if "tilt" not in self._memo:
-            PH = self.odd_force()
-            dPH = sp.Derivative(PH, S.a) if PH.has(sp.Integral) else sp.diff(PH, S.a)
-            th = 2 * dPH / (sp.pi * S.E_star * S.a)
-            self._memo["tilt"] = sp.factor_terms(sp.expand(th)) if not th.has(sp.Integral) else th
+            def one(case):
+                th = 2 * self._d_odd(case) / (sp.pi * S.E_star * S.a)
+                return sp.factor_terms(sp.expand(th)) if not th.has(sp.Integral, sp.Derivative) else th
+            self._memo["tilt"] = self._combine(one)
         return self._memo["tilt"]
 
     def _theta(self, theta):
@@ -227,31 +318,44 @@ class OffsetContact:
 
     def edge_factors(self, theta=None, punch=0):
         """(K_-, K_+): p ~ K_-/sqrt(a + s) at the left end, K_+/sqrt(a - s) at the right."""
-        # the derivative at a fixed tilt (theta(e, a) depends on a)
-        PH, th = self.odd_force(), self._theta(theta)
-        dPH = sp.Derivative(PH, S.a) if PH.has(sp.Integral) else sp.diff(PH, S.a)
-        dPF = dPH - th * sp.diff(self.rotation_force(), S.a)
         k = sp.pi * sp.sqrt(2 * S.a)
-        if PH.has(sp.Integral):
-            return (punch + dPF) / k, (punch - dPF) / k
-        return sp.simplify((punch + dPF) / k), sp.simplify((punch - dPF) / k)
+        th = self._theta(theta)
+        d2 = sp.diff(self.rotation_force(), S.a)
 
-    def pressure(self, theta=None, punch=0):
-        """p(x) on e - a < x < e + a (x = x_real): p_E + d/ds p_F + P0/(pi sqrt(a^2 - s^2))."""
+        def one(case, side):
+            # the derivative at a fixed tilt (theta(e, a) depends on a)
+            dPF = self._d_odd(case) - th * d2
+            out = (punch + side * dPF) / k
+            return out if out.has(sp.Integral, sp.Derivative) else sp.simplify(out)
+        return self._combine(lambda c: one(c, 1)), self._combine(lambda c: one(c, -1))
+
+    def pressure(self, theta=None, punch=0, case=None):
+        """p(x) on e - a < x < e + a (x = x_real): p_E + d/ds p_F + P0/(pi sqrt(a^2 - s^2))
+        (``case``: the index of one case of the centre, its expression alone)."""
         s = S.x_real - S.e
-        pE = _in_s(self._part(self.even, "pressure"), s)
-        pF = self._part(self.odd, "pressure") - self._theta(theta) * self._part(self.rotation, "pressure")
-        out = pE + _d_in_s(pF, s)
+        th = self._theta(theta)
+        p2 = self.rotation.derivation("pressure").expr
+
+        def one(case):
+            pE = _in_s(case.expr(case.even, "pressure"), s)
+            pF = case.expr(case.odd, "pressure") - th * p2
+            return pE + _d_in_s(pF, s)
+        out = self._combine(one, case)
         if punch != 0:
             out += punch / (sp.pi * sp.sqrt(S.a**2 - s**2))
         return out
 
-    def gap(self, theta=None, punch=0):
+    def gap(self, theta=None, punch=0, case=None):
         """g(x) outside the contact (|x - e| > a): g_E + d/ds g_F - (2 P0/(pi E*)) acosh(|s|/a)."""
         s = S.x_real - S.e
-        gE = _in_s(self._part(self.even, "gap"), s)
-        gF = self._part(self.odd, "gap") - self._theta(theta) * self._part(self.rotation, "gap")
-        out = gE + _d_in_s(gF, s)
+        th = self._theta(theta)
+        g2 = self.rotation.derivation("gap").expr
+
+        def one(case):
+            gE = _in_s(case.expr(case.even, "gap"), s)
+            gF = case.expr(case.odd, "gap") - th * g2
+            return gE + _d_in_s(gF, s)
+        out = self._combine(one, case)
         if punch != 0:
             out -= 2 * punch / (sp.pi * S.E_star) * sp.acosh(sp.Abs(s) / S.a)
         return out
@@ -268,61 +372,80 @@ class OffsetNumbers:
 
     Closed forms are lambdified once; where the engine left a force law as
     an Integral, the engine's quadrature law (:class:`~..normal.force_law.ForceLaw`)
-    at that e is used (built once per e)."""
+    at that e is used (built once per e).  With a kink, each number e picks its case."""
 
     def __init__(self, core: OffsetContact, values):
         self.core = core
         missing = [v.name for v in core.variables if v.name not in values]
         if missing:
             raise DomainError(f"the asymmetric contact needs values for {', '.join(missing)}")
-        self.values = {v: sp.nsimplify(values[v.name]) if isinstance(values[v.name], float) else
-                       sp.sympify(values[v.name]) for v in core.variables}
+        self.values = {v: user_value(values[v.name]) for v in core.variables}
         self.E = to_mpf(self.values[S.E_star])
         self._laws: dict = {}
         self._fns: dict = {}
+        pv = {k: v for k, v in self.values.items()}
+        self._kinks = [None if c.kink is None else sp.N(sp.sympify(c.kink).xreplace(pv), 60) for c in core.cases]
+
+    def case(self, e):
+        """(case, its parameter value) at the number e: eps = sign (e - b) >= 0, or e itself."""
+        for c, b in zip(self.core.cases, self._kinks):
+            if b is None:
+                return c, e
+            ep = c.sign * (e - to_mpf(b))
+            if ep > 0 or (ep == 0 and c.sign > 0):
+                return c, ep
+        raise DomainError(f"e = {e} is in no case of {self.core.name}")
 
     # -- force laws of the parts at (e, a)
-    def _law(self, contact, ev):
-        key = (id(contact), ev)
+    def _law(self, case, contact, ev):
+        pv = self.case(ev)[1]
+        key = (id(contact), pv)
         if key not in self._laws:
-            vals = {S.e: sp.Float(ev, mpmath.mp.dps + 10), **self.values}
-            used = {k: v for k, v in vals.items() if k in contact.variables or k == S.e}
+            vals = {case.par: sp.Float(pv, mpmath.mp.dps + 10), **self.values}
+            used = {k: v for k, v in vals.items() if k in contact.variables or k == case.par}
             self._laws[key] = ForceLaw.from_contact(contact, used)
         return self._laws[key]
 
-    def _closed_fn(self, contact, quantity, derivative=False):
+    def _closed_fn(self, case, contact, quantity, derivative=False):
         key = (id(contact), quantity, derivative)
         if key not in self._fns:
             expr = contact.derivation(quantity).expr
             if derivative:
-                expr = sp.diff(expr, S.a)
-            expr = expr.xreplace({k: v for k, v in self.values.items()})
-            self._fns[key] = sp.lambdify([S.e, S.a, S.x], expr, "mpmath")
+                expr = sp.diff(expr, S.a if quantity == "force" else S.x)
+            expr = expr.xreplace(self.values)
+            self._fns[key] = sp.lambdify([case.par, S.a, S.x], expr, "mpmath")
         return self._fns[key]
 
-    def _P(self, contact, e, a, derivative=False):
+    def _P(self, part, e, a, derivative=False):
+        e, a = mpmath.mpf(e), mpmath.mpf(a)
+        case, pv = self.case(e)
+        contact = getattr(case, part)
         if contact is None:
             return mpmath.mpf(0)
         if contact.derivation("force").closed_form:
-            return mpmath.mpf(self._closed_fn(contact, "force", derivative)(e, a, 0).real)
-        law = self._law(contact, e)
+            return _real(self._closed_fn(case, contact, "force", derivative)(pv, a, 0))
+        law = self._law(case, contact, e)
         return law.dP(a) if derivative else law.P(a)
 
     def P(self, e, a):
         """P(e, a) = P_E(a) (the bounded part)."""
-        return self._P(self.core.even, mpmath.mpf(e), mpmath.mpf(a))
+        return self._P("even", e, a)
 
     def P_H(self, e, a):
-        return self._P(self.core.odd, mpmath.mpf(e), mpmath.mpf(a))
+        return self._P("odd", e, a)
 
     def dP_H(self, e, a):
-        return self._P(self.core.odd, mpmath.mpf(e), mpmath.mpf(a), derivative=True)
+        return self._P("odd", e, a, derivative=True)
+
+    def _rot(self, a, derivative=False):
+        case = self.core.cases[0]
+        return _real(self._closed_fn(case, self.core.rotation, "force", derivative)(0, mpmath.mpf(a), 0))
 
     def P_2(self, a):
-        return self._P(self.core.rotation, 0, mpmath.mpf(a))
+        return self._rot(a)
 
     def dP_2(self, a):
-        return self._P(self.core.rotation, 0, mpmath.mpf(a), derivative=True)
+        return self._rot(a, True)
 
     def tilt(self, e, a):
         """theta(e, a) = (2/(pi E* a)) dP_H/da."""
@@ -351,33 +474,63 @@ class OffsetNumbers:
         if abs(s) >= a:
             raise DomainError(f"x = {xv} is outside the contact [{e - a}, {e + a}]")
         th = self._th(e, a, theta)
-        core = self.core
-        pE = self._p(core.even, e, a, abs(s))
-        dH = self._dp(core.odd, e, a, s)
-        d2 = self._dp(core.rotation, e, a, s)
+        case = self.case(e)[0]
+        pE = self._p(case, case.even, e, a, abs(s))
+        dH = self._dp(case, case.odd, e, a, s)
+        d2 = self._dp(self.core.cases[0], self.core.rotation, e, a, s)
         return pE + dH - th * d2 + mpmath.mpf(punch) / (mpmath.pi * mpmath.sqrt((a - s) * (a + s)))
 
-    def _p(self, contact, e, a, t):
+    def _dPk(self, case, contact, e, r, k):
+        """d^k P/da^k of a part at the half-width r (k = 1, 2): the closed force
+        law differentiated, else the engine's quadrature law (dP, and mpmath.diff of it)."""
+        pv = self.case(e)[1] if contact is not self.core.rotation else 0
+        if contact.derivation("force").closed_form:
+            key = (id(contact), "force", k)
+            if key not in self._fns:
+                expr = sp.diff(contact.derivation("force").expr, S.a, k).xreplace(self.values)
+                self._fns[key] = sp.lambdify([case.par, S.a, S.x], expr, "mpmath")
+            return _real(self._fns[key](pv, r, 0))
+        law = self._law(case, contact, e)
+        return law.dP(r) if k == 1 else mpmath.diff(law.dP, r)
+
+    def _p(self, case, contact, e, a, t):
+        """Eq. (12) of a part at |s| = t: lambdified where closed, else
+        (1/pi) int_0^W P'(r)/r dw, r = sqrt(t^2 + w^2), W = sqrt(a^2 - t^2)
+        (Eq. 12 in t = sqrt(x^2 + w^2): a smooth integrand, also at t = 0)."""
         if contact is None:
             return mpmath.mpf(0)
         d = contact.derivation("pressure")
         if d.closed_form:
-            return mpmath.mpf(self._closed_fn(contact, "pressure")(e, a, t).real)
-        vals = {**self.values, S.e: e, S.a: a, S.x: t}
+            pv = self.case(e)[1] if contact is not self.core.rotation else 0
+            return _real(self._closed_fn(case, contact, "pressure")(pv, a, t))
+        W = mpmath.sqrt((a - t) * (a + t))
         with workdps(mpmath.mp.dps + 10):
-            return d.reference({k: v for k, v in vals.items()}, mpmath.mp.dps)
+            def g(w):
+                r = mpmath.sqrt(t**2 + w**2)
+                return self._dPk(case, contact, e, r, 1) / r
+            return mpmath.quad(g, [0, W]) / mpmath.pi
 
-    def _dp(self, contact, e, a, s):
-        """d/ds p(|s|) of a part."""
+    def _dp(self, case, contact, e, a, s):
+        """d/ds p(|s|) of a part: lambdified where closed, else Eq. (12)
+        differentiated under the integral (see :meth:`_p`):
+        (1/pi) [int_0^W (P''(r)/r - P'(r)/r^2) (t/r) dw - P'(a) t/(a W)], t = |s|."""
         if contact is None:
             return mpmath.mpf(0)
         d = contact.derivation("pressure")
         sign = 1 if s >= 0 else -1
+        t = abs(s)
         if d.closed_form:
-            key = (id(contact), "dpressure")
-            if key not in self._fns:
-                expr = sp.diff(d.expr, S.x).xreplace(self.values)
-                self._fns[key] = sp.lambdify([S.e, S.a, S.x], expr, "mpmath")
-            return sign * mpmath.mpf(self._fns[key](e, a, abs(s)).real)
-        with workdps(mpmath.mp.dps + 15):
-            return sign * mpmath.diff(lambda t: self._p(contact, e, a, t), abs(s))
+            pv = self.case(e)[1] if contact is not self.core.rotation else 0
+            return sign * _real(self._closed_fn(case, contact, "pressure", True)(pv, a, t))
+        W = mpmath.sqrt((a - t) * (a + t))
+        with workdps(mpmath.mp.dps + 10):
+            def g(w):
+                r = mpmath.sqrt(t**2 + w**2)
+                return (self._dPk(case, contact, e, r, 2) / r - self._dPk(case, contact, e, r, 1) / r**2) * t / r
+            inner = mpmath.quad(g, [0, W])
+            edge = self._dPk(case, contact, e, a, 1) * t / (a * W)
+            return sign * (inner - edge) / mpmath.pi
+
+
+def _real(v):
+    return mpmath.mpf(v.real) if isinstance(v, mpmath.mpc) else mpmath.mpf(v)
