@@ -152,3 +152,31 @@ def test_creepage_curve_is_carters(carter):
     q, xi = carter.creepage_curve(21, a=1, E_star=113888.9, R=500)
     assert q[0] == 0 and q[-1] == pytest.approx(1, rel=1e-14)
     assert np.allclose(xi, 0.3 / 500 * (1 - np.sqrt(1 - q)), rtol=1e-12, atol=1e-18)
+
+
+def test_tilted_parabola_is_carter_shifted():
+    """The parabola tilted by theta (Hertz shifted by R theta, asymmetric
+    contact): the stick zone [right - 2 c_s, right] and Carter's creepage."""
+    R = sp.Symbol("R", positive=True)
+    r = lcs.LineContact(lcs.x_real**2 / (2 * R), symmetric=False, verify=False).rolling(0.3)
+    st = r.state_at(Q=0.64 * 0.3 * np.pi / 4, P=np.pi / 4, theta=0.2, E_star=1, R=1)
+    assert (float(st.left), float(st.right)) == pytest.approx((-0.8, 1.2), abs=1e-14)
+    assert float(st.s) == pytest.approx(0.0, abs=1e-14)
+    assert float(st.creepage) == pytest.approx(0.3 * 0.4, rel=1e-14)
+
+
+def test_asymmetric_profile_under_a_moment_against_the_bem():
+    """x^2/2 + x^3/10 under the moment M = 0.1 (free rotation): the BEM on the
+    contact the asymmetric core found (whose tilt the Chebyshev solution's
+    consistency coefficient confirms)."""
+    r = lcs.LineContact(lcs.x_real**2 / 2 + lcs.x_real**3 / 10, symmetric=False, verify=False).rolling(0.3)
+    st = r.state_at(Q=0.5 * 0.3, P=1, moment=0.1, E_star=1)
+    L, Rt = float(st.left), float(st.right)
+    p, P, t0 = normal_chebyshev(lambda t: t + 3 * t**2 / 10, L, Rt, 1.0, 8)
+    assert P == pytest.approx(1, rel=1e-12)
+    sols = [solve_rolling(p, L, Rt, 1.0, 0.3, 0.15, n) for n in (100, 200)]
+    compare(st, sols[1], 2 * sols[1].xi - sols[0].xi, xi_tol=1e-4)
+    # the creepage is mu (theta(e*, c_s) - theta_n): theta_n from the Chebyshev T_0 coefficient
+    e_s, c_s = float(st.right - st.c_s), float(st.c_s)
+    _, _, t_star = normal_chebyshev(lambda t: t + 3 * t**2 / 10, e_s - c_s, e_s + c_s, 1.0, 8)
+    assert float(st.creepage) == pytest.approx(0.3 * (t_star - t0), rel=1e-12)

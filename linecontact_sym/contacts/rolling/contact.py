@@ -113,6 +113,13 @@ class RollingLineContact(ContactOn):
     def from_frictionless(cls, contact):
         return cls(contact, S.mu)
 
+    @staticmethod
+    def over_asymmetric(contact, friction=S.mu):
+        """Rolling over an asymmetric contact (numbers):
+        :class:`~.asymmetric.AsymmetricRolling`."""
+        from .asymmetric import AsymmetricRolling
+        return AsymmetricRolling(contact, friction)
+
     def __repr__(self):
         return f"RollingLineContact({self.contact.profile.expr}, mu={self.mu})"
 
