@@ -97,7 +97,7 @@ class RollingLineContact(ContactOn):
                                 arguments=("a", "c_s"), latex="Q", unit="N/m")
     creepage = Quantity("xi(a, c_s)", "", "creepage (rigid creep velocity of body 2 relative to body 1 over the "
                         "rolling speed; same sign as Q) with the stick zone [a - 2 c_s, a]: "
-                        "mu theta(a - c_s, c_s)", arguments=("a", "c_s"), aliases=("creep",), latex=r"\xi",
+                        "mu theta(a - c_s, c_s)", arguments=("a", "c_s"), latex=r"\xi",
                         unit="")
     stick_half_width = Quantity("c_s(Q)", "", "half-width of the stick zone at the leading edge at the tangential "
                                 "force Q: the root of P(a - c_s, c_s) = P(a) - |Q|/mu", arguments=("a", "Q"),
