@@ -180,3 +180,23 @@ def test_asymmetric_profile_under_a_moment_against_the_bem():
     e_s, c_s = float(st.right - st.c_s), float(st.c_s)
     _, _, t_star = normal_chebyshev(lambda t: t + 3 * t**2 / 10, e_s - c_s, e_s + c_s, 1.0, 8)
     assert float(st.creepage) == pytest.approx(0.3 * (t_star - t0), rel=1e-12)
+
+
+@pytest.mark.slow
+def test_carter_claims_hold():
+    """claims/data/carter1926.toml (stick zone, creepage, tangential force) by
+    the package's checker, which reads the rolling quantities from the registry."""
+    from linecontact_sym.claims import check_paper, load_paper
+    result = check_paper(load_paper("carter1926"), budget=20)
+    assert [r.status for r in result.results] == ["holds"] * 3
+    assert min(r.digits for r in result.results) >= 25
+
+
+def test_state_from_the_load_and_the_curve_of_a_quartic(quartic):
+    """P given instead of a (the normal half-width from the force law), and the
+    creepage-force curve through the state's point."""
+    st = quartic.state_at(Q=0.5 * 0.3 * 3 * np.pi / 4, P=3 * np.pi / 4, E_star=1, k=1)
+    assert float(st.right) == pytest.approx(1, rel=1e-13)
+    q, xi = quartic.creepage_curve(401, P=3 * np.pi / 4, E_star=1, k=1)
+    assert np.interp(0.5, q, xi) == pytest.approx(float(st.creepage), rel=1e-4)
+    assert np.all(np.diff(q) > 0) and np.all(np.diff(xi) > 0)
