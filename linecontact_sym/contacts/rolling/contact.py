@@ -55,7 +55,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.conversion import rational, to_mpf
-from ...core.errors import BudgetExceeded, DomainError, InadmissibleProfileError, ProfileError
+from ...core.errors import BudgetExceeded, InadmissibleProfileError, ProfileError
 from ...core.precision import workdps
 from ...core.units import refuse_units
 from ...method.derivation import Derivation, fallback_step

@@ -38,33 +38,17 @@ GL_NODES = 64
 
 
 def whole_line_profile(contact):
-    """f(x) on the whole line (in :data:`X`) for a contact of the package: a
-    symmetric (mirrored) profile is f(|x|), written without the |.| where f
-    is even in x as written (x^2, x^4, cosh)."""
-    f = contact.profile.expr
-    return f.xreplace({S.x: X}) if _even(f) else f.xreplace({S.x: sp.Abs(X)})
-
-
-def _even(f):
-    if f.has(sp.Piecewise, sp.Abs):
-        return False
-    t = sp.Dummy("t", real=True)
-    ft = f.xreplace({S.x: t})
-    try:
-        return sp.simplify(ft - ft.xreplace({t: -t})) == 0
-    except Exception:   # noqa: BLE001 -- SymPy cannot decide: the safe |x| route
-        return False
+    """f(x) on the whole line (in :data:`X`) for a symmetric contact of the
+    package: the asymmetric core's :func:`~linecontact_sym.contacts.asymmetric.contact.whole_line`
+    (f itself where it is even in x, else f(|x|))."""
+    from ..asymmetric.contact import whole_line
+    return whole_line(contact.profile.expr)
 
 
 def whole_line_slope(contact):
-    """f'(x) on the whole line for a contact of the package: a symmetric
-    (mirrored) profile f(|x|) gives sign(x) f'(|x|), written without the sign
-    where f is even in x as written (x^2, x^4, cosh)."""
-    f = contact.profile.expr
-    d = sp.diff(f, S.x)
-    if _even(f):
-        return d.xreplace({S.x: X})
-    return sp.sign(X) * d.xreplace({S.x: sp.Abs(X)})
+    """f'(x) on the whole line: the derivative of :func:`whole_line_profile`
+    (sign(x) f'(|x|) for a mirrored profile)."""
+    return sp.diff(whole_line_profile(contact), X)
 
 
 def whole_line_breaks(contact):
