@@ -170,6 +170,11 @@ def _contact(args, profile, values=None):
     periodic array (its symbols fixed by ``values``, the --set of derive)."""
     from .contacts.normal.contact import LineContact
     period = getattr(args, "period", None)
+    if getattr(args, "asymmetric", False):
+        if period is not None:
+            raise LineContactError("--asymmetric and --period: an asymmetric periodic array is not supported")
+        from .core import symbols as S
+        return LineContact(profile.xreplace({S.x: S.x_real}), symmetric=False, budget=args.budget)
     if period is None:
         return LineContact(profile, budget=args.budget)
     L = _profile(period, getattr(args, "symbols", None), where="--period")
@@ -254,6 +259,8 @@ def cmd_derive(args):
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof, values)
+    if getattr(args, "asymmetric", False):
+        return _derive_asymmetric(args, prof, c)
     quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
     if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
@@ -314,6 +321,52 @@ def cmd_derive(args):
     return EXIT_OK
 
 
+def _derive_asymmetric(args, prof, c):
+    """``derive --asymmetric``: the contact [e - a, e + a] of f on the whole line: P(e, a),
+    the tilt theta(e, a) of the bounded solution, the moments, and the ends where SymPy solves them."""
+    import sympy as sp
+    core = c.core
+    out = {"profile": str(prof), "load P(e, a)": core.force(), "tilt theta(e, a)": core.tilt(),
+           "moment about the centre M_c(e, a)": core.moment_centre(), "moment M(e, a)": core.moment()}
+    ends = c.ends(budget=args.budget)
+    if ends and all(sp.count_ops(d["e"]) + sp.count_ops(d["a"]) < 80 for d in ends):
+        out["ends (load P, tilt theta_t)"] = [{k: v for k, v in d.items()} for d in ends]
+    elif ends:
+        out["ends (load P, tilt theta_t)"] = [f"{len(ends)} branches of SymPy's solution, too long to print "
+                                              f"(in Python: LineContact(f, symmetric=False).ends())"]
+    if args.json or args.format == "json":
+        _emit_json({k: (str(v) if not isinstance(v, list) else
+                        [{kk: str(vv) for kk, vv in d.items()} if isinstance(d, dict) else d for d in v])
+                    for k, v in out.items()})
+    else:
+        print(f"profile f(x) = {prof}    on the whole line; contact [e - a, e + a]")
+        for k, v in list(out.items())[1:]:
+            print()
+            print(f"[{k}]")
+            print(v if not isinstance(v, list) else "\n".join(str(d) for d in v))
+    return EXIT_OK
+
+
+#: what ``eval --theta/--moment`` evaluates on the contact state
+STATE_QUANTITIES = ("left", "right", "e", "a", "theta", "moment", "punch", "pressure", "gap")
+
+
+def _eval_state(c, q, values, args):
+    """``eval --theta T`` / ``--moment M``: the contact state at the load P (given by --set or
+    --at), then ``q``: an end, the tilt, the moment, or the pressure or gap at x."""
+    if q not in STATE_QUANTITIES:
+        raise LineContactError(f"with --theta or --moment the quantity is one of {', '.join(STATE_QUANTITIES)}")
+    vals = dict(values)
+    if "P" not in vals:
+        raise LineContactError("--theta/--moment need the load: --set P=... or --at P=...")
+    load = vals.pop("P")
+    xv = vals.pop("x", None)
+    if q in ("pressure", "gap") and xv is None:
+        raise LineContactError(f"{q} needs x: --at x=... or --set x=...")
+    state = c.contact_at(load, theta=args.theta, moment=args.moment, dps=args.dps, **vals)
+    return getattr(state, q)(xv) if q in ("pressure", "gap") else getattr(state, q)
+
+
 # ------------------------------------------------------------------ eval
 def _registry():
     from .contacts.base import qualified_quantities
@@ -336,7 +389,14 @@ def cmd_eval(args):
     prof = _profile(args.profile, args.symbols)
     values = _settings(args.set, args.symbols)
     q = args.quantity
-    if q not in _registry():
+    state = args.theta is not None or args.moment is not None
+    if args.theta is not None and args.moment is not None:
+        raise LineContactError("give --theta or --moment, not both")
+    if state and q not in STATE_QUANTITIES:
+        raise LineContactError(f"with --theta or --moment the quantity is one of {', '.join(STATE_QUANTITIES)}")
+    if not state and getattr(args, "asymmetric", False):
+        raise LineContactError("--asymmetric in eval needs --theta or --moment (the contact state)")
+    if not state and q not in _registry():
         raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_registry())}")
     grids = {}
     for item in args.at or []:
@@ -356,7 +416,7 @@ def cmd_eval(args):
         point = dict(zip(names, combo))
         allv = {**fixed, **point}
         try:
-            v = _eval_one(c, q, allv, args.dps)
+            v = _eval_state(c, q, allv, args) if state else _eval_one(c, q, allv, args.dps)
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": mpmath.nstr(v, args.dps)})
         except LineContactError as exc:
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": None, "error": str(exc)})
@@ -552,6 +612,8 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (a number or a "
                     "symbol; the profile given on 0 <= x <= L/2): also nominal_pressure, full_contact_force, "
                     "full_contact_pressure")
+    pd.add_argument("--asymmetric", action="store_true", help="f is given on the whole line (not mirrored): "
+                    "the load P(e, a), tilt theta(e, a) and moments of the contact [e - a, e + a]")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")
@@ -574,6 +636,11 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
     pe.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (the profile given "
                     "on 0 <= x <= L/2; L a number or a symbol given by --set)")
+    pe.add_argument("--theta", default=None, metavar="T", help="the contact state at the load P with the tilt T "
+                    "(gap f(x) - T x - d); quantity one of " + ", ".join(STATE_QUANTITIES))
+    pe.add_argument("--moment", default=None, metavar="M", help="the contact state at the load P under the moment "
+                    "M = int x p dx (free rotation)")
+    pe.add_argument("--asymmetric", action="store_true", help="f is given on the whole line (not mirrored)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
 

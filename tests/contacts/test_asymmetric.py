@@ -8,8 +8,8 @@ import mpmath
 import pytest
 import sympy as sp
 
+import linecontact_sym as lcs
 from linecontact_sym.core import symbols as S
-from linecontact_sym.contacts.asymmetric import OffsetContact
 
 sys.path.insert(0, os.path.dirname(__file__))
 import sie_collocation as C  # noqa: E402
@@ -30,8 +30,28 @@ FAST = dict(verify=False)
 
 
 @pytest.fixture(scope="module")
-def cubic():
-    return OffsetContact(X**2 / 2 + X**3 / 10, **FAST)
+def cubic_line():
+    return lcs.LineContact(X**2 / 2 + X**3 / 10, symmetric=False, **FAST)
+
+
+@pytest.fixture(scope="module")
+def cubic(cubic_line):
+    return cubic_line.core
+
+
+R_ = sp.Symbol("R", positive=True)
+
+
+@pytest.fixture(scope="module")
+def hertz():
+    """The symmetric parabola and its twin on the whole line (one set of derivations)."""
+    c = lcs.LineContact(lcs.x**2 / (2 * R_), **FAST)
+    return c, c.asymmetric()
+
+
+@pytest.fixture(scope="module")
+def exponential():
+    return lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
 
 
 def test_cubic_symbolic_forms(cubic):
@@ -58,18 +78,18 @@ def test_cubic_bounded_against_collocation(cubic, ev, av):
             assert digits(n.pressure(xv, e, a), sol.pressure(xv)) > 28
 
 
-def test_parabola_is_hertz_shifted():
-    R = sp.Symbol("R", positive=True)
-    c = OffsetContact(X**2 / (2 * R), **FAST)
+def test_parabola_is_hertz_shifted(hertz):
+    R = R_
+    c = hertz[1].core
     assert sp.simplify(c.tilt() - S.e / R) == 0
     assert c.moment_centre() == 0
     assert sp.simplify(c.pressure() - S.E_star * sp.sqrt(S.a**2 - (X - S.e)**2) / (2 * R)) == 0
 
 
-def test_tilted_parabola_ends_in_closed_form():
+def test_tilted_parabola_ends_in_closed_form(hertz):
     """Hertz shifted by R theta, found by solving the engine's P(e, a) and theta(e, a)."""
-    R = sp.Symbol("R", positive=True)
-    c = lcs.LineContact(X**2 / (2 * R), symmetric=False, **FAST)
+    R = R_
+    c = hertz[1]
     (sol,) = c.ends()
     assert sol["e"] == R * S.tilt
     assert sp.simplify(sol["a"]**2 - 4 * S.P * R / (sp.pi * S.E_star)) == 0
@@ -77,8 +97,8 @@ def test_tilted_parabola_ends_in_closed_form():
     assert sol["e"] == S.M / S.P
 
 
-def test_exponential_bounded_against_collocation():
-    c = OffsetContact(sp.exp(X) - 1 - X, **FAST)
+def test_exponential_bounded_against_collocation(exponential):
+    c = exponential.core
     assert c.closed()      # Bessel I force laws of E = e^e (cosh s - 1) and H
     with mpmath.workdps(30):
         e, a = mpmath.mpf("0.3"), mpmath.mpf("0.7")
@@ -90,7 +110,6 @@ def test_exponential_bounded_against_collocation():
 
 
 # ---------------------------------------------------------------- states: contact_at
-import linecontact_sym as lcs  # noqa: E402
 from linecontact_sym.contacts.asymmetric import flat_punch  # noqa: E402
 from linecontact_sym.core.errors import DomainError, ProfileError  # noqa: E402
 
@@ -135,11 +154,6 @@ def test_flat_punch_transition_is_at_eccentricity_half_the_width(punch):
     assert digits(s.theta, 6 / mpmath.pi) > 25
 
 
-@pytest.fixture(scope="module")
-def cubic_line():
-    return lcs.LineContact(X**2 / 2 + X**3 / 10, symmetric=False, **FAST)
-
-
 def test_cubic_rotation_locked_against_collocation(cubic_line):
     with mpmath.workdps(30):
         s = cubic_line.contact_at(P=1, theta="0.2", E_star=2)
@@ -175,9 +189,8 @@ def test_cubic_gap_against_collocation(cubic_line):
             assert digits(s.gap(x1), expect) > 20
 
 
-def test_symmetric_profile_level_is_todays_contact():
-    R = sp.Symbol("R", positive=True)
-    c = lcs.LineContact(lcs.x**2 / (2 * R), **FAST)
+def test_symmetric_profile_level_is_todays_contact(hertz):
+    c = hertz[0]
     s = c.contact_at(P=1, E_star=2, R=3)
     assert s.e == 0 and s.theta == 0 and s.moment == 0 and s.edges == ("smooth", "smooth")
     assert digits(s.a, c.half_width(1, E_star=2, R=3)) > 28
@@ -247,8 +260,8 @@ def test_wedge_pressure_against_inversion(wedge):
         assert s.pressure(mpmath.mpf("1e-12")) > s.pressure(mpmath.mpf("1e-3")) + 1
 
 
-def test_exponential_states_against_collocation():
-    c = lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
+def test_exponential_states_against_collocation(exponential):
+    c = exponential
     with mpmath.workdps(25):
         for given in (dict(theta="0.1"), dict(moment="-0.05")):
             s = c.contact_at(P=1, E_star=2, **given)
@@ -258,12 +271,70 @@ def test_exponential_states_against_collocation():
 
 
 @pytest.mark.slow
-def test_exponential_pressure_against_collocation():
-    """The engine leaves Eq. (12) of the cosh profile as an Integral: the pressure is its
-    reference quadrature, the odd part's s-derivative by mpmath.diff."""
-    c = lcs.LineContact(sp.exp(X) - 1 - X, symmetric=False, **FAST)
+def test_exponential_pressure_against_collocation(exponential):
+    """The engine leaves Eq. (12) of the cosh profile as an Integral: the pressure is the Eq. (12)
+    quadrature over the closed (Bessel) force laws, the odd part's s-derivative under the integral."""
+    c = exponential
     with mpmath.workdps(15):
         s = c.contact_at(P=1, E_star=2, moment="-0.05")
         sol = C.bounded(lambda x: mpmath.exp(x) - 1, s.e, s.a, E=2, N=16)
         xv = s.e + s.a / 3
         assert digits(s.pressure(xv), sol.pressure(xv)) > 12
+
+
+# ---------------------------------------------------------------- float64 at the extremes
+import numpy as np  # noqa: E402
+
+
+def _rel_err(state, xs):
+    """The float64 pressure's error at float64 points against mpmath at the same points, in
+    units of its conditioning eps |x| / (distance to the nearer end): an end that float64
+    cannot represent moves the distance by eps |x|, which no formula can undo."""
+    got = state.pressure(np.array(xs))
+    worst = 0.0
+    with mpmath.workdps(40):
+        for g, v in zip(got, xs):
+            r = state.pressure(mpmath.mpf(v))
+            dist = min(v - state.left, state.right - v)
+            cond = float(np.finfo(float).eps * max(1.0, abs(v) / dist))
+            worst = max(worst, abs(g - float(r)) / abs(float(r)) / cond)
+    return worst
+
+
+@pytest.mark.parametrize("M", ["0.5", "0.4999999999", "0.5000000001"])
+def test_flat_punch_float64_at_the_transition(punch, M):
+    # the factor at the lifting corner vanishes: (C0 + C1 s) cancels there unless written with the factors
+    s = punch.contact_at(P=1, moment=M, E_star=1, dps=40)
+    left = float(s.left)
+    xs = [left + 1e-12, left + 1e-8, left + 1e-4, 0.0, 0.9, float(s.right) - 1e-10]
+    assert _rel_err(s, xs) < 20
+
+
+def test_tiny_tilt_float64(cubic_line):
+    # a smooth profile tilted by 1e-12: the ends differ by almost nothing; near them the
+    # even and odd parts' 1/sqrt terms cancel unless put over one denominator
+    s = cubic_line.contact_at(P=1, theta="-2.1e-12", E_star=2, dps=40)
+    left, right = float(s.left), float(s.right)
+    xs = [left + 1e-12 * (right - left), left + 1e-6, 0.1, right - 1e-9, right - 1e-13]
+    assert _rel_err(s, xs) < 20
+
+
+# ---------------------------------------------------------------- the command line
+def test_cli_eval_theta_and_moment(capsys):
+    from linecontact_sym import cli
+    assert cli.main(["eval", "x**2/2", "e", "--theta", "0.1", "--set", "P=1", "E_star=2", "--dps", "20"]) == 0
+    assert capsys.readouterr().out.split()[-1] == "0.1"       # Hertz shifted by R theta (R = 1)
+    assert cli.main(["eval", "x**2/2", "e", "--moment", "0.3", "--set", "P=2", "E_star=2"]) == 0
+    assert capsys.readouterr().out.split()[-1] == "0.15"      # the line of action M/P
+    assert cli.main(["eval", "x**2/2", "force", "--theta", "0.1", "--set", "P=1", "E_star=2"]) == 2
+
+
+def test_state_evaluate_picks_float64_or_mpmath(cubic_line):
+    s = cubic_line.contact_at(P=1, theta="0.2", E_star=2)
+    xs = np.array([float(s.e), float(s.left) + 1e-15])
+    got = s.evaluate("pressure", xs, rtol=1e-10)          # the second point: too close for float64, mpmath
+    with mpmath.workdps(30):
+        ref = [float(s.pressure(mpmath.mpf(v))) for v in xs]
+    assert all(abs(g - r) <= 1e-10 * abs(r) for g, r in zip(got, ref))
+    with pytest.raises(DomainError, match="rtol"):
+        s.evaluate("pressure", 0.1, rtol=0)

@@ -26,6 +26,7 @@ complete to incomplete contact where the factor at one corner vanishes:
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import mpmath
@@ -122,20 +123,48 @@ class AsymmetricState:
 
     def _fn(self, which):
         """The closed pressure or gap at this state (its case of the centre)
-        as NumPy and mpmath functions of x, or None."""
+        as NumPy and mpmath functions of x, or None.  The pressure of a
+        bounded state is written with the tilt theta(e, a) put in and the
+        terms over one denominator (SymPy's together and factor, for forms
+        without Piecewise): the 1/sqrt parts of the even and odd parts cancel
+        there exactly, not in floating point near the edges."""
         cache = self.contact._state_fns
         core = self.contact.core
         k = core.cases.index(self._numbers().case(self.e)[0])
-        key = (which, k)
+        bounded = which == "pressure" and self.regime == "bounded"
+        key = (which, k, bounded)
         if key not in cache:
             if not core.closed(case=k) or not core.closed(which, case=k):
                 cache[key] = None
             else:
                 th, P0 = sp.Symbol("theta_n", real=True), sp.Symbol("P0_n", real=True)
-                expr = getattr(core, which)(theta=th, punch=P0, case=k)
+                if bounded:
+                    expr = core.pressure(case=k)
+                    if not expr.has(sp.Piecewise, sp.Integral, sp.Derivative) and sp.count_ops(expr) < 400:
+                        expr = sp.factor(sp.together(expr))
+                else:
+                    expr = getattr(core, which)(theta=th, punch=P0, case=k)
                 args = [S.x_real, S.e, S.a, th, P0, S.E_star] + list(core.params)
                 cache[key] = sp.lambdify(args, expr, "numpy"), sp.lambdify(args, expr, "mpmath")
         return cache[key]
+
+    def _flat(self) -> bool:
+        """Is the profile flat in this contact (no even or odd part: a punch)?"""
+        case = self._numbers().case(self.e)[0]
+        return case.even is None and case.odd is None
+
+    def _flat_pressure(self, xs, mod):
+        """A punch's pressure (C0 + C1 s)/sqrt(a^2 - s^2) written with its corner factors,
+        sqrt(2a) [K_+ (x - left) + K_- (right - x)] / (2a sqrt((right - x)(x - left))):
+        no cancellation where a factor vanishes (the complete/incomplete transition)."""
+        Kl, Kr = self.factors          # at the solve's precision; exactly 0 at a smooth edge
+        a = self.a
+        if mod is np:
+            Kl, Kr, a, left, right = (float(v) for v in (Kl, Kr, a, self.left, self.right))
+        else:
+            left, right = self.left, self.right
+        dl, dr = xs - left, right - xs
+        return mod.sqrt(2 * a) * (Kr * dl + Kl * dr) / (2 * a * mod.sqrt(dr * dl))
 
     def _args(self, kind):
         conv = float if kind == "numpy" else (lambda v: v)
@@ -146,11 +175,14 @@ class AsymmetricState:
     def pressure(self, x):
         """p(x) (0 outside [left, right]): an mpf for a number, a float64
         array for an array (closed forms; the quadrature route pointwise)."""
-        fn = self._fn("pressure")
         if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
             xs = np.asarray(x, dtype=float)
             inside = (xs > float(self.left)) & (xs < float(self.right))
             out = np.zeros_like(xs)
+            if self._flat():
+                out[inside] = self._flat_pressure(xs[inside], np)
+                return out
+            fn = self._fn("pressure")
             if fn is not None:
                 with np.errstate(all="ignore"):
                     out[inside] = np.real(fn[0](xs[inside].astype(complex), *self._args("numpy")))
@@ -165,6 +197,9 @@ class AsymmetricState:
         xv = to_mpf(x)
         if not self.left < xv < self.right:
             return mpmath.mpf(0)
+        if self._flat():
+            return self._flat_pressure(xv, mpmath)
+        fn = self._fn("pressure")
         if fn is None:
             return self._numbers().pressure(xv, self.e, self.a, self.theta, self.punch)
         return self._closed_mp(fn[1], xv)
@@ -195,6 +230,51 @@ class AsymmetricState:
         with workdps(dps + extra):
             v = _finite(fn(xv, *self._args("mp")))
         return +v
+
+    def evaluate(self, quantity: str, x, rtol: float = 1e-8):
+        """``pressure`` or ``gap`` at x (a number or an array) to the relative
+        tolerance ``rtol``: float64 (the closed form over one denominator, a
+        punch by its corner factors) where rtol >= 1e-12 and x is not within
+        1e4 eps |x| / rtol of an end (where float64 cannot place x relative
+        to the end well enough), else mpmath at -log10(rtol) + 5 digits and
+        those the closed form loses there, log10(|x|/distance to the end)."""
+        if quantity not in ("pressure", "gap"):
+            raise DomainError(f"evaluate: 'pressure' or 'gap', got {quantity!r}")
+        if not (isinstance(rtol, (int, float)) and 0 < rtol < 1):
+            raise DomainError(f"rtol must be a number in (0, 1), got {rtol!r}")
+        fn = getattr(self, quantity)
+        xs = np.atleast_1d(np.asarray(x, dtype=float))
+        dist = np.minimum(np.abs(xs - float(self.left)), np.abs(xs - float(self.right)))
+        cond = np.finfo(float).eps * np.maximum(1.0, np.abs(xs)) / np.maximum(dist, 1e-300)
+        fast = rtol >= 1e-12 and bool(np.all(1e4 * cond <= rtol))
+        if fast:
+            out = fn(xs)
+        else:
+            # the digits the closed form loses near an end (x - e against a) come on top
+            lost = max(0.0, math.log10(float(np.max(cond)) / np.finfo(float).eps))
+            dps = int(-math.log10(rtol)) + 5 + math.ceil(lost)
+            with workdps(dps):
+                out = np.array([float(fn(mpmath.mpf(v))) for v in xs])
+        return out if np.ndim(x) else float(out[0])
+
+    def plot(self, ax=None, points: int = 401):
+        """The pressure over [left, right] (matplotlib, the ``[plot]`` extra),
+        with the ends marked (a corner dashed); returns the axes."""
+        try:
+            import matplotlib.pyplot as plt
+        except ImportError as exc:                # the optional extra
+            raise ImportError("plot needs matplotlib: pip install 'linecontact_sym[plot]'") from exc
+        if ax is None:
+            ax = plt.subplots(figsize=(6, 3.5))[1]
+        span = float(self.right - self.left)
+        xs = np.linspace(float(self.left) + 1e-4 * span, float(self.right) - 1e-4 * span, points)
+        ax.plot(xs, self.pressure(xs), label=f"theta = {float(self.theta):.4g}, M = {float(self.moment):.4g}")
+        for end, kind in zip((self.left, self.right), self.edges):
+            ax.axvline(float(end), color="0.5", lw=0.8, ls="--" if kind == "corner" else ":")
+        ax.set_xlabel("x")
+        ax.set_ylabel("p(x)")
+        ax.legend()
+        return ax
 
     def gap(self, x):
         """g(x) outside the contact (0 inside); closed forms only (else

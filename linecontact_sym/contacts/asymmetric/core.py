@@ -329,35 +329,30 @@ class OffsetContact:
             return out if out.has(sp.Integral, sp.Derivative) else sp.simplify(out)
         return self._combine(lambda c: one(c, 1)), self._combine(lambda c: one(c, -1))
 
+    def _recombined(self, quantity, theta, case):
+        """Eq. (12) or Eqs. (3)/(5) of E at |s| plus the s-derivative of those of F = H - theta s^2/2."""
+        s = S.x_real - S.e
+        th = self._theta(theta)
+        rot = self.rotation.derivation(quantity).expr
+
+        def one(c):
+            even = _in_s(c.expr(c.even, quantity), s)
+            return even + _d_in_s(c.expr(c.odd, quantity) - th * rot, s)
+        return self._combine(one, case)
+
     def pressure(self, theta=None, punch=0, case=None):
         """p(x) on e - a < x < e + a (x = x_real): p_E + d/ds p_F + P0/(pi sqrt(a^2 - s^2))
         (``case``: the index of one case of the centre, its expression alone)."""
-        s = S.x_real - S.e
-        th = self._theta(theta)
-        p2 = self.rotation.derivation("pressure").expr
-
-        def one(case):
-            pE = _in_s(case.expr(case.even, "pressure"), s)
-            pF = case.expr(case.odd, "pressure") - th * p2
-            return pE + _d_in_s(pF, s)
-        out = self._combine(one, case)
+        out = self._recombined("pressure", theta, case)
         if punch != 0:
-            out += punch / (sp.pi * sp.sqrt(S.a**2 - s**2))
+            out += punch / (sp.pi * sp.sqrt(S.a**2 - (S.x_real - S.e)**2))
         return out
 
     def gap(self, theta=None, punch=0, case=None):
         """g(x) outside the contact (|x - e| > a): g_E + d/ds g_F - (2 P0/(pi E*)) acosh(|s|/a)."""
-        s = S.x_real - S.e
-        th = self._theta(theta)
-        g2 = self.rotation.derivation("gap").expr
-
-        def one(case):
-            gE = _in_s(case.expr(case.even, "gap"), s)
-            gF = case.expr(case.odd, "gap") - th * g2
-            return gE + _d_in_s(gF, s)
-        out = self._combine(one, case)
+        out = self._recombined("gap", theta, case)
         if punch != 0:
-            out -= 2 * punch / (sp.pi * S.E_star) * sp.acosh(sp.Abs(s) / S.a)
+            out -= 2 * punch / (sp.pi * S.E_star) * sp.acosh(sp.Abs(S.x_real - S.e) / S.a)
         return out
 
     # ------------------------------------------------------------ numbers
