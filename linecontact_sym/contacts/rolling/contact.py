@@ -298,7 +298,7 @@ class RollingLineContact(ContactOn):
         pa = self.interval.pressure()
         closed = pd.closed_form and pa is not None
         if pd.closed_form:
-            fn = make_callable(pd, "numpy", 15, fixed, stable=False)
+            fn = make_callable(pd, "numpy", 15, fixed)   # the stable form: no atanh(1) cancellation at a kink
 
             def normal(x, A):
                 ax = np.abs(x)
