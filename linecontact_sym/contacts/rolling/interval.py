@@ -177,7 +177,11 @@ class SlopeNumbers:
         return float(ft @ w) / np.pi
 
     def J(self, x, e, a, chunk=20000):
-        """J(x; e, a) at float64 points (any shape)."""
+        """J(x; e, a) at float64 points (any shape).  Accuracy: machine
+        precision for smooth slopes; within |x -+ b| << a of a kink b of the
+        slope the divided difference has a layer of that width beside b and
+        the rule loses digits (measured: 1.5e-5 relative in p at |x - b| = 1e-4 a
+        for the rounded punch), as the admissibility check's grid tolerates."""
         x = np.asarray(x, float)
         phi, w = self._nodes(e, a)
         t = float(e) + float(a) * np.sin(phi)
