@@ -181,6 +181,68 @@ def _contact(args, profile, values=None):
     return LineContact(profile, budget=args.budget, period=L.xreplace(values or {}))
 
 
+#: the materials ``--material NAME:K=V,...`` names (:mod:`linecontact_sym.method.material`)
+MATERIALS = ("maxwell", "kelvin_voigt", "standard_linear_solid")
+
+
+def _material(args):
+    """The viscoelastic material of ``--material NAME:K=V,...`` or of
+    ``--relaxation EXPR`` (E*(t) in t), None without either."""
+    from .method import material as M
+    from .parsing import parse_assignments
+    spec, rel = getattr(args, "material", None), getattr(args, "relaxation", None)
+    if spec is None and rel is None:
+        return None
+    if spec is not None and rel is not None:
+        raise LineContactError("give --material or --relaxation, not both")
+    if rel is not None:
+        return M.Material(_profile(rel, args.symbols, where="--relaxation"))
+    name, _, params = spec.partition(":")
+    if name.strip() not in MATERIALS:
+        raise LineContactError(f"--material {name.strip()}: one of {', '.join(MATERIALS)} (NAME:K=V,...), "
+                               "or --relaxation EXPR for any E*(t)")
+    vals = parse_assignments(params, where="--material") if params.strip() else {}
+    return getattr(M, name.strip())(**{k.name: v for k, v in vals.items()})
+
+
+def _history(args, which):
+    """The --history (a(t)) or --load (P(t)) expression in t."""
+    text = getattr(args, which, None)
+    if text is None:
+        raise LineContactError(f"a viscoelastic {'force or pressure' if which == 'history' else 'half-width'} needs "
+                               f"--{which} EXPR (a SymPy expression in t, Piecewise for load-then-unload)")
+    return _profile(text, args.symbols, where=f"--{which}")
+
+
+def _viscoelastic_derive(args, c, prof, mat):
+    v = c.viscoelastic(mat)
+    out = {"profile": str(prof), "material": repr(mat)}
+    if getattr(args, "history", None) is not None:
+        out["force_history"] = v.force_history(_history(args, "history"), budget=args.budget)
+    if getattr(args, "load", None) is not None:
+        out["half_width_history"] = v.half_width_history(_history(args, "load"), budget=args.budget)
+    if len(out) == 2:
+        raise LineContactError("with a material: --history EXPR (a(t): the force history) or --load EXPR "
+                               "(P(t): the half-width under creep)")
+    if args.json or args.format == "json":
+        _emit_json({k: str(v_) for k, v_ in out.items()})
+    else:
+        for k, v_ in out.items():
+            print(f"[{k}]\n{v_}\n")
+    return EXIT_OK
+
+
+def _viscoelastic_eval(c, q, mat, args, values):
+    """One value of a viscoelastic quantity (force, pressure, half_width) at t (and x)."""
+    if q not in ("force", "pressure", "half_width"):
+        raise LineContactError(f"with a material the quantity is force, pressure or half_width, not {q!r}")
+    if "t" not in values:
+        raise LineContactError(f"{q} of a viscoelastic contact needs the time: --at t=...")
+    tv, x = values.pop("t"), values.pop("x", None)
+    history = _history(args, "load" if q == "half_width" else "history")
+    return c.viscoelastic(mat).evaluate_at(q, tv, history, x=x, dps=args.dps, **values)
+
+
 def _derivation_dict(d, values=None):
     from .core.printing import to_latex
     expr = d.expr.xreplace(values) if values else d.expr
@@ -261,6 +323,9 @@ def cmd_derive(args):
     c = _contact(args, prof, values)
     if getattr(args, "asymmetric", False):
         return _derive_asymmetric(args, prof, c)
+    mat = _material(args)
+    if mat is not None:
+        return _viscoelastic_derive(args, c, prof, mat)
     quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
     if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
@@ -396,7 +461,10 @@ def cmd_eval(args):
         raise LineContactError(f"with --theta or --moment the quantity is one of {', '.join(STATE_QUANTITIES)}")
     if not state and getattr(args, "asymmetric", False):
         raise LineContactError("--asymmetric in eval needs --theta or --moment (the contact state)")
-    if not state and q not in _registry():
+    mat = _material(args)
+    if state and mat is not None:
+        raise LineContactError("--theta/--moment and a viscoelastic material together are not supported")
+    if not state and q not in _registry() and mat is None:
         raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_registry())}")
     grids = {}
     for item in args.at or []:
@@ -416,7 +484,8 @@ def cmd_eval(args):
         point = dict(zip(names, combo))
         allv = {**fixed, **point}
         try:
-            v = _eval_state(c, q, allv, args) if state else _eval_one(c, q, allv, args.dps)
+            v = (_eval_state(c, q, allv, args) if state else
+                 _eval_one(c, q, allv, args.dps) if mat is None else _viscoelastic_eval(c, q, mat, args, allv))
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": mpmath.nstr(v, args.dps)})
         except LineContactError as exc:
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": None, "error": str(exc)})
@@ -554,6 +623,17 @@ def cmd_check(args):
 
 
 # ------------------------------------------------------------------ parser
+def viscoelastic_options(sp_):
+    """--material, --relaxation, --history, --load (derive and eval)."""
+    sp_.add_argument("--material", metavar="NAME:K=V,...", help="a viscoelastic half-plane: "
+                     + ", ".join(MATERIALS) + " with its parameters, e.g. maxwell:E0=2,tau=1 (reduced modulus E*(t))")
+    sp_.add_argument("--relaxation", metavar="EXPR", help="any reduced relaxation modulus E*(t) in t, e.g. "
+                     "'1 + 2*exp(-t)' (a Prony series)")
+    sp_.add_argument("--history", metavar="EXPR", help="with a material: the half-width a(t), e.g. "
+                     "'Piecewise((t/10, t <= 1), ((2 - t)/10, t <= 2), (0, True))'")
+    sp_.add_argument("--load", metavar="EXPR", help="with a material: the load P(t) (creep; quantity half_width)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="linecontact-sym",
                 description="Closed-form line (2-D) contact laws by Popov's (2017) flat-punch superposition: "
@@ -608,6 +688,7 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--rolling", action="store_true", help="also steady rolling with traction (rolling in +x, "
                     "the stick zone [a - 2 c_s, a] at the leading edge): the tangential force Q(a, c_s), the "
                     "creepage xi(a, c_s) and the stick half-width c_s(Q) (Carter for the cylinder)")
+    viscoelastic_options(pd)
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
     pd.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (a number or a "
                     "symbol; the profile given on 0 <= x <= L/2): also nominal_pressure, full_contact_force, "
@@ -634,6 +715,7 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fixed values, e.g. R=1 E_star=1")
     pe.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
+    viscoelastic_options(pe)
     pe.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (the profile given "
                     "on 0 <= x <= L/2; L a number or a symbol given by --set)")
     pe.add_argument("--theta", default=None, metavar="T", help="the contact state at the load P with the tilt T "

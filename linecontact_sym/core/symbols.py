@@ -24,6 +24,10 @@ Conventions (Popov 2017):
   subsurface stresses.
 * ``zeta``   -- the complex coordinate x + i z of the complex potentials
   (no assumptions: complex).
+* ``t``      -- time (viscoelastic materials and contacts,
+  :mod:`linecontact_sym.method.material`, :mod:`linecontact_sym.contacts.viscoelastic`);
+  positive.  It is also the name people give a bound integration variable
+  in a formula (:mod:`linecontact_sym.parsing`): bound, it never meets the time.
 * ``nu``     -- Poisson's ratio (plane strain: sigma_y = nu (sigma_x + sigma_z)); real,
   -1 < nu <= 1/2 (checked in one place, :mod:`linecontact_sym.core.ranges`).
 
@@ -87,13 +91,14 @@ e = sp.Symbol("e", real=True)
 tilt = sp.Symbol("theta_t", real=True)
 M = sp.Symbol("M", real=True)
 c_D = sp.Symbol("c_D", positive=True)
+t = sp.Symbol("t", positive=True)
 
 #: The SI unit of each symbol's value, for values given with units (pint,
 #: :mod:`linecontact_sym.core.units`): "" is dimensionless.  ``c`` (of c x^n,
 #: unit m^(1-n)) has none: its unit depends on n; it is checked through the profile.
 UNITS = {"x": "m", "a": "m", "P": "N/m", "E_star": "Pa", "gamma": "J/m**2", "R": "m", "b": "m", "n": "",
          "theta": "rad", "z": "m", "nu": "", "mu": "", "Q": "N/m", "c_s": "m", "c_r": "m",
-         "sigma_0": "Pa", "c_D": "m", "e": "m", "theta_t": "rad", "M": "N"}
+         "sigma_0": "Pa", "c_D": "m", "t": "s", "e": "m", "theta_t": "rad", "M": "N"}
 
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
@@ -113,6 +118,6 @@ LATEX_NAMES = {
     mu: r"\mu",
 }
 
-__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "sigma_0", "c_D", "z", "zeta", "nu",
+__all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "sigma_0", "c_D", "t", "z", "zeta", "nu",
            "x_real", "e", "tilt", "M",
            "RESERVED", "LATEX_NAMES", "UNITS"]

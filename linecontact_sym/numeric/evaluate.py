@@ -856,7 +856,8 @@ def _arb_quadrature(d, quantity, values, rtol, t0, notes):
     enclosure's radius, a true bound) when the enclosure is certified and
     meets ``rtol``; None otherwise (an integrand Arb cannot evaluate, the work
     limit): the mpmath path then runs."""
-    from .reference import combine, integrate, mpf_of_arb
+    from .arb_compile import mpf_of_arb
+    from .reference import combine, integrate
     cache = _CACHE.of(d)
     if "arbq" not in cache:
         ints = sorted(d.expr.atoms(sp.Integral), key=sp.default_sort_key)

@@ -194,6 +194,12 @@ def test_symmetric_profile_level_is_todays_contact(hertz):
     s = c.contact_at(P=1, E_star=2, R=3)
     assert s.e == 0 and s.theta == 0 and s.moment == 0 and s.edges == ("smooth", "smooth")
     assert digits(s.a, c.half_width(1, E_star=2, R=3)) > 28
+    # the pressure is the symmetric contact's own, at |x|
+    assert s.pressure(mpmath.mpf("-0.4")) == c.evaluate_at("pressure", dps=15, a=s.a, x="0.4", E_star=2, R=3)
+    xs = np.array([-1.0, -0.3, 0.0, 0.7, 2.0])
+    assert np.allclose(s.pressure(xs)[1:4], [float(c.evaluate_at("pressure", a=s.a, x=abs(v), E_star=2, R=3))
+                                             for v in xs[1:4]], rtol=1e-14, atol=0)
+    assert s.pressure(xs)[-1] == 0
     twin = c.asymmetric().core
     assert twin.force().subs(S.e, 0) == c.force
     assert sp.simplify(twin.pressure().subs(S.e, 0) - c.pressure.subs(lcs.x, X)) == 0

@@ -296,6 +296,47 @@ class AsymmetricState:
         return mpmath.mpf(getattr(v, "real", v))
 
 
+@dataclass(frozen=True)
+class LevelState(AsymmetricState):
+    """The state of a symmetric contact at theta = 0 (or M = 0): centred at
+    the half-width of :meth:`~linecontact_sym.contacts.normal.contact.LineContact.half_width`,
+    its pressure and gap the symmetric contact's own (today's results,
+    exactly), at |x|; ``contact`` is None (no asymmetric twin is built)."""
+
+    symmetric: object = field(repr=False, default=None)
+
+    def _at(self, quantity, x, numeric):
+        c, vals = self.symmetric, dict(self.values)
+        if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
+            xs = np.abs(np.asarray(x, dtype=float))
+            keep = xs < float(self.a) if quantity == "pressure" else xs > float(self.a)
+            out = np.zeros_like(xs)
+            fn = c.to_numeric(quantity, "numpy", check=False)
+            fv = {k: float(to_mpf(user_value(v))) for k, v in vals.items()}
+            with np.errstate(all="ignore"):
+                out[keep] = np.real(fn(a=float(self.a), x=xs[keep], **fv))
+            return out
+        xv = abs(to_mpf(x))
+        if (quantity == "pressure") != (xv < self.a):
+            return mpmath.mpf(0)
+        return numeric(xv)
+
+    def pressure(self, x):
+        return self._at("pressure", x, lambda xv: self.symmetric.evaluate_at(
+            "pressure", dps=mpmath.mp.dps, a=self.a, x=xv, **self.values))
+
+    def gap(self, x):
+        return self._at("gap", x, lambda xv: self.symmetric.evaluate_at(
+            "gap", dps=mpmath.mp.dps, a=self.a, x=xv, **self.values))
+
+    def evaluate(self, quantity: str, x, rtol: float = 1e-8):
+        """The symmetric contact's ``evaluate`` (the cheapest path meeting rtol) at |x|."""
+        if quantity not in ("pressure", "gap"):
+            raise DomainError(f"evaluate: 'pressure' or 'gap', got {quantity!r}")
+        return self.symmetric.evaluate(quantity, rtol=rtol, a=float(self.a), x=np.abs(np.asarray(x, dtype=float)),
+                                       **self.values)
+
+
 def _finite(v):
     v = mpmath.mpf(v.real) if isinstance(v, mpmath.mpc) else mpmath.mpf(v)
     if not mpmath.isfinite(v):
@@ -372,19 +413,17 @@ class AsymmetricLineContact:
         """``contact.contact_at``: at theta = 0 or M = 0 the symmetric contact's own half-width at P
         (:meth:`~linecontact_sym.contacts.normal.contact.LineContact.half_width`), centred; else
         the state of :meth:`from_symmetric`."""
-        twin = contact.asymmetric()
         level = all(v is None or user_value(v) == 0 for v in (theta, moment))
         if not level:
-            return twin.contact_at(P, theta, moment, dps=dps, **values)
+            return contact.asymmetric().contact_at(P, theta, moment, dps=dps, **values)
         if theta is not None and moment is not None:
             raise DomainError("give the tilt theta or the moment M, not both (a tilt fixes the moment)")
         with workdps(dps + 10):
             Pv = to_mpf(user_value(P))
             a = to_mpf(contact.half_width(P, **values))
-            n = twin.core.numbers(**values)
             zero = mpmath.mpf(0)
-            st = _state(twin, n, zero, a, zero, zero, "bounded", Pv, values)
-        return st
+            return LevelState(None, -a, a, zero, a, zero, Pv, zero, zero, ("smooth", "smooth"), (zero, zero),
+                              "bounded", dict(values), symmetric=contact)
 
     # ------------------------------------------------------------------ closed ends
     def ends(self, load=S.P, theta=None, moment=None, budget: float | None = None):

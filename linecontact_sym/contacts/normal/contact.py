@@ -406,6 +406,12 @@ class LineContact(Contact):
         from ..base import contact_kind   # by the registry: the rolling contact stands on the asymmetric core,
         return contact_kind("rolling")(self, friction)   # which builds LineContacts (no import cycle)
 
+    def viscoelastic(self, material):
+        """This contact on a linear viscoelastic half-plane (Lee-Radok, Ting), see
+        :mod:`linecontact_sym.contacts.viscoelastic`."""
+        from ..viscoelastic.contact import ViscoelasticLineContact
+        return ViscoelasticLineContact(self, material)
+
     def stresses(self, tangential=None, **kw):
         """The subsurface stress field under this contact (plane strain), with
         an optional tangential traction: see :mod:`linecontact_sym.contacts.stresses.contact`."""
