@@ -344,6 +344,10 @@ def cmd_derive(args):
         registry = type(ad).quantities()
         todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
                  if q in quantities or (args.quantities is None and q != "pull_off_force")]
+    if getattr(args, "rolling", False):   # steady rolling with traction (Carter for this profile)
+        from .contacts.base import contact_kind
+        rolling = contact_kind("rolling").from_frictionless(c)
+        todo += [(f"rolling.{q}", rolling, q) for q in ("tangential_force", "creepage", "stick_half_width")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -681,6 +685,9 @@ def build_parser() -> argparse.ArgumentParser:
         "frictionless")) + " (default force,pressure,gap); --adhesion: also adhesion_force, pull_off_force, ...")
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
                     "force, pressure, P_adh, a at pull-off, or those of --quantities")
+    pd.add_argument("--rolling", action="store_true", help="also steady rolling with traction (rolling in +x, "
+                    "the stick zone [a - 2 c_s, a] at the leading edge): the tangential force Q(a, c_s), the "
+                    "creepage xi(a, c_s) and the stick half-width c_s(Q) (Carter for the cylinder)")
     viscoelastic_options(pd)
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
     pd.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (a number or a "

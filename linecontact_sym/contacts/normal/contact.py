@@ -399,6 +399,13 @@ class LineContact(Contact):
         from ..tangential.contact import TangentialLineContact
         return TangentialLineContact(self, friction)
 
+    def rolling(self, friction=S.mu):
+        """Steady rolling with traction under Coulomb friction mu (rolling in
+        +x, the stick zone at the leading edge; Carter for the cylinder), see
+        :mod:`linecontact_sym.contacts.rolling.contact`."""
+        from ..base import contact_kind   # by the registry: the rolling contact stands on the asymmetric core,
+        return contact_kind("rolling")(self, friction)   # which builds LineContacts (no import cycle)
+
     def viscoelastic(self, material):
         """This contact on a linear viscoelastic half-plane (Lee-Radok, Ting), see
         :mod:`linecontact_sym.contacts.viscoelastic`."""
