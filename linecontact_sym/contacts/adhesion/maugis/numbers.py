@@ -471,9 +471,17 @@ class MDLaw:
             A = mpmath.mpf(A)
             # dG/dc at the last Newton point: c_D moved by at most 10**-(dps+4) (c_D - a) from it, a
             # relative change of that order in dc_D/da (G is smooth in c on the scale c_D - a)
-            dc = -self._Ga(A, C) / (self._Gc(A, C) if Gc is None else Gc)
+            Ga, Pa, Pc = self._Ga(A, C), self._Pa(A, C), self._Pc(A, C)
+            dc = -Ga / (self._Gc(A, C) if Gc is None else Gc)
+            dP = Pa + Pc * dc
+            if Gc is not None and abs(Pc * dc) * mpmath.mpf(10)**-(dps + 3) > \
+                    mpmath.mpf(10)**-dps * max(abs(dP), abs(self._dP0(A))):
+                # the slope at the last Newton point is off by ~10**-(dps+4) relative; Pc dc_D/da cancels
+                # against Pa down to dP/da by a factor ~ (c_D - a)/a (the JKR limit, lambda >> 1): the
+                # error would exceed 10**-dps of dP/da there, so dG/dc is taken at c_D itself
+                dc = -Ga / self._Gc(A, C)
+                dP = Pa + Pc * dc
             P = self._P(A, C)
-            dP = self._Pa(A, C) + self._Pc(A, C) * dc
             return +P, +dP, +C
 
     def certified_gap(self, A, C, dps: int):
