@@ -167,7 +167,10 @@ class QuadGap:
             if self._h15 is None:
                 self._h15 = abs(mpmath.mpf(sp.N(self.h0, 15)))
             h = self._h15
-            return 6 + (int(mpmath.log10(fC / h)) if fC > h else 0)
+            extra = 6 + (int(mpmath.log10(fC / h)) if fC > h else 0)
+        capped_dps(mpmath.mp.dps + extra, f"the adhesionless gap g0(c; a) at c = {mpmath.nstr(C, 8)} (f(c) = "
+                   f"{mpmath.nstr(fC, 5)} cancels down to h0 = {mpmath.nstr(h, 5)})")
+        return extra
 
     def _E(self):
         key = mpmath.mp.prec
@@ -197,6 +200,22 @@ class QuadGap:
     def g_a(self, A, C):
         """dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a)."""
         return -2 / (mpmath.pi * self._E()) * mpmath.acosh(C / A) * self.dP0(A)
+
+
+#: the most digits a Maugis-Dugdale solve may work at (a cancellation needing more is refused, never
+#: handed to GMP: the cosh profile at sigma_0 = 1e-6 once asked for 3.5 GB)
+WORK_DPS_CAP = 3000
+
+
+def capped_dps(n, what):
+    """``n`` working digits, or a :class:`DomainError` naming ``what`` needs them when above
+    :data:`WORK_DPS_CAP`."""
+    if n > WORK_DPS_CAP:
+        raise DomainError(f"{what}: it needs {int(n)} working digits, more than the cap of {WORK_DPS_CAP} of the "
+                          f"Maugis-Dugdale solve; the parameters are too extreme for it (at a large Maugis "
+                          f"parameter the JKR law, contact.adhesive(w), is the model; at a small one the rigid "
+                          f"Dugdale limit, maugis.check.rigid_limit)")
+    return int(n)
 
 
 #: relative Newton step at which the working-precision estimate of c_D - a stops (c_of)
@@ -252,6 +271,7 @@ class MDLaw:
         self._P0lim = _lam(md.force_zero_width_expr.xreplace(fixed), (c,))
         self.kinks = profile_kinks(md.profile, fixed)
         self._warm = None
+        self._c0_15 = None
 
     def _numeric_parts(self, fixed, fd, gd, pd):
         """P(a, c_D), the gap condition and their partial derivatives where the
@@ -423,7 +443,7 @@ class MDLaw:
             # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
             r = mpmath.log10(A25 / s_est)
             guard = 14 + (int(r) if r > 0 else 2 * int(-r))
-        with workdps(dps + guard):
+        with workdps(capped_dps(dps + guard, f"c_D at a = {mpmath.nstr(A, 8)} (c_D - a = {mpmath.nstr(s_est, 5)})")):
             A = mpmath.mpf(A)
             s, slope = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
                                      mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A,
@@ -449,14 +469,23 @@ class MDLaw:
             return h[-1][0] + h[-1][1] - A
         return self._s_guess(A)
 
-    def _s_guess(self, A):
-        # the Dugdale gap is ~ 4 sigma0 s/(pi E*) for s << a: s ~ pi E* h0/(4 sigma0)
+    def _delta(self):
+        # the Dugdale gap is ~ 4 sigma0 s/(pi E*) for s << a: s ~ pi E* h0/(4 sigma0), the JKR-limit zone
         return mpmath.pi * mpmath.mpf(sp.N(self.E, 30)) * self.h0() / (4 * mpmath.mpf(sp.N(self.sigma0, 30)))
+
+    def _s_guess(self, A):
+        """The start of c_D - a: the JKR-limit zone delta, but at most the zone c0 of a vanishing contact
+        (at a small Maugis parameter delta is far beyond where the profile alone reaches h0: the cosh
+        profile at sigma_0 = 1e-6 has delta = 8e9 where c0 = 9.9, and its gap at 8e9 needs 3e9 digits)."""
+        d = self._delta()
+        if self._c0_15 is None:
+            self._c0_15 = self.c0(15)
+        return min(d, self._c0_15)
 
     def c0(self, dps: int):
         """The cohesive-zone half-width of a vanishing contact (a -> 0+)."""
         with workdps(dps + 15):
-            return self._solve_s(self._Z0, self._Z0c, self._s_guess(1), mpmath.mpf(10)**-(dps + 4),
+            return self._solve_s(self._Z0, self._Z0c, self._delta(), mpmath.mpf(10)**-(dps + 4),
                                  None if self.x_end is None else self.x_end * (1 - mpmath.mpf(10)**-(dps + 10)))
 
     def force_zero_width(self, dps: int):
