@@ -571,13 +571,19 @@ class MDLaw:
                 x = abs(mpmath.mpf(x))
                 if x <= A:
                     return mpmath.mpf(0)
+                if abs(x - C) <= C * mpmath.mpf(10)**-(dps + 5):
+                    x = C       # x = c_D given at fewer digits than c_D is held: the end of the zone itself
                 top = min(x, C)
                 # Dugdale punches of width t in (a, min(x, c_D)): -(2/(pi E*)) int acosh(x/t) g_D(t) dt,
-                # t = c_D sin(phi) removes the endpoint singularity of g_D at c_D
+                # t = c_D sin(phi) removes the endpoint singularity of g_D at c_D; x/t >= 1 on the whole
+                # range (t <= min(x, c_D)): a ratio rounded below 1 at the end is 1 (the real branch of acosh)
                 E = mpmath.mpf(sp.N(law.E, dps + 20))
                 lo, hi = mpmath.asin(A / C), mpmath.asin(top / C)
-                I = mpmath.quad(lambda ph: mpmath.acosh(x / (C * mpmath.sin(ph))) * (-2 * sig * C * mpmath.sin(ph)),
-                                [lo, hi])
+
+                def integrand(ph):
+                    t = C * mpmath.sin(ph)
+                    return mpmath.acosh(max(x / t, 1)) * (-2 * sig * t)
+                I = mpmath.quad(integrand, [lo, hi])
                 return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
         return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts), self.certified_gap(A, C, dps))
 
