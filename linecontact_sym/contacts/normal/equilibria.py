@@ -110,6 +110,15 @@ def searching_until(budget):
         _DEADLINE.reset(token)
 
 
+def within_search_budget():
+    """:func:`searching_until` the default :data:`SEARCH_BUDGET` where no search deadline is running
+    (a numeric quantity evaluated through its Derivation's reference: a claims file, ``evaluate``),
+    else nothing: every search at numbers ends in :class:`BudgetExceeded`, never a wait."""
+    if _DEADLINE.get() is not None:
+        return contextlib.nullcontext()
+    return searching_until(SEARCH_BUDGET)
+
+
 def _check_deadline(what):
     d = _DEADLINE.get()
     if d is not None and d.expired():
@@ -818,7 +827,8 @@ def half_width_at(law, load, dps: int = 30):
     return roots[0]
 
 
-__all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings",
+__all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET",
+           "within_search_budget", "crossings",
            "real_range", "admissible_range", "landscape",
            "minimum", "equilibria", "equilibria_at", "half_width_at", "descent", "MAX_DECADES",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]

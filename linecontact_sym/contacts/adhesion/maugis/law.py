@@ -61,6 +61,7 @@ from ...sampling import point_sampler
 from . import choice as maugis_choice
 from .choice import ModelChoice
 from .derive import dugdale_parts
+from .limits import jkr_limit
 from .numbers import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
@@ -403,6 +404,29 @@ class MaugisDugdaleContact(AdhesiveContact):
                 A = mpmath.mpf(sp.N(e, dps + 20))
         with _real_profile(self, values):
             return law.state(A, dps)
+
+    # ------------------------------------------------------------ pull-off: the JKR limit first
+    def pull_off_at(self, dps: int = 30, budget=None, **values):
+        """The generic pull-off (:meth:`AdhesiveContact.pull_off_at`), except where the Maugis
+        parameter is so large that the JKR pull-off agrees with this law's to more than ``dps``
+        digits by a stated bound (:func:`.limits.jkr_limit`): then that one, without the
+        Maugis-Dugdale search (sigma_0 = 10**100 or 1e300: the JKR pull-off, at once)."""
+        from ...normal.cases import case_of
+        if case_of(self, values) is self:
+            from ....core.budget import checked_budget
+            from ...normal.equilibria import SEARCH_BUDGET, searching_until
+            vals = self._numeric_values(values)
+            with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
+                lim = jkr_limit(self, vals, dps)
+            if lim is not None:
+                return lim
+        return super().pull_off_at(dps, budget, **values)
+
+    def _pull_off_checked(self, vals, dps):
+        from ...normal.equilibria import within_search_budget
+        with within_search_budget():
+            lim = jkr_limit(self, vals, dps)
+        return lim if lim is not None else super()._pull_off_checked(vals, dps)
 
     def displacement_control(self):
         """Not defined for line contacts: raises with the reason."""
