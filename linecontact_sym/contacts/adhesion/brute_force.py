@@ -12,6 +12,7 @@ import mpmath
 
 from ...core.errors import NoPullOffError, VerificationError
 from ...core.roots import Outside, golden_minimum
+from ..normal.equilibria import check_deadline
 from ..normal.force_law import GUARD, PullOff
 from ...core.precision import workdps
 
@@ -85,6 +86,7 @@ def _parabolic_polish(P, A, h, steps: int = 5):
     but not below 10**(-dps/3) A, where rounding in P (10**-dps) starts to
     move the vertex: the location ends near 10**(-2 dps/3)."""
     for _ in range(steps):
+        check_deadline("the parabolic polish of the pull-off (method B)")
         pm, p0, pp = P(A - h), P(A), P(A + h)
         curv = pp - 2 * p0 + pm
         if not curv > 0:
@@ -155,6 +157,7 @@ def _grid(law):
                       | {top * (1 - 10.0**(-j / 4)) for j in range(8, 48)})
     pts, last0, cut = [], None, False
     for A in grid:
+        check_deadline("the grid search of the pull-off (method B)")
         try:
             p0 = P0f(A)
         except (Outside, ValueError, ZeroDivisionError):

@@ -45,7 +45,7 @@ from . import branches, full_contact
 from . import pull_off
 from ..normal.cases import case_of
 from ..base import ContactOn, Quantity
-from ..normal.equilibria import SEARCH_BUDGET, equilibria, searching_until, within_search_budget
+from ..normal.equilibria import SEARCH_BUDGET, equilibria, searching_until
 from ..normal.force_law import PullOff, ForceLaw
 from .jkr import GAMMA_RANGE, JKR, energy_release_rate, flat_punch_force, stress_intensity
 from .law import CohesiveLaw
@@ -219,12 +219,10 @@ class AdhesiveContact(ContactOn):
     _derive_pull_off_half_width = lambda self: self._derive_pull_off("pull_off_half_width")  # noqa: E731
 
     def _pull_off_reference(self, vals, dps, mode="quad"):
-        with within_search_budget():
-            return pull_off.reference(self, vals, dps, mode)
+        return pull_off.reference(self, vals, dps, mode)
 
     def _pull_off_checked(self, vals, dps) -> PullOff:
-        with within_search_budget():
-            return pull_off.checked(self, vals, dps)
+        return pull_off.checked(self, vals, dps)
 
     def pull_off_at(self, dps: int = 30, budget=None, **values) -> PullOff:
         """The pull-off at numeric values (by name): a :class:`PullOff` with

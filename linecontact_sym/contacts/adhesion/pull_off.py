@@ -38,7 +38,7 @@ from ...method.rules import Step, special_of
 from ...method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
                                    verify_many)
 from .brute_force import minimum_by_grid
-from ..normal.equilibria import landscape, minimum
+from ..normal.equilibria import landscape, minimum, within_search_budget
 from ..normal.force_law import PullOff
 from ...core.precision import workdps
 
@@ -404,7 +404,8 @@ def reference(ad, vals, dps, mode="quad") -> PullOff:
     key = ("po_ref", mode, dps, _key(ad, vals))
     if key not in ad._cache:
         try:
-            ad._cache[key] = minimum_by_grid(ad._law(vals, "quad"), dps)
+            with within_search_budget():      # a caller without a deadline (a claims file) gets the default one
+                ad._cache[key] = minimum_by_grid(ad._law(vals, "quad"), dps)
         except NoPullOffError as exc:
             ad._cache[key] = exc
     res = ad._cache[key]
@@ -419,6 +420,13 @@ def checked(ad, vals, dps) -> PullOff:
     checked by method B (:func:`reference`), cached.  ``digits``: their
     agreement (force; and half-width at a stationary minimum)."""
     key = ("po_checked", dps, _key(ad, vals))
+    if key not in ad._cache:
+        with within_search_budget():
+            return _checked(ad, vals, dps, key)
+    return ad._cache[key]
+
+
+def _checked(ad, vals, dps, key) -> PullOff:
     if key not in ad._cache and not ad.law.independent_minimum:
         po = minimum(ad._law(vals, "closed"), dps)
         ad._cache[key] = PullOff(po.force, po.adhesion_force, po.half_width, po.kind, None, po.minima,

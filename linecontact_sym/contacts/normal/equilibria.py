@@ -119,7 +119,8 @@ def within_search_budget():
     return searching_until(SEARCH_BUDGET)
 
 
-def _check_deadline(what):
+def check_deadline(what):
+    """Raise :class:`BudgetExceeded` naming ``what`` when the running search deadline is spent."""
     d = _DEADLINE.get()
     if d is not None and d.expired():
         raise BudgetExceeded(f"{what} did not finish within its budget of {d.budget:g} CPU s")
@@ -260,7 +261,7 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
     while stack:
         l, r = stack.pop()
         count += 1
-        _check_deadline("the search for stationary points of P(a)")
+        check_deadline("the search for stationary points of P(a)")
         if count > MAX_INTERVALS:
             raise VerificationError(f"the search for stationary points of P(a) on [{mpmath.nstr(lo, 6)}, "
                                     f"{mpmath.nstr(hi, 6)}] needed more than {MAX_INTERVALS} intervals")
@@ -371,14 +372,14 @@ def real_range(law):
         grid = [law.scale * mpmath.mpf(4)**j for j in range(-20, 41)]
         first = good = None
         for A in grid:
-            _check_deadline("the scan for the real domain of P(a)")
+            check_deadline("the scan for the real domain of P(a)")
             try:
                 law.P(A)
                 law.dP(A)
             except UNDEFINED:
                 if good is None:
                     continue
-                return first, domain_end(lambda v: (_check_deadline("the search for the end of the law's domain"),
+                return first, domain_end(lambda v: (check_deadline("the search for the end of the law's domain"),
                                                     law.P(v), law.dP(v)), good, A), "domain"
             first = A if first is None else first
             good = A
@@ -513,7 +514,7 @@ def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
         ext = []
         A_prev, A = None, lo
         while True:
-            _check_deadline("the search for the stationary point of P(a)")
+            check_deadline("the search for the stationary point of P(a)")
             if g(A) >= 0:
                 break
             if A >= hi_eval:
@@ -573,7 +574,7 @@ def _scanned_landscape(law, lo, hi, end, notes) -> Landscape:
                                            f"half-width (tensile edge pressure)")
         pending = sorted([b * (1 - KINK_GAP) for b in kinks] + [b * (1 + KINK_GAP) for b in kinks])
         while True:
-            _check_deadline("the scan of dP/da on the law's grid")
+            check_deadline("the scan of dP/da on the law's grid")
             while pending and pending[0] <= A:
                 X = pending.pop(0)
                 try:
@@ -659,7 +660,7 @@ def descent(law, lo, dps: int):
         prev = (lo, law.dP(lo))
         brackets = []
         for _ in range(4 * MAX_DECADES):
-            _check_deadline("the descent of dP/da towards a -> 0+")
+            check_deadline("the descent of dP/da towards a -> 0+")
             A = prev[0] * step
             d = law.dP(A)
             if d < 0 < prev[1]:
@@ -828,7 +829,7 @@ def half_width_at(law, load, dps: int = 30):
 
 
 __all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET",
-           "within_search_budget", "crossings",
+           "within_search_budget", "check_deadline", "crossings",
            "real_range", "admissible_range", "landscape",
            "minimum", "equilibria", "equilibria_at", "half_width_at", "descent", "MAX_DECADES",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]
