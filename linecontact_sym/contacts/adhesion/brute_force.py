@@ -116,6 +116,13 @@ def minimum_by_grid(law, dps: int) -> PullOff:
             raise NoPullOffError("P(a) has no negative local minimum before full contact on the grid")
     if pts[k][1] >= 0:
         raise NoPullOffError("P(a) is nowhere negative on the grid: no finite pull-off")
+    if k == len(pts) - 1 and cut:
+        # the lowest point is where the admissible range ends, P falling there (unstable under load
+        # control): a contact unloaded from a stable branch separates at an interior local minimum first
+        inner = [i for i in range(1, len(pts) - 1)
+                 if pts[i][1] <= pts[i - 1][1] and pts[i][1] <= pts[i + 1][1] and pts[i][1] < 0]
+        if inner:
+            k = min(inner, key=lambda i: pts[i][1])
     if k == len(pts) - 1:
         if not cut:   # still falling where the grid ends: P has no finite minimum
             raise NoPullOffError(f"P(a) still decreases at a = {pts[k][0]:.3g} (1e8 times the length scale), "

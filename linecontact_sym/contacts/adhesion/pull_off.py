@@ -482,11 +482,15 @@ def checked_or_fail(ad, vals, dps) -> PullOff:
     if po.digits < dps and po.kind == "end" and reference(ad, vals, dps).kind == "end":
         # both methods: P(a) still decreases where the admissible range ends (dP0/da < 0 beyond: the
         # compact-contact solution ends there), their ends differ; no minimum inside the range
-        raise NoPullOffError(f"pull-off of {ad.profile.name!r} at {vals}: P(a) has no minimum inside the "
-                             f"admissible range; it decreases up to the range's end (a = {mpmath.nstr(po.half_width, 8)}, "
+        inner = [e for e in po.minima if e.kind != "end"]
+        seen = ("the extrema found: " + ", ".join(f"{e.kind} minimum at a = {mpmath.nstr(e.half_width, 8)}"
+                                                  for e in po.minima)) if po.minima else "no extremum found"
+        raise NoPullOffError(f"pull-off of {ad.profile.name!r} at {vals}: P(a) has no "
+                             f"{'negative ' if inner else ''}stationary or kink minimum inside the admissible "
+                             f"range ({seen}); it falls to the range's end (a = {mpmath.nstr(po.half_width, 8)}, "
                              f"P = {mpmath.nstr(po.force, 8)}), beyond which dP0/da < 0 and the compact-contact "
                              f"solution no longer holds: the load-control pull-off is not determined by this model "
-                             f"here (a smaller work of adhesion moves the minimum inside the range)")
+                             f"here (a smaller work of adhesion may move a minimum inside the range)")
     if po.digits < dps:
         raise VerificationError(f"pull-off of {ad.profile.name!r}: the two methods agree to "
                                 f"{po.digits:.1f} < {dps} digits at {vals}")

@@ -15,7 +15,11 @@ a* of the admissible range with dP/da < 0 there).  At an 'end' minimum the
 frictionless solution stops holding (beyond a* the pressure at the edges
 of the non-adhesive contact turns tensile, or the profile is not defined):
 the contact is not followed further, and a pull-off of kind 'end' is the
-lowest load the model describes, not a separation it can prove.
+lowest load the model describes, not a separation it can prove.  The end
+lies on a falling branch (unstable under load control), so a contact
+unloaded from a stable branch separates at a stationary or kink minimum
+(or the infimum) first: the end is the pull-off only where there is none,
+and a lower end beside one is reported in the note, not taken.
 
 The admissible range (:func:`admissible_range`): a* is the first a where
 the non-adhesive slope dP0/da turns negative (the edge pressure is
@@ -715,8 +719,13 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
             raise NoPullOffError(
                 "P(a) has no negative minimum: no tensile load is sustained (the infimum 0 is "
                 "reached only as a -> 0); no finite pull-off")
-        best = min(neg, key=lambda e: e.force)
+        # the end of the admissible range (dP/da < 0 there) lies on a falling branch, unstable under
+        # load control: unloading from a stable branch separates at a stationary or kink minimum (or the
+        # infimum) first, and reaches the end only where there is none
+        inner = [e for e in neg if e.kind != "end"]
+        best = min(inner or neg, key=lambda e: e.force)
         note = land.describe()
+        note += _end_not_reached(land, best, neg)
         if below is not None:
             note += (f"; dP/da followed down in quarter decades below a = {mpmath.nstr(land.lo, 4)} to a = "
                      f"{mpmath.nstr(below[2], 3)}, where a |dP/da| < 1e-{dps + 6} |P(0+)|"
@@ -727,6 +736,23 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
             note += ("; the global minimum is at the end of the admissible range: the lowest load the "
                      "frictionless adhesive solution describes, not a proven separation load")
         return PullOff(+best.force, -best.force, +best.half_width, best.kind, None, tuple(mins), note)
+
+
+def _end_not_reached(land, best, neg) -> str:
+    """The note on a lower end of the admissible range that the pull-off ``best`` is not: its value and
+    the local maximum between them (from the extrema found), or ''."""
+    ends = [e for e in neg if e.kind == "end" and e.force < best.force]
+    if not ends or best.kind == "end":
+        return ""
+    end = ends[0]
+    maxima = [e for e in land.extrema if not e.minimum and best.half_width < e.half_width < end.half_width]
+    top = max(maxima, key=lambda e: e.force, default=None)
+    over = (f"beyond the local maximum at a = {mpmath.nstr(top.half_width, 8)} (P = {mpmath.nstr(top.force, 8)}), "
+            if top is not None else "")
+    return (f"; the end of the admissible range a* = {mpmath.nstr(end.half_width, 8)} has the lower "
+            f"P = {mpmath.nstr(end.force, 8)}, but it lies {over}on a branch where P falls towards a* "
+            f"(dP/da < 0: unstable under load control): unloading from the stable branch separates at the "
+            f"{best.kind} minimum a = {mpmath.nstr(best.half_width, 8)} first and does not reach it")
 
 
 def _first_minimum(law, land, mins) -> PullOff:
