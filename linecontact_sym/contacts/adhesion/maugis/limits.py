@@ -41,7 +41,9 @@ sqrt(2 (B_lo + B_up)/P_JKR''(a_J)) (a quadratic minimum; stated as an
 estimate).  The limit is the answer where B <= 10**-(dps+1) |P_JKR,min| and
 that estimate <= 10**-(dps+1) a_J: then the two models agree to the digits
 asked and only the JKR law (a closed form where the engine has one) is
-evaluated -- model only what the problem needs.  Elsewhere None: the
+evaluated -- model only what the problem needs.  Where only the force is
+within the bound, the minimum is refined on this law in the bracket
+a_J +- 4 da alone (a few inner solves).  Elsewhere None: the
 Maugis-Dugdale search runs (under its budget).
 """
 from __future__ import annotations
@@ -146,14 +148,42 @@ def jkr_limit(md, vals: dict, dps: int):
             da = mpmath.sqrt(2 * (B_lo + B_up) / P2)
         else:                          # a kink or the range's end: the same half-width (P_MD, P_JKR share P0's kinks)
             da = mpmath.mpf(0)
-        if not da <= tol * aJ:
-            return None
         lam = mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * aJ / delta)
+        if not da <= tol * aJ:
+            return _refined(md, vals, dps, po, B, da, lam)
         note = (f"the JKR limit of the Maugis-Dugdale law (lambda = {mpmath.nstr(lam, 6)}): |P_MD,min - P_JKR,min| "
                 f"<= {mpmath.nstr(B, 3)} (relative {mpmath.nstr(B / abs(PJ), 3)}; bounds of the cohesive zone from "
                 f"the gap condition, maugis.limits), the half-width within about {mpmath.nstr(da, 3)}; below the "
                 f"10**-{dps} asked, so only the JKR law was evaluated: {po.note}")
         return PullOff(+PJ, -PJ, +aJ, po.kind, None, po.minima, note)
+
+
+def _refined(md, vals, dps, po, B, da, lam):
+    """The force is within its bound but the half-width is not: the Maugis-Dugdale minimum is the
+    root of this law's dP/da next to a_J (within a few da, where P_JKR rises by more than the bound),
+    found in that bracket alone -- a few inner solves, not the search of the whole range; None when
+    the bracket holds no sign change (then the whole search)."""
+    if po.kind != "stationary":
+        return None
+    from ....core.roots import root_in_log
+    from ...normal.force_law import GUARD
+    law = md._law(vals, "closed")
+    aJ = po.half_width
+    lo, hi = aJ - 4 * da, aJ + 4 * da
+    if not lo > 0:
+        return None
+    with workdps(20):
+        if not law.dP(lo) < 0 < law.dP(hi):
+            return None
+    with workdps(dps + GUARD):
+        A = root_in_log(law.dP, mpmath.mpf(lo), mpmath.mpf(hi), approx=aJ)
+        Pm = law.P(A)
+    note = (f"the JKR limit of the Maugis-Dugdale law (lambda = {mpmath.nstr(lam, 6)}) bounds the pull-off: "
+            f"|P_MD,min - P_JKR,min| <= {mpmath.nstr(B, 3)} (relative {mpmath.nstr(B / abs(po.force), 3)}, "
+            f"maugis.limits), its half-width within about {mpmath.nstr(da, 3)} of JKR's a = "
+            f"{mpmath.nstr(aJ, 10)}; the minimum then refined on this law alone in [a_J - 4 da, a_J + 4 da] "
+            f"(dP/da = 0 there; any other local minimum lies within the bound of it): {po.note}")
+    return PullOff(+Pm, -Pm, +A, "stationary", None, po.minima, note)
 
 
 __all__ = ["jkr_limit", "zone_excess", "dugdale_D", "KPSI"]

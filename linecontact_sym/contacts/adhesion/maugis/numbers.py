@@ -125,6 +125,12 @@ def profile_end(f):
         return None
 
 
+def _rounded(n):
+    """``n`` working digits rounded up to a multiple of 10: mpmath's Gauss-Legendre nodes are cached per
+    precision, and a solve whose digits vary with c_D by one or two would recompute them at each call."""
+    return -(-int(n) // 10) * 10
+
+
 class QuadGap:
     """The adhesionless gap g0(c; a) = f(c) - (2/(pi E*)) int_0^a acosh(c/s) P0'(s) ds
     (Eqs. 3/5; :func:`~linecontact_sym.method.transforms.gap_integral`) and its
@@ -180,7 +186,7 @@ class QuadGap:
 
     def g(self, A, C):
         """g0(C; A)."""
-        with workdps(mpmath.mp.dps + self._extra(C)):
+        with workdps(_rounded(mpmath.mp.dps + self._extra(C))):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
             def integrand(th):
                 sin = mpmath.sin(th)
@@ -191,7 +197,7 @@ class QuadGap:
 
     def g_c(self, A, C):
         """dg0/dc = f'(c) - (2/(pi E*)) int_0^a P0'(s)/sqrt(c^2 - s^2) ds."""
-        with workdps(mpmath.mp.dps + self._extra(C)):
+        with workdps(_rounded(mpmath.mp.dps + self._extra(C))):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
             I = self._integral(lambda th: self.dP0(C * mpmath.sin(th)), A, C)
             v = self.f1(C) - 2 * I / (mpmath.pi * self._E())
