@@ -147,7 +147,9 @@ class MaugisDugdale(CohesiveLaw):
             out = b.on_top(P, dP)
             # P(0+) = -2 sigma_0 c0 is not 0: the generic minimum descends towards a -> 0+ (equilibria.descent)
             out.P_zero = lambda: law.force_zero_width(mpmath.mp.dps)
-            out.scan = ScanHint(lambda: law.c0(15) / 1000, 8,
+            # from c0/1000, but never above the profile's own scale/1000: a bounded profile (1 - cos x) at a
+            # tiny sigma_0 has c0 ~ 1e10, and a scan from 1e7 lay past the whole admissible range (a* = 2.4)
+            out.scan = ScanHint(lambda: min(law.c0(15), b.scale) / 1000, 8,
                                 "no Maugis-Dugdale extremum lies within 1/8 decade of another, nor above the first "
                                 "a past every kink with P > 0 and dP/da > 0 (the Dugdale term's slope tends to 0 "
                                 "from below as a grows, dP0/da >= 0); below c0/1000 the descent follows dP/da")
