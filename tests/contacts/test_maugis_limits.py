@@ -43,10 +43,11 @@ def _jkr_by_quadrature(f1, gamma, a0, dps=30):
         return P(a), a
 
 
-@pytest.mark.parametrize("sigma0", [10**100, 1e300])
+@pytest.mark.parametrize("sigma0", [10**100, 1e300, 10**20])
 def test_jkr_limit_of_the_pull_off_is_reached_at_once(sigma0):
     """before: no answer within 60 s at sigma_0 = 10**100, then -1.68157 (JKR -1.74367); after:
-    the JKR limit at once, its bound stated, equal to our own JKR minimum by quadrature."""
+    the JKR limit at once, its bound stated, equal to our own JKR minimum by quadrature (at
+    sigma_0 = 1e20 the force is within the bound, the half-width refined on the MD law alone)."""
     md = lcs.parabola(verify=False).maugis_dugdale()
     t0 = time.perf_counter()
     po = md.pull_off_at(15, R=1, E_star=1, gamma=1, sigma_0=sigma0)
@@ -55,6 +56,7 @@ def test_jkr_limit_of_the_pull_off_is_reached_at_once(sigma0):
     assert abs(po.force - P_ref) < 1e-14 * abs(P_ref)
     assert abs(po.half_width - a_ref) < 1e-6
     assert "JKR limit" in po.note and "|P_MD,min - P_JKR,min| <=" in po.note
+    assert ("refined on this law alone" in po.note) == (sigma0 == 10**20)
 
 
 def test_slope_of_the_law_at_a_large_maugis_parameter():
