@@ -486,7 +486,7 @@ def checked_or_fail(ad, vals, dps) -> PullOff:
         seen = ("the extrema found: " + ", ".join(f"{e.kind} minimum at a = {mpmath.nstr(e.half_width, 8)}"
                                                   for e in po.minima)) if po.minima else "no extremum found"
         raise NoPullOffError(f"pull-off of {ad.profile.name!r} at {vals}: P(a) has no "
-                             f"{'negative ' if inner else ''}stationary or kink minimum inside the admissible "
+                             f"{'negative ' if inner else ''}minimum inside the admissible "
                              f"range ({seen}); it falls to the range's end (a = {mpmath.nstr(po.half_width, 8)}, "
                              f"P = {mpmath.nstr(po.force, 8)}), beyond which dP0/da < 0 and the compact-contact "
                              f"solution no longer holds: the load-control pull-off is not determined by this model "
