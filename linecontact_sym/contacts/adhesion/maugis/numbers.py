@@ -448,7 +448,11 @@ class MDLaw:
             # acosh(c/a) near c = a loses log10(a/s) digits; at small a, terms of size c/a cancel in
             # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
             r = mpmath.log10(A25 / s_est)
-            guard = 14 + (int(r) if r > 0 else 2 * int(-r))
+            # a closed gap condition may hold terms ~ (c^2 - a^2)^(-1/2) that cancel (x**3: 2 a c^3/sqrt(c^2 - a^2)
+            # - 2 a^3 c/sqrt(c^2 - a^2)); in dG/dc they grow to the power 3/2 and dP/da = Pa + Pc dc_D/da
+            # cancels by a/(c - a) again: 2 log10(a/s) digits (dP/da was off by 1e8 at sigma_0 = 1e20 with one);
+            # the quadrature gap (QuadGap, in theta) is smooth at c -> a and needs one
+            guard = 14 + ((2 if self.closed else 1) * int(r) if r > 0 else 2 * int(-r))
         with workdps(capped_dps(dps + guard, f"c_D at a = {mpmath.nstr(A, 8)} (c_D - a = {mpmath.nstr(s_est, 5)})")):
             A = mpmath.mpf(A)
             s, slope = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
