@@ -387,14 +387,18 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
             m = remembered(key, mpmath.mpf)
             if m is None:
                 try:
-                    m = pull_off_reference(ad, vals, dps).force
+                    # a law whose grid search shares its inner solve (Maugis-Dugdale: a quadrature inside
+                    # a quadrature at every grid point, past 200 s for cosh) gains nothing from it: the
+                    # contact's own search (with its limits, under the search budget), labelled so
+                    m = (pull_off_reference(ad, vals, dps) if ad.law.independent_minimum
+                         else ad._pull_off_checked(vals, dps)).force
                 except LineContactError as exc:
                     raise DerivedUndefined(f"P(a) has no minimum over a > 0: {exc}")
                 if isinstance(m, mpmath.mpf):
                     remember(key, m)
             return sign * m
         label = None if ad.law.independent_minimum else \
-            "numeric, grid search on the quadrature P0 (shares the law's inner solve: not independent)"
+            "numeric, the contact's own search (the law has no independent second minimisation: not independent)"
         return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr, label)
     dPexpr = sp.diff(Pexpr, S.a)
 
