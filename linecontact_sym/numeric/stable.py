@@ -19,8 +19,8 @@ Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCar
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
 :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinToAtan`,
 :class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
-:class:`FactorDifferences`.  The special functions they produce
-(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``) live in
+:class:`ExpTail`, :class:`FactorDifferences`.  The special functions they produce
+(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``, ``exp_tail``) live in
 :mod:`linecontact_sym.numeric.special`.
 
 The result is a :class:`StableForm`: the rewritten expression and the list of
@@ -35,7 +35,7 @@ import sympy as sp
 
 from ..method.derivation import gammasimp_masked
 from .accuracy import expressions_agree
-from .special import gamma_ratio, hyp2f1c
+from .special import exp_tail, gamma_ratio, hyp2f1c
 from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
                           n_terms, nonneg, stable_sqrt, is_rational_in_symbols)
 from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
@@ -43,7 +43,7 @@ from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
            "GammaAbsorb", "GammaRatio", "AtanhToAsinh", "AcoshToAsinh", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
+           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences", "is_rational_in_symbols"]
 
 
 class Hyp2f1Connection(StableRule):
@@ -334,6 +334,51 @@ class HalfAngle(StableRule):
         return expr.replace(lambda e: e.is_Add and e.has(sp.cosh, sp.cos), do)
 
 
+class ExpTail(StableRule):
+    """c exp(w) - c - c w - ... - c w^(n-1)/(n-1)! = c exp_tail(n, w) (any terms
+    of a sum, expanded; n as large as the terms present allow, n >= 1): exact
+    where the terms cancel (w -> 0).  The Lee-Radok force of a parabola on a
+    Maxwell material at a constant rate, tau^2 (t/tau - 1 + exp(-t/tau)) =
+    tau^2 exp_tail(2, -t/tau), keeps its digits for t << tau (the plain form
+    cancels to nothing below t/tau ~ 1e-8); n = 1 is expm1."""
+
+    name = "exp-tail"
+    heads = (sp.exp,)
+
+    def apply(self, expr):
+        def do(e):
+            terms = {}
+            for t_ in sp.Add.make_args(sp.expand(e)):
+                terms[t_] = terms.get(t_, 0) + 1
+            out, changed = [], False
+            for t_ in list(terms):
+                if not terms.get(t_):
+                    continue
+                exps = [f for f in sp.Mul.make_args(t_) if isinstance(f, sp.exp) and f.args[0].free_symbols]
+                if len(exps) != 1:
+                    continue
+                w = exps[0].args[0]
+                c = t_ / exps[0]
+                n, taken = 0, []
+                while n < 12:
+                    want = sp.Add.make_args(sp.expand(-c * w**n / sp.factorial(n)))
+                    if not all(terms.get(u, 0) > taken.count(u) for u in want):
+                        break
+                    taken.extend(want)
+                    n += 1
+                if n == 0:
+                    continue
+                for u in taken + [t_]:
+                    terms[u] -= 1
+                out.append(c * exp_tail(n, w))
+                changed = True
+            if not changed:
+                return e
+            rest = [u for u, k in terms.items() for _ in range(k)]
+            return sp.Add(*out, *rest)
+        return expr.replace(lambda e: e.is_Add and e.has(sp.exp), do)
+
+
 class FactorDifferences(StableRule):
     """A rational sum that factors is replaced by its factored form
     (a**2 - x**2 = (a - x)(a + x), 1 - x**2/a**2 = (a - x)(a + x)/a**2 ...):
@@ -359,7 +404,8 @@ class FactorDifferences(StableRule):
 
 #: the rules in the order :func:`stabilize` applies them
 RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AtanhToAsinh(),
-         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(), HalfAngle(), FactorDifferences())
+         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(), HalfAngle(), ExpTail(),
+         FactorDifferences())
 
 
 # ====================================================================== driver

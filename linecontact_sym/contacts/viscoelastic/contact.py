@@ -304,6 +304,35 @@ class ViscoelasticLineContact:
         with workdps(dps):
             return +v
 
+    def history_quantities(self, a_t):
+        """The force and pressure histories of the half-width history ``a_t`` as
+        quantities of the package's ``evaluate`` (see :mod:`.accuracy`)."""
+        from .accuracy import HistoryQuantities
+        key = ("hq", sp.sympify(a_t))
+        if key not in self._cache:
+            self._cache[key] = HistoryQuantities(self, a_t)
+        return self._cache[key]
+
+    def evaluate(self, quantity: str, history, rtol: float | None = None, certified: bool = False,
+                 dps: int | None = None, **values):
+        """``"force"`` (P(t)) or ``"pressure"`` (p(x, t)) of the half-width
+        history ``history`` at ``values`` (t, x, the parameters) to the
+        tolerance ``rtol`` by the cheapest path that meets it: the stable
+        float64 export of the closed form when its error estimate does, mpmath
+        at the digits rtol asks otherwise, an Arb ball with ``certified=True``
+        (an :class:`~linecontact_sym.numeric.evaluate.Evaluation`; see
+        :func:`~linecontact_sym.numeric.evaluate.evaluate`).
+
+        >>> import sympy as sp, linecontact_sym as lcs
+        >>> v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=sp.Symbol("tau", positive=True)))
+        >>> r = v.evaluate("force", lcs.t / 10, t=1e-9, tau=1.0, R=1.0, rtol=1e-12)
+        >>> r.path, round(r.value / (3.141592653589793e-20 / 400), 6)   # pi E0 t^2 a'^2/(4 R) at t << tau
+        ('float64', 1.0)
+        """
+        from ...numeric.evaluate import evaluate
+        q = {"force": "force_history", "pressure": "pressure_history"}.get(quantity, quantity)
+        return evaluate(self.history_quantities(history), q, rtol=rtol, certified=certified, dps=dps, **values)
+
     def half_width_at(self, t, load, dps: int = 30, **values):
         """a(t) under the load history ``load`` (creep), see :meth:`evaluate_at`."""
         return self.evaluate_at("half_width", t, load, dps=dps, **values)
