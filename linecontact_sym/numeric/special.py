@@ -63,7 +63,7 @@ from ..core.precision import workdps
 sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "exp_tail", "np_rf", "np_rd", "np_rg",
-           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "np_exp_tail", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
+           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "np_exp_tail", "exp_tail_scalar", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
 
 
 class _StableFunction(sp.Function):
@@ -533,6 +533,33 @@ def np_exp_tail(n, z):
             out = np.array(out, dtype=float)
             out[near] = res
     return out[()] if out.ndim == 0 else out
+
+
+def exp_tail_scalar(n, z) -> float:
+    """:func:`np_exp_tail` for one Python float (the scalar float64 path: no
+    NumPy overhead per call), the same series and thresholds."""
+    n, z = int(n), float(z)
+    if n == 0:
+        return math.exp(z)
+    if not (-max(30.0, 4.0 * n) < z < max(40.0, 2.0 * n + 20)):
+        poly = 1.0
+        for k in range(n - 1, 0, -1):
+            poly = 1.0 + z / k * poly
+        try:
+            return math.exp(z) - poly
+        except OverflowError:
+            return math.inf
+    if z == 0:
+        return 0.0
+    u, neg = abs(z), z < 0
+    term = total = 1.0
+    for k in range(1, 400):
+        term *= (n + k - 1.0) / (n + k) * u / k if neg else u / (n + k)
+        total += term
+        if term <= 1e-17 * total:
+            break
+    lead = u**n / float(math.factorial(n))
+    return lead * total * ((-1.0)**n * math.exp(z) if neg else 1.0)
 
 
 #: the logical operators of every NumPy lambdify of the package

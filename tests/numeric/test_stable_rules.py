@@ -327,6 +327,8 @@ def test_exp_tail_primitive():
     zs = [s_ * 10.0**e for e in np.linspace(-300, 2.8, 90) for s_ in (1, -1)]
     for n_ in range(7):
         got = special.np_exp_tail(n_, np.array(zs))
+        assert all(special.exp_tail_scalar(n_, z_) == pytest.approx(g, rel=4 * EPS, abs=1e-300)
+                   for z_, g in zip(zs[::7], got[::7]) if np.isfinite(g))     # the scalar path's twin
         for z_, g in zip(zs, got):
             # the plain difference at enough digits to absorb its cancellation (~ n |log10 z| for |z| < 1)
             with mpmath.workdps(60 + int(n_ * max(0.0, -math.log10(abs(z_))))):

@@ -277,7 +277,17 @@ class ViscoelasticLineContact:
         ``"pressure"`` (at ``x``) for a half-width history, or ``"half_width"``
         for a load history (creep; Ting after the maximum), at the parameter
         ``values``: tanh-sinh quadrature of the superposition at dps + 10
-        digits (positive integrands: no cancellation)."""
+        digits (positive integrands: no cancellation).
+
+        Not certified: the integrands hold the entry time t_b (an inverse of
+        a(t), found by root finding at numbers), the creep level and Ting's
+        loading time (roots of quadratures), which Arb's integrator
+        (:func:`~linecontact_sym.numeric.reference.integrate`, an integrand
+        compiled from a SymPy expression) cannot enclose.  Where the
+        history's form is a SymPy expression (closed, or an unevaluated
+        Integral with t_b solved symbolically), :meth:`evaluate` gives an Arb
+        enclosure: ``certified=True`` for a closed form, and beyond float64
+        for an unevaluated integral (one enclosure of it)."""
         if quantity not in ("force", "pressure", "half_width"):
             raise DomainError(f"unknown quantity {quantity!r}: one of force, pressure, half_width")
         with workdps(dps + 10):
@@ -312,6 +322,18 @@ class ViscoelasticLineContact:
         if key not in self._cache:
             self._cache[key] = HistoryQuantities(self, a_t)
         return self._cache[key]
+
+    def to_numeric(self, quantity: str, history, backend: str = "numpy", dps: int = 30, **params):
+        """A callable ``fn(t=..., [x=...,] **parameters)`` of ``"force"`` (P(t))
+        or ``"pressure"`` (p(x, t)) for the half-width history ``history``:
+        ``backend='numpy'`` vectorised float64 of the stable form (the Maxwell
+        terms' exp tails as ``exp_tail``: accurate for t << tau, t >> tau and
+        tau from 1e-6 to 1e6 at t/tau from 1e-12 to 1e12, see
+        ``benchmarks/extremes.py``), ``'mpmath'`` at ``dps`` digits; keywords
+        given here are fixed once.  No domain check (NaN outside it)."""
+        from ...numeric.functions import make_callable
+        q = {"force": "force_history", "pressure": "pressure_history"}.get(quantity, quantity)
+        return make_callable(self.history_quantities(history).derivation(q), backend, dps, params)
 
     def evaluate(self, quantity: str, history, rtol: float | None = None, certified: bool = False,
                  dps: int | None = None, **values):
