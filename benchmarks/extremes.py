@@ -32,6 +32,9 @@ EXTREME_GRID = {
     "tau": [1e-6, 1.0, 1e6],
     # the weight of a second Prony term relative to the first (a tiny weight: 1e-12)
     "prony_weight": [1e-12, 1e-4, 1.0],
+    # Ting's receding phase of a = r t then r (2 t1 - t): t1/tau, and (t - t1)/t1 in (0, 1)
+    "t1_over_tau": [1e-12, 1e-6, 1e-2, 1.0, 1e2, 1e6],
+    "receding": [1e-8, 0.1, 0.5, 0.9, 1 - 1e-6],
 }
 
 
@@ -41,8 +44,12 @@ def viscoelastic_points(names, size: str = "full"):
     t/tau and tau; a second relaxation time tau_2 = 10 tau (Prony), its weight
     E_2 = w E0 over ``prony_weight``; other parameters one generic value
     (r = 0.1, R = 2, c = 1.3, theta = 0.3, E0 = 2, E_inf = 0.5).  ``size='small'``:
-    one tau."""
+    one tau.  With a maximum time t1 among ``names`` (a = r t, then r (2 t1 - t)):
+    the receding phase t = t1 (1 + f) over ``t1_over_tau`` and ``receding`` at tau = 1."""
     G = EXTREME_GRID
+    if "t1" in names:           # Ting's receding phase, t = t1 (1 + f)
+        return [{k: v for k, v in {"t": u * (1 + f), "t1": u, "tau": 1.0, "r": 0.1, "R": 2.0, "E0": 2.0}.items()
+                 if k in names} for u in G["t1_over_tau"] for f in G["receding"]]
     taus = G["tau"] if size == "full" else [1.0]
     weights = G["prony_weight"] if "E_2" in names else [None]
     pts = []

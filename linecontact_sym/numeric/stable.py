@@ -336,38 +336,67 @@ class HalfAngle(StableRule):
 
 class ExpTail(StableRule):
     """c exp(w) - c - c w - ... - c w^(n-1)/(n-1)! = c exp_tail(n, w) (any terms
-    of a sum, expanded; n as large as the terms present allow, n >= 1): exact
-    where the terms cancel (w -> 0).  The Lee-Radok force of a parabola on a
-    Maxwell material at a constant rate, tau^2 (t/tau - 1 + exp(-t/tau)) =
+    of a sum, expanded, the exponentials of a term combined; n as large as the
+    terms present allow, n >= 1; c may hold an exponential exp(v) of the other
+    terms: e^(w + v) - e^v (1 + w) = e^v exp_tail(2, w)): exact where the
+    terms cancel (w -> 0).  The Lee-Radok force of a parabola on a Maxwell
+    term at a constant rate, tau^2 (t/tau - 1 + exp(-t/tau)) =
     tau^2 exp_tail(2, -t/tau), keeps its digits for t << tau (the plain form
-    cancels to nothing below t/tau ~ 1e-8); n = 1 is expm1."""
+    cancels to nothing below t/tau ~ 1e-8), and so does Ting's receding phase
+    e^(-(t - s1)/tau) (s1 - tau + tau e^(-s1/tau)); n = 1 is expm1."""
 
     name = "exp-tail"
     heads = (sp.exp,)
+    #: the longest tail sought
+    MAX_N = 12
+
+    @staticmethod
+    def _split(term):
+        """(coefficient, combined exponent) of a term: c exp(w), w = 0 without exponential."""
+        ws, rest = [], []
+        for f in sp.Mul.make_args(term):
+            (ws if isinstance(f, sp.exp) and f.args[0].free_symbols else rest).append(f)
+        return sp.Mul(*rest), sp.expand(sp.Add(*[f.args[0] for f in ws]))
+
+    @classmethod
+    def _terms(cls, e):
+        """The terms of e expanded, each as coefficient * exp(combined exponent)."""
+        out = {}
+        for t_ in sp.Add.make_args(sp.expand(e)):
+            c, w = cls._split(t_)
+            u = c * sp.exp(w) if w != 0 else c
+            out[u] = out.get(u, 0) + 1
+        return out
 
     def apply(self, expr):
         def do(e):
-            terms = {}
-            for t_ in sp.Add.make_args(sp.expand(e)):
-                terms[t_] = terms.get(t_, 0) + 1
+            terms = self._terms(e)
             out, changed = [], False
             for t_ in list(terms):
                 if not terms.get(t_):
                     continue
-                exps = [f for f in sp.Mul.make_args(t_) if isinstance(f, sp.exp) and f.args[0].free_symbols]
-                if len(exps) != 1:
+                c0, wt = self._split(t_)
+                if wt == 0:
                     continue
-                w = exps[0].args[0]
-                c = t_ / exps[0]
-                n, taken = 0, []
-                while n < 12:
-                    want = sp.Add.make_args(sp.expand(-c * w**n / sp.factorial(n)))
-                    if not all(terms.get(u, 0) > taken.count(u) for u in want):
-                        break
-                    taken.extend(want)
-                    n += 1
-                if n == 0:
+                bases = [sp.S.Zero] + sorted({self._split(u)[1] for u in terms if terms[u]} - {wt, sp.S.Zero},
+                                             key=sp.default_sort_key)
+                best = None
+                for v in bases:
+                    c, w = c0 * sp.exp(v), sp.expand(wt - v)
+                    if not w.free_symbols:
+                        continue
+                    n, taken = 0, []
+                    while n < self.MAX_N:
+                        want = self._terms(-c * w**n / sp.factorial(n))
+                        if not all(terms.get(u, 0) >= taken.count(u) + k for u, k in want.items()):
+                            break
+                        taken.extend(u for u, k in want.items() for _ in range(k))
+                        n += 1
+                    if n and (best is None or n > best[0]):
+                        best = (n, c, w, taken)
+                if best is None:
                     continue
+                n, c, w, taken = best
                 for u in taken + [t_]:
                     terms[u] -= 1
                 out.append(c * exp_tail(n, w))

@@ -35,9 +35,6 @@ def test_lee_radok_holds_and_the_quasi_elastic_substitution_fails():
     assert wrong.status == FAILS
     cex = wrong.targets[0].forms[0].counterexample
     assert cex is not None and cex.status == "fail" and sp.Symbol("t", positive=True) in cex.values
-    # a wrong rate: a factor 2 in the drag term gives a counterexample too
-    assert check_claim(_claim("drag x2", "pi*E0*r**2*tau/R*(t - tau*(1 - exp(-t/tau)))"), ctx,
-                       symbolic=False).status == FAILS
 
 
 @pytest.mark.slow

@@ -322,8 +322,11 @@ def test_a_wrong_closed_form_is_not_returned(monkeypatch):
     point per phase: a SymPy integral that came out wrong (here: doubled) gives way
     to the unevaluated Integral."""
     from linecontact_sym.contacts.viscoelastic import contact as vc
+    from linecontact_sym.method import store
     good = vc._integrate
     monkeypatch.setattr(vc, "_integrate", lambda *a: 2 * good(*a))
+    monkeypatch.setattr(store, "get", lambda key: None)       # no closed form remembered from another test
+    monkeypatch.setattr(store, "put", lambda key, rec: None)
     v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=1))
     F = v.force_history(CYCLE)
     assert F.has(sp.Integral)

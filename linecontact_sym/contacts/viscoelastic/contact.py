@@ -186,8 +186,20 @@ class ViscoelasticLineContact:
         s1 = t while a grows (Lee-Radok), s1 the loading time with
         a(s1) = a(t) after the maximum (Ting).  Closed where SymPy integrates,
         else an unevaluated Integral (numbers: :meth:`evaluate_at`)."""
+        from ...method import store
+        key = store.make_key("viscoelastic force history", self.Pi, self.material.relaxation, self.material.impulse,
+                             sp.sympify(a_t))
+        rec = store.get(key)
+        if rec is not None and "expr" in rec:       # a checked closed form of an earlier process
+            return rec["expr"]
         F = self._force_history(a_t, budget, True)
-        return self._checked(F, sp.sympify(a_t), lambda: self._force_history(a_t, budget, False))
+        F = self._checked(F, sp.sympify(a_t), lambda: self._force_history(a_t, budget, False))
+        if not F.has(sp.Integral):                  # an unevaluated form may be a loaded machine's timeout: not kept
+            try:
+                store.put(key, {"expr": F})
+            except TypeError:
+                pass
+        return F
 
     def _force_history(self, a_t, budget, closed):
         ph = phases(a_t)
