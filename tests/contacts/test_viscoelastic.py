@@ -410,6 +410,8 @@ def test_evaluate_refuses_outside_the_domain():
         v.evaluate("force", RS * t, t=-1.0, tau=1.0, E0=2.0, r=0.1, R=1.0)
     with pytest.raises(DomainError, match="tau"):
         v.evaluate("force", RS * t, t=1.0, tau=-1.0, E0=2.0, r=0.1, R=1.0)
+    with pytest.raises(DomainError, match="unknown history quantity"):
+        v.evaluate("gap", RS * t, t=1.0)
 
 
 @pytest.mark.slow
@@ -428,3 +430,23 @@ def test_evaluate_pressure_history_without_closed_form_is_enclosed_by_arb():
     assert r64.path == "float64" and abs(r64.value / ref - 1) < 1e-12
     arb = v.evaluate("pressure", RS * t, rtol=1e-25, **pt)
     assert arb.path == "arb" and arb.certified and arb.enclosure[0] <= ref <= arb.enclosure[1]
+
+
+@pytest.mark.slow
+def test_evaluate_creep_half_width_step_load_sls():
+    """a(t) under a step load P0 on a standard linear solid: Pi(a) = pi a^2/(4R) = P0 J*(t),
+    J*(t) = 1/E_inf - (1/E_inf - 1/E0) exp(-E_inf t/(E0 tau)) (the textbook creep function,
+    written here); float64 on request of 1e-12, an Arb ball on request of certainty."""
+    Ei, P0 = sp.symbols("E_inf P0", positive=True)
+    v = lcs.parabola(verify=False).viscoelastic(lcs.standard_linear_solid(E0=E0S, E_inf=Ei, tau=TAU))
+    pt = dict(tau=1.0, E0=2.0, E_inf=0.5, P0=1.0, R=1.0)
+    for tv in (1e-12, 0.3, 1e3):
+        with mpmath.workdps(40):
+            J = 2 - (2 - mpmath.mpf(1) / 2) * mpmath.exp(-mpmath.mpf(tv) / 4)
+            ref = mpmath.sqrt(4 * J / mpmath.pi)
+        r = v.evaluate("half_width", P0, t=tv, rtol=1e-12, **pt)
+        assert r.path == "float64" and abs(r.value / ref - 1) < 1e-14
+    arb = v.evaluate("half_width", P0, t=0.3, certified=True, **pt)
+    with mpmath.workdps(40):
+        ref = mpmath.sqrt(4 * (2 - mpmath.mpf(3) / 2 * mpmath.exp(-mpmath.mpf(0.3) / 4)) / mpmath.pi)
+    assert arb.enclosure[0] <= ref <= arb.enclosure[1]

@@ -33,12 +33,21 @@ from ...core.ranges import check_values
 from ...method.derivation import Derivation, fallback_step
 from ...method.rulebase import Step
 
-QUANTITIES = ("force_history", "pressure_history")
+QUANTITIES = ("force_history", "pressure_history", "half_width_history")
+
+
+def history_quantity(name: str) -> str:
+    """The history quantity of a name: 'force' -> 'force_history' (the full names pass)."""
+    q = name if name in QUANTITIES else f"{name}_history"
+    if q not in QUANTITIES:
+        raise DomainError(f"unknown history quantity {name!r}: one of force, pressure, half_width")
+    return q
 
 
 class HistoryQuantities:
-    """The histories of the contact ``v`` under the half-width history
-    ``a_t``, as a 'contact' of :func:`~linecontact_sym.numeric.evaluate.evaluate`
+    """The histories of the contact ``v`` under the history ``a_t`` (a half-width
+    a(t) for the force and the pressure, a load P(t) for the half-width: creep),
+    as a 'contact' of :func:`~linecontact_sym.numeric.evaluate.evaluate`
     (``derivation``, ``check_domain``; no series model: ``profile`` None)."""
 
     profile = None
@@ -52,11 +61,12 @@ class HistoryQuantities:
             raise DomainError(f"unknown history quantity {quantity!r}: one of {', '.join(QUANTITIES)}")
         if quantity not in self._d:
             v, h = self.v, self.history
-            expr = v.force_history(h) if quantity == "force_history" else v.pressure_history(h)
-            closed = not expr.has(sp.Integral)
+            expr = {"force_history": v.force_history, "pressure_history": v.pressure_history,
+                    "half_width_history": v.half_width_history}[quantity](h)
+            closed = not expr.has(sp.Integral, sp.InverseLaplaceTransform)
             extra = (S.x,) if quantity == "pressure_history" else ()
             params = tuple(sorted((set(v.variables) | h.free_symbols) - {S.t, S.x}, key=lambda s: s.name))
-            what = "force" if quantity == "force_history" else "pressure"
+            what = quantity[:-len("_history")]
 
             def reference(vals, dps, what=what):
                 by = {s.name: val for s, val in vals.items()}
@@ -70,14 +80,9 @@ class HistoryQuantities:
         return self._d[quantity]
 
     def check_domain(self, quantity: str, values: dict) -> dict:
-        """Every name one the quantity takes, finite real values, t >= 0, the
-        parameters positive (as the material's and profile's are)."""
-        d = self.derivation(quantity)
-        names = {s.name for s in d.variables_all}
-        unknown = sorted(set(values) - names)
-        if unknown:
-            raise DomainError(f"{quantity} takes no value named {', '.join(map(repr, unknown))}; "
-                              f"it takes {', '.join(sorted(names))}")
+        """Finite real values, t >= 0, the parameters positive (as the
+        material's and profile's are), checked before anything is derived;
+        then every name one the quantity takes."""
         check_values(values)
         out = dict(values)
         for k, val in values.items():
@@ -91,7 +96,12 @@ class HistoryQuantities:
                 out[k] = abs(val)
             elif k != "t" and num <= 0:
                 raise DomainError(f"{k} must be > 0, got {val}")
+        names = {s.name for s in self.derivation(quantity).variables_all}
+        unknown = sorted(set(values) - names)
+        if unknown:
+            raise DomainError(f"{quantity} takes no value named {', '.join(map(repr, unknown))}; "
+                              f"it takes {', '.join(sorted(names))}")
         return out
 
 
-__all__ = ["HistoryQuantities", "QUANTITIES"]
+__all__ = ["HistoryQuantities", "QUANTITIES", "history_quantity"]

@@ -344,13 +344,16 @@ class ViscoelasticLineContact:
         ``benchmarks/extremes.py``), ``'mpmath'`` at ``dps`` digits; keywords
         given here are fixed once.  No domain check (NaN outside it)."""
         from ...numeric.functions import make_callable
-        q = {"force": "force_history", "pressure": "pressure_history"}.get(quantity, quantity)
+        from .accuracy import history_quantity
+        q = history_quantity(quantity)
         return make_callable(self.history_quantities(history).derivation(q), backend, dps, params)
 
     def evaluate(self, quantity: str, history, rtol: float | None = None, certified: bool = False,
                  dps: int | None = None, **values):
         """``"force"`` (P(t)) or ``"pressure"`` (p(x, t)) of the half-width
-        history ``history`` at ``values`` (t, x, the parameters) to the
+        history ``history``, or ``"half_width"`` (a(t)) of the load history
+        ``history`` (creep, a load that never decreases: the closed form of
+        :meth:`half_width_history`), at ``values`` (t, x, the parameters) to the
         tolerance ``rtol`` by the cheapest path that meets it: the stable
         float64 export of the closed form when its error estimate does, mpmath
         at the digits rtol asks otherwise, an Arb ball with ``certified=True``
@@ -364,7 +367,8 @@ class ViscoelasticLineContact:
         ('float64', 1.0)
         """
         from ...numeric.evaluate import evaluate
-        q = {"force": "force_history", "pressure": "pressure_history"}.get(quantity, quantity)
+        from .accuracy import history_quantity
+        q = history_quantity(quantity)
         return evaluate(self.history_quantities(history), q, rtol=rtol, certified=certified, dps=dps, **values)
 
     def half_width_at(self, t, load, dps: int = 30, **values):
