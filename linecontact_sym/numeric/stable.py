@@ -347,8 +347,9 @@ class ExpTail(StableRule):
 
     name = "exp-tail"
     heads = (sp.exp,)
-    #: the longest tail sought
+    #: the longest tail sought, and the longest sum searched
     MAX_N = 12
+    MAX_TERMS = 64
 
     @staticmethod
     def _split(term):
@@ -371,6 +372,8 @@ class ExpTail(StableRule):
     def apply(self, expr):
         def do(e):
             terms = self._terms(e)
+            if len(terms) > self.MAX_TERMS:       # each term is tried against each exponential: quadratic work
+                return e
             out, changed = [], False
             for t_ in list(terms):
                 if not terms.get(t_):
