@@ -412,6 +412,8 @@ def test_evaluate_refuses_outside_the_domain():
         v.evaluate("force", RS * t, t=1.0, tau=-1.0, E0=2.0, r=0.1, R=1.0)
     with pytest.raises(DomainError, match="unknown history quantity"):
         v.evaluate("gap", RS * t, t=1.0)
+    exact = v.evaluate("force", RS * t, t="1/3", tau="1", E0=2, r=sp.Rational(1, 10), R=1, rtol=1e-12)   # text: exact
+    assert abs(exact.value / lee_radok_by_hand(mpmath.mpf(1) / 3, 1, 2, mpmath.mpf(1) / 10, 1) - 1) < 1e-14
 
 
 @pytest.mark.slow

@@ -32,6 +32,7 @@ from ...core.errors import DomainError
 from ...core.ranges import check_values
 from ...method.derivation import Derivation, fallback_step
 from ...method.rulebase import Step
+from ...parsing import user_value
 
 QUANTITIES = ("force_history", "pressure_history", "half_width_history")
 
@@ -83,6 +84,7 @@ class HistoryQuantities:
         """Finite real values, t >= 0, the parameters positive (as the
         material's and profile's are), checked before anything is derived;
         then every name one the quantity takes."""
+        values = {k: user_value(val, k) if isinstance(val, str) else val for k, val in values.items()}   # '1/3': exact
         check_values(values)
         out = dict(values)
         for k, val in values.items():
