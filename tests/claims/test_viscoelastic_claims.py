@@ -57,3 +57,13 @@ def test_viscoelastic_fields_are_validated():
 def test_shipped_file_loads():
     p = SPEC.load_paper("lee_radok_line")
     assert [c.quantity for c in p.claims] == ["viscoelastic_force", "viscoelastic_force", "viscoelastic_half_width"]
+
+
+@pytest.mark.slow
+def test_shipped_file_holds():
+    """Every claim of lee_radok_line.toml (Lee-Radok in two printed forms, Ting, creep) holds
+    to 30 digits or more."""
+    from linecontact_sym.claims.batch import check_file
+    res = check_file("lee_radok_line", budget=60)
+    assert [r.status for r in res.results] == [HOLDS] * 3
+    assert all(r.digits >= 30 for r in res.results)
