@@ -95,6 +95,7 @@ def start_value(expr):
 
 
 def _history_callable(expr, values, what):
+    expr = sp.sympify(expr)             # a plain number is a step history
     sub = {sym: user_value(values[sym.name], sym.name) for sym in expr.free_symbols - {S.t} if sym.name in values}
     e = sp.sympify(expr).xreplace(sub)
     if e.free_symbols - {S.t}:
