@@ -277,6 +277,7 @@ class Profile:
         f, fp = fns
         with workdps(30):
             A = to_mpf(a)
+            slopes = []
             for k in range(1, n + 1):
                 xv = A * k / n
                 try:
@@ -286,8 +287,17 @@ class Profile:
                 if isinstance(v, mpmath.mpc) and abs(v.imag) > 1e-20 * (abs(v.real) + 1e-300):
                     return f"f is not real at x = {mpmath.nstr(xv, 6)}"
                 d = d.real if isinstance(d, mpmath.mpc) else d
-                if rising and mpmath.isfinite(d) and d < 0:
-                    return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
+                slopes.append((xv, d, abs(v) / xv))
+            if rising:
+                # a slope of rounding size (f' = -2e-31 at the crest of 1 - cos x, period 2 pi,
+                # read at 30 digits) is 0, not a decrease: the tolerance is relative to the
+                # profile's own slopes
+                finite = [(xv, d) for xv, d, _ in slopes if mpmath.isfinite(d)]
+                scale = max([abs(d) for _, d in finite] + [r for _, _, r in slopes if mpmath.isfinite(r)],
+                            default=mpmath.mpf(0))
+                for xv, d in finite:
+                    if d < -mpmath.mpf(10)**-20 * scale:
+                        return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
         return None
 
     def _near_origin_ok(self, values) -> str | None:
