@@ -113,56 +113,23 @@ def _profile(text, symbols=(), where="PROFILE"):
     return parse_expr(text, symbols=list(symbols or ()), where=where)
 
 
-_WITH_UNIT = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z\u00b5\u03bc][A-Za-z0-9_*/^ .\u00b5\u03bc]*)\s*")
-
-
 def _settings(items, symbols=()):
-    """``--set NAME=VALUE ...``: numbers (parsed by the whitelisted parser);
-    a number with a unit (``E_star=210GPa``, ``R=5 mm``; the ``[units]``
-    extra, pint's unit parser, nothing evaluated) is converted to the SI
-    unit declared for NAME (:data:`~linecontact_sym.core.symbols.UNITS`),
-    exactly as typed in decimal; a wrong dimension, or a name without a
-    declared unit, is bad input naming the unit."""
+    """``--set NAME=VALUE ...``: each value read by the one reader of typed
+    numbers (:func:`linecontact_sym.parsing.parse_number`): a plain number
+    first (``2.1e11``, ``1/3``), an expression of numbers (``pi/4``), and
+    only where the text is neither a number with a unit (``E_star=210GPa``,
+    ``R=5 mm``; the ``[units]`` extra, pint's unit parser, nothing
+    evaluated), converted to the SI unit declared for NAME
+    (:data:`~linecontact_sym.core.symbols.UNITS`); a wrong dimension, or a
+    name without a declared unit, is bad input naming the unit."""
     from .parsing import parse_assignments
-    plain, out = [], {}
-    for item in items or []:
-        name, _, val = item.partition("=")
-        m = _WITH_UNIT.fullmatch(val) if "=" in item else None
-        if m is None:
-            plain.append(item)
-            continue
-        out[name.strip()] = _si_value(name.strip(), m.group(1), m.group(2).strip())
-    values = parse_assignments(plain, where="--set", symbols=list(symbols or ()))
-    if out:
-        extra = parse_assignments([f"{k}={v}" for k, v in out.items()], where="--set", symbols=list(symbols or ()))
-        values.update(extra)
-    return values
+    return parse_assignments(items or [], where="--set", symbols=list(symbols or ()), units=S.UNITS)
 
 
-def _si_value(name, number, unit_text):
-    """The SI value (decimal text) of ``number unit_text`` for the setting ``name``."""
-    from .core.errors import DomainError
-    from .core.extras import require
-    unit = S.UNITS.get(name)
-    if unit is None:
-        raise DomainError(f"--set {name}={number}{unit_text}: {name} has no declared unit; give it in SI as a "
-                          f"plain number")
-    pint = require("units", "pint")
-    reg = _unit_registry(pint)
-    try:
-        q = reg.Quantity(number) * reg.parse_units(unit_text)
-        si = q.to(unit or "dimensionless").magnitude
-    except pint.DimensionalityError:
-        raise DomainError(f"--set {name}={number}{unit_text}: the unit {unit_text!r} is not one of "
-                          f"{unit or 'a dimensionless number'} ({name})") from None
-    except Exception as exc:  # noqa: BLE001 -- pint's parser refusing the text
-        raise DomainError(f"--set {name}={number}{unit_text}: {unit_text!r} is not a unit ({exc})") from None
-    return repr(float(si))
-
-
-def _unit_registry(pint):
-    """pint's application registry: one per process, built on first use."""
-    return pint.get_application_registry()
+def _has_unit(items) -> bool:
+    """Some ``NAME=VALUE`` of ``items`` carries a unit (the result is then said in SI)."""
+    from .parsing.numbers import split_unit
+    return any("=" in i and split_unit(i.partition("=")[2]) is not None for i in items or [])
 
 
 def _contact(args, profile, values=None):
@@ -339,7 +306,7 @@ def cmd_eval(args):
         if "=" not in item:
             raise LineContactError(f"--at expects NAME=V1,V2,..., got {item!r}")
         name, vs = item.split("=", 1)
-        grids[name.strip()] = parse_number_list(vs, where=f"--at {name.strip()}")
+        grids[name.strip()] = parse_number_list(vs, where=f"--at {name.strip()}", name=name.strip(), units=S.UNITS)
     total = math.prod(len(v) for v in grids.values())
     if total > MAX_EVAL_POINTS:
         raise LineContactError(f"--at spans {total} points (the product of the grids); at most "
@@ -363,7 +330,7 @@ def cmd_eval(args):
                     "dps": args.dps, "rows": rows})
     else:
         head = "  ".join(f"{n:>12}" for n in names) + f"  {q}"
-        if any("=" in i and _WITH_UNIT.fullmatch(i.partition("=")[2]) for i in args.set or []):
+        if _has_unit(list(args.set or []) + list(args.at or [])):
             unit = getattr(_registry()[q][2], "unit", None)      # values with units: the result in SI, said
             head += f" [{unit or 'SI'}]"
         print(head)
