@@ -34,6 +34,7 @@ from .rules import RULES, NotApplicable, Problem, Step
 from .verification import (REQUIRED_DIGITS, VERIFY_DPS, VerificationRecord, holds, references_ahead, unfinished,
                            verify, verify_here)
 from ..core.precision import held, serialized, workdps
+from ..core.ranges import check_sign
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -271,7 +272,10 @@ def values_by_name(symbols, values):
     {Symbol: exact SymPy number}; text through the whitelisted parser, every
     number through the one converter
     (:func:`~linecontact_sym.core.conversion.point_value`: a float is its
-    exact binary value, as in every evaluation path of the package)."""
+    exact binary value, as in every evaluation path of the package); each
+    checked against its symbol's sign
+    (:func:`~linecontact_sym.core.ranges.check_sign`: R = -1 is refused here,
+    for every path that binds values)."""
     by_name = {s.name: s for s in symbols}
     out = {}
     for k, v in values.items():
@@ -279,11 +283,13 @@ def values_by_name(symbols, values):
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
         try:
-            out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
+            out[sym] = check_sign(sym, point_value(to_sympy(v) if isinstance(v, str) else v))
         except DomainError:
             raise
         except LineContactError as exc:     # not a number (a list, an array): the user's input
             raise ClaimError(f"{sym.name}: {exc}") from None
+        except (TypeError, ValueError) as exc:   # a value SymPy cannot convert (complex text, ...)
+            raise DomainError(f"{sym.name} = {v!r} is not a real number ({exc})") from None
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
