@@ -224,6 +224,13 @@ def cmd_derive(args):
     quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
     if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
+    if args.law is not None and not args.adhesion:
+        # a cohesive law named is an adhesive derivation asked for: --law implies --adhesion (said on stderr)
+        args.adhesion = True
+        if not args.quiet:
+            print(f"--law {args.law} implies --adhesion: the adhesive laws of {args.law} follow the "
+                  f"frictionless ones", file=sys.stderr)
+    args.law = args.law or "jkr"
     known = [n for n, q in type(c).quantities().items() if not q.method]    # a periodic array has more
     adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
     for q in (q for q in quantities if q not in known and not (args.adhesion and q in adhesive)):
@@ -237,8 +244,8 @@ def cmd_derive(args):
             raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
         ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
-        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
-                 if q in quantities or (args.quantities is None and q != "pull_off_force")]
+        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22);
+                 if q in quantities or args.quantities is None]     # by default all five, the pull-off P_min too
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -299,8 +306,10 @@ def cmd_eval(args):
     prof = _profile(args.profile, args.symbols)
     values = _settings(args.set, args.symbols)
     q = args.quantity
-    if q not in _registry():
-        raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_registry())}")
+    c = _contact(args, prof)
+    own = _own_quantities(c)           # the contact's own (a periodic array: nominal_pressure, ...) first
+    if q not in own and q not in _registry():
+        raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(dict.fromkeys([*own, *_registry()]))}")
     grids = {}
     for item in args.at or []:
         if "=" not in item:
@@ -311,7 +320,6 @@ def cmd_eval(args):
     if total > MAX_EVAL_POINTS:
         raise LineContactError(f"--at spans {total} points (the product of the grids); at most "
                                f"{MAX_EVAL_POINTS} per call")
-    c = _contact(args, prof)
     names = list(grids)
     fixed = {k.name: v for k, v in values.items()}
     rows = []
@@ -331,7 +339,8 @@ def cmd_eval(args):
     else:
         head = "  ".join(f"{n:>12}" for n in names) + f"  {q}"
         if _has_unit(list(args.set or []) + list(args.at or [])):
-            unit = getattr(_registry()[q][2], "unit", None)      # values with units: the result in SI, said
+            quantity = type(c).quantities()[own[q]] if q in own else _registry()[q][2]
+            unit = getattr(quantity, "unit", None)      # values with units: the result in SI, said
             head += f" [{unit or 'SI'}]"
         print(head)
         for r in rows:
@@ -339,10 +348,27 @@ def cmd_eval(args):
     return EXIT_OK if all(r.get("value") is not None for r in rows) else EXIT_INPUT
 
 
+def _own_quantities(c) -> dict:
+    """Name (and alias) -> registry name of the frictionless contact's own
+    quantities: those of its class (a periodic array's nominal_pressure,
+    full_contact_force, ...), which the registry of kinds does not list."""
+    out = {}
+    for name, quantity in type(c).quantities().items():
+        out[name] = name
+        for al in quantity.aliases:
+            out.setdefault(al, name)
+    return out
+
+
 def _eval_one(c, q, values, dps):
     from .contacts.base import contact_kind
-    kind, name, quantity = _registry()[q]
-    contact = contact_kind(kind).from_frictionless(c)
+    own = _own_quantities(c)
+    if q in own:                       # the contact's own quantity, on the contact itself
+        contact, name = c, own[q]
+        quantity = type(c).quantities()[name]
+    else:
+        kind, name, quantity = _registry()[q]
+        contact = contact_kind(kind).from_frictionless(c)
     if quantity.method:  # a(P), c_s(Q): the load is the last argument, passed first
         load_name = quantity.arguments[-1]
         if load_name not in values:
@@ -507,8 +533,9 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--quantities", default=None, help="comma-separated, from: " + ", ".join(_expression_quantities(
         "frictionless")) + " (default force,pressure,gap); --adhesion: also adhesion_force, pull_off_force, ...")
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
-                    "force, pressure, P_adh, a at pull-off, or those of --quantities")
-    pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
+                    "force, pressure, the pull-off P_min and P_adh = -P_min, a at pull-off, or those of --quantities")
+    pd.add_argument("--law", default=None, help="the cohesive law of --adhesion (registered: jkr, maugis_dugdale; "
+                    "default jkr); naming one implies --adhesion")
     pd.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (a number or a "
                     "symbol; the profile given on 0 <= x <= L/2): also nominal_pressure, full_contact_force, "
                     "full_contact_pressure")

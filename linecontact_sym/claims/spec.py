@@ -90,7 +90,7 @@ from sympy.core.function import AppliedUndef
 
 from ..core import symbols as S
 from ..contacts.base import qualified_quantities
-from ..core.errors import ClaimError
+from ..core.errors import ClaimError, LineContactError
 from ..parsing import declare_symbols, parse_expr
 from .rounding import DECIMAL, PrintedFloat, printed_spread, printed_variants  # noqa: F401
 from .fields import names_field, number_field, parse_range, check_sign, text_field, typed_field, where_text, read_text_file
@@ -459,7 +459,21 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     return Claim(label.strip(), quantity, forms, profiles, general, assumptions, table, special,
                  {**syms}, force_law, values, labels, str(cd.get("title", cd.get("description", ""))),
                  str(cd.get("note", "")), str(cd.get("reading", "")), pts, str(source),
-                 dict(file_ranges or {}), parse(cd["period"], "period", placeholders={}) if "period" in cd else None)
+                 dict(file_ranges or {}), _period(parse(cd["period"], "period", placeholders={}), W("period"))
+                 if "period" in cd else None)
+
+
+def _period(expr, where):
+    """The period of a claim, checked as the contact will check it
+    (:class:`~linecontact_sym.method.geometry.Periodic`: a positive finite
+    number or positive symbols): ``period = "0"`` is bad input at load
+    (exit 2), not an undecided claim."""
+    from ..method.geometry import Periodic
+    try:
+        Periodic(expr)
+    except LineContactError as exc:
+        raise ClaimError(f"{where}: {exc}") from None
+    return expr
 
 
 def claim_from_cli(quantity: str, formula: str, profile: str | None = None, *, label="command line",

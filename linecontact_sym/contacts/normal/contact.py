@@ -343,6 +343,12 @@ class LineContact(Contact):
         return derive_half_width(self, load)
 
     # --------------------------------------------------------------- other forms
+    def check_effect(self, kind: str, law: str | None = None) -> None:
+        """The gate of the effects built on this contact (an adhesive
+        ``kind`` with its cohesive ``law``, ``"tangential"``, ``"stress"``):
+        every one is derived on an isolated contact; a periodic array
+        refuses those it does not carry (:mod:`.periodic`)."""
+
     def adhesive(self, work_of_adhesion=S.gamma):
         """The JKR-adhesive form of this contact (Eqs. 29-36), see
         :mod:`linecontact_sym.contacts.adhesion.contact`."""

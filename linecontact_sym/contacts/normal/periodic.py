@@ -312,22 +312,21 @@ class PeriodicLineContact(LineContact):
         self.geometry.check_half_width(values)
 
     # --------------------------------------------------------------- effects not yet periodic
-    def tangential(self, friction=S.mu):
-        raise LineContactError("the tangential contact of a periodic array is not derived yet (its layer reads "
-                               "the isolated half-plane's kernel); see docs/architecture.md")
-
-    def stresses(self, tangential=None, **kw):
-        raise LineContactError("the subsurface stresses of a periodic array are not derived yet (the Kolosov "
-                               "potentials of the layer are those of one contact)")
-
-    def adhesion(self, law: str = "jkr", *args, **params):
-        if law != "jkr":
+    def check_effect(self, kind: str, law: str | None = None) -> None:
+        """The one gate of the effects built on this contact (every route:
+        ``c.adhesion(...)``, ``c.maugis_dugdale()``, ``Kind.from_frictionless(c)``
+        of the CLI and the claims checker): JKR adhesion is derived on an
+        array; the other cohesive laws, the tangential contact and the
+        subsurface stresses are not yet, and are refused here, the same way."""
+        if kind == "tangential":
+            raise LineContactError("the tangential contact of a periodic array is not derived yet (its layer reads "
+                                   "the isolated half-plane's kernel); see docs/architecture.md")
+        if kind in ("stress", "sliding_stress"):
+            raise LineContactError("the subsurface stresses of a periodic array are not derived yet (the Kolosov "
+                                   "potentials of the layer are those of one contact)")
+        if law is not None and law != "jkr":
             raise LineContactError(f"the {law} law on a periodic array is not derived yet; JKR is "
                                    f"(LineContact(f, period=L).adhesive(gamma))")
-        return super().adhesion(law, *args, **params)
-
-    def maugis_dugdale(self, *args, **kw):
-        return self.adhesion("maugis_dugdale")
 
 
 def full_contact_quad(profile, values: dict, period, dps: int = 45):
