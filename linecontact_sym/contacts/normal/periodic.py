@@ -146,7 +146,7 @@ class PeriodicLineContact(LineContact):
         parts = ("periodic", quantity, self.profile.expr, dict(self.profile.ranges), self.geometry.period,
                  kd.expr, kd.closed_form, self.points, self.digits, self.verify)
         return remembered(parts, lambda: self._make_mapped(quantity, kd), self.budget,
-                          lambda d: self._reference(quantity))
+                          lambda d: self._reference(quantity), sampler=self._sampler(_MAPPED[quantity]))
 
     def _make_mapped(self, quantity, kd) -> Derivation:
         g, domain = self.geometry, _MAPPED[quantity]
@@ -191,7 +191,8 @@ class PeriodicLineContact(LineContact):
         (:func:`full_contact_quad`)."""
         parts = ("periodic", "full_contact_force", self.profile.expr, dict(self.profile.ranges),
                  self.geometry.period, self.points, self.verify)
-        return remembered(parts, self._make_full_contact, self.budget, lambda d: self._full_reference)
+        return remembered(parts, self._make_full_contact, self.budget, lambda d: self._full_reference,
+                          sampler=self._sampler("any"))
 
     def _full_reference(self, vals, dps):
         return full_contact_quad(self.profile, vals, self.geometry.period.xreplace(vals), dps)
