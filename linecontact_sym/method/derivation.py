@@ -35,6 +35,7 @@ from .verification import (REQUIRED_DIGITS, VERIFY_DPS, VerificationRecord, hold
                            verify, verify_here)
 from ..core.precision import held, serialized, workdps
 from ..core.ranges import check_sign
+from ..core.units import refuse_units
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -277,6 +278,8 @@ def values_by_name(symbols, values):
     (:func:`~linecontact_sym.core.ranges.check_sign`: R = -1 is refused here,
     for every path that binds values)."""
     by_name = {s.name: s for s in symbols}
+    # values with units reach here only where they are not taken (a pull-off, a state): said, not misread
+    refuse_units({str(k): v for k, v in values.items()}, "this result at values", S.UNITS)
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
