@@ -10,7 +10,9 @@ text), or a clear package error (a ``LineContactError`` subclass; on the
 command line exit 2 with a message on stderr and no traceback), within the
 timeout; a wrong number, a foreign exception, a hang or an internal error
 (exit 3) fails it.  Every case runs in a forked child with a temporary cache
-directory of its own (nothing in the user's cache is read or written).
+directory of its own (nothing in the user's cache is read or written); the
+command line runs in that child (``cli.main``), in a new interpreter only
+where an environment variable is read at import.
 
     python tools/hostile/trust_round5_input.py [--json out.json] [--only 1,4] [--timeout S]
     PYTHONPATH=/path/to/other/checkout python tools/hostile/trust_round5_input.py --json before.json
@@ -85,12 +87,26 @@ _NO_PINT = "import sys; sys.modules['pint'] = None\n"
 
 
 def cli(argv, env=None, pint=True, timeout=300):
-    """``(exit status, stdout, stderr)`` of the command line in a new process
-    (``pint=False``: the import of pint fails, as where it is not installed)."""
-    code = ("" if pint else _NO_PINT) + "from linecontact_sym.cli import main\nraise SystemExit(main(sys.argv[1:]))"
-    r = subprocess.run([sys.executable, "-c", "import sys\n" + code] + list(argv), capture_output=True, text=True,
-                       timeout=timeout, env=dict(os.environ, **(env or {})))
-    return r.returncode, r.stdout, r.stderr
+    """``(exit status, stdout, stderr)`` of the command line: in this (forked)
+    process, or with ``env`` (read at import) in a new one; ``pint=False``:
+    the import of pint fails, as where it is not installed."""
+    if env:
+        code = ("" if pint else _NO_PINT) + "from linecontact_sym.cli import main\nraise SystemExit(main(sys.argv[1:]))"
+        r = subprocess.run([sys.executable, "-c", "import sys\n" + code] + list(argv), capture_output=True,
+                           text=True, timeout=timeout, env=dict(os.environ, **env))
+        return r.returncode, r.stdout, r.stderr
+    import contextlib
+    import io
+    from linecontact_sym.cli import main
+    if not pint:
+        sys.modules["pint"] = None           # the case runs in a forked child: nothing else sees it
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main(list(argv))
+        except SystemExit as exc:             # argparse's own errors
+            code = exc.code if isinstance(exc.code, int) else 2
+    return code, out.getvalue(), err.getvalue()
 
 
 def bad_input(r):
