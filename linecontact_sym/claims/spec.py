@@ -328,6 +328,8 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
         defs[name] = parse_expr(text, symbols=file_syms, definitions=defs, where=where)
         defs_show[name] = sp.Symbol(name, positive=True)
     ranges = {k: parse_range(v, where_text(source, fld=f"ranges.{k}")) for k, v in (data.get("ranges") or {}).items()}
+    for k, (lo, _hi) in ranges.items():          # the file's ranges as the claims' own: R = [-1, 1] is bad input
+        check_sign(k, lo, file_syms, where_text(source, fld=f"ranges.{k}"))
     claims_data = data.get("claims")
     if not isinstance(claims_data, list) or not claims_data:
         raise ClaimError(f"{source}: no [[claims]] in the file")

@@ -14,7 +14,7 @@ directory of its own (nothing in the user's cache is read or written); the
 command line runs in that child (``cli.main``), in a new interpreter only
 where an environment variable is read at import.
 
-    python tools/hostile/trust_round5_input.py [--json out.json] [--only 1,4] [--timeout S]
+    python tools/hostile/trust_round5_input.py [--json out.json] [--only 1,4] [--match TEXT] [--timeout S]
     PYTHONPATH=/path/to/other/checkout python tools/hostile/trust_round5_input.py --json before.json
 
 Groups: 1 typed numbers, 4 values where the result does not hold, 5 edges,
@@ -109,6 +109,15 @@ def cli(argv, env=None, pint=True, timeout=300):
     return code, out.getvalue(), err.getvalue()
 
 
+def _last_number_close(out, ref, rtol=1e-12):
+    """The value of the table's last row (its last column) within ``rtol`` of ``ref``."""
+    try:
+        v = mpmath.mpf(out.strip().splitlines()[-1].split()[-1])
+    except (ValueError, IndexError):
+        return False
+    return abs(v - ref) <= rtol * abs(ref)
+
+
 def bad_input(r):
     """Exit 2 with a message and no traceback."""
     code, _, err = r
@@ -141,7 +150,7 @@ for _text, _ok in (("210GPa", True), ("210 GPa", True), ("2.1e11Pa", True), ("0.
     add("1 typed numbers", f"--set E_star={_text} (a unit, no pint: refused)",
         lambda t=_text: bad_input(_eval_force(t, False)))
 
-for _text in ("2.1e", "1e", "abc", "nan", "inf", "1/0", "2.1e11 GPa foo", "5 s", "1e11e3", "0x10"):
+for _text in ("2.1e", "1e", "abc", "nan", "inf", "1/0", "2.1e11 GPa foo", "5 s", "1e11e3"):
     add("1 typed numbers", f"--set E_star={_text} refused", lambda t=_text: bad_input(_eval_force(t, True)))
 
 for _text in ("1e-3", "1/1000", "0.001", "1mm", "1e-3:2e-3:2"):
@@ -153,7 +162,7 @@ for _text in ("1e-3", "1/1000", "0.001", "1mm", "1e-3:2e-3:2"):
 for _pint in (True, False):
     # the zone force -2 sigma_0 sqrt(c_D**2 - a**2) at sigma_0 = 1e300, a = 1/2, c_D = 0.6, computed here
     add("1 typed numbers", f"--set sigma_0=1e300 ({'with' if _pint else 'without'} pint)", lambda p=_pint: (
-        lambda r: r[0] == 0 and mpmath.nstr(-2 * mpmath.mpf(10)**300 * mpmath.sqrt(mpmath.mpf("0.11")), 10) in r[1])(
+        lambda r: r[0] == 0 and _last_number_close(r[1], -2 * mpmath.mpf(10)**300 * mpmath.sqrt(mpmath.mpf("0.11"))))(
         cli(["eval", "x**2/(2*R)", "maugis_dugdale.zone_force", "--at", "a=0.5", "--set", "R=1", "E_star=1",
              "gamma=1", "sigma_0=1e300", "c_D=0.6", "--dps", "15"], pint=p)))
 
@@ -541,12 +550,13 @@ def main():
     ap.add_argument("--json", help="write the per-case results here")
     ap.add_argument("--timeout", type=int, default=150)
     ap.add_argument("--only", help="comma-separated group numbers, e.g. 1,4")
+    ap.add_argument("--match", help="only the cases whose name contains this text")
     args = ap.parse_args()
     only = set(args.only.split(",")) if args.only else None
     out = {}
     t_all = time.perf_counter()
     for group, name, fn in CASES:
-        if only and group.split()[0] not in only:
+        if only and group.split()[0] not in only or args.match and args.match not in name:
             continue
         t0 = time.perf_counter()
         ok, why = isolated(fn, args.timeout)
