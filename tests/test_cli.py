@@ -380,6 +380,18 @@ def test_claims_period_zero_is_bad_input(capsys, tmp_path):
     assert code == 2 and "period" in err and "must be positive" in err
 
 
+def test_claims_file_ranges_are_read_and_checked_at_load(capsys, tmp_path):
+    """The file's [ranges] as a claim's own: numbers in any notation, a negative range of a positive
+    symbol bad input (exit 2; was an undecided claim), a unit refused (a claims file takes SI)."""
+    claim = ('[[claims]]\nlabel = "hertz"\nquantity = "force"\nprofile = "x**2/(2*R)"\n'
+             'formula = "pi*E_star*a**2/(4*R)"\n')
+    for rng, expected in (('["-1", "1"]', 2), ('["1mm", "2mm"]', 2)):
+        f = tmp_path / "r.toml"
+        f.write_text(f'key = "t"\n[ranges]\nR = {rng}\n' + claim)
+        code, _, err = run(capsys, "check", str(f))
+        assert code == expected and "ranges.R" in err, (rng, err)
+
+
 def test_eval_takes_the_arrays_own_quantities(capsys):
     """eval --period ... nominal_pressure was refused as unknown."""
     code, out, err = run(capsys, "eval", "h*(1 - cos(2*pi*x/L))", "nominal_pressure", "--symbols", "h", "L",
