@@ -45,6 +45,8 @@ def test_the_inverse_map_refuses_a_force_law_no_contact_has():
         lcs.profile_from_force(-a**2)
     with pytest.raises(InadmissibleProfileError, match="negative|decreasing"):
         lcs.profile_from_force(a**3 - a**2)
+    with pytest.raises(InadmissibleProfileError, match="not real"):
+        lcs.profile_from_force(sp.I * a**2)
     Rp = sp.Symbol("R", positive=True)
     assert lcs.profile_from_force(sp.pi * E_star * a**2 / (4 * Rp), verify_points=1).expr == x**2 / (2 * Rp)
 

@@ -91,14 +91,17 @@ def _check_pushes(force_law, sampler, points: int = 5):
     domain) or SymPy cannot evaluate it is not judged."""
     rng = random.Random(9)
     dP = sp.diff(force_law, S.a)
+    real = judged = 0
     for _ in range(points):
         vals = sampler(rng)
         try:
             Pv, dv = (complex(sp.N(e.xreplace(vals), 20)) for e in (force_law, dP))
         except (TypeError, ValueError):
             continue
+        judged += 1
         if abs(Pv.imag) > 1e-12 * max(1.0, abs(Pv.real)) or abs(dv.imag) > 1e-12 * max(1.0, abs(dv.real)):
             continue                  # outside the law's real domain there (the exact cylinder at a > R)
+        real += 1
         if Pv.real < -1e-12 * max(1.0, abs(dv.real)) or dv.real < -1e-12 * max(1.0, abs(dv.real)):
             shown = ", ".join(f"{k} = {sp.N(v, 6)}" for k, v in sorted(vals.items(), key=lambda kv: kv[0].name))
             what = "negative" if Pv.real < 0 else "decreasing"
@@ -106,6 +109,9 @@ def _check_pushes(force_law, sampler, points: int = 5):
                 f"the force law P(a) = {force_law} is {what} at {shown}: a frictionless contact pushes, with "
                 f"P(a) >= 0 growing with the half-width; no profile has this law (Eq. 9 would return a "
                 f"profile that decreases, not a contact of it)")
+    if judged and not real:
+        raise InadmissibleProfileError(f"the force law P(a) = {force_law} is not real at any of {judged} random "
+                                       f"points: no profile has it")
 
 
 def periodic_profile_from_force(force_law, period, params=None, budget: float = DEFAULT_BUDGET,
