@@ -94,7 +94,7 @@ from sympy.core.function import AppliedUndef
 
 from ..core import symbols as S
 from ..contacts.base import qualified_quantities
-from ..core.errors import ClaimError
+from ..core.errors import ClaimError, LineContactError
 from ..parsing import declare_symbols, parse_expr
 from .rounding import DECIMAL, PrintedFloat, printed_spread, printed_variants  # noqa: F401
 from .fields import names_field, number_field, parse_range, check_sign, text_field, typed_field, where_text, read_text_file
@@ -343,6 +343,8 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
         defs[name] = parse_expr(text, symbols=file_syms, definitions=defs, where=where)
         defs_show[name] = sp.Symbol(name, positive=True)
     ranges = {k: parse_range(v, where_text(source, fld=f"ranges.{k}")) for k, v in (data.get("ranges") or {}).items()}
+    for k, (lo, _hi) in ranges.items():          # the file's ranges as the claims' own: R = [-1, 1] is bad input
+        check_sign(k, lo, file_syms, where_text(source, fld=f"ranges.{k}"))
     claims_data = data.get("claims")
     if not isinstance(claims_data, list) or not claims_data:
         raise ClaimError(f"{source}: no [[claims]] in the file")
@@ -487,8 +489,22 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     return Claim(label.strip(), quantity, forms, profiles, general, assumptions, table, special,
                  {**syms}, force_law, values, labels, str(cd.get("title", cd.get("description", ""))),
                  str(cd.get("note", "")), str(cd.get("reading", "")), pts, str(source),
-                 dict(file_ranges or {}), parse(cd["period"], "period", placeholders={}) if "period" in cd else None,
+                 dict(file_ranges or {}), _period(parse(cd["period"], "period", placeholders={}), W("period"))
+                 if "period" in cd else None,
                  **visco)
+
+
+def _period(expr, where):
+    """The period of a claim, checked as the contact will check it
+    (:class:`~linecontact_sym.method.geometry.Periodic`: a positive finite
+    number or positive symbols): ``period = "0"`` is bad input at load
+    (exit 2), not an undecided claim."""
+    from ..method.geometry import Periodic
+    try:
+        Periodic(expr)
+    except LineContactError as exc:
+        raise ClaimError(f"{where}: {exc}") from None
+    return expr
 
 
 def claim_from_cli(quantity: str, formula: str, profile: str | None = None, *, label="command line",

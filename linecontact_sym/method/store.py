@@ -485,7 +485,9 @@ def get(key: str):
     if not (_trusted_dir(path.parent.parent, create=False) and _trusted_dir(path.parent, create=False)):
         return None
     try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+        # O_NONBLOCK: a FIFO at the path opens at once (and is refused below as not a regular
+        # file) instead of blocking until a writer comes; a regular file reads as ever
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
     except OSError:
         return None
     try:

@@ -32,7 +32,7 @@ from ...core.budget import run_with_budget
 from ...core.conversion import float_values, real_mpf
 from ...core.errors import BudgetExceeded, NoPullOffError, VerificationError
 from ...method import store
-from ...method.derivation import Derivation, remembered_many, tidy
+from ...method.derivation import Derivation, agrees_at_random_point, remembered_many, tidy
 from ...method.hyperseries import NotDecomposable, decompose
 from ...method.rules import Step, special_of
 from ...method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
@@ -390,7 +390,19 @@ def remembered_derivations(ad):
                                  attempts=d.attempts, cached=d.cached)
     if ad._pull_off_closed().get("timed_out"):   # cut short by the clock: derived here, not kept
         return tuple(derivations(ad))
-    return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild)
+    sampler = ad._sampler()
+
+    def recheck(d):
+        """A closed form read from disk against the minimum of the engine's force law (itself
+        re-checked when read) found numerically at one random point: method A, which shares nothing
+        with sympy.solve's closed form (cheap: no quadrature law)."""
+        def ref(v, dd):
+            po = minimum(ad._law(v, "closed"), dd)
+            if d.quantity == "pull_off_half_width":
+                return po.half_width
+            return po.force if d.quantity == "pull_off_force" else -po.force
+        return agrees_at_random_point(d, ref, sampler)
+    return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild, recheck)
 
 
 def _key(ad, vals):

@@ -14,7 +14,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, GrossSlidingError, LineContactError
-from ...core.ranges import check_values
+from ...core.ranges import check_sign, check_values
 from ...core.roots import root_in_log
 from ...numeric.exports import lambdify_numpy
 from ...numeric.functions import make_callable
@@ -189,7 +189,7 @@ def numbers_at(t, values):
             continue
         if k not in by_name:
             raise DomainError(f"unknown value {k!r}; expected {sorted(by_name)} and a or P")
-        vals[by_name[k]] = to_sympy_number(v)
+        vals[by_name[k]] = check_sign(by_name[k], to_sympy_number(v))     # R = -1 refused (core.ranges)
     missing = [s.name for s in t.variables if s not in vals]
     if missing:
         raise DomainError(f"values needed for {', '.join(missing)}")
@@ -197,7 +197,7 @@ def numbers_at(t, values):
         raise DomainError("give either the half-width a or the normal load P")
     check_values({s.name: v for s, v in vals.items()})          # mu > 0 (core.ranges)
     if "a" in values:                                           # where the normal solution holds (a < R, ...)
-        t.contact.check_point({**vals, S.a: to_sympy_number(values["a"])})
+        t.contact.check_point({**vals, S.a: check_sign(S.a, to_sympy_number(values["a"]))})
     with workdps(30):
         law = force_law_at(t, vals)
         if "a" in values:

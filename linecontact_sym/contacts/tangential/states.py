@@ -318,7 +318,8 @@ def derive_stick_half_width(t, Qv, budget=None) -> Derivation:
     parts = ("stick_half_width", t.profile.expr, dict(t.profile.ranges), fd.expr, t.mu, Qv, t.contact.points,
              t.contact.verify)
     return remembered(parts, lambda: _derive_stick(t, Qv, fd, deadline), budget,
-                      lambda d: (_check_ref if d.closed_form else _value_ref)(t, Qv))
+                      lambda d: (_check_ref if d.closed_form else _value_ref)(t, Qv),
+                      sampler=t._sampler("any", load=True) if Qv == S.Q else None)   # read from disk: re-checked
 
 
 def _check_ref(t, Qv):

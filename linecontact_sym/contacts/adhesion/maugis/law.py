@@ -49,7 +49,7 @@ from ....core.errors import DomainError, NumericValuesRequired
 from ....core.roots import Outside
 from ....core.precision import workdps
 from ....core.ranges import check_positive, check_tolerance
-from ....method.derivation import RECHECK_DIGITS, RECHECK_DPS, Derivation, remembered
+from ....method.derivation import Derivation, agrees_at_random_point, remembered
 from ....method.rules import Step
 from ....method.verification import verify
 from ....parsing import to_sympy
@@ -288,7 +288,7 @@ class MaugisDugdaleContact(AdhesiveContact):
         the profile, the expression, its conditions and the verification settings: another
         contact of the same profile and law, in this process or another, does not verify it
         again).  A closed form read from disk is re-checked against this contact's
-        independent reference at one random point (:func:`_recheck`)."""
+        independent reference at one random point (:func:`~linecontact_sym.method.derivation.agrees_at_random_point`)."""
         sampler = self._sampler("inside" if name == "pressure" else "any")
 
         def make():
@@ -307,7 +307,7 @@ class MaugisDugdaleContact(AdhesiveContact):
                  expr, closed, tuple(conditions), tuple(steps), reference is not None, self.contact.verify,
                  self.contact.points, (S.a, S.c_D) + self.variables)
         return remembered(parts, make, self.contact.budget, lambda d: reference,
-                          recheck=lambda d: reference is None or _recheck(d, reference, sampler))
+                          recheck=lambda d: agrees_at_random_point(d, reference, sampler))
 
     def _derive_force(self):
         return self.law.derive_force(self)
@@ -474,17 +474,6 @@ class MaugisDugdaleContact(AdhesiveContact):
 
     def report(self, quantities=("zone_force", "cohesive_gap", "pressure")) -> str:
         return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
-
-
-def _recheck(d, reference, sampler) -> bool:
-    """Does a derivation read from disk agree with the independent reference at one random
-    admissible point (:data:`~linecontact_sym.method.derivation.RECHECK_DIGITS` of
-    :data:`~linecontact_sym.method.derivation.RECHECK_DPS`)?  The checksum of a record only
-    detects damage: a record whose closed form was changed is dropped and derived afresh."""
-    import random
-    check = verify(d.expr, reference, sampler, d.conditions, n_points=1, seed=random.SystemRandom().randrange(2**32),
-                   dps=RECHECK_DPS, reference_name="re-check of a cached record", budget=60.0)
-    return bool(check.points) and check.min_digits >= RECHECK_DIGITS
 
 
 @contextlib.contextmanager
