@@ -94,7 +94,8 @@ def periodic_contact():
     """Periodic (wavy) surfaces
 
     Pressure p/p* over one period of the wavy surface h (1 - cos(2 pi x/L))
-    at several nominal pressures, up to full contact (Westergaard).
+    at three nominal pressures: Westergaard's solution, derived by the engine
+    from the profile (p* = pi E* h/L is the nominal pressure of full contact).
     """
     import sympy as sp
     import linecontact_sym as lcs

@@ -1,5 +1,6 @@
-"""Jupyter kernels for the notebook test, forked from one process that has
-imported what every kernel imports (tests/test_notebooks.py).
+"""Jupyter kernels for the docs build of the test session (tests/docs_site.py,
+which executes every notebook), forked from one process that has imported
+what every kernel imports.
 
 A fresh kernel process spends about 2.5 CPU s before the notebook's first
 result: importing ipykernel and IPython, then the notebook's own imports
