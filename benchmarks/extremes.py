@@ -23,6 +23,8 @@ EXTREME_GRID = {
           100.0, 333.0, 1000.0],
     # b/a (worn cylinder flat half-width over contact half-width)
     "b_over_a": [1e-12, 1e-6, 0.1, 0.5, 0.9, 1 - 1e-6, 1 - 1e-12, 1.0, 1.5],
+    # 2a/L of a periodic array (period L): from an isolated-like contact to full contact
+    "a_over_half_L": [1e-12, 1e-8, 1e-4, 0.1, 0.5, 0.9, 1 - 1e-4, 1 - 1e-7, 1 - 1e-12],
     # absolute scales the ratios are applied at
     "a": [1e-3, 1.0, 7.5],
 }
@@ -32,7 +34,8 @@ def extreme_points(names, quantity: str, size: str = "full"):
     """Points of :data:`EXTREME_GRID` for a quantity with arguments ``names``
     (symbol names).  Ratios are applied to the half-width ``a``: R = a/(a/R),
     b = (b/a) a, x = (x/a) a.  Other parameters get one generic value
-    (E_star = 2, c = 1.3, theta = 0.3).  ``size='small'`` thins the grid (for
+    (E_star = 2, c = 1.3, theta = 0.3, h = 0.3); a periodic array's period
+    L = 2a/(2a/L), its gap at a < x <= L/2.  ``size='small'`` thins the grid (for
     quantities that only have a quadrature)."""
     G = EXTREME_GRID
     thin = (lambda L, k: L[::k] if size == "small" else L)
@@ -48,8 +51,12 @@ def extreme_points(names, quantity: str, size: str = "full"):
         lists["b/a"] = G["b_over_a"] if size != "small" else [1e-6, 0.5, 1 - 1e-6, 1.5]
     if "n" in names:
         lists["n"] = G["n"] if quantity == "force" else [n for n in G["n"] if n not in (0.01, 2.5, 33.3)]
+    if "L" in names:
+        lists["2a/L"] = G["a_over_half_L"] if size != "small" else [1e-4, 0.5, 1 - 1e-7]
     if "x" in names:
         lists["x/a"] = thin(G["x_in"] if quantity == "pressure" else G["x_out"], 2)
+        if "L" in names and quantity != "pressure":     # a < |x| <= L/2: 1 + 1e-12 ... 1.5
+            lists["x/a"] = [r for r in G["x_out"][:5]] + [1.5]
     if quantity != "force" and "R" not in names and "b" not in names:
         lists["a"] = [1.0]
     keys = list(lists)
@@ -64,9 +71,13 @@ def extreme_points(names, quantity: str, size: str = "full"):
             pt["b"] = d["b/a"] * a_
         if "n" in d:
             pt["n"] = d["n"]
+        if "2a/L" in d:
+            pt["L"] = 2 * a_ / d["2a/L"]
         if "x/a" in d:
             pt["x"] = d["x/a"] * a_
-        for nm, val in (("E_star", 2.0), ("c", 1.3), ("theta", 0.3)):
+            if "L" in pt and pt["x"] > pt["L"] / 2:
+                continue                # beyond the crest: the next period's contact
+        for nm, val in (("E_star", 2.0), ("c", 1.3), ("theta", 0.3), ("h", 0.3)):
             if nm in names:
                 pt[nm] = val
         pts.append({k: pt[k] for k in names if k in pt})

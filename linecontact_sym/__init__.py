@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import importlib
 
-from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta, mu, Q, c_s, c_r, z, nu
+from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta, mu, Q, c_s, c_r, z, nu, t, x_real, e, tilt, M
 from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
                           DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError,
                           NoPullOffError, NoEquilibriumError, GrossSlidingError)
@@ -39,19 +39,31 @@ _LAZY = {
     "init_printing": ".core.printing",
     "to_latex": ".core.printing",
     "parse_expr": ".parsing",
+    "reduced_modulus": ".core.materials",
+    "dundurs_beta": ".core.materials",
+    "neglected_coupling": ".core.materials",
+    "flat_punch": ".contacts.asymmetric",
+    "Material": ".method.material",
+    "maxwell": ".method.material",
+    "kelvin_voigt": ".method.material",
+    "standard_linear_solid": ".method.material",
+    "prony": ".method.material",
+    "ViscoelasticLineContact": ".contacts.viscoelastic",
 }
 
 #: the subpackages and modules reachable as attributes (``linecontact_sym.claims``) without an import statement
 _SUBMODULES = ("core", "parsing", "method", "numeric", "views", "contacts", "claims", "cli")
 
 __all__ = [
-    "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "nu",
+    "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "nu", "t",
+    "x_real", "e", "tilt", "M", "reduced_modulus", "dundurs_beta", "neglected_coupling", "flat_punch",
     "LineContactError", "ProfileError", "UnknownSymbolError", "InadmissibleProfileError",
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",
     "AdhesiveLineContact", "NoPullOffError", "NoEquilibriumError", "Contact", "Quantity", "catalogue",
     "TangentialLineContact", "GrossSlidingError", "StressField", "SlidingStressField",
     "parabola", "power_law", "wedge", "worn_cylinder", "rounded_punch", "exact_cylinder", "to_latex", "init_printing", "parse_expr",
+    "Material", "maxwell", "kelvin_voigt", "standard_linear_solid", "prony", "ViscoelasticLineContact",
 ]
 
 

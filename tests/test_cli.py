@@ -2,13 +2,17 @@
 errors on stderr with a non-zero exit status."""
 import json
 import os
+import re
 import subprocess
 import sys
 import textwrap
+import time
 from pathlib import Path
 
+import mpmath
 import pytest
 
+from independent_refs import close
 from linecontact_sym import cli
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -338,3 +342,108 @@ def test_model_maugis_dugdale(capsys):
     code, out, _ = run(capsys, "model", "x**2/(2*R)", "--set", "R=1", "E_star=1", "gamma=1", "sigma_0=30",
                        "--rtol", "0.01", "--json")
     assert code == 0 and json.loads(out)["model"] == "JKR"
+
+
+@pytest.mark.slow
+def test_rolling_mode_of_derive_and_eval(capsys):
+    """derive --rolling gives Carter's creepage; eval evaluates it at carter2d (stick half-width 0.6)."""
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--rolling", "--quantities", "force", "--json", "--quiet")
+    assert code == 0
+    got = json.loads(out)["quantities"]
+    assert got["rolling.creepage"]["expr"] == "mu*(a - c_s)/R"
+    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "rolling.creepage", "--at", "c_s=0.6", "--set", "a=1", "R=500",
+                       "E_star=113888.9", "mu=0.3", "--json")
+    assert code == 0 and float(json.loads(out)["rows"][0]["value"]) == pytest.approx(2.4e-4, rel=1e-25)
+
+
+@pytest.mark.parametrize("argv,match", [
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "--dps", "0"], "digits must be"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=oo", "--set", "R=1", "E_star=1"], "finite real"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "Q=3"], "'Q'"),
+    (["derive", "x**2/(2*R)", "--set", "Q=3", "--quantities", "force"], "no such parameter"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=-1", "E_star=1"], "R must be positive"),
+])
+def test_cli_refuses_bad_values(capsys, argv, match):
+    from linecontact_sym import cli
+    try:
+        code = cli.main(argv)
+    except SystemExit as exc:   # argparse type errors
+        code = exc.code
+    out, err = capsys.readouterr()
+    assert code != 0 and re.search(match, out + err), (code, out, err)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["eval", "x**2/(2*R)", "pressure", "--at", "a=0.1:1:10000", "x=0.1:1:10000"], "points"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=", "--set", "R=1", "E_star=1"], "no value"),
+    (["eval", "x**2/(2*R)", "force", "--at", "a=1:2:abc"], "not an integer"),
+    (["derive", "x**2/(2*R)", "--quantities", ""], "names no quantity"),
+    (["check", "--profile", "x**2/(2*R)", "--force", "pi*E_star*a**2/(4*R)", "--range", "R=-1:1"], "positive"),
+])
+def test_cli_refusals_exit_2(argv, words, capsys):
+    from linecontact_sym.cli import main
+    assert main(argv) == 2
+    assert words in capsys.readouterr().err
+
+
+def test_cli_budget_refused(capsys):
+    from linecontact_sym.cli import main
+    with pytest.raises(SystemExit):
+        main(["derive", "x**2/(2*R)", "--budget", "-3"])
+    assert "expected seconds > 0" in capsys.readouterr().err
+
+
+def test_item9_cli_edges_are_input_errors(tmp_path, capsys):
+    afile = tmp_path / "a-file"
+    afile.write_text("x")
+    t0 = time.perf_counter()
+    assert cli.main(["paper", "popov2017", "--out", str(afile), "--quiet"]) == cli.EXIT_INPUT
+    assert cli.main(["paper", "popov2017", "--out", str(afile / "sub"), "--quiet"]) == cli.EXIT_INPUT
+    assert time.perf_counter() - t0 < 20          # refused before any claim is checked
+    assert "is a file" in capsys.readouterr().err
+    for n in ("1e400", "1e-400", "2,1e400", "-1", "0", "oo", "nan", "I"):
+        assert cli.main(["table", "power-law", f"--n={n}"]) == cli.EXIT_INPUT, n
+    # an irrational exponent is an exponent: Z_n = n int_0^{pi/2} sin^n(phi) dphi (Eq. 10* of c x^n)
+    capsys.readouterr()
+    assert cli.main(["table", "power-law", "--n=sqrt(2)", "--json"]) == 0
+    row = json.loads(capsys.readouterr().out)["rows"][0]
+    n = mpmath.sqrt(2)
+    assert close(row["Z_n_float"], float(n * mpmath.quad(lambda p: mpmath.sin(p)**n, [0, mpmath.pi / 2])), 1e-14)
+
+
+def _cli(args, **env):
+    return subprocess.run([sys.executable, "-m", "linecontact_sym"] + args, capture_output=True, text=True,
+                          timeout=300, env={**os.environ, "PYTHONPATH": str(ROOT), **env})
+
+
+@pytest.mark.slow
+def test_item4_budget_environment_on_the_cli():
+    args = ["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "--dps", "12"]
+    r = _cli(args, LINECONTACT_SYM_BUDGET="abc")
+    assert r.returncode == 2 and "LINECONTACT_SYM_BUDGET" in r.stderr and "Traceback" not in r.stderr
+    r = _cli(args, LINECONTACT_SYM_BUDGET="inf")        # the README's "no limit"
+    assert r.returncode == 0 and "0.785398163397" in r.stdout
+    r = _cli(["paper", "popov2017", "--jobs", "abc"])
+    assert r.returncode == 2 and "--jobs" in r.stderr and "Traceback" not in r.stderr
+
+
+@pytest.mark.slow
+def test_item4_paper_jobs_are_capped_at_the_work(monkeypatch, tmp_path):
+    from linecontact_sym import cli
+    from linecontact_sym.claims import batch
+    seen = []
+    real = batch.process_pool
+    monkeypatch.setattr(batch, "process_pool", lambda jobs=None: seen.append(jobs) or real(jobs))
+    code = cli.main(["paper", "popov2017", "--jobs", "1000", "--only", "Eq. (13)", "--no-figures", "--quiet",
+                     "--out", str(tmp_path)])
+    assert code == 0 and all(j <= 2 for j in seen)
+
+
+def test_item7_cli_eval_bad_value_on_stderr():
+    import contextlib
+    import io
+    from linecontact_sym import cli
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=-1", "--set", "R=1", "E_star=1"])
+    assert code == 2 and "a = -1" in err.getvalue() and "positive" in err.getvalue()

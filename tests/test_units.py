@@ -96,3 +96,53 @@ def test_adhesive_force_with_units():
     assert float(P.to("N/m").magnitude) == pytest.approx(expect, rel=1e-13)
     with pytest.raises(DomainError, match="gamma is an energy per area"):
         ad.evaluate_at("force", a=Q_(1, "mm"), E_star=Q_(1, "GPa"), R=Q_(5, "mm"), gamma=Q_(50, "mN"))
+
+
+@pytest.fixture(scope="module")
+def par():
+    return lcs.parabola(verify=False)
+
+
+U_REF = math.pi * 210e9 * 1e-3**2 / (4 * 5e-3)       # Eq. (13) in SI: 32986722.86 N/m
+
+
+@pytest.mark.slow
+def test_item5_exports_take_units_checked_or_not(par):
+    vals = dict(a=Q_(1, "mm"), R=Q_(5, "mm"), E_star=Q_(210, "GPa"))
+    for check in (True, False):
+        v = par.to_numeric("force", check=check)(**vals)
+        assert v.to("N/m").magnitude == pytest.approx(U_REF, rel=1e-12)     # 32.99 before: mm read as numbers
+        with pytest.raises(DomainError, match="dimension"):
+            par.to_numeric("force", check=check)(**{**vals, "R": Q_(5, "s")})
+    v = par.to_numeric("force", "mpmath", R=Q_(5, "mm"))(a=Q_(1, "mm"), E_star=Q_(210, "GPa"))
+    assert float(v.to("N/m").magnitude) == pytest.approx(U_REF, rel=1e-14)
+    assert par.to_numeric("force")(a=1e-3, R=5e-3, E_star=210e9) == pytest.approx(U_REF, rel=1e-12)   # plain: SI
+
+
+def test_item5_half_width_takes_units(par):
+    a = par.half_width(Q_(U_REF, "N/m"), R=Q_(5, "mm"), E_star=Q_(210, "GPa"))
+    assert float(a.to("mm").magnitude) == pytest.approx(1.0, rel=1e-12)
+
+
+def test_item5_record_results_refuse_units_naming_them(par):
+    with pytest.raises(DomainError, match="pint quantity"):
+        par.tangential().state(Q_(0.1, "N/m"), E_star=1, R=1, mu=0.4, a=0.8)
+    with pytest.raises(DomainError, match="pint quantity"):
+        par.maugis_dugdale().pull_off_at(15, E_star=Q_(1, "Pa"), R=1, gamma=0.01, sigma_0=1)
+
+
+@pytest.mark.slow
+def test_item5_cli_set_with_units():
+    """--set E_star=210GPa: converted to the declared SI unit (before: 'not a
+    valid formula'); a wrong dimension is bad input naming the unit."""
+    import contextlib
+    import io
+    from linecontact_sym import cli
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=1e-3", "--set", "R=5 mm", "E_star=210GPa",
+                         "--dps", "12"])
+    assert code == 0 and "32986722.8627" in out.getvalue() and "[N/m]" in out.getvalue()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=1e-3", "--set", "R=5 s", "E_star=1"])
+    assert code == 2 and "'s'" in err.getvalue() and "(R)" in err.getvalue()

@@ -32,7 +32,8 @@ from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_s
 from ..core.precision import workdps
 from ..core.errors import LineContactError
 from ..numeric.flamant import finite_at, flamant_arb, flamant_tanh_sinh, kernel_points, kernel_points_at, tanh_sinh
-from ..numeric.reference import ArbUnsupported, integrate
+from ..numeric.arb_compile import ArbUnsupported
+from ..numeric.reference import integrate
 
 #: working precision of the comparisons (digits)
 DPS = 45
@@ -200,7 +201,7 @@ def flamant_relative_displacement(p, a, xv, E, dps=DPS, breaks=(), with_error=Fa
     it, a SymPy pressure without a finite value at s = a goes to the one
     tanh-sinh Flamant routine
     (:func:`~linecontact_sym.numeric.flamant.flamant_tanh_sinh`: its last
-    part in s = a - d u^2, the radicands factored).  Otherwise (or ``p`` a
+    part in s = a - d u^q, the radicands factored).  Otherwise (or ``p`` a
     callable), tanh-sinh: s = a sin(phi) (removes the
     inverse-square-root edge singularity of flat-punch-like pressures),
     split at the logarithmic point s = x and at ``breaks`` (the profile's

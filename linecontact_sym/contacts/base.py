@@ -237,7 +237,7 @@ class Contact:
                 ok = True if is_array(r) else bool(r)
                 if is_array(r):
                     out.mark(~np.asarray(r, dtype=bool), f"{', '.join(map(str, conds))} fails")
-            except (TypeError, ValueError):  # a condition numpy cannot decide: exactly
+            except (TypeError, ValueError, OverflowError):  # a condition numpy cannot decide (or beyond float64): exactly
                 ok = holds(self.derivation(name).point_test, {known[k]: v for k, v in vals.items()}) if not any(
                     isinstance(v, np.ndarray) for v in vals.values()) else True
             if not ok:
@@ -317,7 +317,7 @@ class Contact:
         try:
             A = float(av)
             pv = [float(vals[n]) for n in names]
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):   # (beyond float64: the sign test is not run)
             return
         with np.errstate(all="ignore"):
             xs = A * np.arange(1, 25) / 24
@@ -508,7 +508,7 @@ def _checked_value(name, v, sym):
     """A value given by a user: a finite real number (exact where given
     exactly) or a NumPy array of them; positive where the symbol is."""
     if type(v) in (float, int):  # the common, fast case
-        if not math.isfinite(v):
+        if type(v) is float and not math.isfinite(v):     # (an int is finite; 10**400 has no float)
             raise DomainError(f"{name} = {v!r}: expected a finite real number")
         if _positive_required(name, sym) and not v > 0 and not (v == 0 and may_be_zero(name)):
             what = {"a": "the half-width a", "E_star": "the reduced modulus E*"}.get(name, name)
@@ -586,7 +586,7 @@ def check_domain_scalar(self, quantity: str, values: dict, plan=None) -> dict:
     if cond_fn is not None and known.issubset(vals.keys()):          # cond_names: the names of known
         try:
             ok = bool(cond_fn(*[float(vals[n]) for n in cond_names]))
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):     # (an int beyond float64: the exact check decides)
             ok = False
         if not ok:
             return self.check_domain(quantity, values)

@@ -86,15 +86,16 @@ def periodic_sampler(profile, geometry, domain: str = "any", extra=None):
             if sym not in vals:
                 vals[sym] = rational(rng.uniform(*profile.ranges.get(sym, PERIOD_RANGE)))
         vals[S.E_star] = rational(rng.uniform(*E_STAR_RANGE))
-        half = float(sp.N(geometry.period.xreplace(vals))) / 2
-        av = rational(half * rng.uniform(*PERIODIC_A_RANGE))
+        # exact multiples of the half period (a float of L/2 overflows for a period 10**400)
+        half = geometry.period.xreplace(vals) / 2
+        av = half * rational(rng.uniform(*PERIODIC_A_RANGE))
         if profile.rising_on(vals, av) is not None:
             return None
         vals[S.a] = av
         if domain == "inside":
-            vals[S.x] = rational(float(av) * rng.uniform(*X_RANGES["inside"]))
+            vals[S.x] = av * rational(rng.uniform(*X_RANGES["inside"]))
         elif domain == "outside":
-            vals[S.x] = rational(float(av) + (half - float(av)) * rng.uniform(0.05, 0.95))
+            vals[S.x] = av + (half - av) * rational(rng.uniform(0.05, 0.95))
         for sym, (lo, hi) in (extra or {}).items():
             vals[sym] = rational(rng.uniform(lo, hi))
         return vals

@@ -313,10 +313,14 @@ class Periodic(Geometry):
 
     def condition_from_kernel(self, cond):
         """A condition of a kernel result in x and a: the relations between s
-        and S alone (s < S, s > S) are those between x and a (sin is
-        increasing on [0, L/2]); the others are mapped by substitution."""
-        if isinstance(cond, sp.core.relational.Relational) and cond.free_symbols <= {S.x, S.a}:
+        and S alone (s < S, s > S, |s| < S) are those between x and a (sin is
+        increasing on [0, L/2]); the others (S < 1, a number or a parameter on
+        one side) are mapped by substitution."""
+        if isinstance(cond, sp.core.relational.Relational) and \
+                all(side in (S.x, S.a) or (isinstance(side, sp.Abs) and side.args[0] in (S.x, S.a))
+                    for side in (cond.lhs, cond.rhs)):
             return cond
+        # any other condition is one on s and S (the kernel's S < 1 is sin(pi a/L) < 1, not a < 1)
         return cond.xreplace({S.x: self.s(S.x), S.a: self.s(S.a)})
 
 

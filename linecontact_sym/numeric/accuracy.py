@@ -33,6 +33,22 @@ from ..core.precision import workdps
 __all__ = ["EPS", "AccuracyRecord", "condition_number", "condition_number_float", "audit", "expressions_agree"]
 
 EPS = float(np.finfo(float).eps)
+#: the magnitudes of the arguments (nonzero) and values at which a float64
+#: evaluation is trusted: a product of up to four such arguments, or their
+#: quotients, stays a normal float (|v| >= 2.2e-308), so no intermediate power
+#: under- or overflows and loses digits silently (pi a^2/(4 R) at a = 1e-160
+#: has a^2 = 1e-320, a subnormal with 3 digits); beyond, the mpmath path
+FLOAT64_SAFE = (1e-75, 1e75)
+#: the smallest normal float64: a value below it holds fewer than 53 bits
+FLOAT64_TINY = float(np.finfo(float).tiny)
+
+
+def float64_safe(vals, v) -> bool:
+    """Whether float64 at the arguments ``vals`` giving ``v`` is within its
+    range (:data:`FLOAT64_SAFE`; ``v`` a normal float, not 0: an exact zero is
+    confirmed by the mpmath path, an underflow is not silently 0)."""
+    lo, hi = FLOAT64_SAFE
+    return FLOAT64_TINY <= abs(v) < math.inf and all(v_ == 0 or lo <= abs(v_) <= hi for v_ in vals)
 
 
 @dataclass

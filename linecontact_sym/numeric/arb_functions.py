@@ -9,8 +9,8 @@ mpmath's own function wherever Arb cannot (a complex or non-finite argument,
 a ball too wide, an argument outside the domain handled here): the same
 number to the working precision as mpmath's (both correct to it), several to
 25 times faster.  The arguments and the result go through the reference
-integrator's one converter (:func:`~.reference.to_acb`,
-:func:`~.reference.mpf_of_arb`), exactly.
+integrator's one converter (:func:`~.arb_compile.to_acb`,
+:func:`~.arb_compile.mpf_of_arb`), exactly.
 """
 from __future__ import annotations
 
@@ -20,7 +20,7 @@ import flint
 import mpmath
 import sympy as sp
 
-from .reference import REAL, ArbUnsupported, compile_acb, mpf_of_arb, to_acb
+from .arb_compile import REAL, ArbUnsupported, compile_acb, mpf_of_arb, to_acb
 from .special import mp_elliptic_pi
 
 __all__ = ["MPMATH_ARB", "arb_lambdify", "lambdify_law", "SLOW_IN_MPMATH"]
@@ -116,7 +116,7 @@ def arb_lambdify(args, expr):
     """``expr`` (SymPy, real, in the symbols ``args``) as an mpmath function
     of ``args`` (mpf or int) evaluated in Arb ball arithmetic: the whole
     expression in one compiled pass (the reference integrator's compiler,
-    :func:`~.reference.compile_acb`, real mode) at 20 bits above mpmath's
+    :func:`~.arb_compile.compile_acb`, real mode) at 20 bits above mpmath's
     working precision, then (where the ball does not resolve it: a
     cancellation) once more at twice the precision plus 64 bits; the
     midpoint rounded to the working precision where the ball is finite, real

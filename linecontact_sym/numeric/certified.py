@@ -12,7 +12,7 @@ in ball arithmetic cancellation cannot produce a wrong result, only a wide
 ball, so the stable form just reaches the target at a lower precision.
 
 The translation from SymPy to Arb is the reference integrator's one
-compiler (:func:`~linecontact_sym.numeric.reference.compile_acb`, one
+compiler (:func:`~linecontact_sym.numeric.arb_compile.compile_acb`, one
 table of handlers), asked for the real function: complex balls whose
 functions give a non-finite ball beyond their real domain, as Arb's real
 functions do, and Arb's real asin, acos, atanh, acosh and lgamma where they
@@ -40,7 +40,7 @@ import mpmath
 
 from ..parsing import to_sympy
 from ..core.errors import LineContactError
-from .reference import REAL, ArbUnsupported, compile_acb, mpf_of_arb, to_acb
+from .arb_compile import REAL, ArbUnsupported, compile_acb, mpf_of_arb, to_acb
 
 
 class CertificationError(LineContactError):
@@ -50,7 +50,7 @@ class CertificationError(LineContactError):
 def to_arb(v):
     """An Arb ball containing the exact value of ``v`` at the current
     python-flint precision: every number goes through the one converter of
-    the reference integrator (:func:`~linecontact_sym.numeric.reference.to_acb`,
+    the reference integrator (:func:`~linecontact_sym.numeric.arb_compile.to_acb`,
     which uses the package's :func:`~linecontact_sym.core.conversion.number`):
     int, float (its binary value), Fraction, Decimal, decimal text, mpf, NumPy
     scalars and SymPy Rationals and Floats exactly; other SymPy numbers
@@ -73,9 +73,9 @@ def compile_arb(expr, args):
     symbols ``args``) at the current python-flint precision.
 
     The one SymPy-to-Arb compiler is the reference integrator's
-    (:func:`~linecontact_sym.numeric.reference.compile_acb`, with the
+    (:func:`~linecontact_sym.numeric.arb_compile.compile_acb`, with the
     package's stable primitives among its handlers); this asks it for the
-    real function (mode :data:`~linecontact_sym.numeric.reference.REAL`: a
+    real function (mode :data:`~linecontact_sym.numeric.arb_compile.REAL`: a
     ball reaching beyond a function's real domain gives a non-finite ball,
     as Arb's real functions do) and returns the real part of a result whose
     imaginary part contains 0 (a value that is not real:

@@ -36,6 +36,16 @@ picks the cheapest evaluation that meets it:
     Arb evaluates the integrand, its radius the error (a true bound), in
     place of two mpmath quadratures compared (an estimate, and several
     seconds with special-function integrands); the mpmath path otherwise.
+    ``certified=True`` takes the same enclosure for such a quantity (a
+    :class:`~.certified.CertificationError` where Arb cannot enclose it).
+    The enclosure is [mid - rad, mid + rad] exactly: its width is twice the
+    error the result states, at the precision asked.
+
+Float64 is taken only at normal values and arguments within
+:data:`~.accuracy.FLOAT64_SAFE` (1e-75 .. 1e75): an underflow to 0 or a
+subnormal intermediate (a^2 at a = 1e-160) is never a float64 result with a
+relative error; such points take the mpmath path (the series model: its
+terms in mpmath).
 
 The returned :class:`Evaluation` says which path was taken, with the error
 estimate (or the enclosure) and a note on why.
@@ -67,7 +77,7 @@ from ..core.conversion import number, to_mpf
 from ..core.errors import DomainError, LineContactError
 from ..core.printing import lambdify
 from ..method.derivation import values_by_name
-from .accuracy import EPS, condition_number_float
+from .accuracy import EPS, FLOAT64_SAFE, FLOAT64_TINY, condition_number_float, float64_safe
 from .cache import IdentityCache
 from .certified import CertificationError, arb_callable
 from .exports import (cancellation_probe, check_arguments, compile_plain_numpy, has_nested_integral, lambdify_mpmath,
@@ -205,8 +215,14 @@ class Evaluation:
         enc = f" in [{mpmath.nstr(self.enclosure[0], n + 2)}, {mpmath.nstr(self.enclosure[1], n + 2)}]" \
             if self.enclosure else ""
         return (f"{self.quantity} = {self._value_text()}{enc}{self._unit_text()}  via {self.path}  "
-                f"(error <= {float(self.error):.2e}, "
+                f"(error <= {_short(self.error)}, "
                 f"rel {self.rel_error:.1e}){': ' + self.note if self.note else ''}")
+
+
+def _short(e) -> str:
+    """An error in 3 digits, also where it is beyond the float64 range (an mpf 1e-616 is not 0)."""
+    f = float(e)
+    return f"{f:.2e}" if (f != 0 or e == 0) and math.isfinite(f) else mpmath.nstr(e, 3)
 
 
 # ----------------------------------------------------------------- helpers
@@ -220,7 +236,12 @@ _PLAIN = frozenset((float, int))
 
 
 def _as_float(v):
-    return float(v) if type(v) in (float, int) else float(to_mpf(v))
+    """A value as a float: +-inf where it is beyond the float range (an exact 10**400), which
+    :func:`~.accuracy.float64_safe` then refuses (the mpmath path takes the exact value)."""
+    try:
+        return float(v) if type(v) in (float, int) else float(to_mpf(v))
+    except OverflowError:
+        return math.inf if v > 0 else -math.inf
 
 
 _as_mpf = to_mpf      # the one converter (core.conversion), exact where the value is
@@ -559,15 +580,23 @@ def _float64_step(d, kit, quantity, vals, rtol, t0, notes):
     """``(Evaluation or None, kappa)``: the float64 path at the floats
     ``vals`` (``kit.names`` order) when its estimate meets ``rtol``, else
     None with the reason appended to ``notes``."""
+    if not float64_safe(vals, 1.0):
+        notes.append(f"an argument beyond the float64-safe magnitudes {FLOAT64_SAFE[0]:g}..{FLOAT64_SAFE[1]:g} "
+                     f"(an intermediate power could under- or overflow)")
+        return None, 1.0
     v, kappa, cancel, why_not = _float64_value(d, kit, kit.names, vals)
-    if v == v and v - v == 0:          # finite
+    if v == v and v - v == 0 and (v == 0 or abs(v) < FLOAT64_TINY):
+        # 0 or a subnormal: an underflow (or an exact zero, which the mpmath path confirms) is no
+        # float64 result with its relative error
+        notes.append(f"float64 gave {v!r} (below the smallest normal float {FLOAT64_TINY:.3g})")
+    elif v == v and v - v == 0:          # finite
         factor = FLOAT64_FACTOR if d.closed_form else FLOAT64_FACTOR_QUAD
         est = factor * EPS * max(1.0, kappa, cancel) * abs(v)
         qerr = 0.0
         if not d.closed_form:
             qerr = _quad_error(d, dict(zip(kit.names, vals)))
             est += qerr
-        if est <= rtol * abs(v) or (v == 0 and est == 0):
+        if est <= rtol * abs(v):
             return _float64_result(quantity, v, est, rtol, factor, kappa, cancel, qerr, t0), kappa
         notes.append(f"float64 estimate {est / abs(v) if v else est:.1e} > rtol")
     else:
@@ -647,7 +676,7 @@ def scalar_evaluator(contact, quantity: str, domain):
         vals = [v if v.__class__ is float else _as_float(v) for v in map(values.__getitem__, names)]
         if c0 is not None and 0 not in vals:
             v = value(vals)
-            if v:                       # finite and nonzero (at 0 kappa is infinite)
+            if v and float64_safe(vals, v):     # finite, nonzero (at 0 kappa is infinite), in range
                 est = c0 * abs(v)
                 if est <= rtol * abs(v) or (v == 0 and est == 0):
                     return _float64_result(quantity, v, est, rtol, FLOAT64_FACTOR, kappa0, 1.0, 0.0, t0)
@@ -745,7 +774,14 @@ def _evaluate_array(contact, d, quantity, names, values, rtol, model, t0, outsid
         est = factor * EPS * np.maximum(np.maximum(1.0, kappa), cancel) * np.abs(v)
         if not d.closed_form:
             est = est + _quad_error(d, dict(zip(names, arrays)))
-        ok = np.isfinite(v) & ((est <= rtol * np.abs(v)) | ((v == 0) & (est == 0))) if rtol >= 4 * EPS \
+        # float64 only at normal values and arguments within FLOAT64_SAFE (float64_safe, per point):
+        # an underflow to 0 or a subnormal is evaluated one by one (mpmath), never 0 with error 0
+        lo_, hi_ = FLOAT64_SAFE
+        safe = np.abs(v) >= FLOAT64_TINY
+        for arr in arrays:
+            m_ = np.abs(arr)
+            safe = safe & ((m_ == 0) | ((m_ >= lo_) & (m_ <= hi_)))
+        ok = np.isfinite(v) & (est <= rtol * np.abs(v)) & safe if rtol >= 4 * EPS \
             else np.zeros(v.shape, dtype=bool)
     if outside is not None:
         ok = ok | outside
@@ -789,16 +825,24 @@ def _try_model(m, quantity, values, rtol, t0):
             N, partial, bound, rb = choice
     if choice is None:
         return None
+    tv = None
     if rtol >= 1e-14:
-        # the N-term model in float64
+        # the N-term model in float64, where its terms are normal floats (an underflowed term
+        # is no float64 value with a relative error: then in mpmath)
         tv = floats[:N] if floats is not None else [float(t) for t in m.term_values(values, dps=17)[:N]]
+        if not all(FLOAT64_TINY <= abs(t) < math.inf for t in tv) or \
+                not float64_safe([_as_float(values[n]) for n in m.names], 1.0):
+            tv = None
+    if tv is not None:
         val = math.fsum(tv)
         err = float(bound) + 4 * N * EPS * abs(val) + growth
     else:
         digits = int(-math.log10(rtol)) + 5
         with workdps(digits):
             val = +mpmath.fsum(m.term_values(values, dps=digits)[:N])
-        err = bound
+        with workdps(digits):
+            # the tail bound and the rounding of the N terms at this precision
+            err = +(mpmath.mpf(bound) + (2 * N + 2) * mpmath.mpf(10)**(-digits) * abs(val))
     name = m.model_name(N)
     note = (_MODEL_NOTE, N, name, float(bound), rb)      # formatted when read
     return Evaluation(quantity, val, "model:" + name, err, rtol, note=note,
@@ -856,7 +900,7 @@ def _arb_quadrature(d, quantity, values, rtol, t0, notes):
     enclosure's radius, a true bound) when the enclosure is certified and
     meets ``rtol``; None otherwise (an integrand Arb cannot evaluate, the work
     limit): the mpmath path then runs."""
-    from .reference import combine, integrate, mpf_of_arb
+    from .reference import combine, integrate
     cache = _CACHE.of(d)
     if "arbq" not in cache:
         ints = sorted(d.expr.atoms(sp.Integral), key=sp.default_sort_key)
@@ -892,7 +936,10 @@ def _arb_quadrature(d, quantity, values, rtol, t0, notes):
     if not (r.certified and mpmath.isfinite(r.rad) and r.rad <= rtol * abs(r.mid)):
         return None
     mid, rad = r.mid, r.rad
-    lo, hi = (mpf_of_arb(e) for e in (r.ball.real.lower(), r.ball.real.upper()))   # exact end points
+    # the end points of the ball [mid - rad, mid + rad] exactly (as the closed forms' Enclosure gives
+    # them): the ball's lower()/upper() round to python-flint's working precision, 53 bits outside a
+    # workprec, an interval 1e-16 wide around a value stated to 1e-36
+    lo, hi = mpmath.fsub(mid, rad, exact=True), mpmath.fadd(mid, rad, exact=True)
     note = "; ".join(notes + [f"one python-flint Arb enclosure of the integral{'s' if len(ints) > 1 else ''} "
                               f"(rigorous for the inputs as given: floats are exact binary numbers)"])
     return Evaluation(quantity, mid, "arb", rad, rtol, certified=True, enclosure=(lo, hi),
@@ -954,7 +1001,16 @@ def _certified(d, quantity, values, rtol, dps, t0):
     if dps is None:
         dps = int(math.ceil(-math.log10(rtol))) if rtol else 15
     if not d.closed_form:
-        raise CertificationError(f"{quantity} has no closed form; certified evaluation needs one")
+        # the same Arb enclosure of the integrals that evaluate(rtol) takes beyond float64: what one path
+        # certifies, the other does not refuse
+        res = _arb_quadrature(d, quantity, values, 10.0 ** -dps, t0, [f"certified: {dps} digits asked"])
+        if res is None:
+            raise CertificationError(
+                f"{quantity} has no closed form and Arb does not enclose its integral here to {dps} digits "
+                f"(an integrand Arb cannot evaluate, a nested integral or the work limit {ARB_QUAD_LIMIT}); "
+                f"evaluate(..., rtol=...) gives the mpmath estimate")
+        res.rtol = rtol
+        return res
     syms = d.variables_all
     cache = _CACHE.of(d)
     if "arb" not in cache:

@@ -35,6 +35,7 @@ from ..core.codegen import compile_function
 from ..core.errors import LineContactError
 from ..core.lazy import lazy_module
 from ..core.printing import lambdify
+from .accuracy import FLOAT64_SAFE
 from .cache import IdentityCache
 from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, cancellation_probe,
                       cancellation_sums, compile_callable, stable_form)
@@ -283,7 +284,8 @@ def one_pass(bounds, names, f):
     inlined = _inlined_pass(checks, f)
     if inlined is not None:
         return inlined
-    n_names, inf, missing = len(names), math.inf, object()
+    n_names, missing = len(names), object()
+    lo, hi = FLOAT64_SAFE
     fail = (ValueError, ZeroDivisionError, OverflowError, TypeError)
 
     def value(values):
@@ -300,8 +302,9 @@ def one_pass(bounds, names, f):
                     v = float(v)
                 except OverflowError:
                     return None
-            # 0 is left to the full path: a bound 'nonnegative' is then 'positive', 'any' finite and nonzero
-            if not (0.0 < v < inf if positive else (v - v == 0.0 and v)):
+            # 0 is left to the full path: a bound 'nonnegative' is then 'positive', 'any' finite and nonzero;
+            # so are magnitudes beyond FLOAT64_SAFE (an intermediate power could under/overflow)
+            if not (lo <= v <= hi if positive else (v - v == 0.0 and lo <= abs(v) <= hi)):
                 return None
             vals.append(v)
         try:
@@ -314,8 +317,9 @@ def one_pass(bounds, names, f):
 
 def bound_checks(bounds, names):
     """(name, positive) per name: the bound test of :func:`inline_point`
-    ('positive' and 'nonnegative': 0 < v < inf, 0 being left to the full
-    path; 'any': finite and nonzero).  None where ``bounds`` is None or does
+    ('positive' and 'nonnegative': 1e-75 <= v <= 1e75, 0 and the magnitudes
+    beyond :data:`~.accuracy.FLOAT64_SAFE` being left to the full path; 'any':
+    the same on |v|).  None where ``bounds`` is None or does
     not cover ``names`` (no one pass)."""
     if bounds is None or not frozenset(names) <= bounds.keys():
         return None
@@ -361,7 +365,7 @@ except _lcs_fail:
     return FAIL
 """
 #: 'positive' and 'nonnegative' (0 is left to the full path), 'any' (finite and nonzero)
-_BOUND_TESTS = {True: "0.0 < ARG < _lcs_inf", False: "ARG - ARG == 0.0 and ARG"}
+_BOUND_TESTS = {True: "_lcs_lo <= ARG <= _lcs_hi", False: "ARG - ARG == 0.0 and _lcs_lo <= abs(ARG) <= _lcs_hi"}
 
 
 def _inlined_pass(checks, f):
@@ -430,7 +434,8 @@ def inline_point(checks, f, template: str, fail: str, space=None):
               and st.value.id == "CHECK")
     func.body[at:at + 1] = code
     namespace.update(space or {})
-    namespace.update(_lcs_n=len(checks), _lcs_inf=math.inf, _lcs_int_as_float=_int_as_float,
+    namespace.update(_lcs_n=len(checks), _lcs_lo=FLOAT64_SAFE[0], _lcs_hi=FLOAT64_SAFE[1],
+                     _lcs_int_as_float=_int_as_float,
                      _lcs_fail=(ValueError, ZeroDivisionError, OverflowError, TypeError))
     try:
         return compile_function(module, namespace, "_lcs_pass")

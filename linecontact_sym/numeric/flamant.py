@@ -35,8 +35,9 @@ from ..core.conversion import to_basic, to_mpf
 from ..core.errors import LineContactError
 from ..core.precision import workdps
 from ..core.quadrature import EndpointGuard, quad_dps
-from .reference import (ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral,
-                        substitute_end, value_at)
+from .arb_compile import ArbUnsupported, bound_acb
+from .endpoints import substitute_end, value_at
+from .reference import RefValue, estimate, integrate, lincomb, log_end_integral
 
 __all__ = ["flamant_arb", "flamant_displacement", "flamant_tanh_sinh", "tanh_sinh", "kernel_points", "kernel_points_at",
            "finite_at"]
@@ -88,18 +89,19 @@ def finite_at(p, s, v) -> bool:
         return False
 
 
-#: the point x, and the length d of a piece's last part (s = hi - d w^2)
+#: the point x, and the length d of a piece's last part (s = hi - d w^q)
 _X, _D = sp.Dummy("x", positive=True), sp.Dummy("d", positive=True)
 
 
 @functools.lru_cache(maxsize=64)
 def _edge_form(p, s, hi):
-    """p(s) ds on [hi - d, hi] in s = hi - d w^2 (:func:`~.reference.substitute_end`:
-    the pressure's radicands factored, so that a sqrt-type branch point at
-    the contact edge s = hi becomes holomorphic in w), symbolic, once per
-    pressure: (the form, w).  Oriented from hi: its integral over w in
+    """p(s) ds on [hi - d, hi] in s = hi - d w^q (:func:`~.endpoints.substitute_end`,
+    q from the pressure's exponent at the edge: 2 for a sqrt-type branch
+    point or an inverse square root; the pressure's radicands factored, so
+    that the edge s = hi becomes holomorphic in w), symbolic, once per
+    pressure: (the form, w, q).  Oriented from hi: its integral over w in
     [0, 1] is minus the piece's."""
-    return substitute_end(p, s, hi, -_D, 2)
+    return substitute_end(p, s, hi, -_D)
 
 
 @functools.lru_cache(maxsize=64)
@@ -107,8 +109,8 @@ def _end_substituted(p, g, s, hi):
     """p(s) g(s) ds on [hi - d, hi] as (a form in w over [0, 1], w):
     :func:`_edge_form` of p times the kernel's logarithms g as they are,
     the orientation turned.  Symbolic, once per form."""
-    q, w = _edge_form(p, s, hi)
-    return -q * g.xreplace({s: hi - _D * w**2}), w
+    f, w, q = _edge_form(p, s, hi)
+    return -f * g.xreplace({s: hi - _D * w**q}), w
 
 
 def _certified(r):
@@ -119,14 +121,14 @@ def _certified(r):
 
 def _log_terms(p, s, lo, hi, c, m, smooth, values, dps):
     """[(1, RefValue)] of int_lo^hi p(s) [m ln|s - c| + smooth(s)] ds, certified (or
-    :class:`~.reference.ArbUnsupported`): split at c (inside) and the
+    :class:`~.arb_compile.ArbUnsupported`): split at c (inside) and the
     middles (:func:`kernel_points`); the logarithm at a piece's end by
     :func:`~.reference.log_end_integral`, inside the piece's integrand
     elsewhere.  ``values`` None: p, lo, hi, c numbers but for s, and the
     integrator gets SymPy forms (its end substitutions apply); a dict: the
     parameters' numbers, and it gets the forms compiled once with the
     parameters and x (``_X``, at ``values[_X]``) as symbols, the last part of
-    a non-constant piece in s = hi - d u^2 (the contact edge's sqrt-type
+    a non-constant piece in s = hi - d u^q (the contact edge's sqrt-type
     branch point becomes holomorphic)."""
     lo_v, hi_v = value_at(lo, values), value_at(hi, values)
     inside = _is_true(lo_v < c) and _is_true(c < hi_v)
@@ -251,24 +253,23 @@ def tanh_sinh(g, s, lo, hi, inner, dps: int, edge: bool = True, real_part: bool 
     SymPy integrand (every parameter a number) whose pressure may have an
     inverse-square-root singularity at s = hi: split as
     :func:`kernel_points` (at ``inner`` and the middles), the last piece, with
-    ``edge``, in s = hi - d u^2 with the radicands factored (the u^2 they
-    vanish with leaves the root exactly, so no digits cancel in hi^2 - s^2,
-    as they do in hi sin(phi)); logarithmic points (s = 0, x, a break) are
+    ``edge``, in s = hi - d u^q (:func:`~.endpoints.substitute_end`: q from
+    the exponent at hi, 2 for an inverse square root) with the radicands
+    factored (the u^q they vanish with leaves the root exactly, so no digits
+    cancel in hi^2 - s^2, as they do in hi sin(phi)); logarithmic points (s = 0, x, a break) are
     piece ends, where tanh-sinh converges.  None where the integrand cannot
     be prepared or is complex on a piece (the caller's route runs);
     ``real_part``: the real part of a complex value is taken instead."""
     try:
         lo, hi = to_basic(lo), to_basic(hi)
         pts = kernel_points(lo, hi, [to_basic(b) for b in inner])
-        u = sp.Dummy("u", positive=True)
         pieces = []
         for a, b in zip(pts[:-1], pts[1:]):
             if edge and b == hi:
-                d = hi - a
-                h = sp.piecewise_fold(g.xreplace({s: hi - d * u**2}) * 2 * d * u)
-                h = h.replace(lambda z: z.is_Pow and z.exp.is_Rational and not z.exp.is_Integer and z.base.has(u),
-                              lambda z: sp.factor(z.base) ** z.exp)
-                pieces.append((sp.lambdify(u, h, "mpmath"), [sp.S.Zero, sp.S.One]))
+                # s = hi - (hi - a) u^q, oriented from hi (the form's integral is minus the piece's);
+                # mpmath evaluates point by point: no branch needs deciding on balls
+                h, u, _ = substitute_end(g, s, hi, a - hi, branches=False)
+                pieces.append((sp.lambdify(u, -h, "mpmath"), [sp.S.Zero, sp.S.One]))
             else:
                 pieces.append((sp.lambdify(s, g, "mpmath"), [a, b]))
     except (TypeError, ValueError, ZeroDivisionError, LineContactError):
@@ -294,7 +295,7 @@ def flamant_tanh_sinh(pieces, x, E, dps: int, breaks=(), real_part: bool = False
     """u_z(0) - u_z(x) (module docstring) by tanh-sinh, (value, error):
     ``pieces`` [(p, s, lo, hi)] with ``p`` SymPy in ``s`` (every parameter a
     number), the kernel ln|x^2/s^2 - 1| as it stands, each piece split at
-    x and ``breaks`` by :func:`tanh_sinh` (its last part in s = hi - d u^2
+    x and ``breaks`` by :func:`tanh_sinh` (its last part in s = hi - d u^q
     where p has no finite value at hi: the inverse square root of a contact
     edge).  None where a piece cannot be prepared (or, but with
     ``real_part``, is complex)."""

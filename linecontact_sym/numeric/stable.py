@@ -17,7 +17,7 @@ admissible points, 30-digit evaluation) before it is kept.
 
 Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCarlson`,
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
-:class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinToAtan`,
+:class:`SquareDifferences`, :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinToAtan`,
 :class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
 :class:`FactorDifferences`.  The special functions they produce
 (``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``) live in
@@ -37,12 +37,12 @@ from ..method.derivation import gammasimp_masked
 from .accuracy import expressions_agree
 from .special import gamma_ratio, hyp2f1c
 from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
-                          n_terms, nonneg, stable_sqrt, is_rational_in_symbols)
+                          n_terms, nonneg, square_differences, stable_sqrt, is_rational_in_symbols)
 from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
-           "GammaAbsorb", "GammaRatio", "AtanhToAsinh", "AcoshToAsinh", "AsinToAtan", "AcosToAtan",
+           "GammaAbsorb", "GammaRatio", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinToAtan", "AcosToAtan",
            "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
 
 
@@ -223,6 +223,24 @@ class AsinToAtan(StableRule):
         return plain
 
 
+class SquareDifferences(StableRule):
+    """sin^2 u - sin^2 v = sin(u - v) sin(u + v) (and the cos, sinh, cosh
+    pairs, and 1 - sin^2 v = cos^2 v: :func:`~.stable_base.square_differences`),
+    any pair of terms of a sum, u - v factored: exact where the difference
+    cancels (the periodic array's sqrt(sin^2(pi a/L) - sin^2(pi x/L)) at the
+    contact edge, the kernel of Koiter's punch)."""
+
+    name = "square-differences"
+    heads = (sp.sin, sp.cos, sp.sinh, sp.cosh)
+
+    def applies(self, expr) -> bool:
+        """A squared sin, cos, sinh or cosh occurs."""
+        return any(p.exp == 2 and isinstance(p.base, self.heads) for p in expr.atoms(sp.Pow))
+
+    def apply(self, expr):
+        return square_differences(expr)
+
+
 class AcosToAtan(StableRule):
     """acos(w) = atan(sqrt(1 - w**2) / w), w > 0, 1 - w**2 simplified
     symbolically: accurate as w -> 1 (acos(1 - d) ~ sqrt(2 d))."""
@@ -358,7 +376,8 @@ class FactorDifferences(StableRule):
 
 
 #: the rules in the order :func:`stabilize` applies them
-RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AtanhToAsinh(),
+RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), SquareDifferences(),
+         AtanhToAsinh(),
          AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(), HalfAngle(), FactorDifferences())
 
 

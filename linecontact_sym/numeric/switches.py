@@ -14,14 +14,19 @@ _CACHE = IdentityCache()
 
 def _switches(d):
     """(relation functions, names): lhs - rhs of every relation of a
-    Piecewise in the derivation's expression, as float64 functions of its
+    Piecewise in the derivation's expression and of its conditions, as float64 functions of its
     variables (and of the integration variables, for unevaluated integrals)."""
     cache = _CACHE.of(d)
     if "switch" not in cache:
         syms = list(d.variables_all)
         expr = stable_form(d).expr if d.closed_form else d.expr
         out = []
-        for rel in expr.atoms(sp.Rel):
+        # the expression's own switches, and the derivation's conditions (a <= L/2, x < a): a step
+        # across the domain's edge measures what lies beyond it (the periodic wedge's
+        # asinh(sin/|cos|) is even about a = L/2: a central difference across it gave kappa 19, not 2e8)
+        rels = set(expr.atoms(sp.Rel)) | {c for c in (d.conditions or ()) if isinstance(c, sp.Rel)
+                                          and c.free_symbols <= set(syms)}
+        for rel in sorted(rels, key=sp.default_sort_key):
             g = rel.lhs - rel.rhs
             ivars = [v for v in g.free_symbols if v not in syms]
             if len(ivars) > 1:

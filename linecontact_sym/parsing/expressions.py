@@ -48,7 +48,7 @@ from ..core.errors import ClaimError, DomainError, LineContactError
 #: integration variables of formulas people write (the paper's a-tilde); the
 #: engine's own are Dummies (:mod:`linecontact_sym.method.transforms`), so a
 #: parameter named t or s in a profile never meets them
-t = sp.Symbol("t", positive=True)
+t = S.t     # the time symbol too (core.symbols): a bound variable never meets it
 s = sp.Symbol("s", positive=True)
 
 #: the standard symbols every formula may use

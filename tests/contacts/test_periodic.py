@@ -372,3 +372,95 @@ def test_claims_of_westergaard_and_johnson(tmp_path):
     f.write_text(wrong)
     res = check_file(f, budget=300, only={"Westergaard (1939): pressure"})
     assert [r.status for r in res.results] == [FAILS]
+
+
+# ---------------------------------------------------------------- at the limits (issue 42, classes 9 and 10)
+@pytest.mark.parametrize("profile, period", [
+    (h * (1 - sp.cos(4 * sp.pi * x / L)), L),           # two troughs per period: a negative gap at the second
+    (1 - sp.cos(2 * sp.pi * x), 1000),                  # a profile of period 1 declared with period 1000
+    (R - sp.sqrt(R**2 - x**2), 4 * R),                  # not real beyond x = R = L/4
+])
+def test_one_compact_contact_per_period_or_a_clear_refusal(profile, period):
+    import time
+    t0 = time.perf_counter()
+    with pytest.raises(lcs.InadmissibleProfileError, match="half period"):
+        lcs.LineContact(profile, period=period)
+    assert time.perf_counter() - t0 < 10          # the period-1000 case ran past 10 minutes
+
+
+def test_half_width_at_the_full_contact_load_is_half_the_period(contacts):
+    c = contacts["sinusoid"]
+    P = c.evaluate_at("force", a=sp.Rational(1, 2), h=1, L=1, E_star=1)
+    assert c.half_width(P, h=1, L=1, E_star=1) == mpmath.mpf(1) / 2
+    # and just below it, Westergaard's a = (L/pi) asin(sqrt(P/(pi E* h))) recomputed here
+    with mpmath.workdps(30):
+        Pb = mpmath.pi * (1 - mpmath.mpf(10)**-12)
+        ref = mpmath.asin(mpmath.sqrt(Pb / mpmath.pi)) / mpmath.pi
+        assert _agree(c.half_width(sp.Float(Pb, 30), h=1, L=1, E_star=1), ref) >= 12
+
+
+def test_full_contact_at_holds_the_digits_its_record_states(contacts):
+    """full_contact_at(dps=30) returned a 53-bit number with 'digits = 30': checked against
+    Johnson's equation (own findroot at 50 digits), alpha = 0.5."""
+    ad = contacts["sinusoid"].adhesive(gam)
+    # called at mpmath's default precision, as a user does
+    fc = ad.full_contact_at(dps=30, h=1, L=1, E_star=1, gamma=sp.Rational(1, 8) * sp.pi**2)
+    assert fc.digits >= 30 and fc.force._mpf_[3] >= 100          # the mantissa holds 30 digits
+    with mpmath.workdps(50):
+        al = mpmath.mpf(1) / 2
+        f, df = _johnson(al)
+        u_fc = mpmath.findroot(df, 1.2)
+        assert _agree(fc.force, mpmath.pi * f(u_fc)) >= 29
+
+
+@pytest.mark.slow
+def test_weak_adhesion_pull_off_below_the_scan_and_snap_next_to_full_contact(contacts):
+    """gamma = 1e-40 (h = L = E* = 1): the pull-off at a ~ 3e-15 (the scan started at 1e-12: 'no
+    pull-off') and the snap into full contact 1.3e-9 below L/2 at about pi E* h (was 0.0, 'full
+    contact at zero load'), against Johnson's equation recomputed here (alpha^2 = 2 gamma/pi^2)."""
+    ad = contacts["sinusoid"].adhesive(gam)
+    g = sp.Float("1e-40", 40)
+    with mpmath.workdps(60):
+        al = mpmath.sqrt(2 * mpmath.mpf("1e-40")) / mpmath.pi
+        f, df = _johnson(al)
+        u_po = mpmath.findroot(df, (al / 4)**(mpmath.mpf(2) / 3))      # 2u ~ alpha/(2 sqrt(u)) at small u
+        u_fc = mpmath.findroot(df, mpmath.pi / 2 - mpmath.mpf("4e-9"))
+        po = ad.pull_off_at(dps=20, h=1, L=1, E_star=1, gamma=g)
+        assert _agree(po.force, mpmath.pi * f(u_po)) >= 18 and _agree(po.half_width, u_po / mpmath.pi) >= 15
+        fc = ad.full_contact_at(dps=20, h=1, L=1, E_star=1, gamma=g)
+        assert fc.kind == "stationary" and not fc.at_zero_load
+        assert _agree(fc.force, mpmath.pi * f(u_fc)) >= 20
+
+
+def test_no_adhesion_closes_the_array_at_the_full_contact_load(contacts):
+    """gamma = 0 at the point: P(a) = pi E* h sin^2(pi a/L) rises to P* = pi E* h at a = L/2
+    (was the internal exception Outside)."""
+    fc = contacts["sinusoid"].adhesive(gam).full_contact_at(dps=20, h=1, L=1, E_star=1, gamma=0)
+    assert fc.kind == "end" and fc.half_width == mpmath.mpf(1) / 2
+    with mpmath.workdps(30):
+        assert _agree(fc.force, +mpmath.pi) >= 20
+
+
+def test_kernel_condition_is_mapped_not_copied(contacts):
+    """The wedge array's kernel holds for S = sin(pi a/L) < 1; carried over as a < 1 it refused
+    every a in [1, L/2).  P(a) at a = 1.5, L = 4 against Eq. (10*) of the kernel twin
+    F(s) = tan(theta) (L/pi) asin(s), quadrature here: Q(S) = E* int_0^S s F'(s)/sqrt(S^2 - s^2) ds."""
+    c = contacts["wedge"]
+    assert sp.Lt(a, 1) not in c.derivation("force").conditions
+    r = c.evaluate("force", a=1.5, theta=0.2, L=4, E_star=1, rtol=1e-12)
+    with mpmath.workdps(30):
+        S = mpmath.sin(mpmath.pi * mpmath.mpf(1.5) / 4)
+        k = mpmath.tan(mpmath.mpf(0.2)) * 4 / mpmath.pi
+        # s = S sin(phi): Q = E* k int_0^(pi/2) S sin(phi) / sqrt(1 - S^2 sin^2(phi)) dphi
+        Q = k * mpmath.quad(lambda p: S * mpmath.sin(p) / mpmath.sqrt(1 - S**2 * mpmath.sin(p)**2), [0, mpmath.pi / 2])
+        assert _agree(r.value, Q) >= 13
+
+
+def test_an_exact_period_beyond_float64():
+    """period 10**400 (was OverflowError): Westergaard's P = pi E* h sin^2(pi a/L), h = 1 (f = 2 sin^2)."""
+    c = lcs.LineContact(1 - sp.cos(2 * sp.pi * x / 10**400), period=10**400)
+    with mpmath.workdps(30):
+        ref = mpmath.pi * mpmath.sin(mpmath.pi / 10)**2
+        assert _agree(c.evaluate_at("force", a=10**399, E_star=1), ref) >= 25
+        assert _agree(c.evaluate("force", a=10**399, E_star=1, rtol=1e-15).value, ref) >= 15
+        assert _agree(c.half_width(sp.Float(ref, 30), E_star=1), mpmath.mpf(10)**399) >= 20

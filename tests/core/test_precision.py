@@ -18,6 +18,7 @@ thread does not hold the lock.  Before the fix it records the nsimplify of
 from __future__ import annotations
 
 import itertools
+import sys
 import threading
 
 import mpmath
@@ -25,7 +26,9 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
+from independent_refs import parabola_force
 from linecontact_sym.core import precision
+from linecontact_sym.core.precision import workdps
 
 _fresh = itertools.count(1)
 
@@ -106,3 +109,60 @@ def test_first_derivations_in_threads_leave_the_precision(unlocked_changes):
         for q, v in values.items():
             assert abs(mp.mpf(v) - exact) <= abs(exact) * mp.mpf(10)**-28, (q, v, exact)
     assert unlocked_changes == []
+
+
+def test_threads_do_not_mix_precisions():
+    """Four threads evaluating at 50 and 20 digits (evaluate_at, the mpmath
+    export, evaluate's mpmath path): each result has the digits it asked for
+    and mpmath's global precision is unchanged afterwards (before: dps-50
+    results with 16-22 digits, mp.dps left at 50 or 20)."""
+    c = lcs.parabola()
+    fns = {d: c.to_numeric("force", backend="mpmath", dps=d) for d in (50, 20)}
+    before = mpmath.mp.dps
+    errors, results = [], []
+
+    def work(dps, k):
+        try:
+            for i in range(40):
+                a = f"0.{3 + i + k}1"
+                ref = parabola_force(a, "1.3", "2.1", dps)
+                got = (c.evaluate_at("force", dps=dps, a=a, R="1.3", E_star="2.1") if i % 3 == 0 else
+                       fns[dps](a=a, R="1.3", E_star="2.1") if i % 3 == 1 else
+                       c.evaluate("force", rtol=10.0 ** -dps, model=False, a=a, R="1.3", E_star="2.1").value)
+                with workdps(dps + 10):     # the package's locked helper: this runs in threads too
+                    err = abs(mpmath.mpf(got) / ref - 1)
+                    results.append((dps, i % 3, float(-mpmath.log10(err + mpmath.mpf(10) ** (-dps - 5)))))
+        except Exception as exc:  # noqa: BLE001 - reported below
+            errors.append(exc)
+    threads = [threading.Thread(target=work, args=(d, k)) for k, d in enumerate((50, 20, 50, 20))]
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e-6)           # switch threads often: interleave the precision changes
+    try:
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert not errors, errors
+    assert mpmath.mp.dps == before
+    assert len(results) == 160
+    low = [r for r in results if r[2] < r[0] - 2]
+    assert not low, low[:5]
+
+
+def test_no_bare_mpmath_precision_changes():
+    """Every precision change of the package goes through the locked
+    helpers of core.precision (doctests excepted)."""
+    import pathlib
+    import re
+    root = pathlib.Path(lcs.__file__).parent
+    bad = []
+    for p in root.rglob("*.py"):
+        if p.name == "precision.py":
+            continue
+        for n, line in enumerate(p.read_text().splitlines(), 1):
+            if re.search(r"mpmath\.(workdps|workprec|extradps)\(|mp\.(dps|prec)\s*=[^=]", line) \
+                    and ">>>" not in line and "..." not in line.lstrip()[:3]:
+                bad.append(f"{p.relative_to(root)}:{n}: {line.strip()}")
+    assert not bad, "\n".join(bad)

@@ -37,7 +37,7 @@ def test_piecewise_with_a_bound_parameter_is_decided_on_the_balls():
     tuple beside the variable's) whose Piecewise condition holds the
     parameter: the real parts taken for the condition keep that tuple (it
     raised AttributeError), and the value is the exact one."""
-    from linecontact_sym.numeric.reference import bound_acb
+    from linecontact_sym.numeric.arb_compile import bound_acb
     b = sp.Symbol("b", positive=True)
     third = sp.Rational(1, 3)
     f = bound_acb(sp.Piecewise((b * t, t < b), (t**2, True)), t, {b: third})
@@ -208,7 +208,7 @@ def test_arcs_on_complex_balls_are_enclosed_by_the_mean_value_form():
     with Arb's balls alone) to the same digits, its enclosure holding
     mpmath's value."""
     import flint
-    from linecontact_sym.numeric.reference import compile_acb
+    from linecontact_sym.numeric.arb_compile import compile_acb
     with flint.ctx.workprec(180), mpmath.workdps(50):
         arcs = ((0.574, 0.0088, 0.0038), (-0.3, 0.2, 0.1), (0.8, 0.04, 0.02))
         for fn, mfn, balls, cut in ((sp.asin, mpmath.asin, arcs, (0.97, 0.05, 0.01)),
@@ -262,7 +262,8 @@ def test_exact_cylinder_gap_integral_certified_with_few_evaluations():
     mpmath's value and not one 1e-35 off, and with the complex-ball bound
     next to s = 0 Arb needs about a third of the evaluations it took when it
     could only bisect towards 0 on real balls (about 3,300)."""
-    from linecontact_sym.numeric.reference import compile_acb, quotient_bound
+    from linecontact_sym.numeric.arb_compile import compile_acb
+    from linecontact_sym.numeric.reference import quotient_bound
     R_, A, X = sp.Rational(1962, 1000), sp.Rational(7171, 10000), sp.Rational(1624, 1000)
     P = R_ * (sp.elliptic_k(t**2 / R_**2) - sp.elliptic_e(t**2 / R_**2))     # elliptic_k(m): m = k^2
     root = sp.sqrt(X**2 - t**2)
@@ -322,12 +323,12 @@ def test_an_integral_with_parameters_makes_its_log_end_forms_once_and_encloses_t
     (1 + t) ln|t - b| is split symbolically once (b a symbol), bound to each
     point's number; each enclosure holds the integral by its antiderivative
     in u = t - b, F(u) = (1 + b)(u ln|u| - u) + u^2 ln|u|/2 - u^2/4."""
-    from linecontact_sym.numeric import reference as R
+    from linecontact_sym.numeric import endpoints
     t, b = sp.Dummy("t"), sp.Symbol("b", positive=True)
     f = (1 + t) * sp.log(sp.Abs(t - b))
-    R._FORMS.clear()
+    endpoints._FORMS.clear()
     for bv in (sp.Rational(1, 3), sp.Rational(3, 5)):
-        r = R.integrate(f, t, [0, b / 2, b, (b + 1) / 2, 1], 40, values={b: bv})
+        r = integrate(f, t, [0, b / 2, b, (b + 1) / 2, 1], 40, values={b: bv})
         with mpmath.workdps(60):
             B = mpmath.mpf(bv.p) / bv.q
 
@@ -336,7 +337,7 @@ def test_an_integral_with_parameters_makes_its_log_end_forms_once_and_encloses_t
             assert r.method == "arb" and r.contains(F(1 - B) - F(-B)) and r.digits > 40
     # one form for both sides of t = b (the half piece's signed length a
     # symbol too), made at the first point, used at the second
-    assert [k[0] for k in R._FORMS] == ["log"]
+    assert [k[0] for k in endpoints._FORMS] == ["log"]
 
 
 def test_flamant_arb_never_certifies_a_displacement_without_its_whole_u_z0(monkeypatch):

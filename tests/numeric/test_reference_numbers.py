@@ -6,7 +6,8 @@ import mpmath
 import pytest
 import sympy as sp
 
-from linecontact_sym.numeric.reference import ARB, MPMATH, RefValue, compile_acb, integrate, lincomb, to_acb
+from linecontact_sym.numeric.arb_compile import compile_acb, to_acb
+from linecontact_sym.numeric.reference import ARB, MPMATH, RefValue, integrate, lincomb
 
 t = sp.Dummy("t")
 

@@ -1,5 +1,7 @@
 """The whitelisted formula parser: what it accepts, what it refuses, and how
 it says so."""
+import time
+
 import pytest
 import sympy as sp
 
@@ -127,3 +129,42 @@ def test_numbers_and_assignments():
         parse_assignments(["R"])
     with pytest.raises(ClaimError, match="expected a number"):
         parse_number("x + 1")
+
+
+@pytest.mark.parametrize("text,what", [
+    ("gamma(10**7)", "gamma"), ("gamma(10**30)", "gamma"), ("binomial(10**12, 10**6)", "binomial"),
+    ("sqrt(4)**(10**10)", "exponent"), ("x**(10**10)", "exponent"),
+    ("Derivative(sin(x), (x, 10**9))", "derivative order"),
+    ("sin(" * 150 + "x" + ")" * 150, "nested"), ("-" * 200 + "x", "nested"),
+    ("2**(2**(2**10))", "too large"),
+])
+def test_parser_bounds_sizes_before_building(text, what):
+    t0 = time.perf_counter()
+    with pytest.raises(ClaimError, match=what):
+        lcs.parse_expr(text)
+    assert time.perf_counter() - t0 < 2.0
+
+
+def test_long_flat_sums_are_not_nesting():
+    assert lcs.parse_expr("x" + "+x" * 390) == 391 * lcs.x
+    assert lcs.parse_expr("x^2/(2*R)") == lcs.x**2 / (2 * lcs.R)
+    assert lcs.parse_expr("0.1*x") == lcs.x / 10
+
+
+@pytest.mark.parametrize("text", ["gamma(gamma(20))", "binomial(gamma(30), 3)", "Derivative(sin(x), x, 10**9)"])
+def test_parser_bounds_nested_and_bare_orders(text):
+    from linecontact_sym.parsing import parse_expr
+    with pytest.raises(lcs.ClaimError, match="astronomically|derivative order"):
+        parse_expr(text)
+
+
+def test_parser_values_and_lists():
+    from linecontact_sym.parsing import parse_expr, parse_number_list, to_sympy
+    assert parse_expr("Derivative(sin(x), x, 2)") == sp.Derivative(sp.sin(lcs.x), (lcs.x, 2))
+    with pytest.raises(lcs.ClaimError, match="finite"):
+        to_sympy(float("nan"))
+    with pytest.raises(lcs.ClaimError, match="not an integer"):
+        parse_number_list("1:2:abc")
+    with pytest.raises(lcs.ClaimError, match="no value"):
+        parse_number_list("")
+    assert parse_number_list("0.1:0.3:3") == [sp.Rational(1, 10), sp.Rational(1, 5), sp.Rational(3, 10)]

@@ -81,17 +81,23 @@ def _float_P(quad, P0f):
 def _parabolic_polish(P, A, h, steps: int = 5):
     """Successive parabolic interpolation of a smooth minimum from a location
     ``A`` known to about ``h``: each step fits P at A - h, A, A + h and moves
-    to the vertex; h becomes the size of the move (quadratic convergence),
+    to the vertex; h becomes the size of the move (quadratic convergence;
+    ``steps`` at least, up to 8 times as many while the moves stay large),
     but not below 10**(-dps/3) A, where rounding in P (10**-dps) starts to
     move the vertex: the location ends near 10**(-2 dps/3)."""
-    for _ in range(steps):
+    for k in range(8 * steps):
         pm, p0, pp = P(A - h), P(A), P(A + h)
         curv = pp - 2 * p0 + pm
         if not curv > 0:
             raise VerificationError(f"P(a) is not convex near its grid minimum a = {mpmath.nstr(A, 12)}")
         step = h * (pm - pp) / (2 * curv)
         A = A + step
-        h = max(abs(step), A * mpmath.mpf(10)**(-(mpmath.mp.dps // 3)))
+        floor = A * mpmath.mpf(10)**(-(mpmath.mp.dps // 3))
+        h = max(abs(step), floor)
+        # at least ``steps``; more while the moves are still large (a start the float64 grid
+        # could not resolve: a flat maximum next to full contact)
+        if k + 1 >= steps and abs(step) <= 10 * floor:
+            break
     return A
 
 
@@ -172,7 +178,35 @@ def _grid(law):
         pts.append((A, pa))
     if len(pts) < 3:
         raise NoPullOffError("the quadrature force law is real and rising at fewer than 3 grid points")
-    return quad, Pf, pts, cut
+    return quad, Pf, _below_grid(quad, Pf, pts), cut
+
+
+def _below_grid(quad, Pf, pts):
+    """Where P(0+) = 0 and P rises at the grid's first point, a weak adhesion
+    may hide its minimum below the grid (JKR's moves to a ~ gamma^(1/3): at
+    gamma = 1e-40 on a sinusoid array a = 1.6e-14 L, P > 0 from 1e-12 L on):
+    points are added in eighth decades downwards while P rises towards the
+    grid (positive: until it turns negative; negative: until it turns back up
+    towards P(0+) = 0), at most 400 decades."""
+    if getattr(quad, "P_zero", None) is not None or quad.inactive or not pts[1][1] > pts[0][1]:
+        return pts
+    A, below, last = pts[0][0], [], pts[0][1]
+    step = 10.0**(-1 / 8)
+    for _ in range(8 * 400):
+        A *= step
+        try:
+            pa = Pf(A)
+        except (Outside, ValueError, ZeroDivisionError, OverflowError):
+            break
+        if not math.isfinite(pa):
+            break
+        below.append((A, pa))
+        if pa > last:                   # P rises again going down: the minimum is bracketed
+            break
+        last = pa
+    else:
+        return pts
+    return sorted(below) + pts if below and below[-1][1] > min(p for _, p in below) else pts
 
 
 def _first_local_minimum(pts):
@@ -197,9 +231,19 @@ def maximum_by_grid(law, dps: int) -> PullOff:
         raise VerificationError("P(a) has a minimum but no maximum after it on the grid")
     k = tops[0]
     lo, hi = pts[k - 1][0], pts[k + 1][0]
-    A = float(golden_minimum(lambda v: -Pf(v), lo, hi, tol=hi * 1e-7))
+    A = float(golden_minimum(lambda v: -Pf(v), lo, hi, tol=(hi - lo) * 1e-7))
     with workdps(3 * dps // 2 + GUARD):
-        A = _parabolic_polish(lambda v: -quad.P(v), mpmath.mpf(A), A * mpmath.mpf("1e-6"))
+        # the polish's first step within the bracket: next to full contact (a weak adhesion's maximum
+        # 1e-8 L below L/2) a step of 1e-6 a would leave the law's domain
+        h = min(A * mpmath.mpf("1e-6"), (mpmath.mpf(hi) - mpmath.mpf(lo)) / 4)
+        top = mpmath.mpf(quad.geometry.mp_a_max(quad.geometry_values))
+        if top - A < A:
+            # nearer the end than the origin: polished in the distance d = top - a, whose digits
+            # (not a's) fix the maximum there (its floor of rounding is relative to d)
+            d = _parabolic_polish(lambda v: -quad.P(top - v), top - A, h)
+            A = top - d
+        else:
+            A = _parabolic_polish(lambda v: -quad.P(v), mpmath.mpf(A), h)
         Pm = quad.P(A)
         return PullOff(+Pm, -Pm, +A, "stationary", None, (), "dense float64 grid + golden section + parabolic "
                                                              "polish of -P on the quadrature law")

@@ -95,6 +95,11 @@ class AdhesiveContact(ContactOn):
     half_width = Quantity("a(P)", "", "equilibrium half-widths at the load P, stable branch first",
                           arguments=("P",), method=True, latex="a(P)", unit="m")
 
+    def viscoelastic(self, material):
+        """Refused: adhesion is outside the Lee-Radok correspondence (a package error)."""
+        from ..viscoelastic.contact import ViscoelasticLineContact
+        return ViscoelasticLineContact(self, material)
+
     def __init__(self, contact, law: CohesiveLaw, values=None):
         if not isinstance(law, CohesiveLaw):
             raise DomainError(f"an adhesive contact needs a CohesiveLaw, got {law!r}")

@@ -277,6 +277,8 @@ class JKR(CohesiveLaw):
         E = sp.sympify(values[S.E_star], strict=True)
         if g < 0:
             raise DomainError(f"the work of adhesion must be >= 0, got {g}")
+        # no adhesion at the value given (gamma = 0 at the point, not only a law built with 0)
+        inactive = self.inactive or (self.inactive_reason if g == 0 else False)
 
         def build(b):
             P0, dP0 = b.P, b.dP
@@ -290,7 +292,7 @@ class JKR(CohesiveLaw):
                 return b.on_top(lambda A: P0(A) - B1() * mpmath.sqrt(A),
                                 lambda A: dP0(A) - B1() / (2 * mpmath.sqrt(A)),
                                 expr=expr, float_P=lambda P0f: (lambda A: P0f(A) - b1f * math.sqrt(float(A))),
-                                inactive=self.inactive, monotone_term=True)
+                                inactive=inactive, monotone_term=True)
             # another geometry: Phat = B1 sqrt(S/S') (flat_punch_force), S/S' the geometry's punch ratio
             expr = None if b.expr is None else b.expr - flat_punch_force(g, E_star=E, geometry=geo).xreplace(gv)
             ratio_f = geo.float_punch_ratio(gv)
@@ -303,7 +305,7 @@ class JKR(CohesiveLaw):
                 r, dr = geo.mp_punch_ratio(A, gv)
                 return dP0(A) - B1() * dr / (2 * mpmath.sqrt(r))
             return b.on_top(P, dP, expr=expr, float_P=lambda P0f: (lambda A: P0f(A) - b1f * math.sqrt(ratio_f(A))),
-                            inactive=self.inactive, monotone_term=False)
+                            inactive=inactive, monotone_term=False)
         return on_base(base, build)
 
     # ----------------------------------------------------------- closed forms

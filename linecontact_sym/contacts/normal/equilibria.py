@@ -632,19 +632,21 @@ def _scanned_landscape(law, lo, hi, end, notes) -> Landscape:
 MAX_DECADES = 400
 
 
-def descent(law, lo, dps: int):
+def descent(law, lo, dps: int, scale=None):
     """Below the landscape's lower end ``lo``, for a law whose limit P(0+) is
     not 0 (``law.P_zero``, Maugis-Dugdale's -2 sigma_0 c0): follow dP/da down
     in quarter decades; a sign change - (below) to + (above) brackets a
     minimum; stop where a |dP/da| < 10**-(dps + 6) |P(0+)| (what P can still
     change below).  Returns (brackets, infimum, a_end): ``infimum`` when dP/da
     is still positive there (P decreases to P(0+) as a -> 0+, approached, not
-    attained).  The scale of a 'decade' search is the law's own: no minimum
+    attained).  ``scale``: the load that sets the tolerance in place of
+    |P(0+)| (a law with P(0+) = 0, already negative and rising at ``lo``: its
+    minimum lies below).  The scale of a 'decade' search is the law's own: no minimum
     hides between grid points below a quarter decade, since the minima of a
     law on top of a smooth P0 are separated by more (a law with finer
     structure near a = 0 needs a finer step)."""
     with workdps(20):
-        Pz = abs(law.P_zero())
+        Pz = abs(law.P_zero()) if scale is None else abs(scale)
         step = mpmath.mpf(10)**(-mpmath.mpf(1) / 4)
         tol = Pz * mpmath.mpf(10)**-(dps + 6)
         prev = (lo, law.dP(lo))
@@ -659,6 +661,30 @@ def descent(law, lo, dps: int):
             if A * abs(d) <= tol:
                 return brackets, d > 0, A
         return brackets, False, prev[0]
+
+
+def _negative_below(law, lo):
+    """(A, P(A)) with P(A) < 0 < dP/da(A) at or below the scan's start ``lo``
+    of a law with P(0+) = 0 whose P rises there, or (lo, None): followed down
+    in quarter decades while P >= 0 and rising (at most :data:`MAX_DECADES`).
+    An adhesive term ~ sqrt(a) outgrows P0 ~ a^2 as a -> 0+: a weak adhesion
+    (JKR at gamma = 1e-40 on a sinusoid array) has its negative minimum far
+    below the scan's start, where P is already positive."""
+    with workdps(20):
+        A = to_mpf(lo)
+        P, d = law.P(A), law.dP(A)
+        if not d > 0 or getattr(law, "inactive", False):
+            return lo, None
+        step = mpmath.mpf(10)**(-mpmath.mpf(1) / 4)
+        for _ in range(4 * MAX_DECADES):
+            if P < 0:
+                return A, P
+            if not d > 0:
+                return lo, None
+            _check_deadline("the search for a negative P(a) below the scan")
+            A = A * step
+            P, d = law.P(A), law.dP(A)
+        return lo, None
 
 
 # ---------------------------------------------------------------- minimum (method A)
@@ -694,6 +720,14 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
         brackets, infimum, a_end = descent(scan_law, land.lo, dps)
         below = ([Extremum(mpmath.sqrt(l * r), None, "stationary", True, (l, r)) for l, r in brackets],
                  infimum, a_end)
+    else:
+        A_lo, P_lo = _negative_below(scan_law, land.lo)
+        if P_lo is not None:
+            # P(0+) = 0 and P negative and rising at A_lo: P fell below it, a minimum lies below the
+            # scan's range (a weak adhesion: JKR's moves to a ~ gamma^(1/3))
+            brackets, _, a_end = descent(scan_law, A_lo, dps, scale=P_lo)
+            below = ([Extremum(mpmath.sqrt(l * r), None, "stationary", True, (l, r)) for l, r in brackets],
+                     False, a_end)
     with workdps(dps + GUARD):
         mins = [_refine(law, e, dps) for e in land.minima + (tuple(below[0]) if below else ())]
         if below is not None and below[1]:
@@ -810,8 +844,21 @@ def half_width_at(law, load, dps: int = 30):
     roots = [a for a, st in equilibria(law, load, dps) if st]
     if not roots:
         lo, hi, end, note = admissible_range(law)
-        with workdps(20):
+        with workdps(dps + 10):
             top = law.P(hi)
+            # a range that ends where the geometry closes the contact (a periodic array at a = L/2:
+            # full contact) holds its end load, and every load beyond it, at that end: the load
+            # evaluate_at(a=L/2) returns answers L/2 (the roots above are interior crossings)
+            top_a = law.geometry.mp_a_max(getattr(law, "geometry_values", {})) if law.geometry.closes_at_end \
+                else mpmath.inf
+            # (the range ends there as the law's domain, or where dP0/da = 0 rounds negative at the crest)
+            if mpmath.isfinite(top_a) and hi >= top_a * (1 - mpmath.mpf(10)**-12):
+                try:
+                    full = law.P(top_a)           # the load of full contact, at the end itself
+                except (ValueError, ZeroDivisionError):
+                    full = top
+                if mpmath.isfinite(full) and to_mpf(load) >= full * (1 - mpmath.mpf(10)**(-dps + 3)):
+                    return +top_a
         raise DomainError(f"no half-width found for load {load}: the largest load of the admissible range "
                           f"is P({mpmath.nstr(hi, 8)}) = {mpmath.nstr(top, 8)}"
                           + (f" ({note})" if note else f" ({'domain end' if end == 'domain' else 'search end'})"))

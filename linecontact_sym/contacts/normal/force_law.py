@@ -333,9 +333,15 @@ class ForceLaw:
 
     @property
     def scale(self):
-        """A length scale for scans: the geometric mean of the breakpoints, or 1."""
+        """A length scale for scans: the geometric mean of the breakpoints, else
+        the largest half-width where the geometry has one (a periodic array:
+        L/2; a period 10**400 is searched at its own scale), else 1."""
         bps = self.breaks()
-        return mpmath.mpf(1) if not bps else mpmath.exp(sum(mpmath.log(b) for b in bps) / len(bps))
+        if bps:
+            return mpmath.exp(sum(mpmath.log(b) for b in bps) / len(bps))
+        top = self.geometry.mp_a_max(getattr(self, "geometry_values", {})) if not self.geometry.is_isolated \
+            else mpmath.inf
+        return +top if mpmath.isfinite(top) else mpmath.mpf(1)
 
     @property
     def quadrature_law(self) -> "ForceLaw":

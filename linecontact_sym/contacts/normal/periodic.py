@@ -30,7 +30,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.budget import DEFAULT_BUDGET
 from ...core.conversion import rational, to_mpf
-from ...core.errors import LineContactError, ProfileError
+from ...core.errors import InadmissibleProfileError, LineContactError, ProfileError
 from ...core.precision import workdps
 from ...method import transforms as T
 from ...method.derivation import Derivation, fallback_step, remembered
@@ -40,7 +40,7 @@ from .tan_route import TanRoute
 from ...method.verification import REQUIRED_DIGITS, VerificationRecord, verify
 from ...parsing import to_sympy
 from ..base import Quantity
-from ..sampling import periodic_sampler
+from ..sampling import PERIOD_RANGE, periodic_sampler
 from .contact import LineContact
 from .equilibria import SEARCH_BUDGET, half_width_at, searching_until
 
@@ -80,6 +80,7 @@ class PeriodicLineContact(LineContact):
         if self.profile.cases:
             raise ProfileError(f"profile {self.profile.name!r} switches on its parameters alone; a periodic "
                                f"array of it is not derived case by case: give each case as its own profile")
+        self._check_one_trough()
         F = self.geometry.kernel_profile(self.profile.expr)
         syms = F.free_symbols - {S.x}
         ranges = dict(self.profile.declared_ranges)
@@ -89,6 +90,35 @@ class PeriodicLineContact(LineContact):
 
     def __repr__(self):
         return f"LineContact({self.profile.expr}, period={self.geometry.period})"
+
+    #: points at which the profile is read over the half period (a prime: no grid in step with the profile)
+    TROUGH_POINTS = 97
+
+    def _check_one_trough(self):
+        """The array is one compact contact per period about x = 0: f real and
+        not decreasing over the whole half period [0, L/2] (its crest at
+        L/2, where the full-contact load closes the gap last).  Read at
+        :attr:`TROUGH_POINTS` points, at parameter values sampled as the
+        verification samples them, before any symbolic work: a profile of
+        period L/2 given with period L (h (1 - cos(4 pi x/L)): its second
+        trough at L/2 touches, the gap there is negative), a period that is
+        not the profile's (1 - cos(2 pi x) with period 1000: the kernel twin
+        cos(2000 asin s) would be expanded for minutes) or a profile not real
+        beyond L/4 is an :class:`InadmissibleProfileError` at once."""
+        rng = random.Random(11)
+        vals = self.profile.sample_params(rng)
+        for sym in self.geometry.symbols:
+            if sym not in vals:
+                vals[sym] = rational(rng.uniform(*self.profile.ranges.get(sym, PERIOD_RANGE)))
+        half = self.geometry.period.xreplace(vals) / 2
+        why = self.profile.rising_on(vals, half, n=self.TROUGH_POINTS)
+        if why is not None:
+            shown = ", ".join(f"{k} = {v}" for k, v in sorted(vals.items(), key=lambda kv: kv[0].name))
+            raise InadmissibleProfileError(
+                f"profile {self.profile.name!r} with period {self.geometry.period}: {why} within the half period "
+                f"(0, L/2]{' at ' + shown if shown else ''}; a periodic array is one compact contact per period "
+                f"about x = 0, so f must be real and not decrease up to its crest at x = L/2 (a second trough "
+                f"in the period is a second contact: is the profile's own period shorter than the one given?)")
 
     @property
     def period(self):

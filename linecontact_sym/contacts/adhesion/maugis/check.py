@@ -35,7 +35,8 @@ from ....core.conversion import to_mpf
 from ....core.errors import VerificationError
 from ....core.precision import workdps
 from ....numeric.flamant import flamant_displacement
-from ....numeric.reference import ArbUnsupported, RefValue, bound_acb, estimate, integrate, lincomb, log_end_integral
+from ....numeric.arb_compile import ArbUnsupported, bound_acb
+from ....numeric.reference import RefValue, estimate, integrate, lincomb, log_end_integral
 
 
 def _mp(v):

@@ -2,7 +2,7 @@
 
 Run (from the repository root, nothing under linecontact_sym/ is modified):
 
-    PYTHONPATH=. LINECONTACT_SYM_CACHE=/tmp/adv-cache nice -n 10 python benchmarks/adversarial.py
+    PYTHONPATH=. LINECONTACT_SYM_CACHE=/tmp/adv-cache nice -n 10 python tools/hostile/adversarial.py
 
 Classes of outcome per case:
 
@@ -34,7 +34,8 @@ import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+#: the repository root (this file is tools/hostile/adversarial.py): the package its subprocesses import
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TIMEOUT = 20.0
 MEM_LIMIT = 4 * 1024**3
 PWNED = "/tmp/adv_pwned_marker"

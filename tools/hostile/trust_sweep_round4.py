@@ -5,8 +5,8 @@ gives the independently known number, or a clear package error (a
 stderr and no traceback), within the timeout; a wrong number, a foreign
 exception, a hang, or code run from a cache file fails it.
 
-    python benchmarks/trust_sweep_round4.py [--json out.json] [--only 1,2]
-    PYTHONPATH=/path/to/other/checkout python benchmarks/trust_sweep_round4.py
+    python tools/hostile/trust_sweep_round4.py [--json out.json] [--only 1,2]
+    PYTHONPATH=/path/to/other/checkout python tools/hostile/trust_sweep_round4.py
 
 Every case works in a temporary cache directory of its own (nothing in the
 user's cache is read or written).

@@ -7,8 +7,8 @@ integral) or a clear package error (a ``LineContactError`` subclass, exit
 code 2), within a minute; anything else -- a wrong number, a foreign
 exception, exit 3, a hang -- fails.
 
-    python benchmarks/trust_sweep.py            # the installed/checked-out package
-    PYTHONPATH=/path/to/other/checkout python benchmarks/trust_sweep.py --json out.json
+    python tools/hostile/trust_sweep.py            # the installed/checked-out package
+    PYTHONPATH=/path/to/other/checkout python tools/hostile/trust_sweep.py --json out.json
 
 Run it against two checkouts and compare the JSON files to count the cases
 a change fixed.

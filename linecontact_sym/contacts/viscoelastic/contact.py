@@ -1,0 +1,417 @@
+"""The viscoelastic line contact: a frictionless :class:`~..normal.contact.LineContact`
+on a linear viscoelastic half-plane (a :class:`~linecontact_sym.method.material.Material`),
+by Popov's superposition in time (see the package docstring for the formulas).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import random
+
+import mpmath
+import sympy as sp
+
+from ...core import symbols as S
+from ...core.budget import run_with_budget
+from ...core.errors import BudgetExceeded, DomainError, LineContactError
+from ...core.precision import workdps
+from ...method.material import Material
+from . import history as H
+from .history import MultipleMaximaError
+
+#: CPU seconds for one symbolic integration of a history
+HISTORY_BUDGET = 20.0
+_s = sp.Dummy("s", positive=True)    # loading time of a punch (integration variable)
+_u = sp.Dummy("u", positive=True)    # upper limit of the loading integral
+_b = sp.Dummy("b", positive=True)    # punch half-width
+
+
+def _integrate(f, var, lo, hi, budget):
+    """int_lo^hi f d var by SymPy under ``budget`` CPU seconds; the unevaluated
+    Integral where SymPy finds nothing (or runs out of time)."""
+    try:
+        r = run_with_budget(sp.integrate, f, (var, lo, hi), seconds=budget)
+    except BudgetExceeded:
+        return sp.Integral(f, (var, lo, hi))
+    if r.has(sp.Integral):
+        return sp.Integral(f, (var, lo, hi))
+    return r
+
+
+def _bound(cond):
+    """c of a Piecewise condition t < c / t <= c (None for True)."""
+    if cond is sp.true:
+        return None
+    if isinstance(cond, (sp.StrictLessThan, sp.LessThan)) and cond.lhs == S.t:
+        return cond.rhs
+    if isinstance(cond, (sp.StrictGreaterThan, sp.GreaterThan)) and cond.rhs == S.t:
+        return cond.lhs
+    raise DomainError(f"a history condition must read t < c or t <= c (in order), got {cond}; "
+                      "evaluate_at takes any history at numbers")
+
+
+@dataclass
+class Phases:
+    """A history split into its loading piece (one expression on [0, t_m])
+    and the receding pieces after the maximum ((expression, condition) pairs)."""
+
+    loading: sp.Expr
+    t_m: object
+    receding: list = field(default_factory=list)
+    loading_cond: object = sp.true
+
+
+def phases(history) -> Phases:
+    """Split a(t) (SymPy, Piecewise for load-then-unload) at its single maximum,
+    deciding the sign of a'(t) piece by piece from SymPy's assumptions."""
+    h = sp.sympify(history)
+    pieces = list(h.args) if isinstance(h, sp.Piecewise) else [(h, sp.true)]
+    signs = []
+    for e, cond in pieces:
+        d = sp.simplify(sp.diff(e, S.t))
+        if d.is_nonnegative:
+            signs.append(1 if not d.is_zero else 0)
+        elif d.is_nonpositive:
+            signs.append(-1)
+        else:
+            raise DomainError(f"cannot decide the sign of a'(t) = {d} on the piece {e} of the history: "
+                              "give it in monotone pieces, or numbers to evaluate_at")
+    if signs[0] <= 0:
+        raise DomainError("the closed form needs a history whose first piece grows (one loading piece); "
+                          "evaluate_at gives numbers for any history")
+    if any(sg > 0 for sg in signs[1:]):
+        raise MultipleMaximaError("the half-width grows again after its first piece: more than one loading piece "
+                                  "(or maximum) is outside the closed form (Ting: one loading phase, one receding "
+                                  "phase); evaluate_at gives numbers for a history that grows in several pieces")
+    t_m = _bound(pieces[0][1]) if len(pieces) > 1 else None
+    # the pieces after the maximum (a plateau included) load no new punch: Ting's rule
+    return Phases(pieces[0][0], t_m, list(pieces[1:]), pieces[0][1])
+
+
+class ViscoelasticLineContact:
+    """A line contact on a linear viscoelastic half-plane: Lee-Radok while the
+    contact grows, Ting when it recedes, on Popov's superposition of flat
+    punches (see :mod:`linecontact_sym.contacts.viscoelastic`).
+
+    >>> import sympy as sp, linecontact_sym as lcs
+    >>> v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=1))
+    >>> v.force_history(sp.Rational(1, 10) * lcs.t)          # a(t) = t/10
+    (pi*t - pi)/(100*R) + pi*exp(-t)/(100*R)
+    """
+
+    def __init__(self, contact, material):
+        from ..base import ContactOn
+        if isinstance(contact, ContactOn):
+            raise DomainError(f"a viscoelastic material is defined on the frictionless contact, not on a "
+                              f"{type(contact).__name__}: adhesion (JKR, Maugis-Dugdale) is outside Lee-Radok's "
+                              "correspondence (the cohesive zone and the energy release rate of a growing crack "
+                              "are rate dependent; Lee-Radok and Ting hold only for a frictionless, adhesionless contact)")
+        if not isinstance(material, Material):
+            raise DomainError(f"expected a Material (lcs.maxwell(...), lcs.kelvin_voigt(...), lcs.standard_linear_solid(...), "
+                              f"lcs.prony(...), lcs.Material(expr)), got {type(material).__name__}")
+        self.contact, self.material = contact, material
+        d = contact.derivation("force")
+        Pi = sp.cancel(d.expr / S.E_star) if d.closed_form else d.expr.xreplace({S.E_star: 1})
+        if d.closed_form and Pi.has(S.E_star):
+            raise DomainError(f"the force law {d.expr} is not linear in E*: no viscoelastic superposition")
+        self.Pi = Pi
+        self._cache = {}
+
+    def __repr__(self):
+        return f"ViscoelasticLineContact({self.contact!r}, {self.material!r})"
+
+    @property
+    def variables(self):
+        return tuple(sorted((set(self.contact.variables) - {S.E_star}) | set(self.material.parameters),
+                            key=lambda s: s.name))
+
+    # ------------------------------------------------------------ closed forms
+    def _loading_integral(self, a1, budget, closed: bool = True):
+        """int_0^u E_reg(t - s) Pi'(a1(s)) a1'(s) ds as a function of the upper limit u,
+        term by term of E_reg as given (one budget for all the terms); ``closed=False``:
+        the unevaluated integrals."""
+        key = ("load", a1, closed)
+        if key not in self._cache:
+            m = self.material
+            a1s = a1.subs(S.t, _s)
+            dPi = sp.diff(self.Pi, S.a).subs(S.a, a1s)
+            integrand = sp.expand_power_base(sp.powsimp(dPi * sp.diff(a1s, _s)))
+            terms = sp.Add.make_args(m.relaxation)
+            out = []
+            for tm in terms:
+                f = sp.powsimp(tm.subs(S.t, S.t - _s) * integrand)
+                out.append(_integrate(f, _s, 0, _u, budget / len(terms)) if closed else sp.Integral(f, (_s, 0, _u)))
+            self._cache[key] = sp.Add(*out)
+        return self._cache[key]
+
+    def _checked(self, F, a_t, build):
+        """F if it agrees with the quadrature of the superposition (:meth:`evaluate_at`)
+        at one point of each phase, with the parameters drawn in [1/2, 1]; else the
+        unevaluated form ``build()`` (a closed form SymPy got wrong is never returned)."""
+        if not F.has(sp.Integral) and not F.has(sp.nan, sp.zoo):
+            syms = sorted(F.free_symbols - {S.t}, key=lambda s: s.name)
+            rng = random.Random(41)
+            vals = {s_: sp.Rational(rng.randint(6, 12), 12) for s_ in syms}
+            ph = phases(a_t)
+            t_m = ph.t_m.xreplace(vals) if ph.t_m is not None else sp.Integer(1)
+            for tv in (t_m / 2, t_m * sp.Rational(5, 4)) if ph.t_m is not None else (t_m / 2,):
+                try:
+                    ref = self.evaluate_at("force", tv, a_t.xreplace(vals), dps=15,
+                                           **{k.name: v for k, v in vals.items()})
+                except (LineContactError, ValueError, ZeroDivisionError):
+                    continue                    # outside a domain at these numbers: not checked here
+                got = sp.N(F.xreplace({**vals, S.t: tv}), 20)
+                if not got.is_number or not got.is_finite or abs(complex(got) - complex(ref)) > 1e-9 * abs(ref) + 1e-300:
+                    return build()
+        return F
+
+    def _entry_time(self, a1, level, t_m):
+        """s with a1(s) = level on the loading piece (SymPy solve; the root
+        that gives t_m at the top)."""
+        sols = sp.solve(sp.Eq(a1.subs(S.t, _s), level), _s)
+        if not sols:
+            raise DomainError(f"SymPy cannot invert the loading history a(t) = {a1}; evaluate_at gives numbers")
+        if len(sols) > 1 and t_m is not None:
+            top = a1.subs(S.t, t_m)
+            ok = [so for so in sols if sp.simplify(so.subs(level, top) - t_m) == 0] if level.is_Symbol else []
+            sols = ok or sols
+        return sols[0]
+
+    def force_history(self, a_t, budget: float = HISTORY_BUDGET):
+        """P(t) per unit length for the half-width history ``a_t`` (SymPy in
+        ``lcs.t``; a Piecewise t < t1 / t < t2 / ... for load-then-unload):
+
+            P(t) = E(t) Pi(a(0+)) + int_0^{s1} E(t - s) d Pi(a(s)) [+ eta dPi(a(t))/dt while loading],
+
+        s1 = t while a grows (Lee-Radok), s1 the loading time with
+        a(s1) = a(t) after the maximum (Ting).  Closed where SymPy integrates,
+        else an unevaluated Integral (numbers: :meth:`evaluate_at`)."""
+        F = self._force_history(a_t, budget, True)
+        return self._checked(F, sp.sympify(a_t), lambda: self._force_history(a_t, budget, False))
+
+    def _force_history(self, a_t, budget, closed):
+        ph = phases(a_t)
+        m, a1 = self.material, ph.loading
+        a0 = sp.limit(a1, S.t, 0, "+")
+        I = self._loading_integral(a1, budget, closed)
+        step = m.relaxation * self.Pi.subs(S.a, a0) if a0 != 0 else sp.S.Zero
+        load = step + I.subs(_u, S.t)
+        if m.impulse != 0:
+            load += m.impulse * sp.diff(self.Pi, S.a).subs(S.a, a1) * sp.diff(a1, S.t)
+        if ph.t_m is None:
+            return load
+        out = [(load, S.t <= ph.t_m)]
+        lvl = sp.Dummy("level", positive=True)
+        s_of = self._entry_time(a1, lvl, ph.t_m)
+        for e, cond in ph.receding:
+            rec = step + I.subs(_u, s_of.subs(lvl, e))
+            if a0 != 0:
+                rec = sp.Piecewise((m.relaxation * self.Pi.subs(S.a, e), e <= a0), (rec, True))
+            out.append((rec, cond))
+        return sp.Piecewise(*out)
+
+    def pressure_history(self, a_t, budget: float = HISTORY_BUDGET / 10):
+        """p(x, t) for |x| < a(t) (0 beyond): the punches b in (|x|, a(t)) each
+        with E*(t - t_b),  p = (1/pi) int_|x|^a(t) Pi'(b) E(t - t_b)/sqrt(b^2 - x^2) db
+        [+ eta Pi'(a) a'(t)/(pi sqrt(a^2 - x^2)) while loading]; t_b the entry time of
+        the punch b (Eq. 12 with each punch relaxed)."""
+        ph = phases(a_t)
+        m, a1 = self.material, ph.loading
+        a0 = sp.limit(a1, S.t, 0, "+")
+        tb = self._entry_time(a1, _b, ph.t_m)
+        if a0 != 0:
+            tb = sp.Piecewise((0, _b <= a0), (tb, True))
+        integrand = sp.diff(self.Pi, S.a).subs(S.a, _b) * m.relaxation.subs(S.t, S.t - tb) / sp.sqrt(_b**2 - S.x**2)
+
+        body = _integrate(integrand, _b, S.x, _u, budget) / sp.pi      # integrated once, the upper limit u
+
+        def p_at(top, loading):
+            v = body.subs(_u, top)
+            if loading and m.impulse != 0:
+                v += m.impulse * sp.diff(self.Pi, S.a).subs(S.a, top) * sp.diff(top, S.t) / (sp.pi * sp.sqrt(top**2 - S.x**2))
+            return sp.Piecewise((v, S.x < top), (0, True))      # no pressure outside the contact
+        if ph.t_m is None:
+            return p_at(a1, True)
+        return sp.Piecewise((p_at(a1, True), S.t <= ph.t_m), *[(p_at(e, False), c) for e, c in ph.receding])
+
+    def creep_level(self, P_t, budget: float = HISTORY_BUDGET):
+        """X(t) = int_0^t J*(t - u) dP(u) (with the jump P(0+) J*(t)): the elastic
+        'load at E* = 1' whose half-width is a(t) while the contact grows."""
+        key = ("creep", sp.sympify(P_t))
+        if key not in self._cache:
+            J = self.material.creep()
+            P_t = sp.sympify(P_t)
+            P0 = H.start_value(P_t)
+            X = P0 * J if P0 != 0 else sp.S.Zero
+            dP = sp.diff(P_t, S.t)
+            if dP != 0:
+                X += _integrate(sp.expand(J.subs(S.t, S.t - _s)) * dP.subs(S.t, _s), _s, 0, S.t, budget)
+            self._cache[key] = X
+        return self._cache[key]
+
+    def half_width_history(self, P_t, budget: float = HISTORY_BUDGET):
+        """a(t) under the load history ``P_t`` while the contact grows (Lee-Radok:
+        Pi(a(t)) = X(t), :meth:`creep_level`): the engine's elastic a(P) at
+        E* = 1 and P = X(t).  After the maximum of X the contact recedes by
+        Ting's rule, which has no closed form: numbers from :meth:`half_width_at`."""
+        h = sp.sympify(P_t)
+        for e, _ in (h.args if isinstance(h, sp.Piecewise) else [(h, sp.true)]):
+            d = sp.simplify(sp.diff(e, S.t))
+            if not d.is_nonnegative:
+                raise DomainError(f"the load {h} may decrease (dP/dt = {d} on a piece): then the contact recedes "
+                                  "by Ting's rule, which has no closed form; half_width_at gives numbers "
+                                  "(a closed a(t) is built for a load that never decreases: step, ramp, hold)")
+        X = self.creep_level(P_t, budget)
+        aP = self.contact.half_width(S.P).expr
+        return aP.xreplace({S.P: X, S.E_star: sp.Integer(1)})
+
+    # ------------------------------------------------------------ numbers
+    def _numbers(self, values):
+        key = ("num", tuple(sorted((k, str(v)) for k, v in values.items())))
+        if key not in self._cache:
+            self._cache[key] = H.Numbers(self.contact, self.material, values)
+        return self._cache[key]
+
+    def evaluate_at(self, quantity: str, t, history, x=None, dps: int = 30, **values):
+        """The value at time ``t`` (mpf, ``dps`` digits) of ``"force"`` or
+        ``"pressure"`` (at ``x``) for a half-width history, or ``"half_width"``
+        for a load history (creep; Ting after the maximum), at the parameter
+        ``values``: tanh-sinh quadrature of the superposition at dps + 10
+        digits (positive integrands: no cancellation)."""
+        if quantity not in ("force", "pressure", "half_width"):
+            raise DomainError(f"unknown quantity {quantity!r}: one of force, pressure, half_width")
+        with workdps(dps + 10):
+            tv = mpmath.mpf(sp.N(sp.sympify(t), dps + 15))
+            if tv < 0:
+                raise DomainError(f"the time must be >= 0, got t = {t}")
+            num = self._numbers(values)
+            if quantity == "half_width":
+                X = None
+                try:
+                    X = self.creep_level(history)
+                except LineContactError:
+                    pass
+                hist = H.LoadHistory(num, history, X, values, tv)
+                v = hist.half_width(tv)
+            else:
+                hist = H.HalfWidthHistory(num, history, values, tv)
+                if quantity == "force":
+                    v = hist.force(tv)
+                else:
+                    if x is None:
+                        raise DomainError("the pressure needs x")
+                    v = hist.pressure(mpmath.mpf(sp.N(sp.sympify(x), dps + 15)), tv)
+        with workdps(dps):
+            return +v
+
+    def half_width_at(self, t, load, dps: int = 30, **values):
+        """a(t) under the load history ``load`` (creep), see :meth:`evaluate_at`."""
+        return self.evaluate_at("half_width", t, load, dps=dps, **values)
+
+    def model_choice(self, history, rtol, t_end, points: int = 12, dps: int = 20, **values) -> "ModelChoice":
+        """Which model the half-width ``history`` needs on (0, t_end] at ``rtol``:
+        the elastic law with E*(0) (fast loading), with E*(oo) (slow loading), or
+        the viscoelastic one; the error of each is max |P_model - P| / max |P| over
+        ``points`` times (the viscoelastic P by :meth:`evaluate_at`)."""
+        num = self._numbers(values)
+        with workdps(dps):
+            T = mpmath.mpf(sp.N(sp.sympify(t_end), dps + 5))
+            ts = [T * k / points for k in range(1, points + 1)]
+            hist = H.HalfWidthHistory(num, history, values, T)
+            P = [hist.force(tv) for tv in ts]
+            Pe = [num.Pi(hist.a(tv)) for tv in ts]
+            scale = max(abs(p) for p in P)
+            errs = {}
+            for name, E in (("elastic E*(0)", num.m.E0), ("elastic E*(oo)", num.m.E_inf)):
+                errs[name] = (mpmath.inf if E == mpmath.inf else max(abs(E * pe - p) for pe, p in zip(Pe, P)) / scale)
+            errs["viscoelastic"] = mpmath.mpf(0)
+            choice = next(k for k in ("elastic E*(0)", "elastic E*(oo)", "viscoelastic") if errs[k] <= rtol)
+            return ModelChoice(choice, {k: float(v) for k, v in errs.items()}, [float(tv) for tv in ts])
+
+    def history_data(self, history, t_end, points: int = 101, dps: int = 15, **values) -> dict:
+        """Arrays over (0, t_end]: t, a(t), P(t), and the elastic limits
+        E*(0) Pi(a(t)), E*(oo) Pi(a(t)) (float64; the numbers by :meth:`evaluate_at`'s quadrature)."""
+        import numpy as np
+        num = self._numbers(values)
+        with workdps(dps):
+            T = mpmath.mpf(sp.N(sp.sympify(t_end), dps + 5))
+            hist = H.HalfWidthHistory(num, history, values, T)
+            ts = [T * k / points for k in range(1, points + 1)]
+            a = [hist.a(tv) for tv in ts]
+            Pe = [num.Pi(av) for av in a]
+            E0, Ei = num.m.E0, num.m.E_inf
+            return {"t": np.array([float(v) for v in ts]), "a": np.array([float(v) for v in a]),
+                    "P": np.array([float(hist.force(tv)) for tv in ts]),
+                    "P_E0": np.array([float(E0 * p) if E0 != mpmath.inf else np.inf for p in Pe]),
+                    "P_Einf": np.array([float(Ei * p) for p in Pe])}
+
+    def plot(self, history, t_end, what: str = "history", path=None, points: int = 101, **values):
+        """``what='history'``: P(t) with its elastic limits over a(t); ``'hysteresis'``:
+        the loop P(a) of a cycle (see :mod:`linecontact_sym.views.viscoelastic_plots`)."""
+        from ...views.viscoelastic_plots import history_figure, hysteresis_figure
+        data = self.history_data(history, t_end, points, **values)
+        if what == "history":
+            return history_figure(data, path, title=self.material.name)
+        if what == "hysteresis":
+            return hysteresis_figure(data, path, title=self.material.name)
+        raise DomainError(f"unknown plot {what!r}: 'history' or 'hysteresis'")
+
+    def dissipated_work(self, a_t, t_end, L, points: int = 400, **values):
+        """The work per unit length done by the indenter over (0, t_end],
+        W = int P dd, the depth d(t) measured from a point at the distance L
+        (2-D: the depth of a half-plane is defined only with a reference length,
+        and so is the dissipation, which grows like ln L).  d = J* o dD with the
+        'elastic depth' D(t) = (2/pi) sum over punches b of E*(t - t_b)
+        Pi'(b) ln(2L/b) db; float64 accuracy of the trapezoidal rules (about 4
+        digits at 400 points)."""
+        import numpy as np
+        num = self._numbers(values)
+        with workdps(20):
+            T = mpmath.mpf(sp.N(sp.sympify(t_end), 25))
+            Lm = mpmath.mpf(sp.N(sp.sympify(L), 25))
+            hist = H.HalfWidthHistory(num, a_t, values, T)
+            ts = [T * k / points for k in range(points + 1)]
+            m, lev = num.m, hist.level
+            # the loading level in b: D(t) = (2/pi) [E(t) int_0^{min(a, a0)} ln(2L/b) dPi + int_0^{s1} E(t-s) ln(2L/a(s)) dY(s)]
+            lnw = lambda s: mpmath.log(2 * Lm / hist.a(s)) if hist.a(s) > 0 else mpmath.mpf(0)  # noqa: E731
+
+            def D(tv):
+                A = hist.a(tv)
+                if A <= 0:
+                    return mpmath.mpf(0)
+                loading = hist.loading(tv)
+                out = mpmath.mpf(0)
+                top = min(A, hist.a0)
+                if top > 0:
+                    out += m.E(tv) * mpmath.quad(lambda b: num.dPi(b) * mpmath.log(2 * Lm / b), [0, top])
+                if A > hist.a0:
+                    s1 = tv if loading else H.invert_increasing(hist.a, A, mpmath.mpf(0), lev.t_m)
+                    out += H.quad_pieces(lambda s: m.E(tv - s) * lev.dY(s) * lnw(s), lev.points(s1))
+                    if loading and m.eta != 0:
+                        raise DomainError("the dissipated work of a Kelvin-Voigt material needs the depth rate; "
+                                          "not built")
+                return 2 * out / mpmath.pi
+            Dv = np.array([float(D(tv)) for tv in ts])
+            Pv = np.array([float(hist.force(tv)) for tv in ts])
+            Jv = np.array([float(m.J(tv)) for tv in ts])
+        # d_n = sum_k J(t_n - t_k) dD_k (product trapezoid: D piecewise linear)
+        dD = np.diff(Dv)
+        d = np.zeros(points + 1)
+        d[0] = Jv[0] * Dv[0]
+        for n in range(1, points + 1):
+            w = 0.5 * (Jv[n - np.arange(1, n + 1)] + Jv[n - np.arange(0, n)])
+            d[n] = Jv[n] * Dv[0] + np.dot(w, dD[:n])
+        return float(np.sum(0.5 * (Pv[1:] + Pv[:-1]) * np.diff(d)))
+
+
+@dataclass
+class ModelChoice:
+    """``model``: the simplest that meets the tolerance ('elastic E*(0)',
+    'elastic E*(oo)' or 'viscoelastic'); ``errors``: the relative error of each."""
+
+    model: str
+    errors: dict
+    times: list = field(repr=False, default_factory=list)
+
+
+__all__ = ["ViscoelasticLineContact", "ModelChoice", "Phases", "phases", "HISTORY_BUDGET", "MultipleMaximaError"]
