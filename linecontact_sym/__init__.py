@@ -16,8 +16,6 @@ from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, In
                           DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError,
                           NoPullOffError, NoEquilibriumError, GrossSlidingError)
 
-__version__ = "0.1.0"
-
 #: public name -> the module it comes from (imported on first use)
 _LAZY = {
     "Profile": ".method.profile",
@@ -86,7 +84,10 @@ def _import(relative: str):
 
 
 def __getattr__(name):
-    if name in _LAZY:
+    if name == "__version__":           # pyproject.toml's (core/version.py), read on first use
+        from .core.version import package_version
+        value = package_version()
+    elif name in _LAZY:
         module = _import(_LAZY[name])
         value = module if name == "catalogue" else getattr(module, name)
     elif name in _SUBMODULES:

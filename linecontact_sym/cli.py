@@ -632,7 +632,8 @@ def build_parser() -> argparse.ArgumentParser:
                 description="Closed-form line (2-D) contact laws by Popov's (2017) flat-punch superposition: "
                             "derive, evaluate, tabulate, and check published formulas.",
                 epilog=EXIT_HELP + " A formula starting with '-' may be typed as it is (or after --).")
-    p.add_argument("--version", action="version", version="%(prog)s 0.1.0")
+    from .core.version import package_version
+    p.add_argument("--version", action="version", version=f"%(prog)s {package_version()}")
     sub = p.add_subparsers(dest="verb", metavar="VERB")
     sub.required = True
 

@@ -132,10 +132,9 @@ def code_version() -> str:
         import sympy
         import flint      # a core dependency: its version is part of the key
         flint_version = getattr(flint, "__version__", "present")
+        from ..core.version import package_version
         pkg = Path(__file__).resolve().parent.parent
-        init = (pkg / "__init__.py").read_text(encoding="utf-8")
-        found = re.search(r"__version__\s*=\s*[\"']([^\"']+)[\"']", init)
-        version = found.group(1) if found else "unknown"
+        version = package_version()
         h = hashlib.sha256(f"{version}|sympy {sympy.__version__}|mpmath {mpmath.__version__}|"
                            f"flint {flint_version}".encode())
         for path in sorted(pkg.rglob("*.py")):
