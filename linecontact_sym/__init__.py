@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import importlib
 
-from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta, mu, Q, c_s, c_r, z, nu, t
+from .core.symbols import x, a, P, E_star, gamma, R, b, n, c, theta, mu, Q, c_s, c_r, z, nu, t, x_real, e, tilt, M
 from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, InadmissibleProfileError,
                           DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError,
                           NoPullOffError, NoEquilibriumError, GrossSlidingError)
@@ -41,6 +41,10 @@ _LAZY = {
     "init_printing": ".core.printing",
     "to_latex": ".core.printing",
     "parse_expr": ".parsing",
+    "reduced_modulus": ".core.materials",
+    "dundurs_beta": ".core.materials",
+    "neglected_coupling": ".core.materials",
+    "flat_punch": ".contacts.asymmetric",
     "Material": ".method.material",
     "maxwell": ".method.material",
     "kelvin_voigt": ".method.material",
@@ -54,6 +58,7 @@ _SUBMODULES = ("core", "parsing", "method", "numeric", "views", "contacts", "cla
 
 __all__ = [
     "x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "z", "nu", "t",
+    "x_real", "e", "tilt", "M", "reduced_modulus", "dundurs_beta", "neglected_coupling", "flat_punch",
     "LineContactError", "ProfileError", "UnknownSymbolError", "InadmissibleProfileError",
     "DomainError", "DivergentIntegralError", "VerificationError", "BudgetExceeded", "ClaimError",
     "Profile", "Derivation", "VerificationRecord", "LineContact", "profile_from_force",

@@ -170,6 +170,11 @@ def _contact(args, profile, values=None):
     periodic array (its symbols fixed by ``values``, the --set of derive)."""
     from .contacts.normal.contact import LineContact
     period = getattr(args, "period", None)
+    if getattr(args, "asymmetric", False):
+        if period is not None:
+            raise LineContactError("--asymmetric and --period: an asymmetric periodic array is not supported")
+        from .core import symbols as S
+        return LineContact(profile.xreplace({S.x: S.x_real}), symmetric=False, budget=args.budget)
     if period is None:
         return LineContact(profile, budget=args.budget)
     L = _profile(period, getattr(args, "symbols", None), where="--period")
@@ -316,6 +321,8 @@ def cmd_derive(args):
         raise LineContactError(f"--set {', '.join(unused)}: the profile {prof} has no such parameter")
     prof = prof.xreplace(values)
     c = _contact(args, prof, values)
+    if getattr(args, "asymmetric", False):
+        return _derive_asymmetric(args, prof, c)
     mat = _material(args)
     if mat is not None:
         return _viscoelastic_derive(args, c, prof, mat)
@@ -337,6 +344,10 @@ def cmd_derive(args):
         registry = type(ad).quantities()
         todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
                  if q in quantities or (args.quantities is None and q != "pull_off_force")]
+    if getattr(args, "rolling", False):   # steady rolling with traction (Carter for this profile)
+        from .contacts.base import contact_kind
+        rolling = contact_kind("rolling").from_frictionless(c)
+        todo += [(f"rolling.{q}", rolling, q) for q in ("tangential_force", "creepage", "stick_half_width")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -375,6 +386,52 @@ def cmd_derive(args):
     return EXIT_OK
 
 
+def _derive_asymmetric(args, prof, c):
+    """``derive --asymmetric``: the contact [e - a, e + a] of f on the whole line: P(e, a),
+    the tilt theta(e, a) of the bounded solution, the moments, and the ends where SymPy solves them."""
+    import sympy as sp
+    core = c.core
+    out = {"profile": str(prof), "load P(e, a)": core.force(), "tilt theta(e, a)": core.tilt(),
+           "moment about the centre M_c(e, a)": core.moment_centre(), "moment M(e, a)": core.moment()}
+    ends = c.ends(budget=args.budget)
+    if ends and all(sp.count_ops(d["e"]) + sp.count_ops(d["a"]) < 80 for d in ends):
+        out["ends (load P, tilt theta_t)"] = [{k: v for k, v in d.items()} for d in ends]
+    elif ends:
+        out["ends (load P, tilt theta_t)"] = [f"{len(ends)} branches of SymPy's solution, too long to print "
+                                              f"(in Python: LineContact(f, symmetric=False).ends())"]
+    if args.json or args.format == "json":
+        _emit_json({k: (str(v) if not isinstance(v, list) else
+                        [{kk: str(vv) for kk, vv in d.items()} if isinstance(d, dict) else d for d in v])
+                    for k, v in out.items()})
+    else:
+        print(f"profile f(x) = {prof}    on the whole line; contact [e - a, e + a]")
+        for k, v in list(out.items())[1:]:
+            print()
+            print(f"[{k}]")
+            print(v if not isinstance(v, list) else "\n".join(str(d) for d in v))
+    return EXIT_OK
+
+
+#: what ``eval --theta/--moment`` evaluates on the contact state
+STATE_QUANTITIES = ("left", "right", "e", "a", "theta", "moment", "punch", "pressure", "gap")
+
+
+def _eval_state(c, q, values, args):
+    """``eval --theta T`` / ``--moment M``: the contact state at the load P (given by --set or
+    --at), then ``q``: an end, the tilt, the moment, or the pressure or gap at x."""
+    if q not in STATE_QUANTITIES:
+        raise LineContactError(f"with --theta or --moment the quantity is one of {', '.join(STATE_QUANTITIES)}")
+    vals = dict(values)
+    if "P" not in vals:
+        raise LineContactError("--theta/--moment need the load: --set P=... or --at P=...")
+    load = vals.pop("P")
+    xv = vals.pop("x", None)
+    if q in ("pressure", "gap") and xv is None:
+        raise LineContactError(f"{q} needs x: --at x=... or --set x=...")
+    state = c.contact_at(load, theta=args.theta, moment=args.moment, dps=args.dps, **vals)
+    return getattr(state, q)(xv) if q in ("pressure", "gap") else getattr(state, q)
+
+
 # ------------------------------------------------------------------ eval
 def _registry():
     from .contacts.base import qualified_quantities
@@ -397,8 +454,17 @@ def cmd_eval(args):
     prof = _profile(args.profile, args.symbols)
     values = _settings(args.set, args.symbols)
     q = args.quantity
+    state = args.theta is not None or args.moment is not None
+    if args.theta is not None and args.moment is not None:
+        raise LineContactError("give --theta or --moment, not both")
+    if state and q not in STATE_QUANTITIES:
+        raise LineContactError(f"with --theta or --moment the quantity is one of {', '.join(STATE_QUANTITIES)}")
+    if not state and getattr(args, "asymmetric", False):
+        raise LineContactError("--asymmetric in eval needs --theta or --moment (the contact state)")
     mat = _material(args)
-    if q not in _registry() and mat is None:
+    if state and mat is not None:
+        raise LineContactError("--theta/--moment and a viscoelastic material together are not supported")
+    if not state and q not in _registry() and mat is None:
         raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_registry())}")
     grids = {}
     for item in args.at or []:
@@ -418,7 +484,8 @@ def cmd_eval(args):
         point = dict(zip(names, combo))
         allv = {**fixed, **point}
         try:
-            v = _eval_one(c, q, allv, args.dps) if mat is None else _viscoelastic_eval(c, q, mat, args, allv)
+            v = (_eval_state(c, q, allv, args) if state else
+                 _eval_one(c, q, allv, args.dps) if mat is None else _viscoelastic_eval(c, q, mat, args, allv))
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": mpmath.nstr(v, args.dps)})
         except LineContactError as exc:
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": None, "error": str(exc)})
@@ -618,11 +685,16 @@ def build_parser() -> argparse.ArgumentParser:
         "frictionless")) + " (default force,pressure,gap); --adhesion: also adhesion_force, pull_off_force, ...")
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
                     "force, pressure, P_adh, a at pull-off, or those of --quantities")
+    pd.add_argument("--rolling", action="store_true", help="also steady rolling with traction (rolling in +x, "
+                    "the stick zone [a - 2 c_s, a] at the leading edge): the tangential force Q(a, c_s), the "
+                    "creepage xi(a, c_s) and the stick half-width c_s(Q) (Carter for the cylinder)")
     viscoelastic_options(pd)
     pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
     pd.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (a number or a "
                     "symbol; the profile given on 0 <= x <= L/2): also nominal_pressure, full_contact_force, "
                     "full_contact_pressure")
+    pd.add_argument("--asymmetric", action="store_true", help="f is given on the whole line (not mirrored): "
+                    "the load P(e, a), tilt theta(e, a) and moments of the contact [e - a, e + a]")
     pd.add_argument("--format", choices=("text", "latex", "json"), default="text",
                     help="text (default: SymPy syntax), latex (an align* block in the paper's notation; "
                          "K(k), E(k) with the modulus k) or json (same as --json)")
@@ -646,6 +718,11 @@ def build_parser() -> argparse.ArgumentParser:
     viscoelastic_options(pe)
     pe.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (the profile given "
                     "on 0 <= x <= L/2; L a number or a symbol given by --set)")
+    pe.add_argument("--theta", default=None, metavar="T", help="the contact state at the load P with the tilt T "
+                    "(gap f(x) - T x - d); quantity one of " + ", ".join(STATE_QUANTITIES))
+    pe.add_argument("--moment", default=None, metavar="M", help="the contact state at the load P under the moment "
+                    "M = int x p dx (free rotation)")
+    pe.add_argument("--asymmetric", action="store_true", help="f is given on the whole line (not mirrored)")
     common(pe)
     pe.set_defaults(func=cmd_eval)
 

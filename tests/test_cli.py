@@ -344,6 +344,18 @@ def test_model_maugis_dugdale(capsys):
     assert code == 0 and json.loads(out)["model"] == "JKR"
 
 
+@pytest.mark.slow
+def test_rolling_mode_of_derive_and_eval(capsys):
+    """derive --rolling gives Carter's creepage; eval evaluates it at carter2d (stick half-width 0.6)."""
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--rolling", "--quantities", "force", "--json", "--quiet")
+    assert code == 0
+    got = json.loads(out)["quantities"]
+    assert got["rolling.creepage"]["expr"] == "mu*(a - c_s)/R"
+    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "rolling.creepage", "--at", "c_s=0.6", "--set", "a=1", "R=500",
+                       "E_star=113888.9", "mu=0.3", "--json")
+    assert code == 0 and float(json.loads(out)["rows"][0]["value"]) == pytest.approx(2.4e-4, rel=1e-25)
+
+
 @pytest.mark.parametrize("argv,match", [
     (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "--dps", "0"], "digits must be"),
     (["eval", "x**2/(2*R)", "force", "--at", "a=oo", "--set", "R=1", "E_star=1"], "finite real"),

@@ -43,6 +43,18 @@ Tangential (partial-slip) contact, :mod:`linecontact_sym.contacts.tangential.con
 * ``c_r`` -- half-width of the stick zone of a *reversal* (Mindlin-Deresiewicz
   unloading or reloading), c_s <= c_r <= a.
 
+Asymmetric contacts (a tilt, a moment, a profile that is not symmetric),
+:mod:`linecontact_sym.contacts.asymmetric`:
+
+* ``x_real`` -- the coordinate x on the whole line (real, printed ``x``): the
+  variable of a profile that is not mirrored (``LineContact(f, symmetric=False)``).
+* ``e``      -- the centre of the contact interval [e - a, e + a] (real).
+* ``tilt``   -- the rigid rotation theta_t of the indenter: the gap is
+  f(x) - theta_t x - d, so theta_t > 0 moves the contact to +x (``theta`` is the
+  wedge angle).
+* ``M``      -- the moment per unit length about x = 0, M = int x p(x) dx: the
+  load's line of action is at x = M/P.
+
 Maugis-Dugdale adhesion, :mod:`linecontact_sym.contacts.adhesion.maugis`:
 
 * ``sigma_0`` -- the Dugdale (cohesive) tension, constant while the gap is
@@ -74,6 +86,10 @@ Q = sp.Symbol("Q", real=True)
 c_s = sp.Symbol("c_s", positive=True)
 c_r = sp.Symbol("c_r", positive=True)
 sigma_0 = sp.Symbol("sigma_0", positive=True)
+x_real = sp.Symbol("x", real=True)
+e = sp.Symbol("e", real=True)
+tilt = sp.Symbol("theta_t", real=True)
+M = sp.Symbol("M", real=True)
 c_D = sp.Symbol("c_D", positive=True)
 t = sp.Symbol("t", positive=True)
 
@@ -82,7 +98,7 @@ t = sp.Symbol("t", positive=True)
 #: unit m^(1-n)) has none: its unit depends on n; it is checked through the profile.
 UNITS = {"x": "m", "a": "m", "P": "N/m", "E_star": "Pa", "gamma": "J/m**2", "R": "m", "b": "m", "n": "",
          "theta": "rad", "z": "m", "nu": "", "mu": "", "Q": "N/m", "c_s": "m", "c_r": "m",
-         "sigma_0": "Pa", "c_D": "m", "t": "s"}
+         "sigma_0": "Pa", "c_D": "m", "t": "s", "e": "m", "theta_t": "rad", "M": "N"}
 
 #: Symbols the engine reserves; a profile may not use them as parameters.
 RESERVED = (a, P, E_star)
@@ -96,10 +112,12 @@ LATEX_NAMES = {
     c_r: r"c_{\mathrm{r}}",
     sigma_0: r"\sigma_0",
     c_D: r"c_{\mathrm{D}}",
+    tilt: r"\vartheta",
     zeta: r"\zeta",
     nu: r"\nu",
     mu: r"\mu",
 }
 
 __all__ = ["x", "a", "P", "E_star", "gamma", "R", "b", "n", "c", "theta", "mu", "Q", "c_s", "c_r", "sigma_0", "c_D", "t", "z", "zeta", "nu",
+           "x_real", "e", "tilt", "M",
            "RESERVED", "LATEX_NAMES", "UNITS"]

@@ -171,9 +171,12 @@ class Profile:
         Declared parameters; a dict maps each to a (low, high) range used when
         picking random admissible points for verification.  Symbols created
         with ``positive=True`` count as declared.
+    auxiliary : bool
+        A linear part of another contact (see :attr:`auxiliary`), not an
+        indenter: the test f' >= 0 near x = 0 is skipped.
     """
 
-    def __init__(self, expr, params=None, name: str | None = None):
+    def __init__(self, expr, params=None, name: str | None = None, auxiliary: bool = False):
         expr = _sanitize(expr, params)
         ranges = {}
         declared = set()
@@ -214,7 +217,13 @@ class Profile:
         #: of a parameter-dependent Piecewise, the order of the breakpoints)
         self.assumptions: tuple = ()
         self.range_notes: tuple = ()
-        self._check_real_and_rising()
+        #: a linear part of another contact (the even and odd parts of an asymmetric
+        #: profile, :mod:`linecontact_sym.contacts.asymmetric`), not a physical
+        #: indenter: it may decrease or go negative, so the admissibility test of
+        #: a compact contact (f' >= 0 near 0) is not made; everything else is
+        self.auxiliary = bool(auxiliary)
+        if not self.auxiliary:
+            self._check_real_and_rising()
         self.pieces = self._split()
         self._check_f0()
         self._check_continuity()
@@ -258,13 +267,17 @@ class Profile:
     def rising_on(self, values, a, n: int = 24):
         """None if f is real and f' >= 0 at n points evenly spread over (0, a]
         (the frictionless compact contact of half-width a needs a profile that
-        does not decrease inside it), else where it fails, in words."""
+        does not decrease inside it), else where it fails, in words.  An
+        :attr:`auxiliary` profile (a linear part, not an indenter) is only
+        asked to be real."""
         fns = self._numeric_fns(values)
+        rising = not getattr(self, "auxiliary", False)
         if fns is None:
             return None
         f, fp = fns
         with workdps(30):
             A = to_mpf(a)
+            slopes = []
             for k in range(1, n + 1):
                 xv = A * k / n
                 try:
@@ -274,8 +287,17 @@ class Profile:
                 if isinstance(v, mpmath.mpc) and abs(v.imag) > 1e-20 * (abs(v.real) + 1e-300):
                     return f"f is not real at x = {mpmath.nstr(xv, 6)}"
                 d = d.real if isinstance(d, mpmath.mpc) else d
-                if mpmath.isfinite(d) and d < 0:
-                    return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
+                slopes.append((xv, d, abs(v) / xv))
+            if rising:
+                # a slope of rounding size (f' = -2e-31 at the crest of 1 - cos x, period 2 pi,
+                # read at 30 digits) is 0, not a decrease: the tolerance is relative to the
+                # profile's own slopes
+                finite = [(xv, d) for xv, d, _ in slopes if mpmath.isfinite(d)]
+                scale = max([abs(d) for _, d in finite] + [r for _, _, r in slopes if mpmath.isfinite(r)],
+                            default=mpmath.mpf(0))
+                for xv, d in finite:
+                    if d < -mpmath.mpf(10)**-20 * scale:
+                        return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
         return None
 
     def _near_origin_ok(self, values) -> str | None:

@@ -19,8 +19,8 @@ Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCar
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
 :class:`SquareDifferences`, :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinhExcess`, :class:`AsinToAtan`,
 :class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
-:class:`FactorDifferences`.  The special functions they produce
-(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``) live in
+:class:`ExpTail`, :class:`FactorDifferences`.  The special functions they produce
+(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``, ``exp_tail``) live in
 :mod:`linecontact_sym.numeric.special`.
 
 The result is a :class:`StableForm`: the rewritten expression and the list of
@@ -35,7 +35,7 @@ import sympy as sp
 
 from ..method.derivation import gammasimp_masked
 from .accuracy import expressions_agree
-from .special import asinh_excess, gamma_ratio, hyp2f1c
+from .special import asinh_excess, exp_tail, gamma_ratio, hyp2f1c
 from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
                           n_terms, nonneg, square_differences, stable_sqrt, is_rational_in_symbols)
 from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
@@ -43,7 +43,8 @@ from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
            "GammaAbsorb", "GammaRatio", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinhExcess", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
+           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences",
+           "is_rational_in_symbols"]
 
 
 class Hyp2f1Connection(StableRule):
@@ -406,6 +407,83 @@ class HalfAngle(StableRule):
         return expr.replace(lambda e: e.is_Add and e.has(sp.cosh, sp.cos), do)
 
 
+class ExpTail(StableRule):
+    """c exp(w) - c - c w - ... - c w^(n-1)/(n-1)! = c exp_tail(n, w) (any terms
+    of a sum, expanded, the exponentials of a term combined; n as large as the
+    terms present allow, n >= 1; c may hold an exponential exp(v) of the other
+    terms: e^(w + v) - e^v (1 + w) = e^v exp_tail(2, w)): exact where the
+    terms cancel (w -> 0).  The Lee-Radok force of a parabola on a Maxwell
+    term at a constant rate, tau^2 (t/tau - 1 + exp(-t/tau)) =
+    tau^2 exp_tail(2, -t/tau), keeps its digits for t << tau (the plain form
+    cancels to nothing below t/tau ~ 1e-8), and so does Ting's receding phase
+    e^(-(t - s1)/tau) (s1 - tau + tau e^(-s1/tau)); n = 1 is expm1."""
+
+    name = "exp-tail"
+    heads = (sp.exp,)
+    #: the longest tail sought, and the longest sum searched
+    MAX_N = 12
+    MAX_TERMS = 64
+
+    @staticmethod
+    def _split(term):
+        """(coefficient, combined exponent) of a term: c exp(w), w = 0 without exponential."""
+        ws, rest = [], []
+        for f in sp.Mul.make_args(term):
+            (ws if isinstance(f, sp.exp) and f.args[0].free_symbols else rest).append(f)
+        return sp.Mul(*rest), sp.expand(sp.Add(*[f.args[0] for f in ws]))
+
+    @classmethod
+    def _terms(cls, e):
+        """The terms of e expanded, each as coefficient * exp(combined exponent)."""
+        out = {}
+        for t_ in sp.Add.make_args(sp.expand(e)):
+            c, w = cls._split(t_)
+            u = c * sp.exp(w) if w != 0 else c
+            out[u] = out.get(u, 0) + 1
+        return out
+
+    def apply(self, expr):
+        def do(e):
+            terms = self._terms(e)
+            if len(terms) > self.MAX_TERMS:       # each term is tried against each exponential: quadratic work
+                return e
+            out, changed = [], False
+            for t_ in list(terms):
+                if not terms.get(t_):
+                    continue
+                c0, wt = self._split(t_)
+                if wt == 0:
+                    continue
+                bases = [sp.S.Zero] + sorted({self._split(u)[1] for u in terms if terms[u]} - {wt, sp.S.Zero},
+                                             key=sp.default_sort_key)
+                best = None
+                for v in bases:
+                    c, w = c0 * sp.exp(v), sp.expand(wt - v)
+                    if not w.free_symbols:
+                        continue
+                    n, taken = 0, []
+                    while n < self.MAX_N:
+                        want = self._terms(-c * w**n / sp.factorial(n))
+                        if not all(terms.get(u, 0) >= taken.count(u) + k for u, k in want.items()):
+                            break
+                        taken.extend(u for u, k in want.items() for _ in range(k))
+                        n += 1
+                    if n and (best is None or n > best[0]):
+                        best = (n, c, w, taken)
+                if best is None:
+                    continue
+                n, c, w, taken = best
+                for u in taken + [t_]:
+                    terms[u] -= 1
+                out.append(c * exp_tail(n, w))
+                changed = True
+            if not changed:
+                return e
+            rest = [u for u, k in terms.items() for _ in range(k)]
+            return sp.Add(*out, *rest)
+        return expr.replace(lambda e: e.is_Add and e.has(sp.exp), do)
+
+
 class FactorDifferences(StableRule):
     """A rational sum that factors is replaced by its factored form
     (a**2 - x**2 = (a - x)(a + x), 1 - x**2/a**2 = (a - x)(a + x)/a**2 ...):
@@ -431,8 +509,8 @@ class FactorDifferences(StableRule):
 
 #: the rules in the order :func:`stabilize` applies them
 RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), SquareDifferences(),
-         AtanhToAsinh(),
-         AcoshToAsinh(), AsinhExcess(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(), HalfAngle(), FactorDifferences())
+         AtanhToAsinh(), AcoshToAsinh(), AsinhExcess(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(),
+         HalfAngle(), ExpTail(), FactorDifferences())
 
 
 # ====================================================================== driver

@@ -21,6 +21,7 @@ import pytest
 import sympy as sp
 
 from linecontact_sym.numeric import stable as ST
+from linecontact_sym.numeric import special
 from linecontact_sym.numeric.exports import lambdify_numpy
 from linecontact_sym.numeric.special import (MPMATH_FUNCS, NUMPY_FUNCS, carlson_rd, carlson_rf, carlson_rg,
                                              carlson_rj, gamma_ratio, hyp2f1c, mp_elliptic_pi, np_gamma_ratio,
@@ -86,8 +87,8 @@ def check_rule(rule, expr, point, ranges, lost, kept, ref_point=None):
 def test_rules_are_named_documented_and_ordered():
     names = [r.name for r in ST.RULES]
     assert names == ["elliptic-pi/incomplete->carlson", "elliptic->carlson", "hyp2f1-connection", "gamma-absorb",
-                     "gamma-ratio", "square-differences", "atanh->asinh", "acosh->asinh", "asinh-excess", "asin->atan", "acos->atan", "hyp2f1-complement",
-                     "conjugate", "log-of-power", "half-angle", "factor"]
+                     "gamma-ratio", "square-differences", "atanh->asinh", "acosh->asinh", "asinh-excess", "asin->atan", "acos->atan",
+                     "hyp2f1-complement", "conjugate", "log-of-power", "half-angle", "exp-tail", "factor"]
     for r in ST.RULES:
         assert isinstance(r, ST.StableRule)
         assert type(r).__doc__ and "=" in type(r).__doc__, f"{r.name}: the docstring states no identity"
@@ -351,6 +352,49 @@ def test_half_angle():
     assert rule.apply(other) == other
 
 
+def test_exp_tail():
+    """c tau^2 (t/tau - 1 + exp(-t/tau)) = c tau^2 exp_tail(2, -t/tau) (the Lee-Radok force of a
+    parabola on a Maxwell term): every digit at t = 1e-9 tau (the plain form has none);
+    the longest run of series terms present is taken (n = 3 here), and expm1 is n = 1."""
+    rule = ST.ExpTail()
+    w = -x / R
+    expr = sp.expand(c * R**2 * (x / R - 1 + sp.exp(-x / R)))
+    new = check_rule(rule, expr, {R: 1.0, x: 1e-9, c: 1.0}, {R: (1.0, 2.0), x: (0.1, 0.9), c: (1.0, 2.0)},
+                     lost=1e-3, kept=4 * EPS)
+    assert new == c * R**2 * special.exp_tail(2, w)
+    three = sp.expand(c * (sp.exp(w) - 1 - w - w**2 / 2)) + a
+    assert rule.apply(three) == a + c * special.exp_tail(3, w)
+    assert rule.apply(sp.exp(x) - 1) == special.exp_tail(1, x)
+    other = sp.exp(x) + 1                    # nothing cancels
+    assert rule.apply(other) == other
+
+
+def test_exp_tail_primitive():
+    """float64 exp_tail(n, z) against mpmath's exp(z) - sum z^k/k! at 60 digits
+    over z in +-[1e-300, 700], n = 0..6: within 8 eps (sign changes of z: the
+    Kummer series for z < 0, the plain difference for |z| large)."""
+    worst = 0.0
+    zs = [s_ * 10.0**e for e in np.linspace(-300, 2.8, 90) for s_ in (1, -1)]
+    for n_ in range(7):
+        got = special.np_exp_tail(n_, np.array(zs))
+        assert all(special.exp_tail_scalar(n_, z_) == pytest.approx(g, rel=4 * EPS, abs=1e-300)
+                   for z_, g in zip(zs[::7], got[::7]) if np.isfinite(g))     # the scalar path's twin
+        for z_, g in zip(zs, got):
+            # the plain difference at enough digits to absorb its cancellation (~ n |log10 z| for |z| < 1)
+            with mpmath.workdps(60 + int(n_ * max(0.0, -math.log10(abs(z_))))):
+                zz = mpmath.mpf(z_)
+                ref = mpmath.exp(zz) - mpmath.fsum(zz**k / mpmath.factorial(k) for k in range(n_))
+            if ref == 0 or not (1e-300 < abs(ref) < 1e300):
+                continue
+            worst = max(worst, float(abs((g - ref) / ref)) / EPS)
+    assert worst < 8, worst
+    assert float(special.np_exp_tail(2, -1e-10)) == pytest.approx(5e-21 * (1 - 1e-10 / 3), rel=1e-15)
+    assert sp.diff(special.exp_tail(3, x), x) == special.exp_tail(2, x)
+    e8 = sp.Rational(1, 10**8)                # evalf through mpmath: exp(-e8) - 1 + e8 = e8^2/2 - e8^3/6 + ...
+    series = sum((-e8)**k / sp.factorial(k) for k in range(2, 6))
+    assert abs(sp.N(special.exp_tail(2, -e8), 30) / series - 1) < 1e-28
+
+
 def test_factor_differences():
     """sqrt(a^2 - x^2) = sqrt(a - x) sqrt(a + x): at x = a(1 - 1e-12), a = 7.5,
     the rounded squares leave 4 digits."""
@@ -472,4 +516,4 @@ def test_hyp2f1c_near_one(abc, zc):
 
 def test_numpy_and_mpmath_tables_cover_every_primitive():
     assert set(NUMPY_FUNCS) == set(MPMATH_FUNCS) == {"carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj",
-                                                      "gamma_ratio", "hyp2f1c", "asinh_excess"}
+                                                      "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess"}

@@ -50,6 +50,9 @@ class LineContact(Contact):
     period : number or positive Symbol, optional
         A periodic array of period L (f given on 0 <= x <= L/2): see
         :class:`~.periodic.PeriodicLineContact`.
+    symmetric : bool
+        False: f is given on the whole line in the real x (``lcs.x_real``),
+        not mirrored: an :class:`~linecontact_sym.contacts.asymmetric.contact.AsymmetricLineContact`.
     verify : bool
         Check every closed form against mpmath quadrature (default True).
 
@@ -73,7 +76,14 @@ class LineContact(Contact):
     #: the contact class of each other geometry, by name (filled by the modules that define them)
     GEOMETRIES: dict = {}
 
-    def __new__(cls, *args, period=None, **kw):
+    def __new__(cls, *args, period=None, symmetric=True, **kw):
+        if symmetric is False and cls is LineContact:
+            if period is not None:
+                raise ProfileError("an asymmetric periodic array is not supported: give symmetric=False or period=L")
+            # not a LineContact (its quantities are in two ends): built whole here
+            return LineContact.GEOMETRIES["asymmetric"](*args, **kw)
+        if symmetric is not True:
+            raise ProfileError(f"symmetric must be True or False, got {symmetric!r}")
         if period is not None and cls is LineContact:
             cls = LineContact.GEOMETRIES["periodic"]
         return super().__new__(cls)
@@ -93,7 +103,7 @@ class LineContact(Contact):
 
     def __init__(self, profile, params=None, name: str | None = None,
                  budget: float = DEFAULT_BUDGET, verify: bool = True,
-                 points: int = 5, digits: int = REQUIRED_DIGITS, period=None):
+                 points: int = 5, digits: int = REQUIRED_DIGITS, period=None, symmetric=True):
         if period is not None and not isinstance(self, LineContact.GEOMETRIES["periodic"]):
             raise ProfileError("period= makes a periodic array: build it as LineContact(f, period=L)")
         self.profile = profile if isinstance(profile, Profile) else Profile(profile, params, name)
@@ -342,6 +352,27 @@ class LineContact(Contact):
         """a(P), see :func:`~.inverse.derive_half_width`."""
         return derive_half_width(self, load)
 
+    # --------------------------------------------------------------- tilt and moment
+    def asymmetric(self):
+        """This profile on the whole line (f(x) where it is even in x, else
+        f(|x|)) as an asymmetric contact, for a tilt or a moment (built once)."""
+        cache = self._caches()
+        if "_asymmetric" not in cache:
+            if not self.geometry.is_isolated:
+                raise DomainError("a tilt or a moment of a periodic array is not supported")
+            cls = LineContact.GEOMETRIES["asymmetric"]
+            from_line = cls.from_symmetric
+            cache["_asymmetric"] = from_line(self)
+        return cache["_asymmetric"]
+
+    def contact_at(self, P, theta=None, moment=None, **values):
+        """The contact at the load ``P`` with the tilt ``theta`` or the moment
+        ``moment`` about x = 0 (free rotation): an
+        :class:`~linecontact_sym.contacts.asymmetric.contact.AsymmetricState`.
+        theta = 0 (or M = 0, or neither given) is today's symmetric contact:
+        the half-width :meth:`half_width` at P, centred."""
+        return LineContact.GEOMETRIES["asymmetric"].symmetric_state(self, P, theta, moment, **values)
+
     # --------------------------------------------------------------- other forms
     def adhesive(self, work_of_adhesion=S.gamma):
         """The JKR-adhesive form of this contact (Eqs. 29-36), see
@@ -367,6 +398,13 @@ class LineContact(Contact):
         see :mod:`linecontact_sym.contacts.tangential.contact`."""
         from ..tangential.contact import TangentialLineContact
         return TangentialLineContact(self, friction)
+
+    def rolling(self, friction=S.mu):
+        """Steady rolling with traction under Coulomb friction mu (rolling in
+        +x, the stick zone at the leading edge; Carter for the cylinder), see
+        :mod:`linecontact_sym.contacts.rolling.contact`."""
+        from ..base import contact_kind   # by the registry: the rolling contact stands on the asymmetric core,
+        return contact_kind("rolling")(self, friction)   # which builds LineContacts (no import cycle)
 
     def viscoelastic(self, material):
         """This contact on a linear viscoelastic half-plane (Lee-Radok, Ting), see

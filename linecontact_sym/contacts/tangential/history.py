@@ -179,7 +179,7 @@ class TangentialState:
         return self._eval("slip", x)
 
 
-def _numbers(t, values):
+def numbers_at(t, values):
     """Keyword values -> (Symbol -> exact number) for the contact's variables,
     plus the half-width a (given, or from the normal load P)."""
     by_name = {s.name: s for s in t.variables}
@@ -240,7 +240,7 @@ def _stick(t, law, load, vals, A):
 def stick_half_width_at(t, Qv, values) -> TangentialState:
     """The monotonic-loading state at the tangential force Q (numbers)."""
     with workdps(30):
-        vals, law, A = _numbers(t, values)
+        vals, law, A = numbers_at(t, values)
         Pa, mu = law.P(A), friction_at(t, vals)
         Qm = to_mpf(sp.N(Qv, 40))
         load = Pa - abs(Qm) / mu
@@ -263,7 +263,7 @@ def reversal(t, Q_max, Q, values, branch) -> TangentialState:
         if not -Qx <= Qm <= Qx:
             raise DomainError(f"Q = {mpmath.nstr(Qm, 8)} lies outside [-Q_max, Q_max] = +-{mpmath.nstr(Qx, 8)}")
         dQ = Qx - Qm if branch == "unloading" else Qx + Qm
-        vals, law, _ = _numbers(t, values)
+        vals, law, _ = numbers_at(t, values)
         c_r = _stick(t, law, top.P - dQ / (2 * top.mu), vals, top.a)
         return TangentialState(branch, Qm, top.P, top.a, top.mu, top.c, c_r, Qx, top.values, t)
 
@@ -305,7 +305,7 @@ class FrettingCycle:
 def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
     """The fretting loop and the energy per cycle (see :class:`FrettingCycle`)."""
     top = stick_half_width_at(t, to_sympy_number(Q_amplitude), values)
-    vals, law, A = _numbers(t, values)
+    vals, law, A = numbers_at(t, values)
     fixed = {s.name: float(v) for s, v in vals.items()}
     with workdps(30):
         QA = abs(top.Q)
@@ -331,7 +331,7 @@ def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
 
 def bem(t, n, values):
     """A :class:`~.reference.CoulombBEM` of this contact at numbers."""
-    vals, law, A = _numbers(t, values)
+    vals, law, A = numbers_at(t, values)
     fixed = {s.name: float(v) for s, v in vals.items() if s in set(t.contact.variables)}
     brs = [float(b) for b in law.breaks()]
     with workdps(30):
@@ -339,5 +339,5 @@ def bem(t, n, values):
     return ref.CoulombBEM(float(A), fixed["E_star"], mu, _float_fn(t.contact, "stiffness", fixed), n, brs)
 
 
-__all__ = ["ONSET_RTOL", "FloatNormal", "TangentialState", "FrettingCycle", "stick_half_width_at", "reversal",
+__all__ = ["numbers_at", "ONSET_RTOL", "FloatNormal", "TangentialState", "FrettingCycle", "stick_half_width_at", "reversal",
            "cycle", "bem", "to_sympy_number"]

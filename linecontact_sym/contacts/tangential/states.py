@@ -374,7 +374,7 @@ def _derive_stick(t, Qv, fd, deadline) -> Derivation:
     variables = (S.a, Qv) + t.variables
     notes = (CONDITIONS,)
     if inv.closed_form and Qv == S.Q:
-        expr = _tidy_root(sp.simplify(inv.expr.xreplace({S.P: load})))
+        expr = tidy_root(sp.simplify(inv.expr.xreplace({S.P: load})))
         rec = None
         if t.contact.verify:
             left = deadline.left()
@@ -444,7 +444,7 @@ def in_terms_of(t, d: Derivation, Qv) -> Derivation:
                       variables=tuple(variables), attempts=d.attempts, cached=d.cached)
 
 
-def _tidy_root(e):
+def tidy_root(e):
     """sqrt(u)/sqrt(v) -> sqrt(expand(u/v)) for a non-negative square root
     (a half-width): c_s = sqrt(a**2 - 4 R |Q|/(pi E* mu)) for Hertz."""
     sq = e**2
@@ -456,4 +456,4 @@ def _tidy_root(e):
 
 
 __all__ = ["CONDITIONS", "normal_fn", "sampler", "references", "energy_parts", "energy_references",
-           "derive_stick_half_width", "in_terms_of"]
+           "derive_stick_half_width", "in_terms_of", "tidy_root"]

@@ -200,8 +200,20 @@ class ViscoelasticLineContact:
         s1 = t while a grows (Lee-Radok), s1 the loading time with
         a(s1) = a(t) after the maximum (Ting).  Closed where SymPy integrates,
         else an unevaluated Integral (numbers: :meth:`evaluate_at`)."""
+        from ...method import store
+        key = store.make_key("viscoelastic force history", self.Pi, self.material.relaxation, self.material.impulse,
+                             H.history_expr(a_t, "half-width"))
+        rec = store.get(key)
+        if rec is not None and "expr" in rec:       # a checked closed form of an earlier process
+            return rec["expr"]
         F = self._force_history(a_t, budget, True)
-        return self._checked(F, H.history_expr(a_t, "half-width"), lambda: self._force_history(a_t, budget, False))
+        F = self._checked(F, H.history_expr(a_t, "half-width"), lambda: self._force_history(a_t, budget, False))
+        if not F.has(sp.Integral):                  # an unevaluated form may be a loaded machine's timeout: not kept
+            try:
+                store.put(key, {"expr": F})
+            except TypeError:
+                pass
+        return F
 
     def _force_history(self, a_t, budget, closed):
         ph = phases(a_t)
@@ -291,7 +303,17 @@ class ViscoelasticLineContact:
         ``"pressure"`` (at ``x``) for a half-width history, or ``"half_width"``
         for a load history (creep; Ting after the maximum), at the parameter
         ``values``: tanh-sinh quadrature of the superposition at dps + 10
-        digits (positive integrands: no cancellation)."""
+        digits (positive integrands: no cancellation).
+
+        Not certified: the integrands hold the entry time t_b (an inverse of
+        a(t), found by root finding at numbers), the creep level and Ting's
+        loading time (roots of quadratures), which Arb's integrator
+        (:func:`~linecontact_sym.numeric.reference.integrate`, an integrand
+        compiled from a SymPy expression) cannot enclose.  Where the
+        history's form is a SymPy expression (closed, or an unevaluated
+        Integral with t_b solved symbolically), :meth:`evaluate` gives an Arb
+        enclosure: ``certified=True`` for a closed form, and beyond float64
+        for an unevaluated integral (one enclosure of it)."""
         if quantity not in ("force", "pressure", "half_width"):
             raise DomainError(f"unknown quantity {quantity!r}: one of force, pressure, half_width")
         dps = checked_dps(dps)
@@ -318,6 +340,51 @@ class ViscoelasticLineContact:
                     v = hist.pressure(_number("x", x, dps), tv)
         with workdps(dps):
             return +v
+
+    def history_quantities(self, a_t):
+        """The force and pressure histories of the half-width history ``a_t`` as
+        quantities of the package's ``evaluate`` (see :mod:`.accuracy`)."""
+        from .accuracy import HistoryQuantities
+        key = ("hq", H.history_expr(a_t, "half-width"))
+        if key not in self._cache:
+            self._cache[key] = HistoryQuantities(self, a_t)
+        return self._cache[key]
+
+    def to_numeric(self, quantity: str, history, backend: str = "numpy", dps: int = 30, **params):
+        """A callable ``fn(t=..., [x=...,] **parameters)`` of ``"force"`` (P(t))
+        or ``"pressure"`` (p(x, t)) for the half-width history ``history``:
+        ``backend='numpy'`` vectorised float64 of the stable form (the Maxwell
+        terms' exp tails as ``exp_tail``: accurate for t << tau, t >> tau and
+        tau from 1e-6 to 1e6 at t/tau from 1e-12 to 1e12, see
+        ``benchmarks/extremes.py``), ``'mpmath'`` at ``dps`` digits; keywords
+        given here are fixed once.  No domain check (NaN outside it)."""
+        from ...numeric.functions import make_callable
+        from .accuracy import history_quantity
+        q = history_quantity(quantity)
+        return make_callable(self.history_quantities(history).derivation(q), backend, dps, params)
+
+    def evaluate(self, quantity: str, history, rtol: float | None = None, certified: bool = False,
+                 dps: int | None = None, **values):
+        """``"force"`` (P(t)) or ``"pressure"`` (p(x, t)) of the half-width
+        history ``history``, or ``"half_width"`` (a(t)) of the load history
+        ``history`` (creep, a load that never decreases: the closed form of
+        :meth:`half_width_history`), at ``values`` (t, x, the parameters) to the
+        tolerance ``rtol`` by the cheapest path that meets it: the stable
+        float64 export of the closed form when its error estimate does, mpmath
+        at the digits rtol asks otherwise, an Arb ball with ``certified=True``
+        (an :class:`~linecontact_sym.numeric.evaluate.Evaluation`; see
+        :func:`~linecontact_sym.numeric.evaluate.evaluate`).
+
+        >>> import sympy as sp, linecontact_sym as lcs
+        >>> v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=sp.Symbol("tau", positive=True)))
+        >>> r = v.evaluate("force", lcs.t / 10, t=1e-9, tau=1.0, R=1.0, rtol=1e-12)
+        >>> r.path, round(r.value / (3.141592653589793e-20 / 400), 6)   # pi E0 t^2 a'^2/(4 R) at t << tau
+        ('float64', 1.0)
+        """
+        from ...numeric.evaluate import evaluate
+        from .accuracy import history_quantity
+        q = history_quantity(quantity)
+        return evaluate(self.history_quantities(history), q, rtol=rtol, certified=certified, dps=dps, **values)
 
     def half_width_at(self, t, load, dps: int = 30, **values):
         """a(t) under the load history ``load`` (creep), see :meth:`evaluate_at`."""

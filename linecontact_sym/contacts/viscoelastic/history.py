@@ -164,7 +164,7 @@ def start_value(expr):
 
 
 def _history_callable(expr, values, what):
-    expr = history_expr(expr, what)
+    expr = history_expr(expr, what)             # a plain number is a step history (text parsed, never eval)
     sub = {sym: user_value(values[sym.name], sym.name) for sym in expr.free_symbols - {S.t} if sym.name in values}
     e = history_expr(expr, what).xreplace(sub)
     if e.free_symbols - {S.t}:

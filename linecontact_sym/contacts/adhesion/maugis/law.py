@@ -61,6 +61,7 @@ from ...sampling import point_sampler
 from . import choice as maugis_choice
 from .choice import ModelChoice
 from .derive import dugdale_parts
+from .limits import jkr_limit
 from .numbers import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
@@ -146,7 +147,9 @@ class MaugisDugdale(CohesiveLaw):
             out = b.on_top(P, dP)
             # P(0+) = -2 sigma_0 c0 is not 0: the generic minimum descends towards a -> 0+ (equilibria.descent)
             out.P_zero = lambda: law.force_zero_width(mpmath.mp.dps)
-            out.scan = ScanHint(lambda: law.c0(15) / 1000, 8,
+            # from c0/1000, but never above the profile's own scale/1000: a bounded profile (1 - cos x) at a
+            # tiny sigma_0 has c0 ~ 1e10, and a scan from 1e7 lay past the whole admissible range (a* = 2.4)
+            out.scan = ScanHint(lambda: min(law.c0(15), b.scale) / 1000, 8,
                                 "no Maugis-Dugdale extremum lies within 1/8 decade of another, nor above the first "
                                 "a past every kink with P > 0 and dP/da > 0 (the Dugdale term's slope tends to 0 "
                                 "from below as a grows, dP0/da >= 0); below c0/1000 the descent follows dP/da")
@@ -403,6 +406,29 @@ class MaugisDugdaleContact(AdhesiveContact):
                 A = mpmath.mpf(sp.N(e, dps + 20))
         with _real_profile(self, values):
             return law.state(A, dps)
+
+    # ------------------------------------------------------------ pull-off: the JKR limit first
+    def pull_off_at(self, dps: int = 30, budget=None, **values):
+        """The generic pull-off (:meth:`AdhesiveContact.pull_off_at`), except where the Maugis
+        parameter is so large that the JKR pull-off agrees with this law's to more than ``dps``
+        digits by a stated bound (:func:`.limits.jkr_limit`): then that one, without the
+        Maugis-Dugdale search (sigma_0 = 10**100 or 1e300: the JKR pull-off, at once)."""
+        from ...normal.cases import case_of
+        if case_of(self, values) is self:
+            from ....core.budget import checked_budget
+            from ...normal.equilibria import SEARCH_BUDGET, searching_until
+            vals = self._numeric_values(values)
+            with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
+                lim = jkr_limit(self, vals, dps)
+            if lim is not None:
+                return lim
+        return super().pull_off_at(dps, budget, **values)
+
+    def _pull_off_checked(self, vals, dps):
+        from ...normal.equilibria import within_search_budget
+        with within_search_budget():
+            lim = jkr_limit(self, vals, dps)
+        return lim if lim is not None else super()._pull_off_checked(vals, dps)
 
     def displacement_control(self):
         """Not defined for line contacts: raises with the reason."""
