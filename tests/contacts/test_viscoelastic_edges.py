@@ -73,8 +73,10 @@ def test_text_is_parsed_never_evaluated():
     lambda v: v.dissipated_work(t, 1, 0, points=20, R=1),
     lambda v: v.dissipated_work(t, 0, 10, points=20, R=1),
     lambda v: v.dissipated_work(t, 1, 10, points=0, R=1),
+    lambda v: v.evaluate("force", t / 10, t=1j, R=1),
 ], ids=["t=nan", "t=inf", "t=1j", "t=text", "t=None", "x=nan", "x=text", "R<0", "R=0", "dps=0",
-        "rtol<0", "rtol=nan", "rtol=text", "t_end=0", "L<0", "L=0", "work t_end=0", "points=0"])
+        "rtol<0", "rtol=nan", "rtol=text", "t_end=0", "L<0", "L=0", "work t_end=0", "points=0",
+        "evaluate t=1j"])
 def test_numbers_at_the_entry_are_checked(call):
     """A time, a point, a tolerance, a length, a count or a profile value outside its
     range was a TypeError, ZeroDivisionError, StopIteration, NaN or a negative load."""

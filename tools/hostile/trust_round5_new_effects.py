@@ -279,6 +279,22 @@ def visco_cases():
         sp.Piecewise((t, t <= 1), (2 - t, True)), 2, 10, points=0, R=1)))
     add("evaluate_at dps=0", refused(lambda: mx(E0=1, tau=1).evaluate_at("force", 1, t / 10, dps=0, R=1)))
     add("evaluate_at dps=-5", refused(lambda: mx(E0=1, tau=1).evaluate_at("force", 1, t / 10, dps=-5, R=1)))
+    # evaluate (the tolerance path of issue 41), where the checkout has it
+    from linecontact_sym.contacts.viscoelastic import ViscoelasticLineContact
+    if hasattr(ViscoelasticLineContact, "evaluate"):
+        ev = lambda **k: mx(E0=2, tau=1).evaluate("force", t / 10, **{"R": 1, **k})   # noqa: E731
+        add("evaluate rtol=1e-12", lambda: close(ev(t=1, rtol=1e-12).value,
+                                                  lee_radok(lambda u: 2 * mpmath.exp(-u), lambda s: s / 10, lambda s: 0.1, 1),
+                                                  1e-11, "P"))
+        for k in (dict(t=NAN), dict(t=-1), dict(t="abc"), dict(t=1, rtol=-1), dict(t=1, rtol=NAN), dict(t=1, R=-1),
+                  dict(t=1, R=0), dict(t=1j)):
+            add(f"evaluate {k}", refused(lambda k=k: ev(**k)))
+        add("evaluate history text 'import os'", refused(
+            lambda: mx(E0=2, tau=1).evaluate("force", "__import__('os').getcwd()", t=1, R=1)))
+        add("evaluate history -t", refused(lambda: mx(E0=2, tau=1).evaluate("force", -t, t=1, R=1)))
+        add("evaluate certified", lambda: close(mx(E0=2, tau=1).evaluate("force", t / 10, t=1, R=1, certified=True).value,
+                                                lee_radok(lambda u: 2 * mpmath.exp(-u), lambda s: s / 10, lambda s: 0.1, 1),
+                                                1e-14, "P"))
     # profiles
     add("not convex profile", answer_or_refusal(
         lambda: lcs.LineContact(x**2 - x**4, verify=False).viscoelastic(lcs.maxwell(E0=1, tau=1)).evaluate_at("force", 1, t, dps=15),
