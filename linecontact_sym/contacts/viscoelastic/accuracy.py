@@ -33,7 +33,7 @@ from ...core.ranges import check_values
 from ...method.derivation import Derivation, fallback_step
 from ...method.rulebase import Step
 from ...parsing import user_value
-from ..base import _checked_value
+from ..base import checked_value
 from .history import history_expr
 
 QUANTITIES = ("force_history", "pressure_history", "half_width_history")
@@ -90,7 +90,7 @@ class HistoryQuantities:
         check_values(values)
         out = dict(values)
         for k, val in values.items():
-            val = out[k] = _checked_value(k, val, None)   # a finite real number (arrays elementwise): 1j is no time
+            val = out[k] = checked_value(k, val, None)   # a finite real number (arrays elementwise): 1j is no time
             try:
                 num = to_mpf(val)
             except (TypeError, ValueError):

@@ -16,7 +16,7 @@ from ...core.budget import run_with_budget
 from ...core.errors import BudgetExceeded, DomainError, LineContactError
 from ...core.precision import checked_dps, workdps
 from ...core.ranges import check_points, check_tolerance
-from ..base import _checked_value
+from ..base import checked_value
 from ...method.material import Material
 from . import history as H
 from .history import MultipleMaximaError
@@ -43,7 +43,7 @@ def _integrate(f, var, lo, hi, budget):
 def _number(name, value, dps, positive=False):
     """A time, a point or a length as the user gives it: a finite real number
     (text by the whitelisted parser), > 0 where ``positive``; an mpf at dps + 15 digits."""
-    v = _checked_value(name, value, None)
+    v = checked_value(name, value, None)
     if not isinstance(v, (int, float, sp.Basic)):
         raise DomainError(f"{name} must be one number, got {value!r}")
     v = sp.sympify(v) if isinstance(v, (int, float)) else v       # a plain number (never text here)

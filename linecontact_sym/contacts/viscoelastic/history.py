@@ -23,7 +23,7 @@ from ...core.errors import DomainError, LineContactError
 from ...core.quadrature import relational_breakpoints
 from ...core.roots import Outside
 from ...parsing import to_sympy, user_value
-from ..base import _checked_value
+from ..base import checked_value
 from ..normal.equilibria import half_width_at
 from ..normal.force_law import ForceLaw
 
@@ -54,7 +54,7 @@ class Numbers:
             if s.name not in values:
                 raise DomainError(f"the profile needs a value for {s.name}")
             # a finite real number, positive where the symbol is declared so (R = -1: the profile upside down)
-            pvals[s] = user_value(_checked_value(s.name, values[s.name], s), s.name)
+            pvals[s] = user_value(checked_value(s.name, values[s.name], s), s.name)
         self.pvals = pvals
         self.law = ForceLaw.from_contact(contact, {S.E_star: sp.Integer(1), **pvals})
         self.m = material.numeric(**{k: v for k, v in values.items() if k in {p.name for p in material.parameters}})
