@@ -223,7 +223,7 @@ class Contact:
         if unknown and not q.method:
             raise DomainError(f"{name} takes no value named {', '.join(map(repr, unknown))}; "
                               f"it takes {', '.join(sorted(known)) or 'none'}")
-        vals = {k: _checked_value(k, v, known.get(k)) for k, v in values.items()}
+        vals = {k: checked_value(k, v, known.get(k)) for k, v in values.items()}
         for k in q.nonnegative:
             if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
@@ -504,7 +504,7 @@ def _as_float_array(v):
     return v if isinstance(v, (float, np.ndarray)) else float(v)
 
 
-def _checked_value(name, v, sym):
+def checked_value(name, v, sym):
     """A value given by a user: a finite real number (exact where given
     exactly) or a NumPy array of them; positive where the symbol is."""
     if type(v) in (float, int):  # the common, fast case
@@ -812,4 +812,4 @@ def qualified_quantities() -> dict:
     return out
 
 
-__all__ = ["Quantity", "Contact", "CONTACT_KINDS", "contact_kind", "qualified_quantities", "DOMAINS"]
+__all__ = ["Quantity", "Contact", "CONTACT_KINDS", "contact_kind", "qualified_quantities", "DOMAINS", "checked_value"]

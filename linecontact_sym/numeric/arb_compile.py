@@ -264,6 +264,8 @@ _SEVERAL = {
     "carlson_rj": (_several(flint.acb.elliptic_rj, (_NEG, _NEG, _NEG, _NEG)), True),
     "gamma_ratio": (_several(lambda u, v: v.rgamma() * u.gamma(), ((), ())), True),   # order: see mul
     "exp_tail": (_several(_arb_exp_tail, ((), ())), True),
+    # w sqrt(1 + w^2) - asinh(w): the plain form on balls (rigorous; Arb's precision loop pays the cancellation)
+    "asinh_excess": (_several(lambda w: w * (1 + w * w).sqrt() - w.asinh(), ((),)), False),
     "elliptic_pi2": (_several(flint.acb.elliptic_pi, (_ABOVE_ONE, _ABOVE_ONE)), True),
     "elliptic_f": (_several(flint.acb.elliptic_f, ((), ())), False),
     "elliptic_e2": (_several(flint.acb.elliptic_e_inc, ((), ())), False),

@@ -62,8 +62,9 @@ from ..core.precision import workdps
 
 sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
-__all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "exp_tail", "np_rf", "np_rd", "np_rg",
-           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "np_exp_tail", "exp_tail_scalar", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
+__all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess",
+           "np_rf", "np_rd", "np_rg", "np_rj", "np_gamma_ratio", "np_hyp2f1c", "np_exp_tail", "exp_tail_scalar",
+           "np_asinh_excess", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
 
 
 class _StableFunction(sp.Function):
@@ -183,6 +184,25 @@ class carlson_rj(_StableFunction):
     Pi(n|m) = R_F(0, 1 - m, 1) + (n/3) R_J(0, 1 - m, 1, 1 - n)."""
     nargs = 4
     _mp = staticmethod(_mp_rj)
+
+
+def _mp_asinh_excess(w):
+    """w sqrt(1 + w^2) - asinh(w) at the working precision: the two terms agree to
+    about 2 log2(1/|w|) bits for small w (the difference is 2 w^3/3 - w^5/5 + ...),
+    so they are formed with that many bits more."""
+    w = mpmath.mpmathify(w)
+    extra = 2 * max(0, -int(mpmath.mag(w))) + 10 if w != 0 else 0
+    with mpmath.workprec(mpmath.mp.prec + extra):
+        v = w * mpmath.sqrt(1 + w * w) - mpmath.asinh(w)
+    return +v
+
+
+class asinh_excess(_StableFunction):
+    """w sqrt(1 + w^2) - asinh(w) = int_0^w 2 s^2/sqrt(1 + s^2) ds (real w), without
+    the cancellation of its two terms as w -> 0 (a periodic array's gap near full
+    contact, or at its contact edge)."""
+    nargs = 1
+    _mp = staticmethod(_mp_asinh_excess)
 
 
 class gamma_ratio(_StableFunction):
@@ -497,6 +517,26 @@ class _BroadcastLogical:
         return functools.reduce(self.ufunc, operands)
 
 
+#: 2 (-1)^k C(2k, k) 4^-k / (2k + 3): w sqrt(1 + w^2) - asinh(w) = w^3 sum_k c_k w^(2k)
+_ASINH_EXCESS = [2 * (-1)**k * math.comb(2 * k, k) / 4**k / (2 * k + 3) for k in range(24)]
+
+
+def np_asinh_excess(w):
+    """float64 w sqrt(1 + w^2) - asinh(w): its Taylor series for |w| < 1/4 (24 terms:
+    (1/16)^24 below an ulp), the two terms beyond (they cancel by less than 1/16 there)."""
+    w = np.asarray(w, dtype=float)
+    small = np.abs(w) < 0.25
+    w2 = w * w
+    ser = np.zeros_like(w)
+    ws = np.where(small, w2, 0.0)           # the series only where it is used (no overflow beyond)
+    for c in reversed(_ASINH_EXCESS):
+        ser = ser * ws + c
+    with np.errstate(over="ignore", invalid="ignore"):
+        direct = w * np.hypot(1.0, w) - np.arcsinh(w)
+    out = np.where(small, w * w2 * ser, direct)
+    return out[()] if out.ndim == 0 else out
+
+
 def np_exp_tail(n, z):
     """float64 exp(z) - sum_{k<n} z^k/k! (``n`` a scalar integer): where the
     difference cancels (-max(30, 4n) < z < max(40, 2n + 20)) the series
@@ -567,7 +607,7 @@ NUMPY_LOGIC = {"logical_and": _BroadcastLogical(np.logical_and), "logical_or": _
 
 NUMPY_FUNCS = {"carlson_rf": np_rf, "carlson_rd": np_rd, "carlson_rg": np_rg, "carlson_rj": np_rj,
                "gamma_ratio": np_gamma_ratio,
-               "hyp2f1c": np_hyp2f1c, "exp_tail": np_exp_tail}
+               "hyp2f1c": np_hyp2f1c, "exp_tail": np_exp_tail, "asinh_excess": np_asinh_excess}
 MPMATH_FUNCS = {"carlson_rf": _mp_rf, "carlson_rd": _mp_rd, "carlson_rg": _mp_rg, "carlson_rj": _mp_rj,
                 "gamma_ratio": _mp_gamma_ratio,
-                "hyp2f1c": _mp_hyp2f1c, "exp_tail": _mp_exp_tail}
+                "hyp2f1c": _mp_hyp2f1c, "exp_tail": _mp_exp_tail, "asinh_excess": _mp_asinh_excess}

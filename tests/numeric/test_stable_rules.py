@@ -87,7 +87,7 @@ def check_rule(rule, expr, point, ranges, lost, kept, ref_point=None):
 def test_rules_are_named_documented_and_ordered():
     names = [r.name for r in ST.RULES]
     assert names == ["elliptic-pi/incomplete->carlson", "elliptic->carlson", "hyp2f1-connection", "gamma-absorb",
-                     "gamma-ratio", "square-differences", "atanh->asinh", "acosh->asinh", "asin->atan", "acos->atan",
+                     "gamma-ratio", "square-differences", "atanh->asinh", "acosh->asinh", "asinh-excess", "asin->atan", "acos->atan",
                      "hyp2f1-complement", "conjugate", "log-of-power", "half-angle", "exp-tail", "factor"]
     for r in ST.RULES:
         assert isinstance(r, ST.StableRule)
@@ -214,6 +214,37 @@ def test_acosh_to_asinh():
                lost=1e-6, kept=4 * EPS)
     other = sp.acosh(sp.exp(x))
     assert rule.apply(other) == other
+
+
+def test_asinh_excess():
+    """s t - S^2 asinh(t/S), t = sqrt((x - a)(x + a)), S = a: the parabola's (and, in
+    sines, the periodic array's) gap after acosh->asinh, whose terms cancel to
+    2 t^3/(3 S) at the contact edge: at x = a (1 + 1e-14) the plain float64 keeps
+    two digits, the rewritten one (asinh_excess, its series) 4 eps; a pair whose
+    first term is not S^2 w sqrt(1 + w^2) is left alone."""
+    rule = ST.AsinhExcess()
+    t_ = sp.sqrt((x - a) * (x + a))
+    expr = x * t_ - a**2 * sp.asinh(t_ / a)
+    new = check_rule(rule, expr, {a: 1.0, x: 1 + 1e-14}, {a: (0.1, 0.9), x: (1.0, 2.0)}, lost=1e-3, kept=4 * EPS)
+    assert new.has(ST.asinh_excess) and not new.has(sp.asinh)
+    other = 2 * x * t_ - a**2 * sp.asinh(t_ / a)
+    assert rule.apply(other) == other
+
+
+def test_asinh_excess_primitive_against_the_plain_form():
+    """float64 asinh_excess(w) (series below 1/4, the two terms above) and the mpmath
+    one against w sqrt(1 + w^2) - asinh(w) at 400 digits, w from 1e-100 to 1e10."""
+    from linecontact_sym.numeric.special import np_asinh_excess
+    ws = [1e-100, 1e-20, 1e-8, 1e-3, 0.1, 0.2499999, 0.25, 0.5, 1.0, 3.0, 1e3, 1e10]
+    got = np_asinh_excess(np.array(ws))
+    for w, g in zip(ws, got):
+        with mpmath.workdps(400):          # the plain form keeps 400 - 2 log10(1/w) digits
+            W = mpmath.mpf(w)
+            ref = W * mpmath.sqrt(1 + W * W) - mpmath.asinh(W)
+            assert abs(g / ref - 1) < 4 * EPS, (w, g, ref)
+        assert abs(float(np_asinh_excess(-w)) + g) <= 4 * EPS * abs(g)         # odd
+        with mpmath.workdps(30):
+            assert abs(MPMATH_FUNCS["asinh_excess"](mpmath.mpf(w)) / ref - 1) < mpmath.mpf(10)**-29
 
 
 def test_asin_to_atan():
@@ -485,4 +516,4 @@ def test_hyp2f1c_near_one(abc, zc):
 
 def test_numpy_and_mpmath_tables_cover_every_primitive():
     assert set(NUMPY_FUNCS) == set(MPMATH_FUNCS) == {"carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj",
-                                                      "gamma_ratio", "hyp2f1c", "exp_tail"}
+                                                      "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess"}

@@ -188,8 +188,10 @@ class PeriodicLineContact(LineContact):
                               step=fallback_step(f"no closed form in s ({how})"), notes=kd.notes,
                               reference=reference, variables=variables, attempts=kd.attempts)
         expr = g.from_kernel(kd.expr, quantity)
+        # the gap's formula holds for a < x <= L/2 (the next contact begins at L - a; the
+        # stable rewrites are checked on that range: asinh-excess needs sin(pi x/L) > 0)
         conds = tuple(dict.fromkeys([g.condition_from_kernel(c) for c in kd.conditions]
-                                    + [sp.Le(S.a, g.a_max())]))
+                                    + [sp.Le(S.a, g.a_max())] + ([sp.Le(S.x, g.a_max())] if quantity == "gap" else [])))
         rec = None
         if self.verify:
             rec = verify(expr, reference, self._sampler(domain), conds, n_points=self.points,

@@ -33,6 +33,8 @@ from ...core.ranges import check_values
 from ...method.derivation import Derivation, fallback_step
 from ...method.rulebase import Step
 from ...parsing import user_value
+from ..base import checked_value
+from .history import history_expr
 
 QUANTITIES = ("force_history", "pressure_history", "half_width_history")
 
@@ -54,7 +56,7 @@ class HistoryQuantities:
     profile = None
 
     def __init__(self, v, a_t):
-        self.v, self.history = v, sp.sympify(a_t)
+        self.v, self.history = v, history_expr(a_t)      # text parsed, never evaluated
         self._d = {}
 
     def derivation(self, quantity: str) -> Derivation:
@@ -88,6 +90,7 @@ class HistoryQuantities:
         check_values(values)
         out = dict(values)
         for k, val in values.items():
+            val = out[k] = checked_value(k, val, None)   # a finite real number (arrays elementwise): 1j is no time
             try:
                 num = to_mpf(val)
             except (TypeError, ValueError):
