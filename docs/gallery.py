@@ -105,6 +105,78 @@ def periodic_contact():
     wavy.plot("wavy_pressure", values={"h": 1, "L": 1})
 
 
+def asymmetric_contact():
+    """Tilted and asymmetric contacts
+
+    Left: the pressure under the asymmetric profile x^2/2 + x^3/10 (not
+    mirrored) at the load P = 1 and three tilts theta; the contact [e - a,
+    e + a] moves with the tilt and both edges stay smooth.  Right: the flat
+    punch |x| < 1 under the moments M = 0.2, 0.5, 0.65 (P = 1): complete
+    contact with square-root singular corners while M < P w/2, the left
+    corner's factor vanishing at M = P w/2 = 0.5, then the left edge lifts
+    and is smooth.  Dotted lines: smooth ends, dashed: corners.
+    """
+    import matplotlib.pyplot as plt
+    import linecontact_sym as lcs
+
+    xr = lcs.x_real                                   # the whole line: the profile is not mirrored
+    cubic = lcs.LineContact(xr**2 / 2 + xr**3 / 10, symmetric=False)
+    punch = lcs.flat_punch(1)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 3.6))
+    for theta in (-0.3, 0.1, 0.3):
+        cubic.contact_at(P=1, theta=theta, E_star=2).plot(ax=left)
+    for M in (0.2, 0.5, 0.65):
+        punch.contact_at(P=1, moment=M, E_star=1).plot(ax=right)
+    left.set(title="x^2/2 + x^3/10, P = 1, tilted", ylim=(0, 1.2))
+    right.set(title="flat punch |x| < 1, P = 1, moment M", ylim=(0, 3))
+    for ax in (left, right):
+        ax.legend(fontsize=8, loc="upper left")
+
+
+def steady_rolling():
+    """Steady rolling with traction
+
+    The traction q (solid) under mu p (dashed) at Q = 0.5 mu P (P = 1,
+    mu = 0.3), rolling in +x: the stick zone (shaded) at the leading edge,
+    slip with q = mu p behind it.  Left, the parabola: Carter's stick
+    half-width c_s = a sqrt(1 - Q/(mu P)); right, the quartic x^4, whose
+    stick zone comes out of the engine the same way.
+    """
+    import matplotlib.pyplot as plt
+    import sympy as sp
+    import linecontact_sym as lcs
+
+    k = sp.Symbol("k", positive=True)
+    carter = lcs.parabola(verify=False).rolling(0.3)
+    quartic = lcs.LineContact(k * lcs.x**4, verify=False).rolling(0.3)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 3.6))
+    carter.state_at(Q=0.15, P=1, E_star=1, R=1).plot(ax=left, title="parabola (Carter), Q = 0.5 mu P")
+    quartic.state_at(Q=0.15, P=1, E_star=1, k=1).plot(ax=right, title="$x^4$, Q = 0.5 mu P")
+    right.get_legend().remove()
+
+
+def viscoelastic_contact():
+    """Viscoelastic contact
+
+    A parabola (R = 1) on a standard linear solid, E*(t) = 1 + 2 exp(-2t),
+    pressed in and withdrawn at a constant rate, a(t) = t/2 then (4 - t)/2:
+    the force P(t) (Lee-Radok while the contact grows, Ting after) lies
+    between the elastic forces with the instantaneous modulus E*(0) and the
+    relaxed one E*(oo) while loading, drops when the contact starts to
+    recede and then relaxes onto the relaxed one.
+    """
+    import sympy as sp
+    import linecontact_sym as lcs
+
+    t = lcs.t
+    zener = lcs.standard_linear_solid(E0=3, E_inf=1, tau=sp.Rational(1, 2))
+    v = lcs.parabola(points=1).viscoelastic(zener)
+    cycle = sp.Piecewise((t / 2, t <= 2), ((4 - t) / 2, t <= 4), (0, True))
+    fig = v.plot(cycle, 4, points=40, R=1)            # P(t) over a(t)
+    fig.axes[0].legend(fontsize=8, loc="upper left")
+    fig
+
+
 def entries() -> list:
     """``(name, heading, caption, code)`` per entry, in the order written."""
     here = sys.modules[__name__]
