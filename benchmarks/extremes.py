@@ -24,6 +24,8 @@ EXTREME_GRID = {
     # b/a (worn cylinder flat half-width over contact half-width)
     "b_over_a": [1e-12, 1e-6, 0.1, 0.5, 0.9, 1 - 1e-6, 1 - 1e-12, 1.0, 1.5],
     # 2a/L of a periodic array (period L): from an isolated-like contact to full contact
+    # (force, pressure, and the sinusoid's gap up to full contact: rule asinh-excess; the
+    # gap's x/a runs over x_out up to the crest L/2, e.g. 1 + 1e-8 at 2a/L = 1 - 1e-7)
     "a_over_half_L": [1e-12, 1e-8, 1e-4, 0.1, 0.5, 0.9, 1 - 1e-4, 1 - 1e-7, 1 - 1e-12],
     # 2M/(P w) of a flat punch of half-width w under the load P and the moment M: complete
     # contact (both corners) up to 1, one corner lifted beyond (asymmetric contacts)
@@ -34,7 +36,41 @@ EXTREME_GRID = {
     "x_across": [1e-12, 1e-8, 1e-4, 0.1, 0.5, 0.9, 1 - 1e-4, 1 - 1e-8, 1 - 1e-12],
     # absolute scales the ratios are applied at
     "a": [1e-3, 1.0, 7.5],
+    # viscoelastic histories: t/tau (t << tau: the Maxwell terms' exp tails cancel in the
+    # plain form; t >> tau: relaxed), at the relaxation times tau (tau -> 0 and tau -> oo
+    # at a fixed t are the two ends of t/tau at these scales)
+    "t_over_tau": [1e-12, 1e-8, 1e-4, 1e-2, 0.5, 1.0, 2.0, 30.0, 1e4, 1e8, 1e12],
+    "tau": [1e-6, 1.0, 1e6],
+    # the weight of a second Prony term relative to the first (a tiny weight: 1e-12)
+    "prony_weight": [1e-12, 1e-4, 1.0],
+    # Ting's receding phase of a = r t then r (2 t1 - t): t1/tau, and (t - t1)/t1 in (0, 1)
+    "t1_over_tau": [1e-12, 1e-6, 1e-2, 1.0, 1e2, 1e6],
+    "receding": [1e-8, 0.1, 0.5, 0.9, 1 - 1e-6],
 }
+
+
+def viscoelastic_points(names, size: str = "full"):
+    """Points of :data:`EXTREME_GRID` for a force history P(t) at a constant
+    rate of a (argument names ``names``): t = (t/tau) tau over the grid of
+    t/tau and tau; a second relaxation time tau_2 = 10 tau (Prony), its weight
+    E_2 = w E0 over ``prony_weight``; other parameters one generic value
+    (r = 0.1, R = 2, c = 1.3, theta = 0.3, E0 = 2, E_inf = 0.5).  ``size='small'``:
+    one tau.  With a maximum time t1 among ``names`` (a = r t, then r (2 t1 - t)):
+    the receding phase t = t1 (1 + f) over ``t1_over_tau`` and ``receding`` at tau = 1."""
+    G = EXTREME_GRID
+    if "t1" in names:           # Ting's receding phase, t = t1 (1 + f)
+        return [{k: v for k, v in {"t": u * (1 + f), "t1": u, "tau": 1.0, "r": 0.1, "R": 2.0, "E0": 2.0}.items()
+                 if k in names} for u in G["t1_over_tau"] for f in G["receding"]]
+    taus = G["tau"] if size == "full" else [1.0]
+    weights = G["prony_weight"] if "E_2" in names else [None]
+    pts = []
+    for tau, u, w in itertools.product(taus, G["t_over_tau"], weights):
+        pt = {"t": u * tau, "tau": tau, "tau_1": tau, "tau_2": 10 * tau, "r": 0.1, "R": 2.0, "c": 1.3,
+              "theta": 0.3, "E0": 2.0, "E_1": 2.0, "E_inf": 0.5}
+        if w is not None:
+            pt["E_2"] = w * 2.0
+        pts.append({k: pt[k] for k in names if k in pt})
+    return pts
 
 
 def extreme_points(names, quantity: str, size: str = "full"):

@@ -50,6 +50,19 @@ def main():
     load = sp.Piecewise((t, t <= 1), (1 - 3 * (t - 1), True))
     dt, val = timed(lambda: m.half_width_at(sp.Rational(6, 5), load, dps=15, R=1))
     rows.append(("creep, Ting receding phase (Maxwell, load cycle), t = 1.2, 15 digits", dt, val))
+    # accuracy on request (v.evaluate): float64 / mpmath / Arb by rtol, the Arb enclosure of an
+    # unevaluated history integral beyond float64 (issue 41 follow-up)
+    tau, r = sp.symbols("tau r", positive=True)
+    sym = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=tau))
+    pt = dict(t=1e-9, tau=1.0, r=0.1, R=1.0)
+    sym.evaluate("force", r * t, rtol=1e-12, **pt)      # derive and compile once
+    for label, kw in (("rtol 1e-12", dict(rtol=1e-12)), ("rtol 1e-30", dict(rtol=1e-30)),
+                      ("certified, 25 digits", dict(certified=True, dps=25))):
+        dt, ev = timed(lambda kw=kw: sym.evaluate("force", r * t, **kw, **pt))
+        rows.append((f"  evaluate force at t/tau = 1e-9, {label} (warm)", dt, f"{ev.value} via {ev.path}"))
+    gauss = lcs.parabola(verify=False).viscoelastic(lcs.Material(2 * sp.exp(-(t / tau)**2)))
+    dt, ev = timed(lambda: gauss.evaluate("force", t / 10, rtol=1e-20, t=0.7, tau=1.0, R=1.0))
+    rows.append(("Gaussian relaxation (no closed history): evaluate rtol 1e-20 (cold)", dt, f"{ev.value} via {ev.path}"))
     for what, sec, value in rows:
         print(f"{what:72s} {sec:8.3f} s   {value}")
 

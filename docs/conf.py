@@ -1,11 +1,14 @@
 """Sphinx configuration of the linecontact_sym documentation.
 
-Builds offline (no intersphinx, no downloads): ``python -m sphinx -b html docs docs/_build``.
-The notebooks in ../notebooks become the tutorials: each is converted here,
-at build time, to a Markdown page (its text, its code and the text and image
-outputs stored in it) with nbformat; nothing is executed.
+Builds offline (no intersphinx, no downloads; MathJax is served from the
+build's own ``_static``): ``python -m sphinx -b html docs docs/_build/html``.
+The notebooks in ../notebooks are the tutorials: MyST-NB executes each at
+build time and shows its outputs (formulas as LaTeX, tables, figures); the
+executed notebooks are kept in a jupyter-cache (``docs/_build/.jupyter_cache``,
+or the folder ``LINECONTACT_SYM_DOCS_CACHE`` names), so a rebuild of unchanged
+notebooks executes nothing.  A cell that raises fails the build.  The gallery
+(docs/gallery.py) is a page of the same kind, executed the same way.
 """
-import base64
 import os
 import shutil
 import sys
@@ -17,9 +20,21 @@ sys.path.insert(0, str(ROOT))
 
 project = "linecontact_sym"
 author = "linecontact_sym authors"
-release = "0.1.0"
+# the version pyproject.toml holds (the one place of it; linecontact_sym.__version__ reads it so too)
+from linecontact_sym.core.version import package_version  # noqa: E402
+
+release = version = package_version()
 extensions = ["sphinx.ext.autodoc", "sphinx.ext.autosummary", "sphinx.ext.napoleon", "sphinx.ext.mathjax",
-              "myst_parser"]
+              "myst_nb"]
+try:
+    # MathJax 3 shipped in a Python package and copied into the build's _static:
+    # the pages render their formulas without a network (sphinx.ext.mathjax alone
+    # loads MathJax from a CDN)
+    import importlib.util
+    if importlib.util.find_spec("sphinx-mathjax-offline") is not None:
+        extensions.append("sphinx-mathjax-offline")
+except (ImportError, ValueError):
+    pass
 # the API reference: one page per module of the package, generated from the docstrings at build time
 autosummary_generate = True
 # autosummary writes a page per module but never removes one: a renamed module
@@ -28,9 +43,21 @@ autosummary_generate = True
 # (git-ignored), so every build starts it afresh
 shutil.rmtree(DOCS / "reference", ignore_errors=True)
 autosummary_imported_members = False
-source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 myst_enable_extensions = ["dollarmath"]
-exclude_patterns = ["_build", "gallery.py"]
+exclude_patterns = ["_build", "gallery.py", "**.ipynb_checkpoints"]
+
+# ---- the notebooks (MyST-NB): executed at build time, outputs cached (jupyter-cache)
+nb_execution_mode = "cache"
+nb_execution_cache_path = os.environ.get("LINECONTACT_SYM_DOCS_CACHE") or str(DOCS / "_build" / ".jupyter_cache")
+nb_execution_raise_on_error = True      # a cell that raises fails the build
+nb_execution_show_tb = True
+nb_execution_timeout = 240              # seconds a cell
+# the kernels import this tree's package (not another installed copy), and the
+# notebooks take their quick path (LINECONTACT_SYM_NOTEBOOK_QUICK: the Popov
+# reproduction checks the claims of a second or less; the full check is the CLI's paper job)
+if os.environ.get("PYTHONPATH", "").split(os.pathsep)[0] != str(ROOT):
+    os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (str(ROOT), os.environ.get("PYTHONPATH")) if p)
+os.environ.setdefault("LINECONTACT_SYM_NOTEBOOK_QUICK", "1")
 templates_path = ["_templates"]
 html_theme = "alabaster"
 autodoc_member_order = "bysource"
@@ -76,81 +103,40 @@ def _definitions_on_demand():
     ModuleAnalyzer.find_tags = find_tags
 
 
-def _notebook_to_markdown(src: Path, out: Path) -> list:
-    """Write the notebook as a Markdown page; return its figures as
-    ``(image path relative to docs/, caption)``: the caption is the first
-    sentence of the Markdown cell before the figure's code cell."""
-    import nbformat
-    nb = nbformat.read(src, as_version=4)
-    img_dir = out.parent / "img"
-    img_dir.mkdir(parents=True, exist_ok=True)
-    lines = [f"<!-- generated from notebooks/{src.name} by docs/conf.py; edit the notebook -->", ""]
-    figures, said = [], ""
-    for i, cell in enumerate(nb.cells):
-        if cell.cell_type == "markdown":
-            lines += [cell.source, ""]
-            said = _first_sentence(cell.source)
-        elif cell.cell_type == "code":
-            lines += ["```python", cell.source, "```", ""]
-            for j, o in enumerate(cell.get("outputs", [])):
-                data = o.get("data", {})
-                if "image/png" in data:
-                    name = f"{src.stem}-{i}-{j}.png"
-                    (img_dir / name).write_bytes(base64.b64decode(data["image/png"]))
-                    lines += [f"![output](img/{name})", ""]
-                    figures.append((f"tutorials/img/{name}", said))
-                elif o.get("output_type") == "stream" or "text/plain" in data:
-                    text = o.get("text") or data.get("text/plain", "")
-                    lines += ["```text", "".join(text).rstrip(), "```", ""]
-    out.write_text("\n".join(lines), encoding="utf-8")
-    return figures
+def _copy_if_changed(src: Path, dst: Path) -> None:
+    """Copy with the source's time stamp, and only when the contents differ:
+    Sphinx rereads (and MyST-NB asks its cache about) only what changed."""
+    if not dst.exists() or dst.read_bytes() != src.read_bytes():
+        shutil.copy2(src, dst)
 
 
-def _first_sentence(md: str) -> str:
-    text = " ".join(ln.strip().lstrip("#").strip() for ln in md.splitlines() if ln.strip())
-    for stop in (". ", ": "):
-        if stop in text:
-            text = text[:text.index(stop) + 1]
-    return text[:160]
-
-
-def _generate_tutorials(app):
+def _generate_pages(app):
+    """docs/tutorials/: every notebook of notebooks/ (copied; git-ignored) and
+    an index whose toctree globs them, so a new notebook needs no edit here;
+    docs/gallery.md: the gallery page, a MyST notebook written from docs/gallery.py."""
     gen = DOCS / "tutorials"
     gen.mkdir(exist_ok=True)
-    names, figures = [], []
-    for nb in sorted((ROOT / "notebooks").glob("*.ipynb")):
-        figures += [(path, cap, nb.stem) for path, cap in _notebook_to_markdown(nb, gen / f"{nb.stem}.md")]
-        names.append(nb.stem)
-    toc = ["# Tutorials", "", "The notebooks of `notebooks/`, as stored (run them with Jupyter to see every output).",
-           "", "```{toctree}", ":maxdepth: 1", ""] + names + ["```", ""]
-    (gen / "index.md").write_text("\n".join(toc), encoding="utf-8")
-    _generate_gallery(figures)
-
-
-def _generate_gallery(figures):
-    """docs/gallery.md: every figure of the notebooks (as stored) and of the
-    documentation pages, each with its caption and where it comes from."""
-    out = ["<!-- generated by docs/conf.py -->", "# Gallery", "",
-           "The figures the package draws, each with the code that draws it (``python docs/gallery.py`` "
-           "draws them again), the figures stored in the tutorials' outputs, and those of these pages.", ""]
-    for path, cap, stem in figures:
-        out += [f"## {stem.replace('_', ' ')}: {cap}" if cap else f"## {stem.replace('_', ' ')}", "",
-                f"![{cap or stem}]({path})", "", f"From the tutorial [{stem}](tutorials/{stem}.md).", ""]
+    notebooks = sorted((ROOT / "notebooks").glob("*.ipynb"))
+    for nb in notebooks:
+        _copy_if_changed(nb, gen / nb.name)
+    for old in gen.glob("*.ipynb"):         # a notebook removed from notebooks/
+        if not (ROOT / "notebooks" / old.name).exists():
+            old.unlink()
+    for old in gen.glob("*.md"):            # pages of the former notebook-to-Markdown conversion
+        if old.name != "index.md":
+            old.unlink()
+    index = "\n".join(["# Tutorials", "",
+                       "The notebooks of `notebooks/`, executed when these pages were built: every output "
+                       "below is the notebook's own (the quick path, `LINECONTACT_SYM_NOTEBOOK_QUICK=1`).",
+                       "", "```{toctree}", ":maxdepth: 1", ":glob:", "", "*", "```", ""])
+    if not (gen / "index.md").exists() or (gen / "index.md").read_text(encoding="utf-8") != index:
+        (gen / "index.md").write_text(index, encoding="utf-8")
     sys.path.insert(0, str(DOCS))
-    import gallery                      # the captions and code only: nothing is drawn here
-    for stem, cap, code in gallery.entries():
-        if (DOCS / "gallery" / f"{stem}.png").exists():
-            out += [f"## {cap.split(': ')[0].split(' (')[0]}", "", f"![{stem}](gallery/{stem}.png)", "",
-                    cap, "", "```python", "import linecontact_sym as lcs", code, "```", ""]
-    for png in sorted(DOCS.glob("*.png")):
-        # the pages that show it (not this gallery's own page: its copy from an earlier build
-        # named every figure, so a second build said "Shown in gallery", a first did not)
-        used = [md.stem for md in sorted(DOCS.glob("*.md"))
-                if md.name != "gallery.md" and png.name in md.read_text(encoding="utf-8")]
-        out += [f"## {png.stem.replace('_', ' ')}", "", f"![{png.stem}]({png.name})", ""]
-        if used:
-            out += ["Shown in " + ", ".join(f"[{u}]({u}.md)" for u in used) + ".", ""]
-    (DOCS / "gallery.md").write_text("\n".join(out), encoding="utf-8")
+    import gallery
+    page = gallery.page()
+    out = DOCS / "gallery.md"
+    if not out.exists() or out.read_text(encoding="utf-8") != page:
+        out.write_text(page, encoding="utf-8")
 
 
 def _absolute_values(app, what, name, obj, options, lines):
@@ -223,5 +209,5 @@ def setup(app):
     logging.getLogger("sphinx").addFilter(_PlainTextDocstrings())
     for h in logging.getLogger("sphinx").handlers:
         h.addFilter(_PlainTextDocstrings())
-    app.connect("builder-inited", _generate_tutorials)
+    app.connect("builder-inited", _generate_pages)
     app.connect("autodoc-process-docstring", _absolute_values)

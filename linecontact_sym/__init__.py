@@ -16,8 +16,6 @@ from .core.errors import (LineContactError, ProfileError, UnknownSymbolError, In
                           DomainError, DivergentIntegralError, VerificationError, BudgetExceeded, ClaimError,
                           NoPullOffError, NoEquilibriumError, GrossSlidingError)
 
-__version__ = "0.1.0"
-
 #: public name -> the module it comes from (imported on first use)
 _LAZY = {
     "Profile": ".method.profile",
@@ -69,12 +67,31 @@ __all__ = [
 ]
 
 
+def _import(relative: str):
+    """``importlib.import_module(relative, __name__)``, parents first
+    (``.contacts``, then ``.contacts.normal``, then ``.contacts.normal.contact``).
+    Two threads importing two submodules of one package at once
+    (``lcs.LineContact`` and ``lcs.profile_from_force``) each take the
+    module lock of the submodule first and then wait for the package's, which
+    the other holds while its ``__init__`` imports the first's submodule: a
+    deadlock (Python raises ``_DeadlockError``).  Taking the locks from the top,
+    one at a time, in the one direction the layers import, has no cycle."""
+    parts = relative.lstrip(".").split(".")
+    module = None
+    for i in range(1, len(parts) + 1):
+        module = importlib.import_module("." + ".".join(parts[:i]), __name__)
+    return module
+
+
 def __getattr__(name):
-    if name in _LAZY:
-        module = importlib.import_module(_LAZY[name], __name__)
+    if name == "__version__":           # pyproject.toml's (core/version.py), read on first use
+        from .core.version import package_version
+        value = package_version()
+    elif name in _LAZY:
+        module = _import(_LAZY[name])
         value = module if name == "catalogue" else getattr(module, name)
     elif name in _SUBMODULES:
-        value = importlib.import_module("." + name, __name__)
+        value = _import("." + name)
     else:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     globals()[name] = value          # looked up once

@@ -113,56 +113,23 @@ def _profile(text, symbols=(), where="PROFILE"):
     return parse_expr(text, symbols=list(symbols or ()), where=where)
 
 
-_WITH_UNIT = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z\u00b5\u03bc][A-Za-z0-9_*/^ .\u00b5\u03bc]*)\s*")
-
-
 def _settings(items, symbols=()):
-    """``--set NAME=VALUE ...``: numbers (parsed by the whitelisted parser);
-    a number with a unit (``E_star=210GPa``, ``R=5 mm``; the ``[units]``
-    extra, pint's unit parser, nothing evaluated) is converted to the SI
-    unit declared for NAME (:data:`~linecontact_sym.core.symbols.UNITS`),
-    exactly as typed in decimal; a wrong dimension, or a name without a
-    declared unit, is bad input naming the unit."""
+    """``--set NAME=VALUE ...``: each value read by the one reader of typed
+    numbers (:func:`linecontact_sym.parsing.parse_number`): a plain number
+    first (``2.1e11``, ``1/3``), an expression of numbers (``pi/4``), and
+    only where the text is neither a number with a unit (``E_star=210GPa``,
+    ``R=5 mm``; the ``[units]`` extra, pint's unit parser, nothing
+    evaluated), converted to the SI unit declared for NAME
+    (:data:`~linecontact_sym.core.symbols.UNITS`); a wrong dimension, or a
+    name without a declared unit, is bad input naming the unit."""
     from .parsing import parse_assignments
-    plain, out = [], {}
-    for item in items or []:
-        name, _, val = item.partition("=")
-        m = _WITH_UNIT.fullmatch(val) if "=" in item else None
-        if m is None:
-            plain.append(item)
-            continue
-        out[name.strip()] = _si_value(name.strip(), m.group(1), m.group(2).strip())
-    values = parse_assignments(plain, where="--set", symbols=list(symbols or ()))
-    if out:
-        extra = parse_assignments([f"{k}={v}" for k, v in out.items()], where="--set", symbols=list(symbols or ()))
-        values.update(extra)
-    return values
+    return parse_assignments(items or [], where="--set", symbols=list(symbols or ()), units=S.UNITS)
 
 
-def _si_value(name, number, unit_text):
-    """The SI value (decimal text) of ``number unit_text`` for the setting ``name``."""
-    from .core.errors import DomainError
-    from .core.extras import require
-    unit = S.UNITS.get(name)
-    if unit is None:
-        raise DomainError(f"--set {name}={number}{unit_text}: {name} has no declared unit; give it in SI as a "
-                          f"plain number")
-    pint = require("units", "pint")
-    reg = _unit_registry(pint)
-    try:
-        q = reg.Quantity(number) * reg.parse_units(unit_text)
-        si = q.to(unit or "dimensionless").magnitude
-    except pint.DimensionalityError:
-        raise DomainError(f"--set {name}={number}{unit_text}: the unit {unit_text!r} is not one of "
-                          f"{unit or 'a dimensionless number'} ({name})") from None
-    except Exception as exc:  # noqa: BLE001 -- pint's parser refusing the text
-        raise DomainError(f"--set {name}={number}{unit_text}: {unit_text!r} is not a unit ({exc})") from None
-    return repr(float(si))
-
-
-def _unit_registry(pint):
-    """pint's application registry: one per process, built on first use."""
-    return pint.get_application_registry()
+def _has_unit(items) -> bool:
+    """Some ``NAME=VALUE`` of ``items`` carries a unit (the result is then said in SI)."""
+    from .parsing.numbers import split_unit
+    return any("=" in i and split_unit(i.partition("=")[2]) is not None for i in items or [])
 
 
 def _contact(args, profile, values=None):
@@ -329,6 +296,13 @@ def cmd_derive(args):
     quantities = [q.strip() for q in (args.quantities or ",").split(",") if q.strip()] or ["force", "pressure", "gap"]
     if args.quantities is not None and not args.quantities.replace(",", "").strip():   # '' is no choice
         raise LineContactError("--quantities names no quantity (e.g. force,pressure,gap)")
+    if args.law is not None and not args.adhesion:
+        # a cohesive law named is an adhesive derivation asked for: --law implies --adhesion (said on stderr)
+        args.adhesion = True
+        if not args.quiet:
+            print(f"--law {args.law} implies --adhesion: the adhesive laws of {args.law} follow the "
+                  f"frictionless ones", file=sys.stderr)
+    args.law = args.law or "jkr"
     known = [n for n, q in type(c).quantities().items() if not q.method]    # a periodic array has more
     adhesive = ("force", "pressure", "adhesion_force", "pull_off_force", "pull_off_half_width")
     for q in (q for q in quantities if q not in known and not (args.adhesion and q in adhesive)):
@@ -342,8 +316,12 @@ def cmd_derive(args):
             raise LineContactError(f"--law {args.law}: unknown cohesive law; one of {', '.join(LAWS)}")
         ad = LAWS[args.law].from_frictionless(c)
         registry = type(ad).quantities()
-        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22)
-                 if q in quantities or (args.quantities is None and q != "pull_off_force")]
+        todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22);
+                 if q in quantities or args.quantities is None]     # by default all five, the pull-off P_min too
+    if getattr(args, "rolling", False):   # steady rolling with traction (Carter for this profile)
+        from .contacts.base import contact_kind
+        rolling = contact_kind("rolling").from_frictionless(c)
+        todo += [(f"rolling.{q}", rolling, q) for q in ("tangential_force", "creepage", "stick_half_width")]
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -460,19 +438,20 @@ def cmd_eval(args):
     mat = _material(args)
     if state and mat is not None:
         raise LineContactError("--theta/--moment and a viscoelastic material together are not supported")
-    if not state and q not in _registry() and mat is None:
-        raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(_registry())}")
+    c = _contact(args, prof)
+    own = {} if state else _own_quantities(c)   # the contact's own (a periodic array: nominal_pressure, ...) first
+    if not state and q not in own and q not in _registry() and mat is None:
+        raise LineContactError(f"unknown quantity {q!r}; choose one of {', '.join(dict.fromkeys([*own, *_registry()]))}")
     grids = {}
     for item in args.at or []:
         if "=" not in item:
             raise LineContactError(f"--at expects NAME=V1,V2,..., got {item!r}")
         name, vs = item.split("=", 1)
-        grids[name.strip()] = parse_number_list(vs, where=f"--at {name.strip()}")
+        grids[name.strip()] = parse_number_list(vs, where=f"--at {name.strip()}", name=name.strip(), units=S.UNITS)
     total = math.prod(len(v) for v in grids.values())
     if total > MAX_EVAL_POINTS:
         raise LineContactError(f"--at spans {total} points (the product of the grids); at most "
                                f"{MAX_EVAL_POINTS} per call")
-    c = _contact(args, prof)
     names = list(grids)
     fixed = {k.name: v for k, v in values.items()}
     rows = []
@@ -492,8 +471,9 @@ def cmd_eval(args):
                     "dps": args.dps, "rows": rows})
     else:
         head = "  ".join(f"{n:>12}" for n in names) + f"  {q}"
-        if any("=" in i and _WITH_UNIT.fullmatch(i.partition("=")[2]) for i in args.set or []):
-            unit = getattr(_registry()[q][2], "unit", None)      # values with units: the result in SI, said
+        if _has_unit(list(args.set or []) + list(args.at or [])):
+            quantity = type(c).quantities()[own[q]] if q in own else _registry().get(q, (None, None, None))[2]
+            unit = getattr(quantity, "unit", None)      # values with units: the result in SI, said
             head += f" [{unit or 'SI'}]"
         print(head)
         for r in rows:
@@ -501,10 +481,27 @@ def cmd_eval(args):
     return EXIT_OK if all(r.get("value") is not None for r in rows) else EXIT_INPUT
 
 
+def _own_quantities(c) -> dict:
+    """Name (and alias) -> registry name of the frictionless contact's own
+    quantities: those of its class (a periodic array's nominal_pressure,
+    full_contact_force, ...), which the registry of kinds does not list."""
+    out = {}
+    for name, quantity in type(c).quantities().items():
+        out[name] = name
+        for al in quantity.aliases:
+            out.setdefault(al, name)
+    return out
+
+
 def _eval_one(c, q, values, dps):
     from .contacts.base import contact_kind
-    kind, name, quantity = _registry()[q]
-    contact = contact_kind(kind).from_frictionless(c)
+    own = _own_quantities(c)
+    if q in own:                       # the contact's own quantity, on the contact itself
+        contact, name = c, own[q]
+        quantity = type(c).quantities()[name]
+    else:
+        kind, name, quantity = _registry()[q]
+        contact = contact_kind(kind).from_frictionless(c)
     if quantity.method:  # a(P), c_s(Q): the load is the last argument, passed first
         load_name = quantity.arguments[-1]
         if load_name not in values:
@@ -635,7 +632,8 @@ def build_parser() -> argparse.ArgumentParser:
                 description="Closed-form line (2-D) contact laws by Popov's (2017) flat-punch superposition: "
                             "derive, evaluate, tabulate, and check published formulas.",
                 epilog=EXIT_HELP + " A formula starting with '-' may be typed as it is (or after --).")
-    p.add_argument("--version", action="version", version="%(prog)s 0.1.0")
+    from .core.version import package_version
+    p.add_argument("--version", action="version", version=f"%(prog)s {package_version()}")
     sub = p.add_subparsers(dest="verb", metavar="VERB")
     sub.required = True
 
@@ -680,9 +678,13 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--quantities", default=None, help="comma-separated, from: " + ", ".join(_expression_quantities(
         "frictionless")) + " (default force,pressure,gap); --adhesion: also adhesion_force, pull_off_force, ...")
     pd.add_argument("--adhesion", action="store_true", help="also the adhesive laws (default: JKR, Eqs. 29-36): "
-                    "force, pressure, P_adh, a at pull-off, or those of --quantities")
+                    "force, pressure, the pull-off P_min and P_adh = -P_min, a at pull-off, or those of --quantities")
+    pd.add_argument("--rolling", action="store_true", help="also steady rolling with traction (rolling in +x, "
+                    "the stick zone [a - 2 c_s, a] at the leading edge): the tangential force Q(a, c_s), the "
+                    "creepage xi(a, c_s) and the stick half-width c_s(Q) (Carter for the cylinder)")
     viscoelastic_options(pd)
-    pd.add_argument("--law", default="jkr", help="the cohesive law of --adhesion (registered: jkr, ...)")
+    pd.add_argument("--law", default=None, help="the cohesive law of --adhesion (registered: jkr, maugis_dugdale; "
+                    "default jkr); naming one implies --adhesion")
     pd.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (a number or a "
                     "symbol; the profile given on 0 <= x <= L/2): also nominal_pressure, full_contact_force, "
                     "full_contact_pressure")

@@ -181,7 +181,8 @@ SLOW_TESTS = {
                     "test_module_entry_point_runs", "test_paper_job_writes_report_table_and_figures",
                     "test_paper_shipped_subset_json",
                     "test_item9_cli_edges_are_input_errors"],
-    "test_docs.py": ["test_sphinx_site_builds_offline"],
+    "test_docs.py": ["test_sphinx_site_builds_offline", "test_a_tutorial_shows_its_formulas_and_figures",
+                     "test_a_rebuild_executes_nothing", "test_gallery_draws_every_entry_with_its_code"],
     "test_extras.py": ["test_the_package_imports_without_the_extras"],
     "test_no_eval.py": ["test_no_string_can_reach_eval"],
     "test_notebooks.py": ["test_notebook_runs"],
@@ -213,3 +214,20 @@ def pytest_collection_modifyitems(config, items):
             continue
         if (rel, getattr(item, "originalname", item.name)) in slow:
             item.add_marker(pytest.mark.slow)
+
+
+# ---------------------------------------------------------------- the docs site
+# Built once per test session (tests/docs_site.py): the build executes every
+# notebook, tests/test_docs.py reads its pages and tests/test_notebooks.py its
+# executed notebooks.  Their tests are one xdist group ("docs", --dist loadgroup
+# in pyproject.toml), so one worker builds it, once.
+@pytest.fixture(scope="session")
+def docs_site(tmp_path_factory):
+    pytest.importorskip("sphinx")
+    pytest.importorskip("myst_nb")
+    pytest.importorskip("ipykernel")
+    import docs_site as site
+    out = tmp_path_factory.mktemp("docs")
+    proc = site.build(out)
+    assert proc.returncode == 0, proc.stderr[-5000:]
+    return out, proc

@@ -1,5 +1,6 @@
-"""Jupyter kernels for the notebook test, forked from one process that has
-imported what every kernel imports (tests/test_notebooks.py).
+"""Jupyter kernels for the docs build of the test session (tests/docs_site.py,
+which executes every notebook), forked from one process that has imported
+what every kernel imports.
 
 A fresh kernel process spends about 2.5 CPU s before the notebook's first
 result: importing ipykernel and IPython, then the notebook's own imports
@@ -50,7 +51,7 @@ _LIBRARIES = ("scipy.optimize", "scipy.special", "sympy.physics.units", "sympy.c
               "sympy.combinatorics", "sympy.tensor.tensor", "sympy.tensor.array.expressions",
               "sympy.sets.setexpr", "numpy.f2py", "numpy.testing", "numpy.polynomial", "numpy.random",
               "numpy.fft", "multiprocessing.connection", "multiprocessing.popen_fork",
-              "matplotlib.backends.backend_agg", "PIL.features")
+              "matplotlib.backends.backend_agg", "PIL.features", "PIL.PngImagePlugin")
 
 
 def _preload() -> None:
@@ -69,9 +70,9 @@ def _preload() -> None:
             pass
     try:
         import matplotlib  # noqa: F401
-        if os.environ.get("MPLBACKEND", "").lower() == "agg":
-            # the backend a kernel of this environment selects anyway (not the inline one)
-            import matplotlib.pyplot  # noqa: F401
+        # pyplot (and its font list) without a backend: pyplot selects the backend at
+        # its first figure, in the kernel (the inline one, set by _kernel, or MPLBACKEND's)
+        import matplotlib.pyplot  # noqa: F401
     except ImportError:
         pass
 
@@ -87,6 +88,12 @@ def _kernel(request: dict) -> None:
         os.chdir(request["cwd"])
         if "numpy" in sys.modules:      # a fork shares its parent's NumPy seed; a fresh kernel draws its own
             sys.modules["numpy"].random.seed()
+        if "matplotlib" in sys.modules and not os.environ.get("MPLBACKEND"):
+            # a fresh kernel sets MPLBACKEND to the inline backend before its first import
+            # of matplotlib, which reads it (ipykernel's init_gui_pylab); here matplotlib
+            # was imported before: its backend is set as that import would have set it
+            # (no figure was made in the zygote, so pyplot has selected no backend yet)
+            sys.modules["matplotlib"].rcParams["backend"] = "module://matplotlib_inline.backend_inline"
         from ipykernel import kernelapp
         # the kernel ends when its parent does, as one the test started would (ipykernel
         # read JPY_PARENT_PID when the zygote imported it): its parent is the zygote

@@ -344,6 +344,18 @@ def test_model_maugis_dugdale(capsys):
     assert code == 0 and json.loads(out)["model"] == "JKR"
 
 
+@pytest.mark.slow
+def test_rolling_mode_of_derive_and_eval(capsys):
+    """derive --rolling gives Carter's creepage; eval evaluates it at carter2d (stick half-width 0.6)."""
+    code, out, _ = run(capsys, "derive", "x**2/(2*R)", "--rolling", "--quantities", "force", "--json", "--quiet")
+    assert code == 0
+    got = json.loads(out)["quantities"]
+    assert got["rolling.creepage"]["expr"] == "mu*(a - c_s)/R"
+    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "rolling.creepage", "--at", "c_s=0.6", "--set", "a=1", "R=500",
+                       "E_star=113888.9", "mu=0.3", "--json")
+    assert code == 0 and float(json.loads(out)["rows"][0]["value"]) == pytest.approx(2.4e-4, rel=1e-25)
+
+
 @pytest.mark.parametrize("argv,match", [
     (["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "--dps", "0"], "digits must be"),
     (["eval", "x**2/(2*R)", "force", "--at", "a=oo", "--set", "R=1", "E_star=1"], "finite real"),
@@ -435,3 +447,75 @@ def test_item7_cli_eval_bad_value_on_stderr():
     with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
         code = cli.main(["eval", "x**2/(2*R)", "force", "--at", "a=-1", "--set", "R=1", "E_star=1"])
     assert code == 2 and "a = -1" in err.getvalue() and "positive" in err.getvalue()
+
+
+# ------------------------------------------------------------------ issue 42 (trust, round 5)
+def test_derive_law_implies_adhesion(capsys):
+    """--law without --adhesion printed the non-adhesive laws alone; a cohesive law named is an
+    adhesive derivation asked for (said on stderr)."""
+    code, out, err = run(capsys, "derive", "x**2/(2*R)", "--law", "jkr", "--quantities", "force", "--json")
+    assert code == 0 and "implies --adhesion" in err
+    q = json.loads(out)["quantities"]
+    assert q["force"]["expr"] == "pi*E_star*a**2/(4*R)"
+    assert q["adhesive_force"]["expr"] == "-sqrt(2)*sqrt(pi)*sqrt(E_star)*sqrt(a)*sqrt(gamma) + pi*E_star*a**2/(4*R)"
+
+
+def test_maugis_dugdale_on_an_array_is_refused_as_by_the_api(capsys, tmp_path):
+    """derive exited 3 (an internal error); a claims file got 'holds' at 45 digits."""
+    code, _, err = run(capsys, "derive", "h*(1 - cos(2*pi*x/L))", "--symbols", "h", "L", "--period", "L",
+                       "--adhesion", "--law", "maugis_dugdale")
+    assert code == 2 and "maugis_dugdale law on a periodic array is not derived yet" in err
+    f = tmp_path / "md.toml"
+    f.write_text(textwrap.dedent('''
+        key = "t"
+        symbols = ["h", "L"]
+        [[claims]]
+        label = "md zone"
+        quantity = "maugis_dugdale.zone_force"
+        profile = "h*(1 - cos(2*pi*x/L))"
+        period = "L"
+        formula = "2*sigma_0*sqrt(c_D**2 - a**2)"
+        '''))
+    code, out, _ = run(capsys, "check", str(f), "--json")
+    r = json.loads(out)["claims"][0]
+    assert code == 4 and r["status"] == "undecided" and "periodic array is not derived yet" in json.dumps(r)
+
+
+def test_claims_period_zero_is_bad_input(capsys, tmp_path):
+    f = tmp_path / "p.toml"
+    f.write_text('key = "t"\nsymbols = ["h"]\n[[claims]]\nlabel = "p0"\nquantity = "force"\n'
+                 'profile = "h*(1 - cos(2*pi*x))"\nperiod = "0"\nformula = "h"\n')
+    code, _, err = run(capsys, "check", str(f))
+    assert code == 2 and "period" in err and "must be positive" in err
+
+
+def test_claims_file_ranges_are_read_and_checked_at_load(capsys, tmp_path):
+    """The file's [ranges] as a claim's own: numbers in any notation, a negative range of a positive
+    symbol bad input (exit 2; was an undecided claim), a unit refused (a claims file takes SI)."""
+    claim = ('[[claims]]\nlabel = "hertz"\nquantity = "force"\nprofile = "x**2/(2*R)"\n'
+             'formula = "pi*E_star*a**2/(4*R)"\n')
+    for rng, expected in (('["-1", "1"]', 2), ('["1mm", "2mm"]', 2)):
+        f = tmp_path / "r.toml"
+        f.write_text(f'key = "t"\n[ranges]\nR = {rng}\n' + claim)
+        code, _, err = run(capsys, "check", str(f))
+        assert code == expected and "ranges.R" in err, (rng, err)
+
+
+def test_eval_takes_the_arrays_own_quantities(capsys):
+    """eval --period ... nominal_pressure was refused as unknown."""
+    code, out, err = run(capsys, "eval", "h*(1 - cos(2*pi*x/L))", "nominal_pressure", "--symbols", "h", "L",
+                         "--period", "L", "--at", "a=0.1", "--set", "h=1", "L=1", "E_star=1", "--dps", "20")
+    assert code == 0, err
+    import mpmath
+    # Westergaard: pbar = pi E* h sin(pi a/L)**2 / L, computed here
+    with mpmath.workdps(30):
+        assert mpmath.nstr(mpmath.pi * mpmath.sin(mpmath.pi / 10)**2, 20) in out
+
+
+@pytest.mark.slow
+def test_derive_adhesion_prints_the_wedges_pull_off(capsys):
+    """The pull-off P_min = -pi gamma/(2 tan theta) is among the default adhesive quantities."""
+    code, out, _ = run(capsys, "derive", "x*tan(theta)", "--adhesion", "--json")
+    q = json.loads(out)["quantities"]
+    assert code == 0 and q["pull_off_force"]["expr"] == "-pi*gamma/(2*tan(theta))"
+    assert q["adhesion_force"]["expr"] == "pi*gamma/(2*tan(theta))"

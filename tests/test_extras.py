@@ -52,7 +52,7 @@ def test_plotting_without_matplotlib(monkeypatch):
     monkeypatch.setitem(sys.modules, "matplotlib.pyplot", None)
     monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
     with pytest.raises(MissingExtraError, match=r'pip install "linecontact_sym\[plot\]"'):
-        plots._figure_class()
+        plots.figure_class()
 
 
 def test_the_package_imports_without_the_extras():

@@ -26,7 +26,7 @@ from .references import (DPS, Comparison, DerivedUndefined, Divergent, Undefined
                          numeric_minimum, resolution)
 from .memo import minimum_key, point_key, remember, remembered
 from .results import REQUIRED_DIGITS, PointResult
-from .spec import ASYMMETRIC_QUANTITIES, PLACEHOLDER_FORCE, PLACEHOLDER_P0, Claim, range_of
+from .spec import ASYMMETRIC_QUANTITIES, PLACEHOLDER_FORCE, PLACEHOLDER_P0, VISCOELASTIC, Claim, range_of
 from ..core.precision import workdps
 
 
@@ -274,6 +274,8 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
             physics = _pressure_physics(profile, lambda vals, dps: _from_derivation(fd).value(vals, dps),
                                         c.profile.breakpoints)
         return _from_derivation(d, profile, slope, physics)
+    if q in VISCOELASTIC:
+        return _derive_viscoelastic(claim, profile, ctx)
     adhesive = adhesive_entry(q)
     if adhesive is not None:
         return _derive_adhesive(claim, profile, ctx, *adhesive)
@@ -293,6 +295,38 @@ def derive(claim: Claim, profile, ctx: Context) -> Derived:
     if q == "punch_adhesion_force":
         return _punch_adhesion_force(ctx)
     return _derive_registered(claim, profile, ctx)
+
+
+def _derive_viscoelastic(claim, profile, ctx) -> Derived:
+    """P(t) for the half-width history a(t), or a(t) for the load history P(t)
+    (creep), of the claim's profile on the claim's material: the engine's
+    closed form (Popov's superposition in time), or the unevaluated one with
+    the superposition's quadrature at the points."""
+    from ..method.material import Material
+    t0 = time.perf_counter()
+    c = ctx.contact(profile, claim.range_of, claim.period)
+    key = ("viscoelastic", claim.quantity, id(c), claim.material, claim.impulse, claim.history)
+    if key in ctx.kinds:             # the claims of one history (its right and wrong formulas) derive it once
+        return ctx.kinds[key]
+    v = c.viscoelastic(Material(claim.material, claim.impulse, "the claim's material"))
+    h = claim.history
+    if claim.quantity == "viscoelastic_force":
+        expr, what, how = v.force_history(h), "force", "Lee-Radok (Ting after the maximum) on Popov's superposition"
+    else:
+        expr, what, how = v.half_width_history(h), "half_width", "creep: Pi(a(t)) = int J*(t - u) dP(u)"
+    closed = not expr.has(sp.Integral, sp.InverseLaplaceTransform)
+
+    def evaluator(vals, dps):
+        by = {k.name: val for k, val in vals.items() if k not in (S.t, S.x, S.a, S.P, S.E_star)}
+        try:
+            return v.evaluate_at(what, vals[S.t], h.xreplace({k: val for k, val in vals.items() if k != S.t}),
+                                 dps=dps, **{k: val for k, val in by.items() if k in {s.name for s in v.variables}})
+        except (DomainError, ValueError, ZeroDivisionError) as exc:
+            raise DerivedUndefined(f"the derived quantity cannot be evaluated here: {exc}")
+    ctx.kinds[key] = Derived(expr, how, closed_form=closed, seconds=time.perf_counter() - t0,
+                             evaluator=None if closed else evaluator, profile=profile,
+                             variables=frozenset({S.t} | h.free_symbols | set(v.variables)))
+    return ctx.kinds[key]
 
 
 def _derive_registered(claim, profile, ctx) -> Derived:
@@ -408,14 +442,18 @@ def _derive_pull_off(q, ad, force, profile, slope, t0) -> Derived:
             m = remembered(key, mpmath.mpf)
             if m is None:
                 try:
-                    m = pull_off_reference(ad, vals, dps).force
+                    # a law whose grid search shares its inner solve (Maugis-Dugdale: a quadrature inside
+                    # a quadrature at every grid point, past 200 s for cosh) gains nothing from it: the
+                    # contact's own search (with its limits, under the search budget), labelled so
+                    m = (pull_off_reference(ad, vals, dps) if ad.law.independent_minimum
+                         else ad._pull_off_checked(vals, dps)).force
                 except LineContactError as exc:
                     raise DerivedUndefined(f"P(a) has no minimum over a > 0: {exc}")
                 if isinstance(m, mpmath.mpf):
                     remember(key, m)
             return sign * m
         label = None if ad.law.independent_minimum else \
-            "numeric, grid search on the quadrature P0 (shares the law's inner solve: not independent)"
+            "numeric, the contact's own search (the law has no independent second minimisation: not independent)"
         return _pull_off_derived(q, ad, engine, minimum, sign, profile, slope, t0, Pexpr, label)
     dPexpr = sp.diff(Pexpr, S.a)
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from ..core.conversion import exact_number
 from ..core.errors import ClaimError
-from ..parsing import SYMBOLS, parse_expr
+from ..parsing import SYMBOLS, parse_number
 
 def where_text(source, label=None, fld=None):
     out = str(source)
@@ -45,10 +45,7 @@ def number_field(v, where):
         raise ClaimError(f"{where}: expected a number, got {v!r}")
     if not isinstance(v, str):
         return exact_number(v)       # the one converter (floats: their shortest decimal)
-    e = parse_expr(v, where=where)
-    if e.free_symbols:
-        raise ClaimError(f"{where}: expected a number, got {v!r}")
-    return e
+    return parse_number(v, where)    # the one reader of typed numbers (plain number, then an expression)
 
 
 def text_field(v, where, required=False):

@@ -9,7 +9,7 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.conversion import rational
 from ..parsing import t as T_VAR
-from .spec import X_RANGES, Claim
+from .spec import VISCOELASTIC, X_RANGES, Claim
 
 
 def holds_at(rels, vals) -> bool:
@@ -44,7 +44,9 @@ def sample_points(claim: Claim, symbols, k: int, seed: int = 2017):
     Returns [(kind, {symbol: value})]; x is drawn relative to a where the
     quantity has an x-range (:data:`~.spec.X_RANGES`)."""
     rng = random.Random(seed)
-    syms = sorted((s for s in symbols if s not in (S.x, T_VAR)), key=lambda z: z.name)
+    # t is an integration variable of a printed form, except where it is the time of a history
+    syms = sorted((s for s in symbols if s not in ((S.x,) if claim.quantity in VISCOELASTIC else (S.x, T_VAR))),
+                  key=lambda z: z.name)
     has_x = S.x in symbols or claim.quantity in X_RANGES
     xr = X_RANGES.get(claim.quantity, (0.02, 0.98))
     perms = {s: rng.sample(range(k), k) for s in syms}

@@ -38,6 +38,10 @@ File format
     symbols = ["k"]               # extra symbol names (positive)
     points = 6                    # random points (plus range ends and special values)
     force_law = "..."             # quantity inverse_profile only: the given P(a)
+    material = "E0*exp(-t/tau)"   # viscoelastic_* only: the relaxation modulus E*(t) (plane strain)
+    impulse = "eta"               # ... and the weight of a Dirac part eta*delta(t) (Kelvin-Voigt)
+    history = "r*t"               # viscoelastic_force: the half-width a(t) (a Piecewise for
+                                  # loading then unloading); viscoelastic_half_width: the load P(t)
     values = ["1", "pi/2"]        # quantity Z_n only, instead of formula: a table of values
     labels = { "pi/2" = 2 }       # ... and the exponents printed beside them
     note = "..."                  # remark shown in the report
@@ -90,7 +94,7 @@ from sympy.core.function import AppliedUndef
 
 from ..core import symbols as S
 from ..contacts.base import qualified_quantities
-from ..core.errors import ClaimError
+from ..core.errors import ClaimError, LineContactError
 from ..parsing import declare_symbols, parse_expr
 from .rounding import DECIMAL, PrintedFloat, printed_spread, printed_variants  # noqa: F401
 from .fields import names_field, number_field, parse_range, check_sign, text_field, typed_field, where_text, read_text_file
@@ -122,7 +126,15 @@ QUANTITIES = {
     "flat_punch_displacement": "d - u_z(x) outside a flat punch, Eq. (3), from the Flamant kernel",
     "punch_adhesion_force": "critical force of a pulled flat punch, Eq. (31), from the energy-release "
                             "rate (Griffith) and the stress-intensity factor",
+    "viscoelastic_force": "force history P(t) for a half-width history a(t) (claim field history) on the "
+                          "material E*(t) (claim field material): Lee-Radok, Ting after the maximum (engine, "
+                          "viscoelastic)",
+    "viscoelastic_half_width": "half-width history a(t) under a load history P(t) (claim field history) "
+                               "that never decreases, creep on the material E*(t) (engine, viscoelastic)",
 }
+
+#: the quantities of a viscoelastic contact (claim fields material and history)
+VISCOELASTIC = ("viscoelastic_force", "viscoelastic_half_width")
 
 #: the asymmetric contact's quantities (:mod:`linecontact_sym.contacts.asymmetric`): a
 #: profile on the whole line (its x read as the real x), the claim's symbols
@@ -180,7 +192,7 @@ for _key, (_kind, _name, _q) in qualified_quantities().items():
 _TOP_KEYS = {"key", "title", "reference", "definitions", "ranges", "claims", "source", "symbols", "figures"}
 _CLAIM_KEYS = {"label", "title", "description", "quantity", "profile", "profiles", "profile_names", "formula", "forms",
                "assumptions", "ranges", "special", "symbols", "force_law", "values", "labels", "note",
-               "points", "reading", "rounding", "period"}
+               "points", "reading", "rounding", "period", "material", "impulse", "history"}
 _FIGURE_KEYS = {"file", "title", "caption", "quantity", "x", "y", "x_range", "points", "values", "xlabel", "ylabel",
                 "y_min", "y_max", "size", "marks", "ratio", "ratio_label", "curves"}
 _CURVE_KEYS = {"name", "profile", "label", "style", "width"}
@@ -241,6 +253,9 @@ class Claim:
     source: str = "<claims>"
     file_ranges: dict = field(default_factory=dict)   # the file's default ranges
     period: sp.Expr | None = None   # a periodic array of this period (LineContact(f, period=L))
+    material: sp.Expr | None = None  # viscoelastic: E*(t), its regular part
+    impulse: sp.Expr = sp.S.Zero     # viscoelastic: the weight of eta*delta(t)
+    history: sp.Expr | None = None   # viscoelastic: a(t) (force) or P(t) (half-width)
 
     @property
     def formula(self) -> Form:
@@ -353,6 +368,8 @@ def paper_from_dict(data: dict, source: str = "<claims>") -> Paper:
         defs[name] = parse_expr(text, symbols=file_syms, definitions=defs, where=where)
         defs_show[name] = sp.Symbol(name, positive=True)
     ranges = {k: parse_range(v, where_text(source, fld=f"ranges.{k}")) for k, v in (data.get("ranges") or {}).items()}
+    for k, (lo, _hi) in ranges.items():          # the file's ranges as the claims' own: R = [-1, 1] is bad input
+        check_sign(k, lo, file_syms, where_text(source, fld=f"ranges.{k}"))
     claims_data = data.get("claims")
     if not isinstance(claims_data, list) or not claims_data:
         raise ClaimError(f"{source}: no [[claims]] in the file")
@@ -389,7 +406,8 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     for key, types in (("quantity", str), ("profile", str), ("profiles", list), ("profile_names", list),
                        ("formula", (str, int, float)), ("forms", list), ("assumptions", list), ("ranges", dict),
                        ("special", dict), ("force_law", str), ("values", list), ("labels", dict), ("note", str),
-                       ("reading", str), ("title", str), ("description", str), ("points", int), ("period", str)):
+                       ("reading", str), ("title", str), ("description", str), ("points", int), ("period", str),
+                       ("material", str), ("impulse", str), ("history", str)):
         typed_field(cd, key, types, W())
     quantity = cd.get("quantity")
     if quantity not in QUANTITIES:
@@ -478,13 +496,40 @@ def claim_from_dict(cd: dict, source="<claims>", definitions=None, definitions_s
     for k, vals in special.items():
         for v in vals:
             check_sign(k, v, syms, W(f"special.{k}"))
+    visco = {}
+    if quantity in VISCOELASTIC:
+        for key in ("material", "history"):
+            if key not in cd:
+                raise ClaimError(f"{W()}: quantity {quantity!r} needs {key} = \"...\" (E*(t) for material, "
+                                 "a(t) or P(t) in t for history)")
+            visco[key] = parse(cd[key], key, placeholders={})
+        visco["impulse"] = parse(cd.get("impulse", "0"), "impulse", placeholders={})
+    else:
+        for key in ("material", "impulse", "history"):
+            if key in cd:
+                raise ClaimError(f"{W(key)}: only the quantities {', '.join(VISCOELASTIC)} take a {key}")
     pts = cd.get("points", 6)
     if isinstance(pts, bool) or not isinstance(pts, int) or not 1 <= pts <= 50:
         raise ClaimError(f"{W('points')}: expected an integer 1..50")
     return Claim(label.strip(), quantity, forms, profiles, general, assumptions, table, special,
                  {**syms}, force_law, values, labels, str(cd.get("title", cd.get("description", ""))),
                  str(cd.get("note", "")), str(cd.get("reading", "")), pts, str(source),
-                 dict(file_ranges or {}), parse(cd["period"], "period", placeholders={}) if "period" in cd else None)
+                 dict(file_ranges or {}), _period(parse(cd["period"], "period", placeholders={}), W("period"))
+                 if "period" in cd else None,
+                 **visco)
+
+
+def _period(expr, where):
+    """The period of a claim, checked as the contact will check it
+    (:class:`~linecontact_sym.method.geometry.Periodic`: a positive finite
+    number or positive symbols): ``period = "0"`` is bad input at load
+    (exit 2), not an undecided claim."""
+    from ..method.geometry import Periodic
+    try:
+        Periodic(expr)
+    except LineContactError as exc:
+        raise ClaimError(f"{where}: {exc}") from None
+    return expr
 
 
 def claim_from_cli(quantity: str, formula: str, profile: str | None = None, *, label="command line",
@@ -598,6 +643,6 @@ def substitute_placeholders(expr, profile, derived_force=None, derived_pressure=
     return expr
 
 
-__all__ = ["QUANTITIES", "ASYMMETRIC_QUANTITIES", "PROFILE_FREE", "PLACEHOLDERS", "DEFAULT_RANGES", "X_RANGES", "Form", "Claim", "Curve",
+__all__ = ["QUANTITIES", "ASYMMETRIC_QUANTITIES", "VISCOELASTIC", "PROFILE_FREE", "PLACEHOLDERS", "DEFAULT_RANGES", "X_RANGES", "Form", "Claim", "Curve",
            "Figure", "Paper", "range_of", "load_paper", "resolve_paper", "paper_from_dict", "claim_from_dict",
            "claim_from_cli", "figure_from_dict", "substitute_placeholders"]

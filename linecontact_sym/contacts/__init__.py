@@ -7,12 +7,14 @@ physical effect, one subpackage each:
 * :mod:`.stresses`   -- subsurface stresses (Kolosov potentials, McEwen 1949);
 * :mod:`.asymmetric` -- a tilt, a moment, a profile that is not symmetric: the
   superposition of flat punches that are not centred (the core the rolling
-  contact stands on).
+  contact stands on);
+* :mod:`.rolling`    -- steady rolling with traction, the stick zone at the leading
+  edge (Carter 1926 for every profile, on the asymmetric core).
 
 :mod:`.base` holds the contact base class and the quantity registry shared by
 all of them, :mod:`.sampling` the verification points, :mod:`.catalogue` the
 paper's profiles as ready-made contacts.  Importing the package registers every
 contact kind (:data:`~.base.CONTACT_KINDS`)."""
-from . import normal, adhesion, tangential, stresses, asymmetric  # importing registers the kinds
+from . import normal, adhesion, tangential, stresses, asymmetric, rolling  # importing registers the kinds
 
-__all__ = ["normal", "adhesion", "tangential", "stresses", "asymmetric"]
+__all__ = ["normal", "adhesion", "tangential", "stresses", "asymmetric", "rolling"]

@@ -223,7 +223,7 @@ class Contact:
         if unknown and not q.method:
             raise DomainError(f"{name} takes no value named {', '.join(map(repr, unknown))}; "
                               f"it takes {', '.join(sorted(known)) or 'none'}")
-        vals = {k: _checked_value(k, v, known.get(k)) for k, v in values.items()}
+        vals = {k: checked_value(k, v, known.get(k)) for k, v in values.items()}
         for k in q.nonnegative:
             if k in vals and np.any(np.asarray(_as_float_array(vals[k])) < 0):
                 raise DomainError(f"{k} = {values[k]} < 0: the {name} of a {self.kind} contact needs {k} >= 0")
@@ -504,7 +504,7 @@ def _as_float_array(v):
     return v if isinstance(v, (float, np.ndarray)) else float(v)
 
 
-def _checked_value(name, v, sym):
+def checked_value(name, v, sym):
     """A value given by a user: a finite real number (exact where given
     exactly) or a NumPy array of them; positive where the symbol is."""
     if type(v) in (float, int):  # the common, fast case
@@ -628,6 +628,27 @@ def scalar_domain_plan(self, quantity):
     return cache[key]
 
 
+def _real_load(v, name):
+    """The load of a method quantity (``half_width(P)``, ``stick_half_width(Q)``)
+    is a real number (or a symbol): a complex number, NaN or an infinity
+    raises :class:`~linecontact_sym.core.errors.DomainError` naming it
+    (before: SymPy's TypeError of an invalid comparison)."""
+    if isinstance(v, str):
+        try:
+            v = to_sympy(v, where=name)
+        except LineContactError:
+            return                           # the method itself says what the text is not
+    if isinstance(v, (complex, np.complexfloating)):
+        raise DomainError(f"the load {name} must be a real number, got {name} = {v} (complex)")
+    if isinstance(v, (float, np.floating)) and not math.isfinite(v):
+        raise DomainError(f"the load {name} must be a finite real number, got {name} = {v}")
+    if isinstance(v, sp.Basic) and v.is_number:
+        if v.has(sp.oo, -sp.oo, sp.zoo, sp.nan):
+            raise DomainError(f"the load {name} must be a finite real number, got {name} = {v}")
+        if v.is_real is False:
+            raise DomainError(f"the load {name} must be a real number, got {name} = {v} (complex)")
+
+
 def _method_with_units(contact, q, fn):
     """A method quantity (``c.half_width(P, **values)``, ``t.stick_half_width(Q, ...)``)
     that takes pint quantities: the load (its first argument, named
@@ -639,6 +660,8 @@ def _method_with_units(contact, q, fn):
 
     @functools.wraps(fn)
     def call(*args, **kw):
+        if args:
+            _real_load(args[0], q.arguments[-1] if q.arguments else "load")
         if not any(is_quantity(v) for v in args) and not any(is_quantity(v) for v in kw.values()):
             return fn(*args, **kw)
         load = q.arguments[-1] if q.arguments else "load"
@@ -789,4 +812,4 @@ def qualified_quantities() -> dict:
     return out
 
 
-__all__ = ["Quantity", "Contact", "CONTACT_KINDS", "contact_kind", "qualified_quantities", "DOMAINS"]
+__all__ = ["Quantity", "Contact", "CONTACT_KINDS", "contact_kind", "qualified_quantities", "DOMAINS", "checked_value"]

@@ -20,6 +20,38 @@ from .precision import workdps
 
 
 _DECIMAL = re.compile(r"[+-]?(\d[\d_]*\.?[\d_]*|\.\d[\d_]*)([eE][+-]?\d+)?")
+_FRACTION = re.compile(r"([+-]?(?:\d[\d_]*\.?[\d_]*|\.\d[\d_]*)(?:[eE][+-]?\d+)?)\s*/\s*"
+                       r"(\+?(?:\d[\d_]*\.?[\d_]*|\.\d[\d_]*)(?:[eE][+-]?\d+)?)")
+
+#: the longest text read as a plain number (characters)
+MAX_NUMBER_TEXT = 1000
+
+
+def plain_number(text):
+    """THE reader of a number typed as text, before anything else looks at
+    it: a decimal in any float notation (``2.1e11``, ``2.1E11``, ``1e300``,
+    ``.5``, ``1_000``) or a fraction of two (``1/3``, ``2.1e11/3``), as an
+    exact SymPy Rational of its digits; None for any other text (an
+    expression, a number with a unit, a word), which the caller then reads
+    its own way (:func:`linecontact_sym.parsing.parse_number`: the
+    whitelisted parser, then a unit).  Never evaluates anything; a
+    zero denominator is not a plain number (None).
+
+    >>> plain_number("2.1e11"), plain_number(" 1/3 "), plain_number("1e-3"), plain_number("210GPa")
+    (210000000000, 1/3, 1/1000, None)
+    """
+    if not isinstance(text, str):
+        return None
+    t = text.strip()
+    if not t or len(t) > MAX_NUMBER_TEXT:
+        return None
+    if _DECIMAL.fullmatch(t):
+        return sp.Rational(t.replace("_", ""))
+    m = _FRACTION.fullmatch(t)
+    if m:
+        num, den = (sp.Rational(g.replace("_", "")) for g in m.groups())
+        return num / den if den != 0 else None
+    return None
 
 
 def number(v, floats: str = "binary") -> sp.Basic:
@@ -93,7 +125,7 @@ def number(v, floats: str = "binary") -> sp.Basic:
         return sp.Integer(man) * sp.Integer(2)**exp
     if isinstance(v, str):
         text = v.strip()
-        if _DECIMAL.fullmatch(text) and len(text) <= 1000:
+        if _DECIMAL.fullmatch(text) and len(text) <= MAX_NUMBER_TEXT:
             return sp.Rational(text.replace("_", ""))
         raise LineContactError(f"got the string {v!r} where a number or SymPy expression was expected; "
                                f"parse text with linecontact_sym.parse_expr (whitelisted)")
@@ -260,4 +292,4 @@ def float_values(vals: dict, digits: int) -> dict:
     return out
 
 
-__all__ = ["number", "evalf", "to_basic", "exact_number", "point_value", "nsimplify_basic", "rational", "to_mpf", "real_mpf", "float_values"]
+__all__ = ["number", "plain_number", "evalf", "to_basic", "exact_number", "point_value", "nsimplify_basic", "rational", "to_mpf", "real_mpf", "float_values"]

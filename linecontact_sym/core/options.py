@@ -3,8 +3,9 @@ processes, a tolerance, the environment's ``LINECONTACT_SYM_BUDGET``, the
 command line's ``--jobs``, ``--budget``, ``--rtol``.  One rule for all:
 
 * a Python, NumPy or SymPy real number, a ``Decimal`` or ``Fraction``, or
-  text (surrounding spaces ignored; read as a decimal number, never
-  evaluated); ``inf`` / ``infinity`` / ``none`` mean "no limit" where a
+  text (surrounding spaces ignored; read by the one reader of typed
+  numbers, :func:`~linecontact_sym.core.conversion.plain_number`: any
+  float notation or a fraction, never evaluated); ``inf`` / ``infinity`` / ``none`` mean "no limit" where a
   setting allows it (a number too large for a float counts as infinite);
 * never a bool, a complex number, NaN, or text that is not a number;
 * an integer setting takes whole numbers only (``2`` and ``2.0``, not ``2.5``);
@@ -26,6 +27,7 @@ from __future__ import annotations
 import math
 import numbers
 
+from .conversion import plain_number
 from .errors import DomainError
 
 __all__ = ["read_number"]
@@ -62,14 +64,16 @@ def read_number(value, name: str, *, integer: bool = False, low=None, low_open: 
             if not allow_inf:
                 raise bad()
             return math.inf
-        try:
-            v = int(text) if integer else float(text)
-        except ValueError:
+        q = plain_number(text)               # the one reader of typed numbers (core.conversion)
+        if q is None:
+            raise bad()
+        if integer and q.is_Integer and abs(q) < 2**63:
+            v = int(q)
+        else:
             try:
-                f = float(text)
-            except ValueError:
-                raise bad() from None
-            v = f
+                v = float(q)
+            except OverflowError:            # 1e400: larger than any float
+                v = math.inf
     elif isinstance(v, numbers.Integral):
         v = int(v)
     elif isinstance(v, numbers.Real) or hasattr(v, "__float__"):

@@ -105,7 +105,23 @@ class PaperLatexPrinter(LatexPrinter):
     def _print_Symbol(self, expr, style="plain"):
         if expr.name == "Z_n":
             return "Z_{n}"
+        if expr.name.count("_") > 1 and expr not in self._settings.get("symbol_names", {}):
+            return _word(expr.name, r"\mathrm")       # pull_off_force: a name, not p_{ull off force}
         return super()._print_Symbol(expr, style)
+
+    def _hprint_Function(self, func: str) -> str:
+        """An undefined function (a placeholder of a quantity without closed
+        form: ``maugis_lambda(E_star, R, ...)``, ``pull_off_force(...)``) by its
+        name, underscores shown: SymPy's default reads ``maugis_lambda`` as
+        maugis with the subscript lambda, ``pull_off_force`` as pull with the
+        subscript "off force"."""
+        if "_" in func:
+            return _word(func, r"\operatorname")
+        return super()._hprint_Function(func)
+
+
+def _word(name: str, command: str) -> str:
+    return command + "{" + name.replace("_", r"\_") + "}"
 
 
 def to_latex(expr, **settings) -> str:

@@ -157,6 +157,37 @@ def check_positive(name: str, value, what: str | None = None):
     return value
 
 
+#: symbols declared positive that take any sign: x (the profile is mirrored, f(-x) = f(x))
+ANY_SIGN = frozenset({S.x})
+
+
+def check_sign(sym, value):
+    """A number bound to the symbol ``sym`` (where values enter,
+    :func:`~linecontact_sym.method.derivation.values_by_name`): a complex
+    number is refused for a real symbol; a symbol declared positive (R, E*,
+    a, gamma, a user's ``k``; not x, :data:`ANY_SIGN`) refuses a negative
+    number, and 0 where :data:`NEVER_ZERO` says so (R = 0, E* = 0; gamma = 0
+    is the non-adhesive limit).  Returns ``value``; a symbolic value passes
+    (it is checked once it is a number).  Raises :class:`DomainError`."""
+    if not isinstance(value, sp.Basic) or not value.is_number or not (sym.is_real or sym.is_positive):
+        return value
+    if value.is_Rational:
+        sign = (value.p > 0) - (value.p < 0)
+    else:
+        num = value.evalf(30)
+        re_, im = num.as_real_imag()
+        if im != 0 and abs(im) > abs(re_) * sp.Float(10)**-25:
+            raise DomainError(f"{sym.name} must be a real number, got {sym.name} = {value} (complex)")
+        if not re_.is_number or re_.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            raise DomainError(f"{sym.name} must be a finite real number, got {sym.name} = {value}")
+        sign = (bool(re_ > 0) - bool(re_ < 0)) if re_ != 0 else (0 if value.is_zero is not False else 1)
+    if sym.is_positive and sym not in ANY_SIGN:
+        if sign < 0 or (sign == 0 and sym in NEVER_ZERO):
+            what = "positive" if sym in NEVER_ZERO else "positive (or 0)"
+            raise DomainError(f"{sym.name} is declared positive; it must be {what}, got {sym.name} = {value}")
+    return value
+
+
 def check_values(values: dict, zero_ok=()) -> None:
     """Every ranged name of ``values`` (keywords by name) in its range (the
     names in ``zero_ok`` may also be 0), and the stick half-widths in order."""
@@ -167,4 +198,4 @@ def check_values(values: dict, zero_ok=()) -> None:
         check_stick(values.get("a"), values.get("c_s"), values.get("c_r"))
 
 
-__all__ = ["RANGES", "NEVER_ZERO", "check_value", "check_stick", "check_points", "check_values", "check_tolerance", "check_positive"]
+__all__ = ["RANGES", "NEVER_ZERO", "check_value", "check_stick", "check_points", "check_values", "check_tolerance", "check_positive", "check_sign", "ANY_SIGN"]

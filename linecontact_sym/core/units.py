@@ -39,30 +39,80 @@ def split_units(values: dict, units: dict):
     replaced by its SI magnitude.  Raises
     :class:`~linecontact_sym.core.errors.DomainError` on a wrong dimension.
     Without quantities: ``(values, None)`` unchanged."""
-    if not any(is_quantity(v) for v in values.values()):
+    if not any(is_quantity(v) or _holds_quantities(v) for v in values.values()):
         return values, None
     registry = None
     out = {}
     for k, v in values.items():
-        if not is_quantity(v):
+        many = not is_quantity(v) and _holds_quantities(v)     # [Q_(1, "mm"), Q_(2, "mm")]
+        if not (is_quantity(v) or many):
             out[k] = v
             continue
-        reg = v._REGISTRY
+        reg = next(e for e in (v.ravel() if hasattr(v, "ravel") else v) if is_quantity(e))._REGISTRY \
+            if many else v._REGISTRY
         if registry is None:
             registry = reg
         elif reg is not registry:
             raise DomainError(f"{k} = {v!r} comes from another pint UnitRegistry than the other values; "
                               f"use one registry")
-        unit = units.get(k)
-        if unit is None:
-            out[k] = _plain(v.to_base_units().magnitude)
-            continue
-        target = reg.Quantity(1, unit)
-        if v.dimensionality != target.dimensionality:
-            raise DomainError(f"{k} = {v} has the dimension {v.dimensionality}; {k} is "
-                              f"{describe(unit)} ({unit or 'dimensionless'}, dimension {target.dimensionality})")
-        out[k] = _plain(v.to(target.units).magnitude)
+        out[k] = _magnitudes(k, v, units.get(k), reg) if many else _si_of(k, v, units.get(k), reg)
     return out, registry
+
+
+def si_magnitude(number: str, unit_text: str, unit: str, name: str):
+    """The SI magnitude (a float) of ``number`` (decimal text) in ``unit_text``
+    (pint's unit parser: ``GPa``, ``mm``, ``N/m``; nothing evaluated) for a
+    value named ``name`` whose SI unit is ``unit`` (``""``: dimensionless).
+    Needs the ``[units]`` extra (pint);
+    raises :class:`~linecontact_sym.core.errors.DomainError` on a wrong
+    dimension or a text pint does not know as a unit."""
+    from .extras import require
+    pint = require("units", "pint")
+    reg = pint.get_application_registry()
+    try:
+        q = reg.Quantity(float(number)) * reg.parse_units(unit_text)
+        return float(q.to(unit or "dimensionless").magnitude)
+    except pint.DimensionalityError:
+        raise DomainError(f"{name} = {number} {unit_text}: the unit {unit_text!r} is not one of "
+                          f"{describe(unit)} in {unit or 'dimensionless'} ({name})") from None
+    except Exception as exc:  # noqa: BLE001 -- pint's parser refusing the text
+        raise DomainError(f"{name} = {number}{unit_text}: {unit_text!r} is not a unit ({exc})") from None
+
+
+def _magnitudes(k, v, unit, registry):
+    """A list or array of pint quantities (one registry, one dimension) as
+    a float array in ``unit`` (None: SI base units); a mix of quantities and
+    plain numbers is refused (a plain number's unit would be a guess)."""
+    import numpy as np
+    items = list(v.ravel()) if isinstance(v, np.ndarray) else list(v)
+    if not all(is_quantity(e) for e in items):
+        raise DomainError(f"{k} = {v!r} mixes pint quantities and plain numbers; give all with units, or "
+                          f"all as plain SI numbers")
+    if any(e._REGISTRY is not registry for e in items):
+        raise DomainError(f"{k} = {v!r} comes from another pint UnitRegistry than the other values; "
+                          f"use one registry")
+    out = []
+    for e in items:
+        out.append(_si_of(k, e, unit, registry))
+    arr = np.asarray(out, dtype=float)
+    return arr.reshape(v.shape) if isinstance(v, np.ndarray) else arr
+
+
+def _si_of(k, v, unit, registry):
+    if unit is None:
+        return _plain(v.to_base_units().magnitude)
+    target = registry.Quantity(1, unit)
+    if v.dimensionality != target.dimensionality:
+        raise DomainError(f"{k} = {v} has the dimension {v.dimensionality}; {k} is "
+                          f"{describe(unit)} ({unit or 'dimensionless'}, dimension {target.dimensionality})")
+    return _plain(v.to(target.units).magnitude)
+
+
+def _holds_quantities(v) -> bool:
+    """A list, tuple or object array with a pint quantity among its elements."""
+    if isinstance(v, (list, tuple)):
+        return any(is_quantity(e) for e in v)
+    return getattr(v, "dtype", None) is not None and v.dtype.kind == "O" and any(is_quantity(e) for e in v.ravel())
 
 
 def strip_units(values: dict, units: dict, quantity, profile=None):
@@ -142,6 +192,8 @@ def refuse_units(values: dict, where: str, units: dict | None = None) -> None:
                 hint = ""
             raise DomainError(f"{where} takes plain SI numbers; {k} = {v} is a pint quantity in {v.units}"
                               f"{hint}")
+        if _holds_quantities(v):
+            raise DomainError(f"{where} takes plain SI numbers; {k} = {v!r} holds pint quantities")
 
 
 def describe(unit: str) -> str:
@@ -164,5 +216,5 @@ def _plain(m):
     return float(m)
 
 
-__all__ = ["is_quantity", "split_units", "strip_units", "check_profile_units", "with_unit", "describe",
+__all__ = ["is_quantity", "split_units", "si_magnitude", "strip_units", "check_profile_units", "with_unit", "describe",
            "refuse_units"]

@@ -34,6 +34,8 @@ from .rules import RULES, NotApplicable, Problem, Step
 from .verification import (REQUIRED_DIGITS, VERIFY_DPS, VerificationRecord, holds, references_ahead, unfinished,
                            verify, verify_here)
 from ..core.precision import held, serialized, workdps
+from ..core.ranges import check_sign
+from ..core.units import refuse_units
 
 #: the rule name of a result without closed form
 FALLBACK = "numeric_fallback"
@@ -271,19 +273,26 @@ def values_by_name(symbols, values):
     {Symbol: exact SymPy number}; text through the whitelisted parser, every
     number through the one converter
     (:func:`~linecontact_sym.core.conversion.point_value`: a float is its
-    exact binary value, as in every evaluation path of the package)."""
+    exact binary value, as in every evaluation path of the package); each
+    checked against its symbol's sign
+    (:func:`~linecontact_sym.core.ranges.check_sign`: R = -1 is refused here,
+    for every path that binds values)."""
     by_name = {s.name: s for s in symbols}
+    # values with units reach here only where they are not taken (a pull-off, a state): said, not misread
+    refuse_units({str(k): v for k, v in values.items()}, "this result at values", S.UNITS)
     out = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else by_name.get(k)
         if sym is None:
             sym = sp.Symbol(k) if isinstance(k, str) else k
         try:
-            out[sym] = point_value(to_sympy(v) if isinstance(v, str) else v)
+            out[sym] = check_sign(sym, point_value(to_sympy(v) if isinstance(v, str) else v))
         except DomainError:
             raise
         except LineContactError as exc:     # not a number (a list, an array): the user's input
             raise ClaimError(f"{sym.name}: {exc}") from None
+        except (TypeError, ValueError) as exc:   # a value SymPy cannot convert (complex text, ...)
+            raise DomainError(f"{sym.name} = {v!r} is not a real number ({exc})") from None
     missing = [s.name for s in symbols if s not in out]
     if missing:
         raise DomainError(f"missing values for {', '.join(missing)}")
@@ -644,7 +653,22 @@ def _trusted(rec, reference, sampler, quantity):
     return rec
 
 
-def remembered(parts, make, budget, reference, recheck=None) -> Derivation:
+def agrees_at_random_point(d, reference, sampler) -> bool:
+    """Does a derivation read from disk agree with the independent
+    ``reference`` at one random admissible point of ``sampler``
+    (:data:`RECHECK_DIGITS` of :data:`RECHECK_DPS`)?  The checksum of a
+    record only detects damage: a record whose closed form was changed (and
+    its checksum recomputed) is dropped and derived afresh.  One point: a
+    quadrature (or the reference's own search), not a derivation."""
+    import random
+    if reference is None:
+        return True
+    check = verify(d.expr, reference, sampler, d.conditions, n_points=1, seed=random.SystemRandom().randrange(2**32),
+                   dps=RECHECK_DPS, reference_name="re-check of a cached record", budget=60.0)
+    return bool(check.points) and check.min_digits >= RECHECK_DIGITS
+
+
+def remembered(parts, make, budget, reference, recheck=None, sampler=None) -> Derivation:
     """A derivation made by ``make()`` once per key (:mod:`.store`: in this
     process and on disk), for quantities derived outside :func:`derive`
     (the half-width, the tangential stick half-width ...).  ``parts`` name
@@ -654,18 +678,25 @@ def remembered(parts, make, budget, reference, recheck=None) -> Derivation:
     of a stored derivation (closures are not stored); ``recheck(derivation)``
     (optional) tells whether a closed form read from disk agrees with an
     independent check at a random point (else it is dropped and made
-    afresh, with a warning: see :func:`_trusted`)."""
+    afresh, with a warning: see :func:`_trusted`); without one, ``sampler``
+    (random admissible points) makes it :func:`agrees_at_random_point` with
+    the rebuilt reference, so that every closed form read from disk is
+    re-checked, as the README says."""
     def rebuild(d):
         d.reference = reference(d)
         return d
-    return remembered_many(parts, lambda: (make(),), budget, rebuild, recheck)[0]
+    return remembered_many(parts, lambda: (make(),), budget, rebuild, recheck, sampler)[0]
 
 
-def remembered_many(parts, make, budget, rebuild, recheck=None) -> tuple:
+def remembered_many(parts, make, budget, rebuild, recheck=None, sampler=None) -> tuple:
     """:func:`remembered` for derivations made together (the three pull-off
     quantities): ``make()`` returns a tuple of them; ``rebuild(d)`` returns
     a stored one ready for use (its reference set, its class restored);
-    ``recheck(d)`` as in :func:`remembered`, for each closed form read from disk."""
+    ``recheck(d)`` or ``sampler`` as in :func:`remembered`, for each closed
+    form read from disk."""
+    if recheck is None and sampler is not None:
+        def recheck(d):
+            return agrees_at_random_point(d, d.reference, sampler)
     key = store.make_key("remembered", *parts)
     rec = store.get(key)
     if rec is not None and not _derivations_record(rec):

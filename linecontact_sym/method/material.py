@@ -46,19 +46,22 @@ import sympy as sp
 from ..core import symbols as S
 from ..core.budget import run_with_budget
 from ..core.errors import BudgetExceeded, DomainError
-from ..parsing import user_value
+from ..core.precision import workdps
+from ..parsing import to_sympy, user_value
 
 #: CPU seconds for the derivation of a creep function
 CREEP_BUDGET = 10.0
 _s = sp.Symbol("s", positive=True)   # the Laplace variable (a private one: never a user's s)
 
 
-def _parameter(name, value):
+def _parameter(name, value, positive=False):
+    """A material parameter: a number >= 0 (> 0 for a relaxation time,
+    ``positive``: tau = 0 is no material, exp(-t/0)) or a SymPy symbol."""
     if value is None:
         raise DomainError(f"the material needs a value (number or SymPy symbol) for {name}")
     v = value if isinstance(value, sp.Basic) else user_value(value, name)
-    if v.is_number and not (v.is_positive or v.is_zero):
-        raise DomainError(f"the material parameter {name} must be >= 0, got {value}")
+    if v.is_number and not (v.is_positive or (v.is_zero and not positive)):
+        raise DomainError(f"the material parameter {name} must be {'> 0' if positive else '>= 0'}, got {value}")
     return v
 
 
@@ -75,7 +78,7 @@ class Material:
     """
 
     def __init__(self, relaxation, impulse=0, name: str = "material"):
-        expr = sp.sympify(relaxation)
+        expr = to_sympy(relaxation, "the relaxation function")     # text by the whitelisted parser, never eval
         if expr.has(sp.DiracDelta):
             raise DomainError("give the Dirac part of E*(t) as impulse=eta, not inside the expression "
                               "(its integral from an endpoint is ambiguous in SymPy)")
@@ -229,8 +232,25 @@ class NumericMaterial:
         for name, v in (("E(0+)", self.E0_exact), ("E(oo)", self.E_inf_exact)):
             if v.is_number and v.is_negative:
                 raise DomainError(f"the relaxation modulus {material} has {name} = {v} < 0")
+        if self.E_inf_exact.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or self.E_inf_exact.has(sp.AccumBounds):
+            raise DomainError(f"the relaxation modulus {material} has no finite limit E(oo) = {self.E_inf_exact}: "
+                              "a relaxation modulus decreases to a finite E(oo) >= 0")
         self._vals = vals
         self._J = None
+        self._check_relaxing()
+
+    def _check_relaxing(self):
+        """E_reg(t) >= 0 and nonincreasing on a log grid 1e-8 .. 1e8 (a passive
+        material relaxes; a modulus that grows or turns negative is no
+        relaxation modulus: the superposition would give a number, a wrong one)."""
+        with workdps(15):
+            grid = [mpmath.mpf(10)**k for k in range(-8, 9)]
+            vals = [self.E(tv) for tv in grid]          # E raises where a value is negative
+            for k in range(len(grid) - 1):
+                if vals[k + 1] > vals[k] * (1 + mpmath.mpf(10)**-10) + mpmath.mpf(10)**-300:
+                    raise DomainError(f"the relaxation modulus {self.material} grows from t = {mpmath.nstr(grid[k], 3)} "
+                                      f"to {mpmath.nstr(grid[k + 1], 3)} ({mpmath.nstr(vals[k], 8)} -> "
+                                      f"{mpmath.nstr(vals[k + 1], 8)}): a relaxation modulus is nonincreasing in t")
 
     def _creep(self):
         """J*(t) at the numbers, as an mpmath callable (derived on first use: only creep needs it)."""
@@ -249,9 +269,13 @@ class NumericMaterial:
         """E_reg(t) (0 for t < 0)."""
         if tv < 0:
             return mpmath.mpf(0)
-        return mpmath.re(self._E(tv)) if tv > 0 else mpmath.mpf(sp.N(self.E0_exact if self.eta == 0
-                                                                        else sp.limit(self.relaxation, S.t, 0, "+"),
-                                                                        mpmath.mp.dps + 5))
+        v = mpmath.re(self._E(tv)) if tv > 0 else mpmath.mpf(sp.N(self.E0_exact if self.eta == 0
+                                                                     else sp.limit(self.relaxation, S.t, 0, "+"),
+                                                                     mpmath.mp.dps + 5))
+        if v < 0 or not mpmath.isfinite(v):
+            raise DomainError(f"the relaxation modulus {self.material} is {mpmath.nstr(v, 8)} at t = {mpmath.nstr(tv, 8)}: "
+                              "a relaxation modulus is finite and >= 0 at every time")
+        return v
 
     def J(self, tv):
         """J*(t) (0 for t < 0)."""
@@ -273,7 +297,7 @@ class NumericMaterial:
 # ---------------------------------------------------------------- the catalogue
 def maxwell(E0=None, tau=None) -> Material:
     """Maxwell fluid: E*(t) = E0 exp(-t/tau) (a spring E0 in series with a dashpot E0 tau)."""
-    E0, tau = _parameter("E0", E0), _parameter("tau", tau)
+    E0, tau = _parameter("E0", E0), _parameter("tau", tau, positive=True)
     return Material(E0 * sp.exp(-S.t / tau), 0, "Maxwell")
 
 
@@ -285,7 +309,7 @@ def kelvin_voigt(E=None, eta=None) -> Material:
 
 def standard_linear_solid(E0=None, E_inf=None, tau=None) -> Material:
     """Standard linear solid (Zener): E*(t) = E_inf + (E0 - E_inf) exp(-t/tau), E0 >= E_inf."""
-    E0, Ei, tau = _parameter("E0", E0), _parameter("E_inf", E_inf), _parameter("tau", tau)
+    E0, Ei, tau = _parameter("E0", E0), _parameter("E_inf", E_inf), _parameter("tau", tau, positive=True)
     if (E0 - Ei).is_negative:
         raise DomainError(f"the standard linear solid needs E0 >= E_inf, got E0 = {E0}, E_inf = {Ei}")
     return Material(Ei + (E0 - Ei) * sp.exp(-S.t / tau), 0, "standard linear solid")
@@ -293,11 +317,16 @@ def standard_linear_solid(E0=None, E_inf=None, tau=None) -> Material:
 
 def prony(E_inf=None, terms=()) -> Material:
     """Generalised Maxwell (Prony series): E*(t) = E_inf + sum_i E_i exp(-t/tau_i)."""
-    if not terms:
-        raise DomainError("a Prony series needs terms=[(E_1, tau_1), ...]")
+    try:
+        terms = list(terms) if not isinstance(terms, (str, bytes)) else None
+    except TypeError:
+        terms = None
+    if not terms or not all(
+            isinstance(tm, (tuple, list)) and len(tm) == 2 for tm in terms):
+        raise DomainError(f"a Prony series needs terms=[(E_1, tau_1), ...] (pairs), got {terms!r}")
     expr = _parameter("E_inf", E_inf)
     for k, (Ek, tk) in enumerate(terms, 1):
-        expr += _parameter(f"E_{k}", Ek) * sp.exp(-S.t / _parameter(f"tau_{k}", tk))
+        expr += _parameter(f"E_{k}", Ek) * sp.exp(-S.t / _parameter(f"tau_{k}", tk, positive=True))
     return Material(expr, 0, f"Prony series ({len(terms)} terms)")
 
 

@@ -8,6 +8,7 @@ a profile that does not decrease on (0, a).
 """
 from __future__ import annotations
 
+import math
 import random
 from dataclasses import dataclass
 from functools import cached_property
@@ -15,9 +16,9 @@ from functools import cached_property
 import mpmath
 import sympy as sp
 
-from ..core.conversion import exact_number, to_mpf
+from ..core.conversion import exact_number, number, to_mpf
 from ..core import symbols as S
-from ..core.errors import InadmissibleProfileError, ProfileError, UnknownSymbolError
+from ..core.errors import InadmissibleProfileError, LineContactError, ProfileError, UnknownSymbolError
 from ..core.precision import workdps
 from ..core.printing import lambdify
 
@@ -39,6 +40,25 @@ class Piece:
 #: is still a power law people study; x**(10**10) is not, and would not end)
 MAX_EXPONENT = 10**4
 MAX_DERIVATIVE_ORDER = 20
+#: the deepest nesting of an expression the engine takes (the whitelisted
+#: parser's bound on typed text, :data:`linecontact_sym.parsing.expressions.MAX_DEPTH`,
+#: for SymPy objects built in Python: sin(sin(...(x))) 300 deep would exhaust
+#: Python's recursion in SymPy's own walks, a RecursionError)
+MAX_EXPRESSION_DEPTH = 60
+
+
+def check_depth(expr, what: str = "the profile") -> None:
+    """``expr`` nested at most :data:`MAX_EXPRESSION_DEPTH` levels (counted
+    without recursion), else a :class:`~linecontact_sym.core.errors.ProfileError`
+    naming it; a flat sum or product of many terms is not nesting."""
+    stack = [(expr, 1)]
+    while stack:
+        e, d = stack.pop()
+        if d > MAX_EXPRESSION_DEPTH:
+            raise ProfileError(f"{what} is nested more than {MAX_EXPRESSION_DEPTH} levels deep (a function of a "
+                               f"function of ...); no contact problem needs it, and SymPy's recursive walks "
+                               f"would not survive it")
+        stack.extend((a, d + 1) for a in getattr(e, "args", ()))
 #: relations of the parameters alone a Piecewise profile may switch on (each
 #: combination is derived separately: 2**3 cases at most)
 MAX_CASE_RELATIONS = 3
@@ -89,6 +109,35 @@ def _uncovered(pw):
     return None
 
 
+def _sampling_range(sym, v):
+    """``params={R: (low, high)}``: two finite real numbers, low <= high,
+    not below 0 for a symbol declared positive; else a
+    :class:`~linecontact_sym.core.errors.ProfileError` naming the range (text,
+    NaN, infinity and a single number included)."""
+    def bad(why):
+        return ProfileError(f"the sampling range of {sym} must be (low, high), two finite real numbers with "
+                            f"low <= high; got {v!r} ({why})")
+    if not isinstance(v, (tuple, list)) or len(v) != 2:
+        raise bad("not a pair")
+    ends = []
+    for e in v:
+        if isinstance(e, (str, bytes, bool)) or e is None:
+            raise bad(f"{e!r} is not a number")
+        try:
+            f = float(number(e))
+        except (LineContactError, TypeError, ValueError, OverflowError):
+            raise bad(f"{e!r} is not a finite real number") from None
+        if not math.isfinite(f):
+            raise bad(f"{e!r} is not finite")
+        ends.append(f)
+    lo, hi = ends
+    if not lo <= hi:
+        raise bad("low > high")
+    if getattr(sym, "is_positive", False) and lo < 0:
+        raise bad(f"{sym} is declared positive; sampling below 0 checks outside its domain")
+    return lo, hi
+
+
 def _sanitize(expr, params):
     """Turn user input into a SymPy expression in the standard ``x``."""
     if params is not None and not isinstance(params, (dict, list, tuple, set, frozenset)):
@@ -103,6 +152,7 @@ def _sanitize(expr, params):
     if not isinstance(expr, sp.Basic):
         raise ProfileError(
             f"the profile must be a SymPy expression in x, got {type(expr).__name__}: {expr!r}")
+    check_depth(expr)
     if isinstance(expr, sp.logic.boolalg.Boolean) and not isinstance(expr, sp.Expr):
         raise ProfileError(f"the profile must be an expression, got the relation {expr}")
     if expr.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
@@ -185,7 +235,7 @@ class Profile:
                 for k, v in params.items():
                     declared.add(k)
                     if v is not None:
-                        ranges[k] = (float(v[0]), float(v[1]))
+                        ranges[k] = _sampling_range(k, v)
             else:
                 declared.update(params)
         for s in declared:
@@ -277,6 +327,7 @@ class Profile:
         f, fp = fns
         with workdps(30):
             A = to_mpf(a)
+            slopes = []
             for k in range(1, n + 1):
                 xv = A * k / n
                 try:
@@ -286,8 +337,17 @@ class Profile:
                 if isinstance(v, mpmath.mpc) and abs(v.imag) > 1e-20 * (abs(v.real) + 1e-300):
                     return f"f is not real at x = {mpmath.nstr(xv, 6)}"
                 d = d.real if isinstance(d, mpmath.mpc) else d
-                if rising and mpmath.isfinite(d) and d < 0:
-                    return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
+                slopes.append((xv, d, abs(v) / xv))
+            if rising:
+                # a slope of rounding size (f' = -2e-31 at the crest of 1 - cos x, period 2 pi,
+                # read at 30 digits) is 0, not a decrease: the tolerance is relative to the
+                # profile's own slopes
+                finite = [(xv, d) for xv, d, _ in slopes if mpmath.isfinite(d)]
+                scale = max([abs(d) for _, d in finite] + [r for _, _, r in slopes if mpmath.isfinite(r)],
+                            default=mpmath.mpf(0))
+                for xv, d in finite:
+                    if d < -mpmath.mpf(10)**-20 * scale:
+                        return f"f decreases at x = {mpmath.nstr(xv, 6)} (f' = {mpmath.nstr(d, 3)})"
         return None
 
     def _near_origin_ok(self, values) -> str | None:

@@ -132,10 +132,9 @@ def code_version() -> str:
         import sympy
         import flint      # a core dependency: its version is part of the key
         flint_version = getattr(flint, "__version__", "present")
+        from ..core.version import package_version
         pkg = Path(__file__).resolve().parent.parent
-        init = (pkg / "__init__.py").read_text(encoding="utf-8")
-        found = re.search(r"__version__\s*=\s*[\"']([^\"']+)[\"']", init)
-        version = found.group(1) if found else "unknown"
+        version = package_version()
         h = hashlib.sha256(f"{version}|sympy {sympy.__version__}|mpmath {mpmath.__version__}|"
                            f"flint {flint_version}".encode())
         for path in sorted(pkg.rglob("*.py")):
@@ -485,7 +484,9 @@ def get(key: str):
     if not (_trusted_dir(path.parent.parent, create=False) and _trusted_dir(path.parent, create=False)):
         return None
     try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+        # O_NONBLOCK: a FIFO at the path opens at once (and is refused below as not a regular
+        # file) instead of blocking until a writer comes; a regular file reads as ever
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
     except OSError:
         return None
     try:

@@ -249,12 +249,23 @@ def _several(method, cuts):
 #: are not encoded: real evaluation only (``holomorphic=False``).
 _NEG = ((None, 0),)
 _ABOVE_ONE = ((1, None),)
+
+
+def _arb_exp_tail(n, z):
+    """exp(z) - sum_{k<n} z^k/k! = z^n/n! 1F1(1; n + 1; z) (entire in z; n an exact integer)."""
+    k = int(round(float(n.real.mid())))
+    return z.hypgeom_1f1(1, k + 1) * z**k * flint.acb(k + 1).rgamma()
+
+
 _SEVERAL = {
     "carlson_rf": (_several(flint.acb.elliptic_rf, (_NEG, _NEG, _NEG)), True),
     "carlson_rd": (_several(flint.acb.elliptic_rd, (_NEG, _NEG, _NEG)), True),
     "carlson_rg": (_several(flint.acb.elliptic_rg, (_NEG, _NEG, _NEG)), True),
     "carlson_rj": (_several(flint.acb.elliptic_rj, (_NEG, _NEG, _NEG, _NEG)), True),
     "gamma_ratio": (_several(lambda u, v: v.rgamma() * u.gamma(), ((), ())), True),   # order: see mul
+    "exp_tail": (_several(_arb_exp_tail, ((), ())), True),
+    # w sqrt(1 + w^2) - asinh(w): the plain form on balls (rigorous; Arb's precision loop pays the cancellation)
+    "asinh_excess": (_several(lambda w: w * (1 + w * w).sqrt() - w.asinh(), ((),)), False),
     "elliptic_pi2": (_several(flint.acb.elliptic_pi, (_ABOVE_ONE, _ABOVE_ONE)), True),
     "elliptic_f": (_several(flint.acb.elliptic_f, ((), ())), False),
     "elliptic_e2": (_several(flint.acb.elliptic_e_inc, ((), ())), False),

@@ -31,6 +31,13 @@ and an mpmath one (:data:`MPMATH_FUNCS`); the Arb translation is in
     accurately (e.g. symbolically as x**2/a**2 rather than 1 - (1 - x**2/a**2)):
     near z = 1 the evaluation uses zc, the connection formula about z = 1
     in float64, extra digits with z = 1 - zc formed exactly in mpmath.
+``exp_tail(n, z)``
+    The remainder of the exponential series, exp(z) - sum_{k<n} z^k/k!
+    = z^n/n! 1F1(1; n + 1; z) (n = 1: expm1): exact where the
+    difference cancels (|z| small: t - tau + tau exp(-t/tau) = tau exp_tail(2, -t/tau)
+    for t << tau, the Lee-Radok force histories of a Maxwell term).  float64:
+    positive-term series (for z < 0 in Kummer's form e^z 1F1(n; n + 1; -z)),
+    the plain difference where it does not cancel (|z| large).
 
 >>> import sympy as sp
 >>> sp.N(carlson_rf(0, sp.Rational(1, 2), 1), 20)      # K(1/2)
@@ -55,8 +62,9 @@ from ..core.precision import workdps
 
 sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
-__all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "np_rf", "np_rd", "np_rg",
-           "np_rj", "np_gamma_ratio", "np_hyp2f1c", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
+__all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess",
+           "np_rf", "np_rd", "np_rg", "np_rj", "np_gamma_ratio", "np_hyp2f1c", "np_exp_tail", "exp_tail_scalar",
+           "np_asinh_excess", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
 
 
 class _StableFunction(sp.Function):
@@ -178,6 +186,25 @@ class carlson_rj(_StableFunction):
     _mp = staticmethod(_mp_rj)
 
 
+def _mp_asinh_excess(w):
+    """w sqrt(1 + w^2) - asinh(w) at the working precision: the two terms agree to
+    about 2 log2(1/|w|) bits for small w (the difference is 2 w^3/3 - w^5/5 + ...),
+    so they are formed with that many bits more."""
+    w = mpmath.mpmathify(w)
+    extra = 2 * max(0, -int(mpmath.mag(w))) + 10 if w != 0 else 0
+    with mpmath.workprec(mpmath.mp.prec + extra):
+        v = w * mpmath.sqrt(1 + w * w) - mpmath.asinh(w)
+    return +v
+
+
+class asinh_excess(_StableFunction):
+    """w sqrt(1 + w^2) - asinh(w) = int_0^w 2 s^2/sqrt(1 + s^2) ds (real w), without
+    the cancellation of its two terms as w -> 0 (a periodic array's gap near full
+    contact, or at its contact edge)."""
+    nargs = 1
+    _mp = staticmethod(_mp_asinh_excess)
+
+
 class gamma_ratio(_StableFunction):
     """Gamma(u)/Gamma(v) without overflow, u, v not poles (u - v moderate for
     the float64 path)."""
@@ -191,6 +218,38 @@ class hyp2f1c(_StableFunction):
     non-positive integer."""
     nargs = 5
     _mp = staticmethod(_mp_hyp2f1c)
+
+
+def _mp_exp_tail(n, z):
+    """exp(z) - sum_{k<n} z^k/k! = z^n/n! 1F1(1; n + 1; z) (mpmath's 1F1 keeps its digits)."""
+    n = int(n)
+    if z == 0:
+        return mpmath.mpf(1) if n == 0 else mpmath.mpf(0)
+    return z**n / mpmath.factorial(n) * mpmath.hyp1f1(1, n + 1, z)
+
+
+class exp_tail(_StableFunction):
+    """exp(z) - sum_{k<n} z^k/k!, n >= 0 an integer, z real: the tail of the
+    exponential series (n = 0: exp(z); n = 1: expm1(z))."""
+    nargs = 2
+    _mp = staticmethod(_mp_exp_tail)
+
+    @classmethod
+    def eval(cls, n, z):
+        if n.is_Integer and n == 0:
+            return sp.exp(z)
+        if z.is_zero and n.is_Integer and n > 0:
+            return sp.S.Zero
+
+    def fdiff(self, argindex=2):
+        if argindex != 2:
+            raise sp.ArgumentIndexError(self, argindex)
+        return exp_tail(self.args[0] - 1, self.args[1])
+
+    def _eval_rewrite_as_exp(self, n, z, **kwargs):
+        if not n.is_Integer:
+            return None
+        return sp.exp(z) - sp.Add(*[z**k / sp.factorial(k) for k in range(int(n))])
 
 
 # ---------------------------------------------------------------- NumPy versions
@@ -458,12 +517,97 @@ class _BroadcastLogical:
         return functools.reduce(self.ufunc, operands)
 
 
+#: 2 (-1)^k C(2k, k) 4^-k / (2k + 3): w sqrt(1 + w^2) - asinh(w) = w^3 sum_k c_k w^(2k)
+_ASINH_EXCESS = [2 * (-1)**k * math.comb(2 * k, k) / 4**k / (2 * k + 3) for k in range(24)]
+
+
+def np_asinh_excess(w):
+    """float64 w sqrt(1 + w^2) - asinh(w): its Taylor series for |w| < 1/4 (24 terms:
+    (1/16)^24 below an ulp), the two terms beyond (they cancel by less than 1/16 there)."""
+    w = np.asarray(w, dtype=float)
+    small = np.abs(w) < 0.25
+    w2 = w * w
+    ser = np.zeros_like(w)
+    ws = np.where(small, w2, 0.0)           # the series only where it is used (no overflow beyond)
+    for c in reversed(_ASINH_EXCESS):
+        ser = ser * ws + c
+    with np.errstate(over="ignore", invalid="ignore"):
+        direct = w * np.hypot(1.0, w) - np.arcsinh(w)
+    out = np.where(small, w * w2 * ser, direct)
+    return out[()] if out.ndim == 0 else out
+
+
+def np_exp_tail(n, z):
+    """float64 exp(z) - sum_{k<n} z^k/k! (``n`` a scalar integer): where the
+    difference cancels (-max(30, 4n) < z < max(40, 2n + 20)) the series
+    z^n/n! sum_k c_k of positive terms, c_k = z^k/((n + 1)_k) for z >= 0 and
+    (Kummer) e^z n/(n + k) (-z)^k/k! for z < 0; elsewhere the plain
+    difference (its terms then do not cancel: e^z dominates, or the
+    polynomial does with relative spread 1 + O(n/|z|))."""
+    n = int(n)
+    z = np.asarray(z, dtype=float)
+    if n == 0:
+        return np.exp(z)
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        poly = np.ones_like(z)
+        for k in range(n - 1, 0, -1):       # Horner: sum_{k<n} z^k/k! = 1 + z (1 + z/2 (1 + ... z/(n-1)))
+            poly = 1.0 + z / k * poly
+        out = np.exp(z) - poly
+        lo, hi = -max(30.0, 4.0 * n), max(40.0, 2.0 * n + 20)
+        near = (z > lo) & (z < hi) & np.isfinite(z)
+        if np.any(near):
+            zz = z[near]
+            neg = zz < 0
+            u = np.abs(zz)
+            term = np.ones_like(zz)
+            total = np.ones_like(zz)
+            for k in range(1, 400):
+                # positive terms: z >= 0: u/(n + k); z < 0: (n + k - 1)/(n + k) u/k
+                term = term * np.where(neg, (n + k - 1.0) / (n + k) * u / k, u / (n + k))
+                total = total + term
+                if np.all(term <= 1e-17 * total):
+                    break
+            lead = u**n / float(math.factorial(n)) * np.where(neg, (-1.0)**n * np.exp(zz), 1.0)
+            res = lead * total
+            res = np.where(zz == 0, 0.0, res)
+            out = np.array(out, dtype=float)
+            out[near] = res
+    return out[()] if out.ndim == 0 else out
+
+
+def exp_tail_scalar(n, z) -> float:
+    """:func:`np_exp_tail` for one Python float (the scalar float64 path: no
+    NumPy overhead per call), the same series and thresholds."""
+    n, z = int(n), float(z)
+    if n == 0:
+        return math.exp(z)
+    if not (-max(30.0, 4.0 * n) < z < max(40.0, 2.0 * n + 20)):
+        poly = 1.0
+        for k in range(n - 1, 0, -1):
+            poly = 1.0 + z / k * poly
+        try:
+            return math.exp(z) - poly
+        except OverflowError:
+            return math.inf
+    if z == 0:
+        return 0.0
+    u, neg = abs(z), z < 0
+    term = total = 1.0
+    for k in range(1, 400):
+        term *= (n + k - 1.0) / (n + k) * u / k if neg else u / (n + k)
+        total += term
+        if term <= 1e-17 * total:
+            break
+    lead = u**n / float(math.factorial(n))
+    return lead * total * ((-1.0)**n * math.exp(z) if neg else 1.0)
+
+
 #: the logical operators of every NumPy lambdify of the package
 NUMPY_LOGIC = {"logical_and": _BroadcastLogical(np.logical_and), "logical_or": _BroadcastLogical(np.logical_or)}
 
 NUMPY_FUNCS = {"carlson_rf": np_rf, "carlson_rd": np_rd, "carlson_rg": np_rg, "carlson_rj": np_rj,
                "gamma_ratio": np_gamma_ratio,
-               "hyp2f1c": np_hyp2f1c}
+               "hyp2f1c": np_hyp2f1c, "exp_tail": np_exp_tail, "asinh_excess": np_asinh_excess}
 MPMATH_FUNCS = {"carlson_rf": _mp_rf, "carlson_rd": _mp_rd, "carlson_rg": _mp_rg, "carlson_rj": _mp_rj,
                 "gamma_ratio": _mp_gamma_ratio,
-                "hyp2f1c": _mp_hyp2f1c}
+                "hyp2f1c": _mp_hyp2f1c, "exp_tail": _mp_exp_tail, "asinh_excess": _mp_asinh_excess}

@@ -17,10 +17,10 @@ admissible points, 30-digit evaluation) before it is kept.
 
 Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCarlson`,
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
-:class:`SquareDifferences`, :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinToAtan`,
+:class:`SquareDifferences`, :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinhExcess`, :class:`AsinToAtan`,
 :class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
-:class:`FactorDifferences`.  The special functions they produce
-(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``) live in
+:class:`ExpTail`, :class:`FactorDifferences`.  The special functions they produce
+(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``, ``exp_tail``) live in
 :mod:`linecontact_sym.numeric.special`.
 
 The result is a :class:`StableForm`: the rewritten expression and the list of
@@ -35,15 +35,16 @@ import sympy as sp
 
 from ..method.derivation import gammasimp_masked
 from .accuracy import expressions_agree
-from .special import gamma_ratio, hyp2f1c
+from .special import asinh_excess, exp_tail, gamma_ratio, hyp2f1c
 from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
                           n_terms, nonneg, square_differences, stable_sqrt, is_rational_in_symbols)
 from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
-           "GammaAbsorb", "GammaRatio", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "FactorDifferences", "is_rational_in_symbols"]
+           "GammaAbsorb", "GammaRatio", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinhExcess", "AsinToAtan", "AcosToAtan",
+           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences",
+           "is_rational_in_symbols"]
 
 
 class Hyp2f1Connection(StableRule):
@@ -187,6 +188,60 @@ class AcoshToAsinh(StableRule):
             s = stable_sqrt(e.args[0]**2 - 1)
             return sp.asinh(s) if s is not None else e
         return expr.replace(lambda e: isinstance(e, sp.acosh), do)
+
+
+class AsinhExcess(StableRule):
+    """T - C asinh(u) = -C (u sqrt(1 + u^2) - asinh(u)) = -C asinh_excess(u) for a
+    pair of terms of a sum with T = -C u sqrt(1 + u^2) (the ratio checked at random
+    points here, the rewrite by the driver): the two terms cancel to 2 u^3/3 as
+    u -> 0 (a periodic array's gap near full contact: after acosh->asinh the
+    sinusoid's gap is 2 h sin^2(pi a/L) (w sqrt(1 + w^2) - asinh(w))), the
+    primitive :class:`~.special.asinh_excess` does not."""
+
+    name = "asinh-excess"
+    heads = (sp.asinh,)
+
+    def apply(self, expr):
+        def do(e):
+            if not e.is_Add or not e.has(sp.asinh):
+                return e
+            terms = list(e.args)
+            for i, ti in enumerate(terms):
+                for h in ti.atoms(sp.asinh):
+                    C = sp.cancel(ti / h)
+                    if C.has(h):
+                        continue
+                    u = h.args[0]
+                    target = -C * u * sp.sqrt(1 + u**2)
+                    for j, tj in enumerate(terms):
+                        if j != i and _same_value(tj, target):
+                            rest = [t for k, t in enumerate(terms) if k not in (i, j)]
+                            return sp.Add(*rest, -C * asinh_excess(u))
+            return e
+        return expr.replace(lambda e: e.is_Add and e.has(sp.asinh), do)
+
+
+def _same_value(p, q, tries: int = 24, agree: int = 2):
+    """p == q at ``agree`` random points where both are real and nonzero, and at
+    more points than not (a filter: the points know no domain, a sign may differ
+    outside it; the driver checks the rewrite under the conditions)."""
+    import random
+    syms = sorted(p.free_symbols | q.free_symbols, key=lambda s_: s_.name)
+    rng, hits, misses = random.Random(7), 0, 0
+    for _ in range(tries):
+        vals = {s_: sp.Rational(rng.randint(5, 45), 100) for s_ in syms}
+        vals = {s_: v * (1 + sp.Rational(k + 1, 7)) for k, (s_, v) in enumerate(vals.items())}
+        try:
+            pv, qv = complex(sp.N(p.xreplace(vals), 30)), complex(sp.N(q.xreplace(vals), 30))
+        except (TypeError, ValueError):
+            continue
+        if pv.imag or qv.imag or qv == 0:
+            continue
+        if abs(pv / qv - 1) > 1e-12:
+            misses += 1
+        else:
+            hits += 1
+    return hits >= agree and hits > misses
 
 
 class AsinToAtan(StableRule):
@@ -352,6 +407,83 @@ class HalfAngle(StableRule):
         return expr.replace(lambda e: e.is_Add and e.has(sp.cosh, sp.cos), do)
 
 
+class ExpTail(StableRule):
+    """c exp(w) - c - c w - ... - c w^(n-1)/(n-1)! = c exp_tail(n, w) (any terms
+    of a sum, expanded, the exponentials of a term combined; n as large as the
+    terms present allow, n >= 1; c may hold an exponential exp(v) of the other
+    terms: e^(w + v) - e^v (1 + w) = e^v exp_tail(2, w)): exact where the
+    terms cancel (w -> 0).  The Lee-Radok force of a parabola on a Maxwell
+    term at a constant rate, tau^2 (t/tau - 1 + exp(-t/tau)) =
+    tau^2 exp_tail(2, -t/tau), keeps its digits for t << tau (the plain form
+    cancels to nothing below t/tau ~ 1e-8), and so does Ting's receding phase
+    e^(-(t - s1)/tau) (s1 - tau + tau e^(-s1/tau)); n = 1 is expm1."""
+
+    name = "exp-tail"
+    heads = (sp.exp,)
+    #: the longest tail sought, and the longest sum searched
+    MAX_N = 12
+    MAX_TERMS = 64
+
+    @staticmethod
+    def _split(term):
+        """(coefficient, combined exponent) of a term: c exp(w), w = 0 without exponential."""
+        ws, rest = [], []
+        for f in sp.Mul.make_args(term):
+            (ws if isinstance(f, sp.exp) and f.args[0].free_symbols else rest).append(f)
+        return sp.Mul(*rest), sp.expand(sp.Add(*[f.args[0] for f in ws]))
+
+    @classmethod
+    def _terms(cls, e):
+        """The terms of e expanded, each as coefficient * exp(combined exponent)."""
+        out = {}
+        for t_ in sp.Add.make_args(sp.expand(e)):
+            c, w = cls._split(t_)
+            u = c * sp.exp(w) if w != 0 else c
+            out[u] = out.get(u, 0) + 1
+        return out
+
+    def apply(self, expr):
+        def do(e):
+            terms = self._terms(e)
+            if len(terms) > self.MAX_TERMS:       # each term is tried against each exponential: quadratic work
+                return e
+            out, changed = [], False
+            for t_ in list(terms):
+                if not terms.get(t_):
+                    continue
+                c0, wt = self._split(t_)
+                if wt == 0:
+                    continue
+                bases = [sp.S.Zero] + sorted({self._split(u)[1] for u in terms if terms[u]} - {wt, sp.S.Zero},
+                                             key=sp.default_sort_key)
+                best = None
+                for v in bases:
+                    c, w = c0 * sp.exp(v), sp.expand(wt - v)
+                    if not w.free_symbols:
+                        continue
+                    n, taken = 0, []
+                    while n < self.MAX_N:
+                        want = self._terms(-c * w**n / sp.factorial(n))
+                        if not all(terms.get(u, 0) >= taken.count(u) + k for u, k in want.items()):
+                            break
+                        taken.extend(u for u, k in want.items() for _ in range(k))
+                        n += 1
+                    if n and (best is None or n > best[0]):
+                        best = (n, c, w, taken)
+                if best is None:
+                    continue
+                n, c, w, taken = best
+                for u in taken + [t_]:
+                    terms[u] -= 1
+                out.append(c * exp_tail(n, w))
+                changed = True
+            if not changed:
+                return e
+            rest = [u for u, k in terms.items() for _ in range(k)]
+            return sp.Add(*out, *rest)
+        return expr.replace(lambda e: e.is_Add and e.has(sp.exp), do)
+
+
 class FactorDifferences(StableRule):
     """A rational sum that factors is replaced by its factored form
     (a**2 - x**2 = (a - x)(a + x), 1 - x**2/a**2 = (a - x)(a + x)/a**2 ...):
@@ -377,8 +509,8 @@ class FactorDifferences(StableRule):
 
 #: the rules in the order :func:`stabilize` applies them
 RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), SquareDifferences(),
-         AtanhToAsinh(),
-         AcoshToAsinh(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(), HalfAngle(), FactorDifferences())
+         AtanhToAsinh(), AcoshToAsinh(), AsinhExcess(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(),
+         HalfAngle(), ExpTail(), FactorDifferences())
 
 
 # ====================================================================== driver

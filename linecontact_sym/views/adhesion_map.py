@@ -17,7 +17,6 @@ from pathlib import Path
 import mpmath
 import numpy as np
 
-from ..core.extras import require
 from ..core.precision import workdps
 
 
@@ -53,7 +52,8 @@ def adhesion_map_data(md, values: dict, lambdas=(0.1, 0.5, 1, 3, 10), a_range=(0
 def plot_adhesion_map(data: dict, path=None, title: str = "Maugis-Dugdale line contact"):
     """Two panels: P/|P_JKR| against a/a_JKR for each lambda (JKR dashed), and
     the pull-off P_min/|P_JKR| against lambda (the rigid limit dotted)."""
-    Figure = require("plot", "matplotlib.figure").Figure
+    from .plots import figure_class
+    Figure = figure_class()
     fig = Figure(figsize=(10, 4))
     ax1, ax2 = fig.subplots(1, 2)
     for lam, y in data["curves"].items():

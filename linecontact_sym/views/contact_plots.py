@@ -36,7 +36,6 @@ import numpy as np
 import sympy as sp
 
 from ..core.errors import DomainError
-from ..core.extras import require
 
 #: what :func:`plot_contact` draws
 PLOTS = ("pressure", "force", "adhesive", "gap", "wavy_force", "wavy_pressure")
@@ -227,7 +226,8 @@ def wavy_pressure_data(contact, loads=(0.25, 0.5, 0.75), values=None, points: in
 
 
 def _figure(size=(5.2, 3.8)):
-    Figure = require("plot", "matplotlib.figure").Figure
+    from .plots import figure_class
+    Figure = figure_class()
     fig = Figure(figsize=size)
     return fig, fig.subplots()
 

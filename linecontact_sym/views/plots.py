@@ -112,8 +112,28 @@ def curve_data(contacts, quantity: str = "force", *, x, y, x_range, values=None,
     return X, curves
 
 
-def _figure_class():
-    return require("plot", "matplotlib.figure").Figure
+_FIGURE: dict = {}       # matplotlib's Figure -> the package's
+
+
+def figure_class():
+    """The class of the package's figures: a matplotlib ``Figure`` (made
+    without pyplot) that shows itself as PNG in Jupyter even where no pyplot
+    figure has switched the inline backend on yet (a kernel's first plot):
+    there IPython printed ``<Figure size ...>``.  Where IPython has a
+    formatter for figures (the inline backend is on), that formatter is used."""
+    base = require("plot", "matplotlib.figure").Figure
+    if base not in _FIGURE:
+        class Figure(base):
+            __module__ = base.__module__        # pickles (and unpickles) as matplotlib's own
+
+            def _repr_png_(self):
+                import io
+                buf = io.BytesIO()
+                self.savefig(buf, format="png", bbox_inches="tight")
+                return buf.getvalue()
+        Figure.__qualname__ = "Figure"
+        _FIGURE[base] = Figure
+    return _FIGURE[base]
 
 
 def plot_quantity(contacts, quantity: str = "force", *, x, y, x_range, values=None, points: int = 401,
@@ -145,7 +165,7 @@ def plot_quantity(contacts, quantity: str = "force", *, x, y, x_range, values=No
                              ratio_label, size, formats)
     if _drawn_before(out, stem, inputs, paths):
         return paths
-    Figure = _figure_class()
+    Figure = figure_class()
     if ratio is None:
         fig = Figure(figsize=size or (5.2, 3.8))
         ax, axr = fig.subplots(), None

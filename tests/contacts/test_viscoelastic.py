@@ -322,8 +322,11 @@ def test_a_wrong_closed_form_is_not_returned(monkeypatch):
     point per phase: a SymPy integral that came out wrong (here: doubled) gives way
     to the unevaluated Integral."""
     from linecontact_sym.contacts.viscoelastic import contact as vc
+    from linecontact_sym.method import store
     good = vc._integrate
     monkeypatch.setattr(vc, "_integrate", lambda *a: 2 * good(*a))
+    monkeypatch.setattr(store, "get", lambda key: None)       # no closed form remembered from another test
+    monkeypatch.setattr(store, "put", lambda key, rec: None)
     v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=1))
     F = v.force_history(CYCLE)
     assert F.has(sp.Integral)
@@ -367,3 +370,85 @@ def test_viscoelastic_derive_and_eval(capsys):
     assert code == 0 and abs(float(json.loads(out)["rows"][0]["value"]) / ref - 1) < 1e-12
     code, _, err = run_cli(capsys, "eval", "x**2/(2*R)", "force", "--material", "burgers:E0=1", "--history", "t", "--at", "t=1")
     assert code != 0 and "burgers" in err
+
+
+# ---------------------------------------------------------------- accuracy on request (evaluate)
+TAU, E0S, RS = sp.symbols("tau E0 r", positive=True)
+
+
+@functools.lru_cache(maxsize=None)
+def visco_symbolic():
+    """The parabola on a Maxwell material with symbolic E0, tau; history a = r t."""
+    return lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=E0S, tau=TAU))
+
+
+def lee_radok_by_hand(tv, tau, E0, r, Rv, dps=60):
+    """(pi E0 r^2/(2R)) int_0^t s exp(-(t - s)/tau) ds, our own tanh-sinh at ``dps`` digits."""
+    with mpmath.workdps(dps):
+        tv, tau, E0, r, Rv = (mpmath.mpf(v) for v in (tv, tau, E0, r, Rv))
+        return mpmath.pi * E0 * r**2 / (2 * Rv) * mpmath.quad(lambda s: s * mpmath.exp(-(tv - s) / tau), [0, tv])
+
+
+@pytest.mark.parametrize("tv", [1e-10, 0.5, 1e6])
+def test_evaluate_force_history_picks_its_path(tv):
+    """float64 when it meets rtol (t << tau included: the stable form's exp_tail), mpmath
+    beyond float64, an Arb ball on request; all against our own quadrature at 60 digits."""
+    v = visco_symbolic()
+    pt = dict(t=tv, tau=1.0, E0=2.0, r=0.1, R=1.5)
+    ref = lee_radok_by_hand(tv, 1.0, 2.0, 0.1, 1.5)
+    r64 = v.evaluate("force", RS * t, rtol=1e-12, **pt)
+    assert r64.path == "float64" and abs(r64.value / ref - 1) < 1e-14
+    r30 = v.evaluate("force", RS * t, rtol=1e-30, **pt)
+    assert r30.path.startswith("mpmath@") and abs(r30.value / ref - 1) < 1e-30
+    arb = v.evaluate("force", RS * t, certified=True, dps=25, **pt)
+    assert arb.path == "arb" and arb.enclosure[0] <= ref <= arb.enclosure[1] and arb.rel_error < 1e-24
+
+
+def test_evaluate_refuses_outside_the_domain():
+    v = visco_symbolic()
+    with pytest.raises(DomainError, match="time"):
+        v.evaluate("force", RS * t, t=-1.0, tau=1.0, E0=2.0, r=0.1, R=1.0)
+    with pytest.raises(DomainError, match="tau"):
+        v.evaluate("force", RS * t, t=1.0, tau=-1.0, E0=2.0, r=0.1, R=1.0)
+    with pytest.raises(DomainError, match="unknown history quantity"):
+        v.evaluate("gap", RS * t, t=1.0)
+    exact = v.evaluate("force", RS * t, t="1/3", tau="1", E0=2, r=sp.Rational(1, 10), R=1, rtol=1e-12)   # text: exact
+    assert abs(exact.value / lee_radok_by_hand(mpmath.mpf(1) / 3, 1, 2, mpmath.mpf(1) / 10, 1) - 1) < 1e-14
+
+
+@pytest.mark.slow
+def test_evaluate_pressure_history_without_closed_form_is_enclosed_by_arb():
+    """p(x, t) of the ramp on Maxwell: SymPy leaves the integral over the punches
+    unevaluated; beyond float64 one Arb enclosure of it (a true bound), checked against
+    our own tanh-sinh of (1/pi) int_x^a Pi'(b) E(t - b/r)/sqrt(b^2 - x^2) db, Pi' = pi b/(2R)."""
+    v = visco_symbolic()
+    pt = dict(t=0.5, x=0.01, tau=1.0, E0=2.0, r=0.1, R=1.0)
+    with mpmath.workdps(50):
+        A = mpmath.mpf("0.05")
+        xv = mpmath.mpf(pt["x"])
+        ref = mpmath.quad(lambda b: b / 2 * 2 * mpmath.exp(-(mpmath.mpf("0.5") - b / mpmath.mpf("0.1")))
+                          / mpmath.sqrt(b * b - xv * xv), [xv, A])
+    r64 = v.evaluate("pressure", RS * t, rtol=1e-10, **pt)
+    assert r64.path == "float64" and abs(r64.value / ref - 1) < 1e-12
+    arb = v.evaluate("pressure", RS * t, rtol=1e-25, **pt)
+    assert arb.path == "arb" and arb.certified and arb.enclosure[0] <= ref <= arb.enclosure[1]
+
+
+@pytest.mark.slow
+def test_evaluate_creep_half_width_step_load_sls():
+    """a(t) under a step load P0 on a standard linear solid: Pi(a) = pi a^2/(4R) = P0 J*(t),
+    J*(t) = 1/E_inf - (1/E_inf - 1/E0) exp(-E_inf t/(E0 tau)) (the textbook creep function,
+    written here); float64 on request of 1e-12, an Arb ball on request of certainty."""
+    Ei, P0 = sp.symbols("E_inf P0", positive=True)
+    v = lcs.parabola(verify=False).viscoelastic(lcs.standard_linear_solid(E0=E0S, E_inf=Ei, tau=TAU))
+    pt = dict(tau=1.0, E0=2.0, E_inf=0.5, P0=1.0, R=1.0)
+    for tv in (1e-12, 0.3, 1e3):
+        with mpmath.workdps(40):
+            J = 2 - (2 - mpmath.mpf(1) / 2) * mpmath.exp(-mpmath.mpf(tv) / 4)
+            ref = mpmath.sqrt(4 * J / mpmath.pi)
+        r = v.evaluate("half_width", P0, t=tv, rtol=1e-12, **pt)
+        assert r.path == "float64" and abs(r.value / ref - 1) < 1e-14
+    arb = v.evaluate("half_width", P0, t=0.3, certified=True, **pt)
+    with mpmath.workdps(40):
+        ref = mpmath.sqrt(4 * (2 - mpmath.mpf(3) / 2 * mpmath.exp(-mpmath.mpf(0.3) / 4)) / mpmath.pi)
+    assert arb.enclosure[0] <= ref <= arb.enclosure[1]

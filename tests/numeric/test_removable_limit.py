@@ -57,7 +57,7 @@ def test_no_limit_is_sought_where_every_contact_refuses_zero():
     cylinder's failing limit at R -> 0+ cost 1-3 CPU s per export).  Checked
     against the contacts' own rules: no kind lets them be 0."""
     import linecontact_sym as lcs
-    from linecontact_sym.contacts.base import CONTACT_KINDS, _checked_value, may_be_zero
+    from linecontact_sym.contacts.base import CONTACT_KINDS, checked_value, may_be_zero
     from linecontact_sym.core.errors import DomainError
     from linecontact_sym.core.ranges import NEVER_ZERO
     names = {s.name for s in NEVER_ZERO}
@@ -73,7 +73,7 @@ def test_no_limit_is_sought_where_every_contact_refuses_zero():
     # the stick half-width of its tangential contact's slip)
     for sym in NEVER_ZERO:
         with pytest.raises(DomainError, match="positive"):
-            _checked_value(sym.name, 0.0, sym)
+            checked_value(sym.name, 0.0, sym)
     with pytest.raises(DomainError, match="positive"):
         c.check_domain("force", dict(a=0.5, R=0.0, E_star=1.0))
     with pytest.raises(DomainError, match="positive"):

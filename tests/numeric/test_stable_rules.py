@@ -21,6 +21,7 @@ import pytest
 import sympy as sp
 
 from linecontact_sym.numeric import stable as ST
+from linecontact_sym.numeric import special
 from linecontact_sym.numeric.exports import lambdify_numpy
 from linecontact_sym.numeric.special import (MPMATH_FUNCS, NUMPY_FUNCS, carlson_rd, carlson_rf, carlson_rg,
                                              carlson_rj, gamma_ratio, hyp2f1c, mp_elliptic_pi, np_gamma_ratio,
@@ -86,8 +87,8 @@ def check_rule(rule, expr, point, ranges, lost, kept, ref_point=None):
 def test_rules_are_named_documented_and_ordered():
     names = [r.name for r in ST.RULES]
     assert names == ["elliptic-pi/incomplete->carlson", "elliptic->carlson", "hyp2f1-connection", "gamma-absorb",
-                     "gamma-ratio", "square-differences", "atanh->asinh", "acosh->asinh", "asin->atan", "acos->atan", "hyp2f1-complement",
-                     "conjugate", "log-of-power", "half-angle", "factor"]
+                     "gamma-ratio", "square-differences", "atanh->asinh", "acosh->asinh", "asinh-excess", "asin->atan", "acos->atan",
+                     "hyp2f1-complement", "conjugate", "log-of-power", "half-angle", "exp-tail", "factor"]
     for r in ST.RULES:
         assert isinstance(r, ST.StableRule)
         assert type(r).__doc__ and "=" in type(r).__doc__, f"{r.name}: the docstring states no identity"
@@ -215,6 +216,37 @@ def test_acosh_to_asinh():
     assert rule.apply(other) == other
 
 
+def test_asinh_excess():
+    """s t - S^2 asinh(t/S), t = sqrt((x - a)(x + a)), S = a: the parabola's (and, in
+    sines, the periodic array's) gap after acosh->asinh, whose terms cancel to
+    2 t^3/(3 S) at the contact edge: at x = a (1 + 1e-14) the plain float64 keeps
+    two digits, the rewritten one (asinh_excess, its series) 4 eps; a pair whose
+    first term is not S^2 w sqrt(1 + w^2) is left alone."""
+    rule = ST.AsinhExcess()
+    t_ = sp.sqrt((x - a) * (x + a))
+    expr = x * t_ - a**2 * sp.asinh(t_ / a)
+    new = check_rule(rule, expr, {a: 1.0, x: 1 + 1e-14}, {a: (0.1, 0.9), x: (1.0, 2.0)}, lost=1e-3, kept=4 * EPS)
+    assert new.has(ST.asinh_excess) and not new.has(sp.asinh)
+    other = 2 * x * t_ - a**2 * sp.asinh(t_ / a)
+    assert rule.apply(other) == other
+
+
+def test_asinh_excess_primitive_against_the_plain_form():
+    """float64 asinh_excess(w) (series below 1/4, the two terms above) and the mpmath
+    one against w sqrt(1 + w^2) - asinh(w) at 400 digits, w from 1e-100 to 1e10."""
+    from linecontact_sym.numeric.special import np_asinh_excess
+    ws = [1e-100, 1e-20, 1e-8, 1e-3, 0.1, 0.2499999, 0.25, 0.5, 1.0, 3.0, 1e3, 1e10]
+    got = np_asinh_excess(np.array(ws))
+    for w, g in zip(ws, got):
+        with mpmath.workdps(400):          # the plain form keeps 400 - 2 log10(1/w) digits
+            W = mpmath.mpf(w)
+            ref = W * mpmath.sqrt(1 + W * W) - mpmath.asinh(W)
+            assert abs(g / ref - 1) < 4 * EPS, (w, g, ref)
+        assert abs(float(np_asinh_excess(-w)) + g) <= 4 * EPS * abs(g)         # odd
+        with mpmath.workdps(30):
+            assert abs(MPMATH_FUNCS["asinh_excess"](mpmath.mpf(w)) / ref - 1) < mpmath.mpf(10)**-29
+
+
 def test_asin_to_atan():
     """asin(x/a) = atan(x/sqrt((a - x)(a + x))): accurate at x = a(1 - 1e-12),
     where the rounding of x/a costs asin five digits (a = 3: x/a is not exact)."""
@@ -318,6 +350,49 @@ def test_half_angle():
     assert rule.apply(1 - sp.cos(x)) == 2 * sp.sin(x / 2)**2
     other = sp.cosh(x) + 1                   # nothing cancels
     assert rule.apply(other) == other
+
+
+def test_exp_tail():
+    """c tau^2 (t/tau - 1 + exp(-t/tau)) = c tau^2 exp_tail(2, -t/tau) (the Lee-Radok force of a
+    parabola on a Maxwell term): every digit at t = 1e-9 tau (the plain form has none);
+    the longest run of series terms present is taken (n = 3 here), and expm1 is n = 1."""
+    rule = ST.ExpTail()
+    w = -x / R
+    expr = sp.expand(c * R**2 * (x / R - 1 + sp.exp(-x / R)))
+    new = check_rule(rule, expr, {R: 1.0, x: 1e-9, c: 1.0}, {R: (1.0, 2.0), x: (0.1, 0.9), c: (1.0, 2.0)},
+                     lost=1e-3, kept=4 * EPS)
+    assert new == c * R**2 * special.exp_tail(2, w)
+    three = sp.expand(c * (sp.exp(w) - 1 - w - w**2 / 2)) + a
+    assert rule.apply(three) == a + c * special.exp_tail(3, w)
+    assert rule.apply(sp.exp(x) - 1) == special.exp_tail(1, x)
+    other = sp.exp(x) + 1                    # nothing cancels
+    assert rule.apply(other) == other
+
+
+def test_exp_tail_primitive():
+    """float64 exp_tail(n, z) against mpmath's exp(z) - sum z^k/k! at 60 digits
+    over z in +-[1e-300, 700], n = 0..6: within 8 eps (sign changes of z: the
+    Kummer series for z < 0, the plain difference for |z| large)."""
+    worst = 0.0
+    zs = [s_ * 10.0**e for e in np.linspace(-300, 2.8, 90) for s_ in (1, -1)]
+    for n_ in range(7):
+        got = special.np_exp_tail(n_, np.array(zs))
+        assert all(special.exp_tail_scalar(n_, z_) == pytest.approx(g, rel=4 * EPS, abs=1e-300)
+                   for z_, g in zip(zs[::7], got[::7]) if np.isfinite(g))     # the scalar path's twin
+        for z_, g in zip(zs, got):
+            # the plain difference at enough digits to absorb its cancellation (~ n |log10 z| for |z| < 1)
+            with mpmath.workdps(60 + int(n_ * max(0.0, -math.log10(abs(z_))))):
+                zz = mpmath.mpf(z_)
+                ref = mpmath.exp(zz) - mpmath.fsum(zz**k / mpmath.factorial(k) for k in range(n_))
+            if ref == 0 or not (1e-300 < abs(ref) < 1e300):
+                continue
+            worst = max(worst, float(abs((g - ref) / ref)) / EPS)
+    assert worst < 8, worst
+    assert float(special.np_exp_tail(2, -1e-10)) == pytest.approx(5e-21 * (1 - 1e-10 / 3), rel=1e-15)
+    assert sp.diff(special.exp_tail(3, x), x) == special.exp_tail(2, x)
+    e8 = sp.Rational(1, 10**8)                # evalf through mpmath: exp(-e8) - 1 + e8 = e8^2/2 - e8^3/6 + ...
+    series = sum((-e8)**k / sp.factorial(k) for k in range(2, 6))
+    assert abs(sp.N(special.exp_tail(2, -e8), 30) / series - 1) < 1e-28
 
 
 def test_factor_differences():
@@ -441,4 +516,4 @@ def test_hyp2f1c_near_one(abc, zc):
 
 def test_numpy_and_mpmath_tables_cover_every_primitive():
     assert set(NUMPY_FUNCS) == set(MPMATH_FUNCS) == {"carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj",
-                                                      "gamma_ratio", "hyp2f1c"}
+                                                      "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess"}

@@ -95,7 +95,7 @@ def test_a_figure_is_redrawn_only_when_its_inputs_or_its_files_changed(tmp_path,
 
     def no_drawing():
         raise AssertionError("redrawn")
-    monkeypatch.setattr(plots, "_figure_class", no_drawing)
+    monkeypatch.setattr(plots, "figure_class", no_drawing)
     assert plot_quantity([law], "force", **kw) == paths            # same inputs, files intact: not redrawn
     with pytest.raises(AssertionError, match="redrawn"):            # another curve: redrawn
         plot_quantity([_Law(lambda a, R, E_star: 2 * a**2, ["a", "R", "E_star"])], "force", **kw)
@@ -201,6 +201,11 @@ def test_contact_plot_writes_figures(tmp_path):
         fig = c.plot(what, values={"R": 1}, path=tmp_path / f"{what}.png", points=41, **kw)
         assert (tmp_path / f"{what}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
         assert fig.axes[0].get_xlabel()
+    # shown in Jupyter as an image without pyplot or %matplotlib inline (the docs' notebooks)
+    png = fig._repr_png_()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 5000
+    import matplotlib.figure
+    assert isinstance(fig, matplotlib.figure.Figure)
     with pytest.raises(DomainError, match="choose one of"):
         c.plot("torque")
     with pytest.raises(DomainError, match="'R'"):
@@ -228,7 +233,7 @@ def test_plot_quantity_labels_default_to_the_axis_formulas_in_latex(tmp_path):
     from unittest import mock
     from linecontact_sym.views import plots
     seen = {}
-    real = plots._figure_class
+    real = plots.figure_class
 
     def spy():
         Fig = real()
@@ -237,7 +242,7 @@ def test_plot_quantity_labels_default_to_the_axis_formulas_in_latex(tmp_path):
             def savefig(self, *a, **k):
                 seen["x"], seen["y"] = self.axes[0].get_xlabel(), self.axes[0].get_ylabel()
         return F
-    with mock.patch.object(plots, "_figure_class", spy):
+    with mock.patch.object(plots, "figure_class", spy):
         plots.plot_quantity([hertz()[0]], "force", x="a/R", y="P/(E_star*R)", x_range=(0, 1), points=5,
                             values={"R": 1, "E_star": 1}, out_dir=tmp_path, formats=("png",))
     assert seen == {"x": r"$\frac{a}{R}$", "y": r"$\frac{P}{E^{*} R}$"}

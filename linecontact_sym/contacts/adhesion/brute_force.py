@@ -12,6 +12,7 @@ import mpmath
 
 from ...core.errors import NoPullOffError, VerificationError
 from ...core.roots import Outside, golden_minimum
+from ..normal.equilibria import check_deadline
 from ..normal.force_law import GUARD, PullOff
 from ...core.precision import workdps
 
@@ -86,6 +87,7 @@ def _parabolic_polish(P, A, h, steps: int = 5):
     but not below 10**(-dps/3) A, where rounding in P (10**-dps) starts to
     move the vertex: the location ends near 10**(-2 dps/3)."""
     for k in range(8 * steps):
+        check_deadline("the parabolic polish of the pull-off (method B)")
         pm, p0, pp = P(A - h), P(A), P(A + h)
         curv = pp - 2 * p0 + pm
         if not curv > 0:
@@ -120,6 +122,13 @@ def minimum_by_grid(law, dps: int) -> PullOff:
             raise NoPullOffError("P(a) has no negative local minimum before full contact on the grid")
     if pts[k][1] >= 0:
         raise NoPullOffError("P(a) is nowhere negative on the grid: no finite pull-off")
+    if k == len(pts) - 1 and cut:
+        # the lowest point is where the admissible range ends, P falling there (unstable under load
+        # control): a contact unloaded from a stable branch separates at an interior local minimum first
+        inner = [i for i in range(1, len(pts) - 1)
+                 if pts[i][1] <= pts[i - 1][1] and pts[i][1] <= pts[i + 1][1] and pts[i][1] < 0]
+        if inner:
+            k = min(inner, key=lambda i: pts[i][1])
     if k == len(pts) - 1:
         if not cut:   # still falling where the grid ends: P has no finite minimum
             raise NoPullOffError(f"P(a) still decreases at a = {pts[k][0]:.3g} (1e8 times the length scale), "
@@ -161,6 +170,7 @@ def _grid(law):
                       | {top * (1 - 10.0**(-j / 4)) for j in range(8, 48)})
     pts, last0, cut = [], None, False
     for A in grid:
+        check_deadline("the grid search of the pull-off (method B)")
         try:
             p0 = P0f(A)
         except (Outside, ValueError, ZeroDivisionError):

@@ -103,6 +103,7 @@ class AdhesiveContact(ContactOn):
     def __init__(self, contact, law: CohesiveLaw, values=None):
         if not isinstance(law, CohesiveLaw):
             raise DomainError(f"an adhesive contact needs a CohesiveLaw, got {law!r}")
+        contact.check_effect(self.kind, law.name)     # a periodic array carries JKR only (normal.periodic)
         self.contact = contact
         self.law = law
         self._lsyms = tuple(s for s in law.symbols if s not in set(contact.params) and s != S.E_star)

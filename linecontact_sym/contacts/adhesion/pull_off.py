@@ -32,13 +32,13 @@ from ...core.budget import run_with_budget
 from ...core.conversion import float_values, real_mpf
 from ...core.errors import BudgetExceeded, NoPullOffError, VerificationError
 from ...method import store
-from ...method.derivation import Derivation, remembered_many, tidy
+from ...method.derivation import Derivation, agrees_at_random_point, remembered_many, tidy
 from ...method.hyperseries import NotDecomposable, decompose
 from ...method.rules import Step, special_of
 from ...method.verification import (VERIFY_BUDGET, VERIFY_DPS, VerificationRecord, digits_agreeing, holds,
                                    verify_many)
 from .brute_force import minimum_by_grid
-from ..normal.equilibria import landscape, minimum
+from ..normal.equilibria import landscape, minimum, within_search_budget
 from ..normal.force_law import PullOff
 from ...core.precision import workdps
 
@@ -390,7 +390,19 @@ def remembered_derivations(ad):
                                  attempts=d.attempts, cached=d.cached)
     if ad._pull_off_closed().get("timed_out"):   # cut short by the clock: derived here, not kept
         return tuple(derivations(ad))
-    return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild)
+    sampler = ad._sampler()
+
+    def recheck(d):
+        """A closed form read from disk against the minimum of the engine's force law (itself
+        re-checked when read) found numerically at one random point: method A, which shares nothing
+        with sympy.solve's closed form (cheap: no quadrature law)."""
+        def ref(v, dd):
+            po = minimum(ad._law(v, "closed"), dd)
+            if d.quantity == "pull_off_half_width":
+                return po.half_width
+            return po.force if d.quantity == "pull_off_force" else -po.force
+        return agrees_at_random_point(d, ref, sampler)
+    return remembered_many(_parts(ad, "pull_off"), lambda: derivations(ad), ad.contact.budget, rebuild, recheck)
 
 
 def _key(ad, vals):
@@ -404,7 +416,8 @@ def reference(ad, vals, dps, mode="quad") -> PullOff:
     key = ("po_ref", mode, dps, _key(ad, vals))
     if key not in ad._cache:
         try:
-            ad._cache[key] = minimum_by_grid(ad._law(vals, "quad"), dps)
+            with within_search_budget():      # a caller without a deadline (a claims file) gets the default one
+                ad._cache[key] = minimum_by_grid(ad._law(vals, "quad"), dps)
         except NoPullOffError as exc:
             ad._cache[key] = exc
     res = ad._cache[key]
@@ -419,6 +432,13 @@ def checked(ad, vals, dps) -> PullOff:
     checked by method B (:func:`reference`), cached.  ``digits``: their
     agreement (force; and half-width at a stationary minimum)."""
     key = ("po_checked", dps, _key(ad, vals))
+    if key not in ad._cache:
+        with within_search_budget():
+            return _checked(ad, vals, dps, key)
+    return ad._cache[key]
+
+
+def _checked(ad, vals, dps, key) -> PullOff:
     if key not in ad._cache and not ad.law.independent_minimum:
         po = minimum(ad._law(vals, "closed"), dps)
         ad._cache[key] = PullOff(po.force, po.adhesion_force, po.half_width, po.kind, None, po.minima,
@@ -474,11 +494,15 @@ def checked_or_fail(ad, vals, dps) -> PullOff:
     if po.digits < dps and po.kind == "end" and reference(ad, vals, dps).kind == "end":
         # both methods: P(a) still decreases where the admissible range ends (dP0/da < 0 beyond: the
         # compact-contact solution ends there), their ends differ; no minimum inside the range
-        raise NoPullOffError(f"pull-off of {ad.profile.name!r} at {vals}: P(a) has no minimum inside the "
-                             f"admissible range; it decreases up to the range's end (a = {mpmath.nstr(po.half_width, 8)}, "
+        inner = [e for e in po.minima if e.kind != "end"]
+        seen = ("the extrema found: " + ", ".join(f"{e.kind} minimum at a = {mpmath.nstr(e.half_width, 8)}"
+                                                  for e in po.minima)) if po.minima else "no extremum found"
+        raise NoPullOffError(f"pull-off of {ad.profile.name!r} at {vals}: P(a) has no "
+                             f"{'negative ' if inner else ''}minimum inside the admissible "
+                             f"range ({seen}); it falls to the range's end (a = {mpmath.nstr(po.half_width, 8)}, "
                              f"P = {mpmath.nstr(po.force, 8)}), beyond which dP0/da < 0 and the compact-contact "
                              f"solution no longer holds: the load-control pull-off is not determined by this model "
-                             f"here (a smaller work of adhesion moves the minimum inside the range)")
+                             f"here (a smaller work of adhesion may move a minimum inside the range)")
     if po.digits < dps:
         raise VerificationError(f"pull-off of {ad.profile.name!r}: the two methods agree to "
                                 f"{po.digits:.1f} < {dps} digits at {vals}")

@@ -393,6 +393,13 @@ class AsymmetricLineContact:
     def params(self):
         return self.core.params
 
+    def rolling(self, friction=S.mu):
+        """Steady rolling with traction over this contact (issue 40):
+        :class:`~linecontact_sym.contacts.rolling.asymmetric.AsymmetricRolling`
+        (through the kind registry: the rolling layer stands on this package)."""
+        from ..base import contact_kind
+        return contact_kind("rolling").over_asymmetric(self, friction)
+
     @classmethod
     def from_symmetric(cls, contact) -> "AsymmetricLineContact":
         """The symmetric contact's profile on the whole line (:func:`whole_line`)."""

@@ -15,7 +15,7 @@ from ...core.conversion import to_mpf
 from ...core.errors import DomainError, ProfileError
 from ...method import transforms as T
 from ...method.geometry import ISOLATED
-from ...method.derivation import Derivation, derive, fallback_step
+from ...method.derivation import Derivation, derive, fallback_step, values_by_name
 from ...method.profile import Profile
 from ...numeric.exports import lambdify_numpy
 from ...method.rules import Problem, Step
@@ -184,10 +184,10 @@ class LineContact(Contact):
         """The numeric force law at parameter values (keywords by name):
         the closed form where there is one (``mode='closed'``), else, or with
         ``mode='quad'``, the quadrature of Eq. (10*)."""
-        vals = {s: to_sympy(values[s.name]) for s in self.variables if s.name in values}
-        missing = [s.name for s in self.variables if s not in vals]
+        missing = [s.name for s in self.variables if s.name not in values]
         if missing:
             raise DomainError(f"the force law needs values for {', '.join(missing)}")
+        vals = values_by_name(self.variables, {s.name: values[s.name] for s in self.variables})   # signs checked
         return ForceLaw.from_contact(self, vals, mode)
 
     def _admissibility_fns(self):
@@ -374,6 +374,12 @@ class LineContact(Contact):
         return LineContact.GEOMETRIES["asymmetric"].symmetric_state(self, P, theta, moment, **values)
 
     # --------------------------------------------------------------- other forms
+    def check_effect(self, kind: str, law: str | None = None) -> None:
+        """The gate of the effects built on this contact (an adhesive
+        ``kind`` with its cohesive ``law``, ``"tangential"``, ``"stress"``):
+        every one is derived on an isolated contact; a periodic array
+        refuses those it does not carry (:mod:`.periodic`)."""
+
     def adhesive(self, work_of_adhesion=S.gamma):
         """The JKR-adhesive form of this contact (Eqs. 29-36), see
         :mod:`linecontact_sym.contacts.adhesion.contact`."""
@@ -398,6 +404,13 @@ class LineContact(Contact):
         see :mod:`linecontact_sym.contacts.tangential.contact`."""
         from ..tangential.contact import TangentialLineContact
         return TangentialLineContact(self, friction)
+
+    def rolling(self, friction=S.mu):
+        """Steady rolling with traction under Coulomb friction mu (rolling in
+        +x, the stick zone at the leading edge; Carter for the cylinder), see
+        :mod:`linecontact_sym.contacts.rolling.contact`."""
+        from ..base import contact_kind   # by the registry: the rolling contact stands on the asymmetric core,
+        return contact_kind("rolling")(self, friction)   # which builds LineContacts (no import cycle)
 
     def viscoelastic(self, material):
         """This contact on a linear viscoelastic half-plane (Lee-Radok, Ting), see

@@ -15,7 +15,11 @@ a* of the admissible range with dP/da < 0 there).  At an 'end' minimum the
 frictionless solution stops holding (beyond a* the pressure at the edges
 of the non-adhesive contact turns tensile, or the profile is not defined):
 the contact is not followed further, and a pull-off of kind 'end' is the
-lowest load the model describes, not a separation it can prove.
+lowest load the model describes, not a separation it can prove.  The end
+lies on a falling branch (unstable under load control), so a contact
+unloaded from a stable branch separates at a stationary or kink minimum
+(or the infimum) first: the end is the pull-off only where there is none,
+and a lower end beside one is reported in the note, not taken.
 
 The admissible range (:func:`admissible_range`): a* is the first a where
 the non-adhesive slope dP0/da turns negative (the edge pressure is
@@ -110,7 +114,17 @@ def searching_until(budget):
         _DEADLINE.reset(token)
 
 
-def _check_deadline(what):
+def within_search_budget():
+    """:func:`searching_until` the default :data:`SEARCH_BUDGET` where no search deadline is running
+    (a numeric quantity evaluated through its Derivation's reference: a claims file, ``evaluate``),
+    else nothing: every search at numbers ends in :class:`BudgetExceeded`, never a wait."""
+    if _DEADLINE.get() is not None:
+        return contextlib.nullcontext()
+    return searching_until(SEARCH_BUDGET)
+
+
+def check_deadline(what):
+    """Raise :class:`BudgetExceeded` naming ``what`` when the running search deadline is spent."""
     d = _DEADLINE.get()
     if d is not None and d.expired():
         raise BudgetExceeded(f"{what} did not finish within its budget of {d.budget:g} CPU s")
@@ -251,7 +265,7 @@ def crossings(g, lo, hi, balls=None, notes=None, first=False):
     while stack:
         l, r = stack.pop()
         count += 1
-        _check_deadline("the search for stationary points of P(a)")
+        check_deadline("the search for stationary points of P(a)")
         if count > MAX_INTERVALS:
             raise VerificationError(f"the search for stationary points of P(a) on [{mpmath.nstr(lo, 6)}, "
                                     f"{mpmath.nstr(hi, 6)}] needed more than {MAX_INTERVALS} intervals")
@@ -362,14 +376,14 @@ def real_range(law):
         grid = [law.scale * mpmath.mpf(4)**j for j in range(-20, 41)]
         first = good = None
         for A in grid:
-            _check_deadline("the scan for the real domain of P(a)")
+            check_deadline("the scan for the real domain of P(a)")
             try:
                 law.P(A)
                 law.dP(A)
             except UNDEFINED:
                 if good is None:
                     continue
-                return first, domain_end(lambda v: (_check_deadline("the search for the end of the law's domain"),
+                return first, domain_end(lambda v: (check_deadline("the search for the end of the law's domain"),
                                                     law.P(v), law.dP(v)), good, A), "domain"
             first = A if first is None else first
             good = A
@@ -504,7 +518,7 @@ def _convex_landscape(law, lo, hi, end, notes) -> Landscape:
         ext = []
         A_prev, A = None, lo
         while True:
-            _check_deadline("the search for the stationary point of P(a)")
+            check_deadline("the search for the stationary point of P(a)")
             if g(A) >= 0:
                 break
             if A >= hi_eval:
@@ -564,7 +578,7 @@ def _scanned_landscape(law, lo, hi, end, notes) -> Landscape:
                                            f"half-width (tensile edge pressure)")
         pending = sorted([b * (1 - KINK_GAP) for b in kinks] + [b * (1 + KINK_GAP) for b in kinks])
         while True:
-            _check_deadline("the scan of dP/da on the law's grid")
+            check_deadline("the scan of dP/da on the law's grid")
             while pending and pending[0] <= A:
                 X = pending.pop(0)
                 try:
@@ -652,7 +666,7 @@ def descent(law, lo, dps: int, scale=None):
         prev = (lo, law.dP(lo))
         brackets = []
         for _ in range(4 * MAX_DECADES):
-            _check_deadline("the descent of dP/da towards a -> 0+")
+            check_deadline("the descent of dP/da towards a -> 0+")
             A = prev[0] * step
             d = law.dP(A)
             if d < 0 < prev[1]:
@@ -739,8 +753,13 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
             raise NoPullOffError(
                 "P(a) has no negative minimum: no tensile load is sustained (the infimum 0 is "
                 "reached only as a -> 0); no finite pull-off")
-        best = min(neg, key=lambda e: e.force)
+        # the end of the admissible range (dP/da < 0 there) lies on a falling branch, unstable under
+        # load control: unloading from a stable branch separates at a stationary or kink minimum (or the
+        # infimum) first, and reaches the end only where there is none
+        inner = [e for e in neg if e.kind != "end"]
+        best = min(inner or neg, key=lambda e: e.force)
         note = land.describe()
+        note += _end_not_reached(land, best, neg)
         if below is not None:
             note += (f"; dP/da followed down in quarter decades below a = {mpmath.nstr(land.lo, 4)} to a = "
                      f"{mpmath.nstr(below[2], 3)}, where a |dP/da| < 1e-{dps + 6} |P(0+)|"
@@ -751,6 +770,23 @@ def minimum(law, dps: int, scan_law=None) -> PullOff:
             note += ("; the global minimum is at the end of the admissible range: the lowest load the "
                      "frictionless adhesive solution describes, not a proven separation load")
         return PullOff(+best.force, -best.force, +best.half_width, best.kind, None, tuple(mins), note)
+
+
+def _end_not_reached(land, best, neg) -> str:
+    """The note on a lower end of the admissible range that the pull-off ``best`` is not: its value and
+    the local maximum between them (from the extrema found), or ''."""
+    ends = [e for e in neg if e.kind == "end" and e.force < best.force]
+    if not ends or best.kind == "end":
+        return ""
+    end = ends[0]
+    maxima = [e for e in land.extrema if not e.minimum and best.half_width < e.half_width < end.half_width]
+    top = max(maxima, key=lambda e: e.force, default=None)
+    over = (f"beyond the local maximum at a = {mpmath.nstr(top.half_width, 8)} (P = {mpmath.nstr(top.force, 8)}), "
+            if top is not None else "")
+    return (f"; the end of the admissible range a* = {mpmath.nstr(end.half_width, 8)} has the lower "
+            f"P = {mpmath.nstr(end.force, 8)}, but it lies {over}on a branch where P falls towards a* "
+            f"(dP/da < 0: unstable under load control): unloading from the stable branch separates at the "
+            f"{best.kind} minimum a = {mpmath.nstr(best.half_width, 8)} first and does not reach it")
 
 
 def _first_minimum(law, land, mins) -> PullOff:
@@ -865,7 +901,8 @@ def half_width_at(law, load, dps: int = 30):
     return roots[0]
 
 
-__all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET", "crossings",
+__all__ = ["first_maximum_after", "Extremum", "Landscape", "Equilibrium", "searching_until", "SEARCH_BUDGET",
+           "within_search_budget", "check_deadline", "crossings",
            "real_range", "admissible_range", "landscape",
            "minimum", "equilibria", "equilibria_at", "half_width_at", "descent", "MAX_DECADES",
            "MIN_WIDTH", "KINK_GAP", "SPAN"]

@@ -9,11 +9,11 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.budget import DEFAULT_BUDGET, checked_budget, run_with_budget
 from ...core.conversion import rational
-from ...core.errors import BudgetExceeded, ProfileError
+from ...core.errors import BudgetExceeded, InadmissibleProfileError, ProfileError
 from ...method import transforms as T
 from ...method.derivation import Derivation, derive, fallback_step, remembered, timed
 from ...method.geometry import Periodic
-from ...method.profile import Profile
+from ...method.profile import Profile, check_depth
 from ...method.rules import Problem, Step
 from .tan_route import TanRoute
 from ...method.verification import verify
@@ -47,6 +47,7 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
         if s not in declared and not s.is_positive:
             raise ProfileError(f"force law {force_law} holds the unknown symbol {s}; declare it "
                                f"with params=[{s}] or make it positive=True")
+    check_depth(force_law, "the force law")
     if S.a not in force_law.free_symbols:
         raise ProfileError(f"the force law {force_law} does not depend on a")
     psyms = tuple(sorted(free, key=lambda s: s.name))
@@ -61,6 +62,7 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
         fixed = {k: v for k, v in vals.items() if k != S.a}
         Pf = sp.lambdify(S.a, force_law.xreplace(fixed), "mpmath")
         return T.profile_quad(Pf, [], vals, dps)
+    _check_pushes(force_law, sampler)
 
     def reference_in_x(vals, dps):
         return reference({**vals, S.a: vals[S.x]}, dps)
@@ -77,6 +79,39 @@ def profile_from_force(force_law, params=None, budget: float = DEFAULT_BUDGET,
     return Derivation("profile", expr=step.expr, closed_form=True, step=step, conditions=step.conditions,
                       verification=d.verification, seconds=d.seconds, notes=d.notes, reference=reference_in_x,
                       variables=variables, attempts=d.attempts, cached=d.cached)
+
+
+def _check_pushes(force_law, sampler, points: int = 5):
+    """A frictionless contact pushes: P(a) > 0 and dP/da >= 0 (the contact
+    grows with the load).  A force law negative or decreasing at random
+    admissible points (``-a**2``) has no profile: Eq. (9) would return a
+    decreasing one (``-2 x**2/(pi E*)``), which is no contact of this law.
+    Raises :class:`~linecontact_sym.core.errors.InadmissibleProfileError`
+    naming the point; a point where the law is not real (outside its
+    domain) or SymPy cannot evaluate it is not judged."""
+    rng = random.Random(9)
+    dP = sp.diff(force_law, S.a)
+    real = judged = 0
+    for _ in range(points):
+        vals = sampler(rng)
+        try:
+            Pv, dv = (complex(sp.N(e.xreplace(vals), 20)) for e in (force_law, dP))
+        except (TypeError, ValueError):
+            continue
+        judged += 1
+        if abs(Pv.imag) > 1e-12 * max(1.0, abs(Pv.real)) or abs(dv.imag) > 1e-12 * max(1.0, abs(dv.real)):
+            continue                  # outside the law's real domain there (the exact cylinder at a > R)
+        real += 1
+        if Pv.real < -1e-12 * max(1.0, abs(dv.real)) or dv.real < -1e-12 * max(1.0, abs(dv.real)):
+            shown = ", ".join(f"{k} = {sp.N(v, 6)}" for k, v in sorted(vals.items(), key=lambda kv: kv[0].name))
+            what = "negative" if Pv.real < 0 else "decreasing"
+            raise InadmissibleProfileError(
+                f"the force law P(a) = {force_law} is {what} at {shown}: a frictionless contact pushes, with "
+                f"P(a) >= 0 growing with the half-width; no profile has this law (Eq. 9 would return a "
+                f"profile that decreases, not a contact of it)")
+    if judged and not real:
+        raise InadmissibleProfileError(f"the force law P(a) = {force_law} is not real at any of {judged} random "
+                                       f"points: no profile has it")
 
 
 def periodic_profile_from_force(force_law, period, params=None, budget: float = DEFAULT_BUDGET,

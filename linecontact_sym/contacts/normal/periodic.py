@@ -176,7 +176,7 @@ class PeriodicLineContact(LineContact):
         parts = ("periodic", quantity, self.profile.expr, dict(self.profile.ranges), self.geometry.period,
                  kd.expr, kd.closed_form, self.points, self.digits, self.verify)
         return remembered(parts, lambda: self._make_mapped(quantity, kd), self.budget,
-                          lambda d: self._reference(quantity))
+                          lambda d: self._reference(quantity), sampler=self._sampler(_MAPPED[quantity]))
 
     def _make_mapped(self, quantity, kd) -> Derivation:
         g, domain = self.geometry, _MAPPED[quantity]
@@ -188,8 +188,10 @@ class PeriodicLineContact(LineContact):
                               step=fallback_step(f"no closed form in s ({how})"), notes=kd.notes,
                               reference=reference, variables=variables, attempts=kd.attempts)
         expr = g.from_kernel(kd.expr, quantity)
+        # the gap's formula holds for a < x <= L/2 (the next contact begins at L - a; the
+        # stable rewrites are checked on that range: asinh-excess needs sin(pi x/L) > 0)
         conds = tuple(dict.fromkeys([g.condition_from_kernel(c) for c in kd.conditions]
-                                    + [sp.Le(S.a, g.a_max())]))
+                                    + [sp.Le(S.a, g.a_max())] + ([sp.Le(S.x, g.a_max())] if quantity == "gap" else [])))
         rec = None
         if self.verify:
             rec = verify(expr, reference, self._sampler(domain), conds, n_points=self.points,
@@ -221,7 +223,8 @@ class PeriodicLineContact(LineContact):
         (:func:`full_contact_quad`)."""
         parts = ("periodic", "full_contact_force", self.profile.expr, dict(self.profile.ranges),
                  self.geometry.period, self.points, self.verify)
-        return remembered(parts, self._make_full_contact, self.budget, lambda d: self._full_reference)
+        return remembered(parts, self._make_full_contact, self.budget, lambda d: self._full_reference,
+                          sampler=self._sampler("any"))
 
     def _full_reference(self, vals, dps):
         return full_contact_quad(self.profile, vals, self.geometry.period.xreplace(vals), dps)
@@ -342,22 +345,21 @@ class PeriodicLineContact(LineContact):
         self.geometry.check_half_width(values)
 
     # --------------------------------------------------------------- effects not yet periodic
-    def tangential(self, friction=S.mu):
-        raise LineContactError("the tangential contact of a periodic array is not derived yet (its layer reads "
-                               "the isolated half-plane's kernel); see docs/architecture.md")
-
-    def stresses(self, tangential=None, **kw):
-        raise LineContactError("the subsurface stresses of a periodic array are not derived yet (the Kolosov "
-                               "potentials of the layer are those of one contact)")
-
-    def adhesion(self, law: str = "jkr", *args, **params):
-        if law != "jkr":
+    def check_effect(self, kind: str, law: str | None = None) -> None:
+        """The one gate of the effects built on this contact (every route:
+        ``c.adhesion(...)``, ``c.maugis_dugdale()``, ``Kind.from_frictionless(c)``
+        of the CLI and the claims checker): JKR adhesion is derived on an
+        array; the other cohesive laws, the tangential contact and the
+        subsurface stresses are not yet, and are refused here, the same way."""
+        if kind == "tangential":
+            raise LineContactError("the tangential contact of a periodic array is not derived yet (its layer reads "
+                                   "the isolated half-plane's kernel); see docs/architecture.md")
+        if kind in ("stress", "sliding_stress"):
+            raise LineContactError("the subsurface stresses of a periodic array are not derived yet (the Kolosov "
+                                   "potentials of the layer are those of one contact)")
+        if law is not None and law != "jkr":
             raise LineContactError(f"the {law} law on a periodic array is not derived yet; JKR is "
                                    f"(LineContact(f, period=L).adhesive(gamma))")
-        return super().adhesion(law, *args, **params)
-
-    def maugis_dugdale(self, *args, **kw):
-        return self.adhesion("maugis_dugdale")
 
 
 def full_contact_quad(profile, values: dict, period, dps: int = 45):

@@ -260,7 +260,8 @@ def remembered(sf, what, make, rebuild):
     (:func:`~linecontact_sym.method.derivation.remembered_many`, the store's
     get/put by key), unless the traction is a callable."""
     parts = _store_parts(sf, what)
-    return make() if parts is None else remembered_many(parts, make, sf.contact.budget, rebuild)
+    return make() if parts is None else remembered_many(parts, make, sf.contact.budget, rebuild,
+                                                        sampler=sampler(sf))     # read from disk: re-checked
 
 
 def remembered_components(sf) -> dict:

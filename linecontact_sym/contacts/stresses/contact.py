@@ -94,6 +94,7 @@ class StressField(ContactOn):
 
     def __init__(self, contact, tangential=None, mu=S.mu, nu=S.nu, stick=None, breaks=(), verify=True,
                  points: int = 4):
+        contact.check_effect(self.kind)             # not on a periodic array yet (normal.periodic)
         if tangential not in (None, "sliding", "partial_slip") and not callable(tangential) \
                 and not isinstance(tangential, sp.Expr):
             raise DomainError(f"tangential traction {tangential!r}: use None, 'sliding', 'partial_slip', a SymPy "

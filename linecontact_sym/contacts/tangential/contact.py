@@ -175,6 +175,7 @@ class TangentialLineContact(ContactOn):
                               unit="m")
 
     def __init__(self, contact, friction=S.mu):
+        contact.check_effect(self.kind)             # not on a periodic array yet (normal.periodic)
         if isinstance(friction, str):
             raise DomainError("the friction coefficient is a string; strings are not evaluated. "
                               "Pass a SymPy expression or a number (e.g. lcs.mu)")

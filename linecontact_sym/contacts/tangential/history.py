@@ -14,7 +14,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, GrossSlidingError, LineContactError
-from ...core.ranges import check_values
+from ...core.ranges import check_sign, check_values
 from ...core.roots import root_in_log
 from ...numeric.exports import lambdify_numpy
 from ...numeric.functions import make_callable
@@ -179,7 +179,7 @@ class TangentialState:
         return self._eval("slip", x)
 
 
-def _numbers(t, values):
+def numbers_at(t, values):
     """Keyword values -> (Symbol -> exact number) for the contact's variables,
     plus the half-width a (given, or from the normal load P)."""
     by_name = {s.name: s for s in t.variables}
@@ -189,7 +189,7 @@ def _numbers(t, values):
             continue
         if k not in by_name:
             raise DomainError(f"unknown value {k!r}; expected {sorted(by_name)} and a or P")
-        vals[by_name[k]] = to_sympy_number(v)
+        vals[by_name[k]] = check_sign(by_name[k], to_sympy_number(v))     # R = -1 refused (core.ranges)
     missing = [s.name for s in t.variables if s not in vals]
     if missing:
         raise DomainError(f"values needed for {', '.join(missing)}")
@@ -197,7 +197,7 @@ def _numbers(t, values):
         raise DomainError("give either the half-width a or the normal load P")
     check_values({s.name: v for s, v in vals.items()})          # mu > 0 (core.ranges)
     if "a" in values:                                           # where the normal solution holds (a < R, ...)
-        t.contact.check_point({**vals, S.a: to_sympy_number(values["a"])})
+        t.contact.check_point({**vals, S.a: check_sign(S.a, to_sympy_number(values["a"]))})
     with workdps(30):
         law = force_law_at(t, vals)
         if "a" in values:
@@ -240,7 +240,7 @@ def _stick(t, law, load, vals, A):
 def stick_half_width_at(t, Qv, values) -> TangentialState:
     """The monotonic-loading state at the tangential force Q (numbers)."""
     with workdps(30):
-        vals, law, A = _numbers(t, values)
+        vals, law, A = numbers_at(t, values)
         Pa, mu = law.P(A), friction_at(t, vals)
         Qm = to_mpf(sp.N(Qv, 40))
         load = Pa - abs(Qm) / mu
@@ -263,7 +263,7 @@ def reversal(t, Q_max, Q, values, branch) -> TangentialState:
         if not -Qx <= Qm <= Qx:
             raise DomainError(f"Q = {mpmath.nstr(Qm, 8)} lies outside [-Q_max, Q_max] = +-{mpmath.nstr(Qx, 8)}")
         dQ = Qx - Qm if branch == "unloading" else Qx + Qm
-        vals, law, _ = _numbers(t, values)
+        vals, law, _ = numbers_at(t, values)
         c_r = _stick(t, law, top.P - dQ / (2 * top.mu), vals, top.a)
         return TangentialState(branch, Qm, top.P, top.a, top.mu, top.c, c_r, Qx, top.values, t)
 
@@ -305,7 +305,7 @@ class FrettingCycle:
 def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
     """The fretting loop and the energy per cycle (see :class:`FrettingCycle`)."""
     top = stick_half_width_at(t, to_sympy_number(Q_amplitude), values)
-    vals, law, A = _numbers(t, values)
+    vals, law, A = numbers_at(t, values)
     fixed = {s.name: float(v) for s, v in vals.items()}
     with workdps(30):
         QA = abs(top.Q)
@@ -331,7 +331,7 @@ def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
 
 def bem(t, n, values):
     """A :class:`~.reference.CoulombBEM` of this contact at numbers."""
-    vals, law, A = _numbers(t, values)
+    vals, law, A = numbers_at(t, values)
     fixed = {s.name: float(v) for s, v in vals.items() if s in set(t.contact.variables)}
     brs = [float(b) for b in law.breaks()]
     with workdps(30):
@@ -339,5 +339,5 @@ def bem(t, n, values):
     return ref.CoulombBEM(float(A), fixed["E_star"], mu, _float_fn(t.contact, "stiffness", fixed), n, brs)
 
 
-__all__ = ["ONSET_RTOL", "FloatNormal", "TangentialState", "FrettingCycle", "stick_half_width_at", "reversal",
+__all__ = ["numbers_at", "ONSET_RTOL", "FloatNormal", "TangentialState", "FrettingCycle", "stick_half_width_at", "reversal",
            "cycle", "bem", "to_sympy_number"]

@@ -318,7 +318,8 @@ def derive_stick_half_width(t, Qv, budget=None) -> Derivation:
     parts = ("stick_half_width", t.profile.expr, dict(t.profile.ranges), fd.expr, t.mu, Qv, t.contact.points,
              t.contact.verify)
     return remembered(parts, lambda: _derive_stick(t, Qv, fd, deadline), budget,
-                      lambda d: (_check_ref if d.closed_form else _value_ref)(t, Qv))
+                      lambda d: (_check_ref if d.closed_form else _value_ref)(t, Qv),
+                      sampler=t._sampler("any", load=True) if Qv == S.Q else None)   # read from disk: re-checked
 
 
 def _check_ref(t, Qv):
@@ -374,7 +375,7 @@ def _derive_stick(t, Qv, fd, deadline) -> Derivation:
     variables = (S.a, Qv) + t.variables
     notes = (CONDITIONS,)
     if inv.closed_form and Qv == S.Q:
-        expr = _tidy_root(sp.simplify(inv.expr.xreplace({S.P: load})))
+        expr = tidy_root(sp.simplify(inv.expr.xreplace({S.P: load})))
         rec = None
         if t.contact.verify:
             left = deadline.left()
@@ -444,7 +445,7 @@ def in_terms_of(t, d: Derivation, Qv) -> Derivation:
                       variables=tuple(variables), attempts=d.attempts, cached=d.cached)
 
 
-def _tidy_root(e):
+def tidy_root(e):
     """sqrt(u)/sqrt(v) -> sqrt(expand(u/v)) for a non-negative square root
     (a half-width): c_s = sqrt(a**2 - 4 R |Q|/(pi E* mu)) for Hertz."""
     sq = e**2
@@ -456,4 +457,4 @@ def _tidy_root(e):
 
 
 __all__ = ["CONDITIONS", "normal_fn", "sampler", "references", "energy_parts", "energy_references",
-           "derive_stick_half_width", "in_terms_of"]
+           "derive_stick_half_width", "in_terms_of", "tidy_root"]

@@ -25,6 +25,8 @@ solved for a(t) (Ting).  Adhesion is outside Lee-Radok (a package error).
 
 * :mod:`.contact` -- :class:`ViscoelasticLineContact`: closed forms and numbers;
 * :mod:`.history` -- the superposition at numbers (mpmath).
+* :mod:`.accuracy` -- the histories as quantities of the package's ``evaluate``
+  (float64 / mpmath / Arb by rtol) and of its stable float64 exports.
 The material (E*(t), J*(t)) is :mod:`linecontact_sym.method.material`.
 """
 from .contact import ViscoelasticLineContact, ModelChoice

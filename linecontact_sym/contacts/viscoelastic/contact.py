@@ -14,7 +14,9 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.errors import BudgetExceeded, DomainError, LineContactError
-from ...core.precision import workdps
+from ...core.precision import checked_dps, workdps
+from ...core.ranges import check_points, check_tolerance
+from ..base import checked_value
 from ...method.material import Material
 from . import history as H
 from .history import MultipleMaximaError
@@ -36,6 +38,18 @@ def _integrate(f, var, lo, hi, budget):
     if r.has(sp.Integral):
         return sp.Integral(f, (var, lo, hi))
     return r
+
+
+def _number(name, value, dps, positive=False):
+    """A time, a point or a length as the user gives it: a finite real number
+    (text by the whitelisted parser), > 0 where ``positive``; an mpf at dps + 15 digits."""
+    v = checked_value(name, value, None)
+    if not isinstance(v, (int, float, sp.Basic)):
+        raise DomainError(f"{name} must be one number, got {value!r}")
+    v = sp.sympify(v) if isinstance(v, (int, float)) else v       # a plain number (never text here)
+    if positive and not v > 0:
+        raise DomainError(f"{name} must be positive, got {value}")
+    return mpmath.mpf(sp.N(v, dps + 15))
 
 
 def _bound(cond):
@@ -64,7 +78,7 @@ class Phases:
 def phases(history) -> Phases:
     """Split a(t) (SymPy, Piecewise for load-then-unload) at its single maximum,
     deciding the sign of a'(t) piece by piece from SymPy's assumptions."""
-    h = sp.sympify(history)
+    h = H.history_expr(history, "half-width")
     pieces = list(h.args) if isinstance(h, sp.Piecewise) else [(h, sp.true)]
     signs = []
     for e, cond in pieces:
@@ -186,8 +200,20 @@ class ViscoelasticLineContact:
         s1 = t while a grows (Lee-Radok), s1 the loading time with
         a(s1) = a(t) after the maximum (Ting).  Closed where SymPy integrates,
         else an unevaluated Integral (numbers: :meth:`evaluate_at`)."""
+        from ...method import store
+        key = store.make_key("viscoelastic force history", self.Pi, self.material.relaxation, self.material.impulse,
+                             H.history_expr(a_t, "half-width"))
+        rec = store.get(key)
+        if rec is not None and "expr" in rec:       # a checked closed form of an earlier process
+            return rec["expr"]
         F = self._force_history(a_t, budget, True)
-        return self._checked(F, sp.sympify(a_t), lambda: self._force_history(a_t, budget, False))
+        F = self._checked(F, H.history_expr(a_t, "half-width"), lambda: self._force_history(a_t, budget, False))
+        if not F.has(sp.Integral):                  # an unevaluated form may be a loaded machine's timeout: not kept
+            try:
+                store.put(key, {"expr": F})
+            except TypeError:
+                pass
+        return F
 
     def _force_history(self, a_t, budget, closed):
         ph = phases(a_t)
@@ -237,10 +263,10 @@ class ViscoelasticLineContact:
     def creep_level(self, P_t, budget: float = HISTORY_BUDGET):
         """X(t) = int_0^t J*(t - u) dP(u) (with the jump P(0+) J*(t)): the elastic
         'load at E* = 1' whose half-width is a(t) while the contact grows."""
-        key = ("creep", sp.sympify(P_t))
+        P_t = H.history_expr(P_t, "load")
+        key = ("creep", P_t)
         if key not in self._cache:
             J = self.material.creep()
-            P_t = sp.sympify(P_t)
             P0 = H.start_value(P_t)
             X = P0 * J if P0 != 0 else sp.S.Zero
             dP = sp.diff(P_t, S.t)
@@ -254,7 +280,7 @@ class ViscoelasticLineContact:
         Pi(a(t)) = X(t), :meth:`creep_level`): the engine's elastic a(P) at
         E* = 1 and P = X(t).  After the maximum of X the contact recedes by
         Ting's rule, which has no closed form: numbers from :meth:`half_width_at`."""
-        h = sp.sympify(P_t)
+        h = H.history_expr(P_t, "load")
         for e, _ in (h.args if isinstance(h, sp.Piecewise) else [(h, sp.true)]):
             d = sp.simplify(sp.diff(e, S.t))
             if not d.is_nonnegative:
@@ -277,11 +303,22 @@ class ViscoelasticLineContact:
         ``"pressure"`` (at ``x``) for a half-width history, or ``"half_width"``
         for a load history (creep; Ting after the maximum), at the parameter
         ``values``: tanh-sinh quadrature of the superposition at dps + 10
-        digits (positive integrands: no cancellation)."""
+        digits (positive integrands: no cancellation).
+
+        Not certified: the integrands hold the entry time t_b (an inverse of
+        a(t), found by root finding at numbers), the creep level and Ting's
+        loading time (roots of quadratures), which Arb's integrator
+        (:func:`~linecontact_sym.numeric.reference.integrate`, an integrand
+        compiled from a SymPy expression) cannot enclose.  Where the
+        history's form is a SymPy expression (closed, or an unevaluated
+        Integral with t_b solved symbolically), :meth:`evaluate` gives an Arb
+        enclosure: ``certified=True`` for a closed form, and beyond float64
+        for an unevaluated integral (one enclosure of it)."""
         if quantity not in ("force", "pressure", "half_width"):
             raise DomainError(f"unknown quantity {quantity!r}: one of force, pressure, half_width")
+        dps = checked_dps(dps)
         with workdps(dps + 10):
-            tv = mpmath.mpf(sp.N(sp.sympify(t), dps + 15))
+            tv = _number("t", t, dps)
             if tv < 0:
                 raise DomainError(f"the time must be >= 0, got t = {t}")
             num = self._numbers(values)
@@ -300,9 +337,54 @@ class ViscoelasticLineContact:
                 else:
                     if x is None:
                         raise DomainError("the pressure needs x")
-                    v = hist.pressure(mpmath.mpf(sp.N(sp.sympify(x), dps + 15)), tv)
+                    v = hist.pressure(_number("x", x, dps), tv)
         with workdps(dps):
             return +v
+
+    def history_quantities(self, a_t):
+        """The force and pressure histories of the half-width history ``a_t`` as
+        quantities of the package's ``evaluate`` (see :mod:`.accuracy`)."""
+        from .accuracy import HistoryQuantities
+        key = ("hq", H.history_expr(a_t, "half-width"))
+        if key not in self._cache:
+            self._cache[key] = HistoryQuantities(self, a_t)
+        return self._cache[key]
+
+    def to_numeric(self, quantity: str, history, backend: str = "numpy", dps: int = 30, **params):
+        """A callable ``fn(t=..., [x=...,] **parameters)`` of ``"force"`` (P(t))
+        or ``"pressure"`` (p(x, t)) for the half-width history ``history``:
+        ``backend='numpy'`` vectorised float64 of the stable form (the Maxwell
+        terms' exp tails as ``exp_tail``: accurate for t << tau, t >> tau and
+        tau from 1e-6 to 1e6 at t/tau from 1e-12 to 1e12, see
+        ``benchmarks/extremes.py``), ``'mpmath'`` at ``dps`` digits; keywords
+        given here are fixed once.  No domain check (NaN outside it)."""
+        from ...numeric.functions import make_callable
+        from .accuracy import history_quantity
+        q = history_quantity(quantity)
+        return make_callable(self.history_quantities(history).derivation(q), backend, dps, params)
+
+    def evaluate(self, quantity: str, history, rtol: float | None = None, certified: bool = False,
+                 dps: int | None = None, **values):
+        """``"force"`` (P(t)) or ``"pressure"`` (p(x, t)) of the half-width
+        history ``history``, or ``"half_width"`` (a(t)) of the load history
+        ``history`` (creep, a load that never decreases: the closed form of
+        :meth:`half_width_history`), at ``values`` (t, x, the parameters) to the
+        tolerance ``rtol`` by the cheapest path that meets it: the stable
+        float64 export of the closed form when its error estimate does, mpmath
+        at the digits rtol asks otherwise, an Arb ball with ``certified=True``
+        (an :class:`~linecontact_sym.numeric.evaluate.Evaluation`; see
+        :func:`~linecontact_sym.numeric.evaluate.evaluate`).
+
+        >>> import sympy as sp, linecontact_sym as lcs
+        >>> v = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=sp.Symbol("tau", positive=True)))
+        >>> r = v.evaluate("force", lcs.t / 10, t=1e-9, tau=1.0, R=1.0, rtol=1e-12)
+        >>> r.path, round(r.value / (2 * 3.141592653589793e-20 / 4), 6)   # E0 pi a(t)^2/(4 R) at t << tau, a = t/10
+        ('float64', 1.0)
+        """
+        from ...numeric.evaluate import evaluate
+        from .accuracy import history_quantity
+        q = history_quantity(quantity)
+        return evaluate(self.history_quantities(history), q, rtol=rtol, certified=certified, dps=dps, **values)
 
     def half_width_at(self, t, load, dps: int = 30, **values):
         """a(t) under the load history ``load`` (creep), see :meth:`evaluate_at`."""
@@ -313,9 +395,11 @@ class ViscoelasticLineContact:
         the elastic law with E*(0) (fast loading), with E*(oo) (slow loading), or
         the viscoelastic one; the error of each is max |P_model - P| / max |P| over
         ``points`` times (the viscoelastic P by :meth:`evaluate_at`)."""
+        rtol = check_tolerance(rtol)
+        points, dps = check_points(points, 1, "model_choice"), checked_dps(dps)
         num = self._numbers(values)
         with workdps(dps):
-            T = mpmath.mpf(sp.N(sp.sympify(t_end), dps + 5))
+            T = _number("t_end", t_end, dps, positive=True)
             ts = [T * k / points for k in range(1, points + 1)]
             hist = H.HalfWidthHistory(num, history, values, T)
             P = [hist.force(tv) for tv in ts]
@@ -332,9 +416,10 @@ class ViscoelasticLineContact:
         """Arrays over (0, t_end]: t, a(t), P(t), and the elastic limits
         E*(0) Pi(a(t)), E*(oo) Pi(a(t)) (float64; the numbers by :meth:`evaluate_at`'s quadrature)."""
         import numpy as np
+        points, dps = check_points(points, 1, "history_data"), checked_dps(dps)
         num = self._numbers(values)
         with workdps(dps):
-            T = mpmath.mpf(sp.N(sp.sympify(t_end), dps + 5))
+            T = _number("t_end", t_end, dps, positive=True)
             hist = H.HalfWidthHistory(num, history, values, T)
             ts = [T * k / points for k in range(1, points + 1)]
             a = [hist.a(tv) for tv in ts]
@@ -365,10 +450,11 @@ class ViscoelasticLineContact:
         Pi'(b) ln(2L/b) db; float64 accuracy of the trapezoidal rules (about 4
         digits at 400 points)."""
         import numpy as np
+        points = check_points(points, 2, "the dissipated work")
         num = self._numbers(values)
         with workdps(20):
-            T = mpmath.mpf(sp.N(sp.sympify(t_end), 25))
-            Lm = mpmath.mpf(sp.N(sp.sympify(L), 25))
+            T = _number("t_end", t_end, 20, positive=True)
+            Lm = _number("the reference length L", L, 20, positive=True)
             hist = H.HalfWidthHistory(num, a_t, values, T)
             ts = [T * k / points for k in range(points + 1)]
             m, lev = num.m, hist.level

@@ -21,7 +21,9 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
 from ...core.quadrature import relational_breakpoints
-from ...parsing import user_value
+from ...core.roots import Outside
+from ...parsing import to_sympy, user_value
+from ..base import checked_value
 from ..normal.equilibria import half_width_at
 from ..normal.force_law import ForceLaw
 
@@ -51,16 +53,40 @@ class Numbers:
                 continue
             if s.name not in values:
                 raise DomainError(f"the profile needs a value for {s.name}")
-            pvals[s] = user_value(values[s.name], s.name)
+            # a finite real number, positive where the symbol is declared so (R = -1: the profile upside down)
+            pvals[s] = user_value(checked_value(s.name, values[s.name], s), s.name)
         self.pvals = pvals
         self.law = ForceLaw.from_contact(contact, {S.E_star: sp.Integer(1), **pvals})
         self.m = material.numeric(**{k: v for k, v in values.items() if k in {p.name for p in material.parameters}})
 
+    def _law(self, f, A):
+        try:
+            return f(mpmath.mpf(A))
+        except Outside:
+            raise DomainError(f"the half-width a = {mpmath.nstr(A, 10)} is outside the range of the force law "
+                              "(a periodic array: a < L/2; a condition of the profile)") from None
+
     def Pi(self, A):
-        return mpmath.mpf(0) if A <= 0 else self.law.P(mpmath.mpf(A))
+        """P(a)/E* (>= 0: a compressive load, else no contact of half-width a without adhesion)."""
+        if A <= 0:
+            return mpmath.mpf(0)
+        v = self._law(self.law.P, A)
+        if v < 0:
+            raise DomainError(f"the force law is negative at a = {mpmath.nstr(A, 10)} (P/E* = {mpmath.nstr(v, 8)}): "
+                              "no compact contact of that half-width without adhesion")
+        return v
 
     def dPi(self, A):
-        return mpmath.mpf(0) if A <= 0 else self.law.dP(mpmath.mpf(A))
+        """P'(a)/E*: >= 0, else the punch of half-width a pulls (the force law decreases:
+        no compact contact of half-width a, and the superposition in time has a negative weight)."""
+        if A <= 0:
+            return mpmath.mpf(0)
+        d = self._law(self.law.dP, A)
+        if d < 0:
+            raise DomainError(f"the force law decreases at a = {mpmath.nstr(A, 10)} (dP/da = {mpmath.nstr(d, 8)} E*): "
+                              "no compact contact of that half-width; the superposition in time needs P(a) "
+                              "increasing up to the largest a(t)")
+        return d
 
     def a_of(self, y):
         """Pi^{-1}(y): the elastic half-width at the load y with E* = 1."""
@@ -73,7 +99,8 @@ _CALLABLES = {}
 def history_callable(expr, values, what):
     """(expression, f, f', f(0+)) of a history expression in t at numbers
     (remembered: an evaluation at many times or points builds them once)."""
-    key = (sp.sympify(expr), tuple(sorted((k, str(v)) for k, v in values.items())), what, mpmath.mp.prec)
+    expr = history_expr(expr, what)
+    key = (expr, tuple(sorted((k, str(v)) for k, v in values.items())), what, mpmath.mp.prec)
     if key not in _CALLABLES:
         if len(_CALLABLES) > 256:
             _CALLABLES.clear()
@@ -81,10 +108,52 @@ def history_callable(expr, values, what):
     return _CALLABLES[key]
 
 
+def history_expr(expr, what="history"):
+    """A history as the user gives it: a SymPy expression of ``lcs.t`` (text by the
+    whitelisted parser, never eval; a number is a constant history)."""
+    e = to_sympy(expr, f"the {what} history")
+    if not isinstance(e, sp.Expr) or e.has(sp.nan, sp.zoo, sp.oo, -sp.oo, sp.I):
+        raise DomainError(f"the {what} history must be a real expression of t, got {expr!r}")
+    return e
+
+
+def _real_finite(f, what):
+    """f(t) checked: a finite real number at every time it is asked (a complex, infinite or
+    undefined value of a history is an input error, never a number)."""
+    def g(tv):
+        try:
+            v = f(tv)
+        except (ZeroDivisionError, ValueError, TypeError, OverflowError):
+            v = mpmath.nan
+        if isinstance(v, mpmath.mpc):
+            v = v.real if v.imag == 0 else mpmath.nan
+        if not isinstance(v, mpmath.mpf):
+            v = mpmath.mpf(v) if isinstance(v, (int, float)) else mpmath.nan
+        if not mpmath.isfinite(v):
+            raise DomainError(f"the {what} history is not a finite real number at t = {mpmath.nstr(tv, 10)}")
+        return v
+    return g
+
+
+def refuse_jumps(f, breaks, scale, what):
+    """A history that jumps up at a time t > 0 (a Piecewise whose pieces do not meet):
+    refused.  The superposition in time reads its rate; a jump has none (the punches
+    it loads at once would be lost: a wrong number), a jump at t = 0 is the step it
+    takes.  A jump down is the receding phase's business (a(t) alone counts there)."""
+    for b in breaks:
+        if b <= 0:
+            continue
+        d = b * mpmath.mpf(10)**(-(mpmath.mp.dps * 2) // 3)
+        lo, hi = f(b - d), f(b + d)
+        if hi - lo > (abs(scale) + abs(hi)) * mpmath.mpf(10)**(-mpmath.mp.dps // 3):
+            raise DomainError(f"the {what} history jumps up at t = {mpmath.nstr(b, 10)} ({mpmath.nstr(lo, 8)} -> "
+                              f"{mpmath.nstr(hi, 8)}): a step is built at t = 0 only; give the rise as a steep ramp")
+
+
 def start_value(expr):
     """lim_{t -> 0+} of a history (of its first Piecewise piece: SymPy's limit of
     a whole Piecewise goes through its sets, slowly)."""
-    e = sp.sympify(expr)
+    e = history_expr(expr)
     if isinstance(e, sp.Piecewise):
         tiny = sp.Rational(1, 10**40)
         for piece, cond in e.args:
@@ -95,12 +164,13 @@ def start_value(expr):
 
 
 def _history_callable(expr, values, what):
+    expr = history_expr(expr, what)             # a plain number is a step history (text parsed, never eval)
     sub = {sym: user_value(values[sym.name], sym.name) for sym in expr.free_symbols - {S.t} if sym.name in values}
-    e = sp.sympify(expr).xreplace(sub)
+    e = history_expr(expr, what).xreplace(sub)
     if e.free_symbols - {S.t}:
         raise DomainError(f"the {what} history needs values for {sorted(map(str, e.free_symbols - {S.t}))}")
-    f = sp.lambdify(S.t, e, "mpmath")
-    df = sp.lambdify(S.t, sp.diff(e, S.t), "mpmath")
+    f = _real_finite(sp.lambdify(S.t, e, "mpmath"), what)
+    df = _real_finite(sp.lambdify(S.t, sp.diff(e, S.t), "mpmath"), f"rate of the {what}")
     try:
         start = mpmath.mpf(sp.N(start_value(e), mpmath.mp.dps + 5))
     except (NotImplementedError, ValueError, TypeError):   # SymPy's limit fails (Min, ...): the value just after 0
@@ -108,12 +178,18 @@ def _history_callable(expr, values, what):
     return e, f, df, start
 
 
-def scan_maximum(f, lo, hi, breaks, what):
+def scan_maximum(f, lo, hi, breaks, what, least=None):
     """The time of the single maximum of f on [lo, hi] (None when f does not
     decrease there); :class:`MultipleMaximaError` when f grows again after
-    it (seen on a scan of :data:`SCAN` points plus the breakpoints)."""
+    it (seen on a scan of :data:`SCAN` points plus the breakpoints);
+    a :class:`DomainError` where f < ``least`` on the scan (a half-width < 0)."""
     grid = sorted(set([lo + (hi - lo) * k / SCAN for k in range(SCAN + 1)] + [b for b in breaks if lo < b < hi]))
     vals = [f(g) for g in grid]
+    if least is not None:
+        k = next((k for k, v in enumerate(vals) if v < least), None)
+        if k is not None:
+            raise DomainError(f"the {what} is {mpmath.nstr(vals[k], 8)} < {mpmath.nstr(least, 8)} at t = "
+                              f"{mpmath.nstr(grid[k], 8)}: a half-width is >= 0 at every time")
     scale = max(abs(v) for v in vals) or 1
     tol = scale * mpmath.mpf(10)**(-mpmath.mp.dps // 2)
     i = next((k for k in range(len(vals) - 1) if vals[k + 1] < vals[k] - tol), None)
@@ -224,7 +300,9 @@ class HalfWidthHistory:
         if self.a0 < 0:
             raise DomainError(f"the half-width history starts at a(0+) = {mpmath.nstr(self.a0, 8)} < 0")
         self.breaks = relational_breakpoints(self.expr, S.t, 0, t_end * 2) if self.expr.has(sp.Piecewise) else []
-        self.t_m = scan_maximum(self.a, mpmath.mpf(0), mpmath.mpf(t_end), self.breaks, "half-width a(t)")
+        refuse_jumps(self.a, self.breaks, self.a0, "half-width")
+        self.t_m = scan_maximum(self.a, mpmath.mpf(0), mpmath.mpf(t_end), self.breaks, "half-width a(t)",
+                                least=mpmath.mpf(0))
         t_m = self.t_m if self.t_m is not None else mpmath.mpf(t_end)
         self.level = Level(num, lambda s: num.Pi(self.a(s)), lambda s: num.dPi(self.a(s)) * self.da(s),
                            num.Pi(self.a0), t_m, self.breaks)
@@ -237,6 +315,7 @@ class HalfWidthHistory:
         if A <= 0:
             return mpmath.mpf(0)
         if self.loading(t):
+            self.num.dPi(A)        # the edge's punch must push: P(a) increasing at a(t) (refused otherwise)
             return self.level.F(self.num.Pi(A), t, True)
         if A <= self.a0:
             return self.num.m.E(t) * self.num.Pi(A)
@@ -289,6 +368,7 @@ class LoadHistory:
                 h = s * mpmath.mpf(10)**(-mpmath.mp.dps // 3)
                 return mpmath.diff(X, s, h=h) if s > h else (X(s + h) - X(s)) / h
             self.X, self.dX = X, dX
+        refuse_jumps(self.P, self.breaks, self.P0, "load")
         self.t_m = scan_maximum(self.X, mpmath.mpf(0), mpmath.mpf(t_end), self.breaks, "creep level J*dP (so a(t))")
         t_m = self.t_m if self.t_m is not None else mpmath.mpf(t_end)
         self.level = Level(num, self.X, self.dX, self.P0 * m.J(0), t_m, self.breaks)
@@ -311,5 +391,5 @@ class LoadHistory:
         return self.num.a_of(self.X(s1))
 
 
-__all__ = ["Numbers", "Level", "quad_pieces", "start_value", "HalfWidthHistory", "LoadHistory", "MultipleMaximaError", "scan_maximum",
+__all__ = ["Numbers", "Level", "quad_pieces", "start_value", "history_expr", "refuse_jumps", "HalfWidthHistory", "LoadHistory", "MultipleMaximaError", "scan_maximum",
            "invert_increasing", "history_callable", "SCAN"]

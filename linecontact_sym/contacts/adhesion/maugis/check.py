@@ -133,9 +133,12 @@ def _flamant_differences(md, vals, xs, dps):
     Flamant routine (:func:`~linecontact_sym.numeric.flamant.flamant_displacement`:
     Arb enclosures, u(0)'s term once for all x; tanh-sinh where Arb cannot,
     recorded)."""
-    sig = tuple(dict.fromkeys(s for s in (S.sigma_0, md.sigma0) if isinstance(s, sp.Symbol)))
+    # the symbols of sigma_0 (itself, or those of an expression such as 2*gamma) with their values
+    sig = tuple(sorted(set(md.sigma0.free_symbols) | {S.sigma_0}, key=lambda q: q.name))
     sigma = md.sigma0.xreplace(vals)
-    values = {S.a: vals[S.a], S.c_D: vals[S.c_D], **{q: sigma for q in sig}}
+    values = {S.a: vals[S.a], S.c_D: vals[S.c_D],
+              **{q: vals.get(q, sigma if q in (S.sigma_0, md.sigma0) else None) for q in sig}}
+    values = {k: v for k, v in values.items() if v is not None}
     pieces = [_contact_piece(md.dugdale.pressure, sig), (-md.sigma0, _s, S.a, S.c_D)]
     return [lincomb([(-1, r)], dps) for r in flamant_displacement(pieces, list(xs), vals[S.E_star], dps,
                                                                    values=values)]

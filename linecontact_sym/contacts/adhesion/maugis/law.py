@@ -49,7 +49,7 @@ from ....core.errors import DomainError, NumericValuesRequired
 from ....core.roots import Outside
 from ....core.precision import workdps
 from ....core.ranges import check_positive, check_tolerance
-from ....method.derivation import RECHECK_DIGITS, RECHECK_DPS, Derivation, remembered
+from ....method.derivation import Derivation, agrees_at_random_point, remembered
 from ....method.rules import Step
 from ....method.verification import verify
 from ....parsing import to_sympy
@@ -61,6 +61,7 @@ from ...sampling import point_sampler
 from . import choice as maugis_choice
 from .choice import ModelChoice
 from .derive import dugdale_parts
+from .limits import jkr_limit
 from .numbers import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
@@ -146,7 +147,9 @@ class MaugisDugdale(CohesiveLaw):
             out = b.on_top(P, dP)
             # P(0+) = -2 sigma_0 c0 is not 0: the generic minimum descends towards a -> 0+ (equilibria.descent)
             out.P_zero = lambda: law.force_zero_width(mpmath.mp.dps)
-            out.scan = ScanHint(lambda: law.c0(15) / 1000, 8,
+            # from c0/1000, but never above the profile's own scale/1000: a bounded profile (1 - cos x) at a
+            # tiny sigma_0 has c0 ~ 1e10, and a scan from 1e7 lay past the whole admissible range (a* = 2.4)
+            out.scan = ScanHint(lambda: min(law.c0(15), b.scale) / 1000, 8,
                                 "no Maugis-Dugdale extremum lies within 1/8 decade of another, nor above the first "
                                 "a past every kink with P > 0 and dP/da > 0 (the Dugdale term's slope tends to 0 "
                                 "from below as a grows, dP0/da >= 0); below c0/1000 the descent follows dP/da")
@@ -285,7 +288,7 @@ class MaugisDugdaleContact(AdhesiveContact):
         the profile, the expression, its conditions and the verification settings: another
         contact of the same profile and law, in this process or another, does not verify it
         again).  A closed form read from disk is re-checked against this contact's
-        independent reference at one random point (:func:`_recheck`)."""
+        independent reference at one random point (:func:`~linecontact_sym.method.derivation.agrees_at_random_point`)."""
         sampler = self._sampler("inside" if name == "pressure" else "any")
 
         def make():
@@ -304,7 +307,7 @@ class MaugisDugdaleContact(AdhesiveContact):
                  expr, closed, tuple(conditions), tuple(steps), reference is not None, self.contact.verify,
                  self.contact.points, (S.a, S.c_D) + self.variables)
         return remembered(parts, make, self.contact.budget, lambda d: reference,
-                          recheck=lambda d: reference is None or _recheck(d, reference, sampler))
+                          recheck=lambda d: agrees_at_random_point(d, reference, sampler))
 
     def _derive_force(self):
         return self.law.derive_force(self)
@@ -404,6 +407,29 @@ class MaugisDugdaleContact(AdhesiveContact):
         with _real_profile(self, values):
             return law.state(A, dps)
 
+    # ------------------------------------------------------------ pull-off: the JKR limit first
+    def pull_off_at(self, dps: int = 30, budget=None, **values):
+        """The generic pull-off (:meth:`AdhesiveContact.pull_off_at`), except where the Maugis
+        parameter is so large that the JKR pull-off agrees with this law's to more than ``dps``
+        digits by a stated bound (:func:`.limits.jkr_limit`): then that one, without the
+        Maugis-Dugdale search (sigma_0 = 10**100 or 1e300: the JKR pull-off, at once)."""
+        from ...normal.cases import case_of
+        if case_of(self, values) is self:
+            from ....core.budget import checked_budget
+            from ...normal.equilibria import SEARCH_BUDGET, searching_until
+            vals = self._numeric_values(values)
+            with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
+                lim = jkr_limit(self, vals, dps)
+            if lim is not None:
+                return lim
+        return super().pull_off_at(dps, budget, **values)
+
+    def _pull_off_checked(self, vals, dps):
+        from ...normal.equilibria import within_search_budget
+        with within_search_budget():
+            lim = jkr_limit(self, vals, dps)
+        return lim if lim is not None else super()._pull_off_checked(vals, dps)
+
     def displacement_control(self):
         """Not defined for line contacts: raises with the reason."""
         raise DomainError(DISPLACEMENT_CONTROL)
@@ -448,17 +474,6 @@ class MaugisDugdaleContact(AdhesiveContact):
 
     def report(self, quantities=("zone_force", "cohesive_gap", "pressure")) -> str:
         return super().report(quantities) + "\n" + DISPLACEMENT_CONTROL
-
-
-def _recheck(d, reference, sampler) -> bool:
-    """Does a derivation read from disk agree with the independent reference at one random
-    admissible point (:data:`~linecontact_sym.method.derivation.RECHECK_DIGITS` of
-    :data:`~linecontact_sym.method.derivation.RECHECK_DPS`)?  The checksum of a record only
-    detects damage: a record whose closed form was changed is dropped and derived afresh."""
-    import random
-    check = verify(d.expr, reference, sampler, d.conditions, n_points=1, seed=random.SystemRandom().randrange(2**32),
-                   dps=RECHECK_DPS, reference_name="re-check of a cached record", budget=60.0)
-    return bool(check.points) and check.min_digits >= RECHECK_DIGITS
 
 
 @contextlib.contextmanager

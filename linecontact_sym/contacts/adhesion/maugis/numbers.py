@@ -125,6 +125,12 @@ def profile_end(f):
         return None
 
 
+def _rounded(n):
+    """``n`` working digits rounded up to a multiple of 10: mpmath's Gauss-Legendre nodes are cached per
+    precision, and a solve whose digits vary with c_D by one or two would recompute them at each call."""
+    return -(-int(n) // 10) * 10
+
+
 class QuadGap:
     """The adhesionless gap g0(c; a) = f(c) - (2/(pi E*)) int_0^a acosh(c/s) P0'(s) ds
     (Eqs. 3/5; :func:`~linecontact_sym.method.transforms.gap_integral`) and its
@@ -167,7 +173,10 @@ class QuadGap:
             if self._h15 is None:
                 self._h15 = abs(mpmath.mpf(sp.N(self.h0, 15)))
             h = self._h15
-            return 6 + (int(mpmath.log10(fC / h)) if fC > h else 0)
+            extra = 6 + (int(mpmath.log10(fC / h)) if fC > h else 0)
+        capped_dps(mpmath.mp.dps + extra, f"the adhesionless gap g0(c; a) at c = {mpmath.nstr(C, 8)} (f(c) = "
+                   f"{mpmath.nstr(fC, 5)} cancels down to h0 = {mpmath.nstr(h, 5)})")
+        return extra
 
     def _E(self):
         key = mpmath.mp.prec
@@ -177,7 +186,7 @@ class QuadGap:
 
     def g(self, A, C):
         """g0(C; A)."""
-        with workdps(mpmath.mp.dps + self._extra(C)):
+        with workdps(_rounded(mpmath.mp.dps + self._extra(C))):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
             def integrand(th):
                 sin = mpmath.sin(th)
@@ -188,7 +197,7 @@ class QuadGap:
 
     def g_c(self, A, C):
         """dg0/dc = f'(c) - (2/(pi E*)) int_0^a P0'(s)/sqrt(c^2 - s^2) ds."""
-        with workdps(mpmath.mp.dps + self._extra(C)):
+        with workdps(_rounded(mpmath.mp.dps + self._extra(C))):
             A, C = mpmath.mpf(A), mpmath.mpf(C)
             I = self._integral(lambda th: self.dP0(C * mpmath.sin(th)), A, C)
             v = self.f1(C) - 2 * I / (mpmath.pi * self._E())
@@ -197,6 +206,22 @@ class QuadGap:
     def g_a(self, A, C):
         """dg0/da = -(2/(pi E*)) acosh(c/a) P0'(a)."""
         return -2 / (mpmath.pi * self._E()) * mpmath.acosh(C / A) * self.dP0(A)
+
+
+#: the most digits a Maugis-Dugdale solve may work at (a cancellation needing more is refused, never
+#: handed to GMP: the cosh profile at sigma_0 = 1e-6 once asked for 3.5 GB)
+WORK_DPS_CAP = 3000
+
+
+def capped_dps(n, what):
+    """``n`` working digits, or a :class:`DomainError` naming ``what`` needs them when above
+    :data:`WORK_DPS_CAP`."""
+    if n > WORK_DPS_CAP:
+        raise DomainError(f"{what}: it needs {int(n)} working digits, more than the cap of {WORK_DPS_CAP} of the "
+                          f"Maugis-Dugdale solve; the parameters are too extreme for it (at a large Maugis "
+                          f"parameter the JKR law, contact.adhesive(w), is the model; at a small one the rigid "
+                          f"Dugdale limit, maugis.check.rigid_limit)")
+    return int(n)
 
 
 #: relative Newton step at which the working-precision estimate of c_D - a stops (c_of)
@@ -252,6 +277,7 @@ class MDLaw:
         self._P0lim = _lam(md.force_zero_width_expr.xreplace(fixed), (c,))
         self.kinks = profile_kinks(md.profile, fixed)
         self._warm = None
+        self._c0_15 = None
 
     def _numeric_parts(self, fixed, fd, gd, pd):
         """P(a, c_D), the gap condition and their partial derivatives where the
@@ -422,8 +448,12 @@ class MDLaw:
             # acosh(c/a) near c = a loses log10(a/s) digits; at small a, terms of size c/a cancel in
             # the partial derivatives down to dP/da ~ a: 2 log10(c/a) digits
             r = mpmath.log10(A25 / s_est)
-            guard = 14 + (int(r) if r > 0 else 2 * int(-r))
-        with workdps(dps + guard):
+            # a closed gap condition may hold terms ~ (c^2 - a^2)^(-1/2) that cancel (x**3: 2 a c^3/sqrt(c^2 - a^2)
+            # - 2 a^3 c/sqrt(c^2 - a^2)); in dG/dc they grow to the power 3/2 and dP/da = Pa + Pc dc_D/da
+            # cancels by a/(c - a) again: 2 log10(a/s) digits (dP/da was off by 1e8 at sigma_0 = 1e20 with one);
+            # the quadrature gap (QuadGap, in theta) is smooth at c -> a and needs one
+            guard = 14 + ((2 if self.closed else 1) * int(r) if r > 0 else 2 * int(-r))
+        with workdps(capped_dps(dps + guard, f"c_D at a = {mpmath.nstr(A, 8)} (c_D - a = {mpmath.nstr(s_est, 5)})")):
             A = mpmath.mpf(A)
             s, slope = self._solve_s(lambda s: self._G(A, A + s), lambda s: self._Gc(A, A + s),
                                      mpmath.mpf(s_est), mpmath.mpf(10)**-(dps + 4), self._s_max(A), A,
@@ -449,14 +479,23 @@ class MDLaw:
             return h[-1][0] + h[-1][1] - A
         return self._s_guess(A)
 
-    def _s_guess(self, A):
-        # the Dugdale gap is ~ 4 sigma0 s/(pi E*) for s << a: s ~ pi E* h0/(4 sigma0)
+    def _delta(self):
+        # the Dugdale gap is ~ 4 sigma0 s/(pi E*) for s << a: s ~ pi E* h0/(4 sigma0), the JKR-limit zone
         return mpmath.pi * mpmath.mpf(sp.N(self.E, 30)) * self.h0() / (4 * mpmath.mpf(sp.N(self.sigma0, 30)))
+
+    def _s_guess(self, A):
+        """The start of c_D - a: the JKR-limit zone delta, but at most the zone c0 of a vanishing contact
+        (at a small Maugis parameter delta is far beyond where the profile alone reaches h0: the cosh
+        profile at sigma_0 = 1e-6 has delta = 8e9 where c0 = 9.9, and its gap at 8e9 needs 3e9 digits)."""
+        d = self._delta()
+        if self._c0_15 is None:
+            self._c0_15 = self.c0(15)
+        return min(d, self._c0_15)
 
     def c0(self, dps: int):
         """The cohesive-zone half-width of a vanishing contact (a -> 0+)."""
         with workdps(dps + 15):
-            return self._solve_s(self._Z0, self._Z0c, self._s_guess(1), mpmath.mpf(10)**-(dps + 4),
+            return self._solve_s(self._Z0, self._Z0c, self._delta(), mpmath.mpf(10)**-(dps + 4),
                                  None if self.x_end is None else self.x_end * (1 - mpmath.mpf(10)**-(dps + 10)))
 
     def force_zero_width(self, dps: int):
@@ -471,9 +510,17 @@ class MDLaw:
             A = mpmath.mpf(A)
             # dG/dc at the last Newton point: c_D moved by at most 10**-(dps+4) (c_D - a) from it, a
             # relative change of that order in dc_D/da (G is smooth in c on the scale c_D - a)
-            dc = -self._Ga(A, C) / (self._Gc(A, C) if Gc is None else Gc)
+            Ga, Pa, Pc = self._Ga(A, C), self._Pa(A, C), self._Pc(A, C)
+            dc = -Ga / (self._Gc(A, C) if Gc is None else Gc)
+            dP = Pa + Pc * dc
+            if Gc is not None and abs(Pc * dc) * mpmath.mpf(10)**-(dps + 3) > \
+                    mpmath.mpf(10)**-dps * max(abs(dP), abs(self._dP0(A))):
+                # the slope at the last Newton point is off by ~10**-(dps+4) relative; Pc dc_D/da cancels
+                # against Pa down to dP/da by a factor ~ (c_D - a)/a (the JKR limit, lambda >> 1): the
+                # error would exceed 10**-dps of dP/da there, so dG/dc is taken at c_D itself
+                dc = -Ga / self._Gc(A, C)
+                dP = Pa + Pc * dc
             P = self._P(A, C)
-            dP = self._Pa(A, C) + self._Pc(A, C) * dc
             return +P, +dP, +C
 
     def certified_gap(self, A, C, dps: int):
@@ -534,13 +581,19 @@ class MDLaw:
                 x = abs(mpmath.mpf(x))
                 if x <= A:
                     return mpmath.mpf(0)
+                if abs(x - C) <= C * mpmath.mpf(10)**-(dps + 5):
+                    x = C       # x = c_D given at fewer digits than c_D is held: the end of the zone itself
                 top = min(x, C)
                 # Dugdale punches of width t in (a, min(x, c_D)): -(2/(pi E*)) int acosh(x/t) g_D(t) dt,
-                # t = c_D sin(phi) removes the endpoint singularity of g_D at c_D
+                # t = c_D sin(phi) removes the endpoint singularity of g_D at c_D; x/t >= 1 on the whole
+                # range (t <= min(x, c_D)): a ratio rounded below 1 at the end is 1 (the real branch of acosh)
                 E = mpmath.mpf(sp.N(law.E, dps + 20))
                 lo, hi = mpmath.asin(A / C), mpmath.asin(top / C)
-                I = mpmath.quad(lambda ph: mpmath.acosh(x / (C * mpmath.sin(ph))) * (-2 * sig * C * mpmath.sin(ph)),
-                                [lo, hi])
+
+                def integrand(ph):
+                    t = C * mpmath.sin(ph)
+                    return mpmath.acosh(max(x / t, 1)) * (-2 * sig * t)
+                I = mpmath.quad(integrand, [lo, hi])
                 return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
         return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts), self.certified_gap(A, C, dps))
 

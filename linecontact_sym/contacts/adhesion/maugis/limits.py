@@ -1,0 +1,189 @@
+"""The JKR limit of the Maugis-Dugdale pull-off (sigma_0 -> oo, the Maugis
+parameter lambda -> oo), reached without the Maugis-Dugdale solve where its
+error is below the digits asked, with that error bounded and stated.
+
+With c the cohesive-zone half-width, the two laws at the same half-width a
+differ only in their adhesive terms::
+
+    P_MD(a)  = P0(a) - 2 sigma_0 sqrt(c^2 - a^2)
+    P_JKR(a) = P0(a) - sqrt(2 pi a w E*)        (Popov 2017, Eq. 31)
+
+and the gap condition g0(c; a) + (4 sigma_0 a/(pi E*)) D(c/a) = h0 = w/sigma_0,
+D(m) = sqrt(m^2 - 1) acosh(m) - m log(m) increasing from D(1) = 0.  Let
+delta = pi E* w/(4 sigma_0^2) (the JKR-limit zone length) and u = a/delta.
+
+**Below** (every a): g0 >= 0 on the admissible range, so D(c/a) <= delta/a,
+c <= a M(delta/a) with M the inverse of D, and
+
+    P_MD(a) >= P_JKR(a) - 2 sigma_0 delta psi(u),  psi(u) = u sqrt(M(1/u)^2 - 1) - sqrt(2u).
+
+psi decreases from 1/ln 2 (u -> 0+: P(0+) = -2 sigma_0 c0, c0 <= delta/ln 2)
+and sqrt(u) psi(u) <= :data:`KPSI` (its supremum 0.47198 near u = 10; the
+tail is sqrt(2)/3); both read off psi on a log grid of u in [1e-8, 1e8]
+(:func:`zone_excess`, checked by an independent bisection in the tests).
+With a1 from sqrt(2 pi a1 w E*) + 2 sigma_0 delta/ln 2 = |P_JKR,min| (below
+a1 P_MD >= P0 - sqrt(2 pi a w E*) - 2 sigma_0 delta/ln 2 >= P_JKR,min, as
+P0 >= 0), min P_MD >= P_JKR,min - B_lo with
+B_lo = 2 sigma_0 delta KPSI sqrt(delta/a1) (relative size ~ delta/a ~ lambda^-2).
+
+**Above** (at the JKR pull-off half-width a_J): the adhesionless gap grows
+no faster than the profile beyond the contact (the depression of a
+half-plane under a compressive pressure falls with the distance from it),
+g0(c; a) <= f(c) - f(a) <= F1 (c - a) with F1 >= f' on [a_J, a_J + delta/ln 2]
+(an Arb ball of f'), and D(1 + e) <= e; so c - a >= delta/(1 + k),
+k = pi E* F1/(4 sigma_0), and
+
+    min P_MD <= P_MD(a_J) <= P_JKR,min + B_up,  B_up = sqrt(2 pi a_J w E*) (1 - (1 + k)^(-1/2))
+
+(relative size ~ k/2 ~ 1/lambda).  The pull-off is |P_MD,min - P_JKR,min| <=
+B = max(B_lo, B_up); the half-width of the minimum moves by about
+sqrt(2 (B_lo + B_up)/P_JKR''(a_J)) (a quadratic minimum; stated as an
+estimate).  The limit is the answer where B <= 10**-(dps+1) |P_JKR,min| and
+that estimate <= 10**-(dps+1) a_J: then the two models agree to the digits
+asked and only the JKR law (a closed form where the engine has one) is
+evaluated -- model only what the problem needs.  Where only the force is
+within the bound, the minimum is refined on this law in the bracket
+a_J +- 4 da alone (a few inner solves).  Elsewhere None: the
+Maugis-Dugdale search runs (under its budget).
+"""
+from __future__ import annotations
+
+import mpmath
+import sympy as sp
+
+from ....core import symbols as S
+from ....core.errors import NoPullOffError
+from ....core.precision import workdps
+from ...normal.force_law import PullOff
+from .numbers import fixed_values
+
+#: sup_u sqrt(u) psi(u) (0.47198 at u ~ 10, sqrt(2)/3 = 0.47140 as u -> oo), rounded up
+KPSI = mpmath.mpf("0.48")
+
+
+def dugdale_D(m):
+    """D(m) = sqrt(m^2 - 1) acosh(m) - m log(m), the Dugdale gap at c_D over 4 sigma_0 a/(pi E*)."""
+    return mpmath.sqrt(m * m - 1) * mpmath.acosh(m) - m * mpmath.log(m)
+
+
+def zone_excess(u):
+    """psi(u) = u sqrt(M(1/u)^2 - 1) - sqrt(2u), M the inverse of :func:`dugdale_D` (bisection in
+    m - 1; at the working precision): the Dugdale force in excess of JKR's at a = u delta, over
+    2 sigma_0 delta, where the adhesionless gap is neglected (its largest value)."""
+    u = mpmath.mpf(u)
+    t = 1 / u
+    lo, hi = mpmath.mpf(0), mpmath.mpf(1)
+    while dugdale_D(1 + hi) < t:
+        hi *= 2
+    for _ in range(mpmath.mp.prec + 20):
+        mid = (lo + hi) / 2
+        if dugdale_D(1 + mid) < t:
+            lo = mid
+        else:
+            hi = mid
+    e = hi
+    return u * mpmath.sqrt(e * (2 + e)) - mpmath.sqrt(2 * u)
+
+
+def _slope_bound(md, vals, lo, width):
+    """An upper bound of f' on [lo, lo + width] (an Arb ball, the width added in Arb: it may be far
+    below lo's last digit), or None where Arb cannot evaluate it."""
+    import flint
+    from ....numeric.certified import compile_arb, to_arb
+    pf = {k: v for k, v in vals.items() if k != S.E_star}
+    f1 = sp.diff(md.profile.expr, S.x).xreplace(pf)
+    if f1.free_symbols - {S.x}:
+        return None
+    try:
+        g = compile_arb(f1, [S.x])
+        with flint.ctx.workprec(128):
+            y = g(to_arb(lo).union(to_arb(lo) + to_arb(width)))
+    except Exception:   # CertificationError: no ball translation of f' (a piecewise, a user function)
+        return None
+    if not y.is_finite():
+        return None
+    return max(mpmath.mpf(y.upper().str(30, radius=False)), mpmath.mpf(0))
+
+
+def jkr_limit(md, vals: dict, dps: int):
+    """The pull-off of the Maugis-Dugdale contact ``md`` at ``vals`` ({Symbol: value}) as its JKR
+    limit, a :class:`PullOff` whose note states the bound, where the bound (module docstring) is
+    below the digits asked; else None."""
+    fixed = fixed_values(vals)
+    try:
+        jv = {s.name: v for s, v in vals.items() if s in set(md.jkr.variables)}
+        po = md.jkr.pull_off_at(dps + 5, **jv)
+    except NoPullOffError:
+        return None
+    if po.kind == "infimum" or not po.force < 0:
+        return None
+    with workdps(dps + 15):
+        E = mpmath.mpf(sp.N(fixed[S.E_star], dps + 20))
+        w = mpmath.mpf(sp.N(md.w.xreplace(fixed), dps + 20))
+        sig = mpmath.mpf(sp.N(md.sigma0.xreplace(fixed), dps + 20))
+        delta = mpmath.pi * E * w / (4 * sig**2)
+        two_sd = 2 * sig * delta
+        PJ, aJ = po.force, po.half_width
+        r = -PJ - two_sd / mpmath.log(2)
+        if not r > 0:
+            return None
+        a1 = r**2 / (2 * mpmath.pi * w * E)
+        B_lo = two_sd * KPSI * mpmath.sqrt(delta / a1)
+        F1 = _slope_bound(md, fixed, aJ, delta / mpmath.log(2) * (1 + mpmath.mpf(10)**-3))
+        if F1 is None:
+            return None
+        k = mpmath.pi * E * F1 / (4 * sig)
+        jt = mpmath.sqrt(2 * mpmath.pi * aJ * w * E)
+        B_up = jt * k / ((1 + mpmath.sqrt(1 + k)) * mpmath.sqrt(1 + k))   # jt (1 - (1 + k)^(-1/2)), no cancellation
+        B = max(B_lo, B_up)
+        tol = mpmath.mpf(10)**-(dps + 1)
+        if not B <= tol * abs(PJ):
+            return None
+        if po.kind == "stationary":    # the minimum moves by ~ sqrt(2 (B_lo + B_up)/P'')
+            law = md.jkr._law({s: v for s, v in vals.items() if s in set(md.jkr.variables)}, "closed")
+            h = aJ * mpmath.mpf(10)**-((dps + 15) // 3)
+            P2 = (law.dP(aJ + h) - law.dP(aJ - h)) / (2 * h)
+            if not P2 > 0:
+                return None
+            da = mpmath.sqrt(2 * (B_lo + B_up) / P2)
+        else:                          # a kink or the range's end: the same half-width (P_MD, P_JKR share P0's kinks)
+            da = mpmath.mpf(0)
+        lam = mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * aJ / delta)
+        if not da <= tol * aJ:
+            return _refined(md, vals, dps, po, B, da, lam)
+        note = (f"the JKR limit of the Maugis-Dugdale law (lambda = {mpmath.nstr(lam, 6)}): |P_MD,min - P_JKR,min| "
+                f"<= {mpmath.nstr(B, 3)} (relative {mpmath.nstr(B / abs(PJ), 3)}; bounds of the cohesive zone from "
+                f"the gap condition, maugis.limits), the half-width within about {mpmath.nstr(da, 3)}; below the "
+                f"10**-{dps} asked, so only the JKR law was evaluated: {po.note}")
+        return PullOff(+PJ, -PJ, +aJ, po.kind, None, po.minima, note)
+
+
+def _refined(md, vals, dps, po, B, da, lam):
+    """The force is within its bound but the half-width is not: the Maugis-Dugdale minimum is the
+    root of this law's dP/da next to a_J (within a few da, where P_JKR rises by more than the bound),
+    found in that bracket alone -- a few inner solves, not the search of the whole range; None when
+    the bracket holds no sign change (then the whole search)."""
+    if po.kind != "stationary":
+        return None
+    from ....core.roots import root_in_log
+    from ...normal.force_law import GUARD
+    law = md._law(vals, "closed")
+    aJ = po.half_width
+    lo, hi = aJ - 4 * da, aJ + 4 * da
+    if not lo > 0:
+        return None
+    with workdps(20):
+        if not law.dP(lo) < 0 < law.dP(hi):
+            return None
+    with workdps(dps + GUARD):
+        A = root_in_log(law.dP, mpmath.mpf(lo), mpmath.mpf(hi), approx=aJ)
+        Pm = law.P(A)
+    note = (f"the JKR limit of the Maugis-Dugdale law (lambda = {mpmath.nstr(lam, 6)}) bounds the pull-off: "
+            f"|P_MD,min - P_JKR,min| <= {mpmath.nstr(B, 3)} (relative {mpmath.nstr(B / abs(po.force), 3)}, "
+            f"maugis.limits), its half-width within about {mpmath.nstr(da, 3)} of JKR's a = "
+            f"{mpmath.nstr(aJ, 10)}; the minimum then refined on this law alone in [a_J - 4 da, a_J + 4 da] "
+            f"(dP/da = 0 there; any other local minimum lies within the bound of it): {po.note}")
+    return PullOff(+Pm, -Pm, +A, "stationary", None, po.minima, note)
+
+
+__all__ = ["jkr_limit", "zone_excess", "dugdale_D", "KPSI"]
