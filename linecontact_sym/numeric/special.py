@@ -58,7 +58,7 @@ import numpy as np
 import sympy as sp
 from ..core.conversion import to_mpf
 from ..core.lazy import lazy_module
-from ..core.precision import workdps
+from ..core.precision import workdps, workprec
 
 sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
@@ -192,7 +192,7 @@ def _mp_asinh_excess(w):
     so they are formed with that many bits more."""
     w = mpmath.mpmathify(w)
     extra = 2 * max(0, -int(mpmath.mag(w))) + 10 if w != 0 else 0
-    with mpmath.workprec(mpmath.mp.prec + extra):
+    with workprec(mpmath.mp.prec + extra):
         v = w * mpmath.sqrt(1 + w * w) - mpmath.asinh(w)
     return +v
 

@@ -212,7 +212,7 @@ class AsymmetricState:
         vals = {v: self.values[v.name] for v in core.params if v.name in self.values}
         out = []
         for b in core.kinks:
-            bv = to_mpf(sp.N(sp.sympify(b).xreplace(vals), mpmath.mp.dps + 10))
+            bv = to_mpf(sp.N(sp.sympify(b, strict=True).xreplace(vals), mpmath.mp.dps + 10))
             out.append(abs(self.e - bv))
         return out
 
@@ -376,7 +376,7 @@ class AsymmetricLineContact:
             self.walls = (-sp.oo, sp.oo)
         else:
             f = _real_x(f) if f.has(sp.Symbol) and any(v.name == "x" for v in f.free_symbols) else f
-            lo, hi = (sp.sympify(w) for w in walls)
+            lo, hi = (sp.sympify(w, strict=True) for w in walls)
             if not (lo.is_real and hi.is_real and bool(hi > lo)):
                 raise ProfileError(f"the walls must be real numbers left < right, got {walls!r}")
             self.walls = (lo, hi)
@@ -517,7 +517,7 @@ def _admissible_ends(core, branches, values, dps: int = 30):
     out = []
     with workdps(dps + 10):
         for br in branches:
-            e_, a_ = (sp.sympify(br[k]) for k in ("e", "a"))
+            e_, a_ = (sp.sympify(br[k], strict=True) for k in ("e", "a"))
             free = sorted((e_.free_symbols | a_.free_symbols) - set(subs), key=lambda v: v.name)
             if free:
                 raise DomainError(f"ends: values for {', '.join(map(str, free))} are needed to tell the "
@@ -737,7 +737,7 @@ def flat_punch(w=S.b, **kw) -> AsymmetricLineContact:
     ('corner', 'corner')
     """
     wv = user_value(w)
-    wv = sp.sympify(wv) if not isinstance(wv, sp.Basic) else wv
+    wv = sp.sympify(wv, strict=True) if not isinstance(wv, sp.Basic) else wv
     if not (wv.is_number and wv.is_positive):
         raise ProfileError(f"the half-width of a flat punch must be a positive number, got {w!r}")
     return AsymmetricLineContact(sp.S.Zero, walls=(-wv, wv), name=f"flat punch of half-width {wv}", **kw)

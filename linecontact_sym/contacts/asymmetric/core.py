@@ -317,7 +317,7 @@ class OffsetContact:
         return self._memo["tilt"]
 
     def _theta(self, theta):
-        return self.tilt() if theta is None else sp.sympify(theta)
+        return self.tilt() if theta is None else sp.sympify(user_value(theta), strict=True)
 
     def moment_centre(self, theta=None):
         """M_c = int (x - e) p dx = -(P_H - theta P_2); ``theta`` None: theta(e, a)."""
@@ -390,7 +390,7 @@ class OffsetNumbers:
         self._laws: dict = {}
         self._fns: dict = {}
         pv = {k: v for k, v in self.values.items()}
-        self._kinks = [None if c.kink is None else sp.N(sp.sympify(c.kink).xreplace(pv), 60) for c in core.cases]
+        self._kinks = [None if c.kink is None else sp.N(sp.sympify(c.kink, strict=True).xreplace(pv), 60) for c in core.cases]
 
     def case(self, e):
         """(case, its parameter value) at the number e: eps = sign (e - b) >= 0, or e itself."""

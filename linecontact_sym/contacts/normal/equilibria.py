@@ -695,7 +695,7 @@ def _negative_below(law, lo):
                 return A, P
             if not d > 0:
                 return lo, None
-            _check_deadline("the search for a negative P(a) below the scan")
+            check_deadline("the search for a negative P(a) below the scan")
             A = A * step
             P, d = law.P(A), law.dP(A)
         return lo, None

@@ -58,7 +58,7 @@ class AsymmetricRolling:
         key = tuple(sorted((k, str(v)) for k, v in vals.items()))
         if key not in self._cache:
             subs = {p: user_value(vals[p.name]) for p in self.contact.params}
-            brs = [sp.sympify(b).xreplace(subs) for b in self.contact.core.kinks]
+            brs = [sp.sympify(b, strict=True).xreplace(subs) for b in self.contact.core.kinks]
             E = to_mpf(sp.N(user_value(vals["E_star"]), 40))
             self._cache[key] = SlopeNumbers(self.slope, subs, E, brs)
         return self._cache[key]

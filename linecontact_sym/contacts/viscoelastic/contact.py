@@ -46,7 +46,7 @@ def _number(name, value, dps, positive=False):
     v = checked_value(name, value, None)
     if not isinstance(v, (int, float, sp.Basic)):
         raise DomainError(f"{name} must be one number, got {value!r}")
-    v = sp.sympify(v) if isinstance(v, (int, float)) else v       # a plain number (never text here)
+    v = sp.sympify(v, strict=True) if isinstance(v, (int, float)) else v       # a plain number (never text here)
     if positive and not v > 0:
         raise DomainError(f"{name} must be positive, got {value}")
     return mpmath.mpf(sp.N(v, dps + 15))
