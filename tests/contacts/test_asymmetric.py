@@ -401,3 +401,22 @@ def test_ends_of_the_cubic_symbolic_and_at_numbers(cubic_line):
     kept = _admissible_ends(cubic_line.core, branches, {"E_star": 2})   # = ends(..., E_star=2)
     st = cubic_line.contact_at(P=1, theta=sp.Rational(1, 5), E_star=2)
     assert len(kept) == 1 and digits(kept[0]["e_value"], st.e) > 25 and digits(kept[0]["a_value"], st.a) > 25
+
+def test_cosh_parts_close_termwise():
+    """cosh(x) - 1 about e: the split writes cosh(e +- s) as cosh(e) cosh(s) +- sinh(e) sinh(s), so
+    the termwise rule closes both parts (Bessel I) at once; left as cosh(e + s), each part's
+    sympy.integrate spent 8 CPU s to leave an Integral.  P(e, a) and theta(e, a) against
+    (E* a/2) int f'(e + a sin phi) sin phi dphi and (1/pi) int f'(e + a sin phi) dphi (mpmath)."""
+    from linecontact_sym.contacts.asymmetric.core import OffsetContact
+    oc = OffsetContact(sp.cosh(S.x_real) - 1)
+    P, th = oc.force(), oc.tilt()
+    assert not P.has(sp.Integral) and not th.has(sp.Integral, sp.Derivative)
+    ev, av, E = sp.Rational(-3, 10), sp.Rational(7, 5), 2
+    with mpmath.workdps(30):
+        e, a = mpmath.mpf(ev), mpmath.mpf(av)
+        P_ref = E * a / 2 * mpmath.quad(lambda ph: mpmath.sinh(e + a * mpmath.sin(ph)) * mpmath.sin(ph),
+                                        [-mpmath.pi / 2, mpmath.pi / 2])
+        th_ref = mpmath.quad(lambda ph: mpmath.sinh(e + a * mpmath.sin(ph)), [-mpmath.pi / 2, mpmath.pi / 2]) / mpmath.pi
+        at = {S.e: ev, S.a: av, S.E_star: E}
+        assert abs(sp.N(P.xreplace(at), 30) - P_ref) < 1e-25 * abs(P_ref)
+        assert abs(sp.N(th.xreplace(at), 30) - th_ref) < 1e-25 * abs(th_ref)

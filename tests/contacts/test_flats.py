@@ -298,3 +298,34 @@ def test_pressure_without_closed_force_law_is_one_quadrature():
             by_hand_b = mpmath.sqrt(a**2 - xb**2) / mpmath.pi * mpmath.quad(gb, [0, mpmath.asin(xb / a), mpmath.pi / 2])
             assert ev.certified and ev.error <= 1e-20 * abs(ev.value)
             assert ev.enclosure[0] - mpmath.mpf(10)**-60 <= by_hand_b <= ev.enclosure[1] + mpmath.mpf(10)**-60
+
+
+def test_rounded_punch_float64_beside_the_flat_end(punch):
+    """At |x| = b (the kink of the profile) and within rounding of it, the
+    float64 traction and the admissibility test keep
+    their digits: the plain translation evaluated atanh(z) with z = 1 - (a
+    rounding error) there (inf, NaN, or 33 % off at x = 0.1*3 with b = 0.3)
+    and dP0/da = -8e4 at a = b + 1 ulp (the punch refused as tensile).
+    Reference: mu [p(x; a) - p(x; c)] from Ciavarella's published pressure
+    at the float's exact value, 50 digits."""
+    import numpy as np
+    b, mu, E, R = 0.3, 0.5, 1, 4
+    t = punch.tangential()
+    xs = [0.1 * 3, b, float(np.nextafter(b, 0)), float(np.nextafter(b, 1)), b * (1 + 1e-13), b * (1 - 1e-13)]
+
+    def ciav(x, A):      # continuous at x = b, where the published form is 0 * inf: its limit from 1e-40 off
+        X = mpmath.mpf(x) + (mpmath.mpf(10)**-40 if x == b else 0)
+        return ciavarella_pressure(X, mpmath.mpf(A), mpmath.mpf(b), R, E) if x < A else 0
+
+    st = t.state(0.02, mu=mu, a=1.0, E_star=E, R=R, b=b)       # (unloading takes the same export path)
+    got = st.traction(np.array(xs))
+    with workdps(50):
+        for x, g in zip(xs, got):
+            ref = mu * (ciav(x, 1.0) - ciav(x, st.c))
+            assert abs(g - ref) <= 1e-12 * abs(ref), (x, g, ref)
+    # a = b + 1 ulp is admissible: P(a) > 0 tiny, the pressure of order 1e-26
+    A = 0.1 * 3
+    ev = punch.evaluate("pressure", a=A, x=0.1, E_star=E, R=R, b=b)
+    with workdps(50):
+        ref = ciavarella_pressure(mpmath.mpf("0.1"), mpmath.mpf(A), mpmath.mpf(b), R, E)
+        assert abs(ev.value - ref) <= mpmath.mpf(10)**-10 * ref

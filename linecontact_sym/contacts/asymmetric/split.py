@@ -33,6 +33,16 @@ def _tidy(expr, s=S.x):
         out = out.replace(linear,
                           lambda t: sp.cosh(t.args[0]) + sp.sinh(t.args[0]))
         out = sp.factor_terms(sp.collect(sp.expand(out), [v for v in out.atoms(sp.exp)]))
+    # cosh, sinh, cos, sin of e +- s likewise: cosh(e) cosh(s) + sinh(e) sinh(s), terms in s that the
+    # engine's termwise rule closes (left as cosh(e + s), each part's sympy.integrate spent 8 CPU s to
+    # leave the integral unevaluated)
+    hyp = (sp.cosh, sp.sinh, sp.cos, sp.sin)
+
+    def shifted(t):
+        return isinstance(t, hyp) and t.args[0].has(s) and sp.diff(t.args[0], s, 2) == 0 \
+            and (t.args[0] - t.args[0].coeff(s) * s) != 0
+    if any(shifted(t) for t in out.atoms(*hyp)):
+        out = sp.expand(out.replace(shifted, lambda t: sp.expand_trig(t)))
     out = sp.piecewise_fold(out)
     return out if sp.count_ops(out) <= 2 * sp.count_ops(expr) + 20 else expr
 

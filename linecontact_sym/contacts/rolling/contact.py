@@ -412,8 +412,8 @@ class RollingLineContact(ContactOn):
         fP, ft = self.derivation("tangential_force"), self.derivation("creepage")
         fixed = {k.name: float(v) for k, v in vals.items()}
         if fP.closed_form and ft.closed_form:
-            Q = np.real(make_callable(fP, "numpy", 15, fixed, stable=False)(a=float(A), c_s=cs))
-            xi = np.real(make_callable(ft, "numpy", 15, fixed, stable=False)(a=float(A), c_s=cs))
+            Q = np.real(make_callable(fP, "numpy", 15, fixed)(a=float(A), c_s=cs))
+            xi = np.real(make_callable(ft, "numpy", 15, fixed)(a=float(A), c_s=cs))
         else:
             Af, muf, Pf = float(A), float(mu), float(P)
             Q = np.array([muf * (Pf - num.P_float(Af - c, c)) for c in cs])

@@ -16,7 +16,6 @@ from ...core.conversion import to_mpf
 from ...core.errors import DomainError, GrossSlidingError, LineContactError
 from ...core.ranges import check_sign, check_values
 from ...core.roots import root_in_log
-from ...numeric.exports import lambdify_numpy
 from ...numeric.functions import make_callable
 from ...parsing import user_value
 from . import reference as ref
@@ -91,19 +90,14 @@ class FloatNormal:
 
 def _float_fn(contact, name, fixed):
     """A float64 callable of the half-width for the normal ``name`` ('force',
-    'stiffness') at the parameter values: a plain SciPy/NumPy lambdify of the
-    closed form (elliptic integrals as scipy.special), else the package's
-    numeric export."""
-    d = contact.derivation(name)
-    if d.closed_form:
-        params = {s: sp.Float(float(fixed[s.name]), 20) for s in contact.variables if s.name in fixed}
-        fn = lambdify_numpy(d.expr.xreplace(params), [S.a], stable=False)   # K, E, Pi as scipy.special
-    else:
-        exp = make_callable(d, "numpy", 15, {k: v for k, v in fixed.items() if k != "mu"}, stable=False)
-        fn = lambda tv: exp(a=tv)  # noqa: E731
+    'stiffness') at the parameter values: the package's numeric export in
+    its stable form (elliptic integrals as Carlson forms; a force law with a
+    kink, the rounded punch's at a = b, keeps its digits beside it)."""
+    exp = make_callable(contact.derivation(name), "numpy", 15, {k: v for k, v in fixed.items() if k != "mu"})
+
     def value(tv):
         with np.errstate(invalid="ignore", divide="ignore"):   # numpy evaluates every Piecewise branch
-            return np.broadcast_to(np.real(fn(np.asarray(tv, float))), np.shape(tv))
+            return np.broadcast_to(np.real(exp(a=np.asarray(tv, float))), np.shape(tv))
     return value
 
 
@@ -158,7 +152,7 @@ class TangentialState:
             if self.c_r is not None:
                 args["c_r"] = float(self.c_r)
             sign = -1.0 if (self.branch == "reloading" or (self.c_r is None and self.Q < 0)) else 1.0
-            fn = make_callable(d, "numpy", 15, {**fixed, **args}, stable=False)
+            fn = make_callable(d, "numpy", 15, {**fixed, **args})   # stable form: no atanh(1) cancellation at a kink
             return sign * np.real(fn(x=xs))
         fl, A, mu = _float_normal(t, fixed), float(self.a), float(self.mu)
         out = np.zeros(xs.shape)
@@ -315,7 +309,7 @@ def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
     def evaluate(name, cs):
         d = t.derivation(name)
         if d.closed_form:
-            fn = make_callable(d, "numpy", 15, fixed, stable=False)
+            fn = make_callable(d, "numpy", 15, fixed)
             return np.real(fn(a=float(A), c_s=np.array([float(c) for c in cs])))
         fl = _float_normal(t, fixed)
         what = fl.energy if name == "dissipated_energy" else fl.displacement
