@@ -37,8 +37,9 @@ from ...core import symbols as S
 from ...core.budget import DEFAULT_BUDGET
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, InadmissibleProfileError, NoEquilibriumError, ProfileError
-from ...core.precision import workdps
+from ...core.precision import checked_dps, workdps
 from ...parsing import user_value
+from ..base import checked_value
 from .core import OffsetContact
 
 __all__ = ["AsymmetricLineContact", "AsymmetricState", "flat_punch", "whole_line"]
@@ -176,7 +177,7 @@ class AsymmetricState:
         """p(x) (0 outside [left, right]): an mpf for a number, a float64
         array for an array (closed forms; the quadrature route pointwise)."""
         if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
-            xs = np.asarray(x, dtype=float)
+            xs = checked_value("x", np.asarray(x), None)
             inside = (xs > float(self.left)) & (xs < float(self.right))
             out = np.zeros_like(xs)
             if self._flat():
@@ -194,7 +195,7 @@ class AsymmetricState:
             else:
                 out[inside] = [float(self.pressure(v)) for v in xs[inside]]
             return out
-        xv = to_mpf(x)
+        xv = x if isinstance(x, mpmath.mpf) and mpmath.isfinite(x) else to_mpf(_given("x", x))
         if not self.left < xv < self.right:
             return mpmath.mpf(0)
         if self._flat():
@@ -337,6 +338,21 @@ class LevelState(AsymmetricState):
                                        **self.values)
 
 
+def _given(name, v, positive=False):
+    """A load, tilt, moment or point as a user gives it: a finite real number
+    (:func:`~linecontact_sym.contacts.base.checked_value`: text through the
+    parser, complex, NaN, inf refused), a SymPy expression with free symbols
+    left as it is (the closed ends); a DomainError naming it otherwise."""
+    if isinstance(v, sp.Basic) and v.free_symbols:
+        return v
+    val = checked_value(name, v, None)
+    if isinstance(val, np.ndarray):
+        raise DomainError(f"{name} = {v!r}: expected one number")
+    if positive and not val > 0:
+        raise DomainError(f"the load must be positive, got {name} = {v}")
+    return val
+
+
 def _finite(v):
     v = mpmath.mpf(v.real) if isinstance(v, mpmath.mpc) else mpmath.mpf(v)
     if not mpmath.isfinite(v):
@@ -444,8 +460,10 @@ class AsymmetricLineContact:
         if theta is not None and moment is not None:
             raise DomainError("give the tilt theta or the moment M, not both")
         core = self.core
-        target = (core.tilt(), S.tilt if theta is None else sp.sympify(theta)) if moment is None else \
-            (core.moment(), sp.sympify(moment))
+        load = _given("P", load)
+        theta = None if theta is None else sp.sympify(_given("theta", theta))
+        moment = None if moment is None else sp.sympify(_given("moment", moment))
+        target = (core.tilt(), S.tilt if theta is None else theta) if moment is None else (core.moment(), moment)
         eqs = [sp.Eq(core.force(), load), sp.Eq(*target)]
         if any(q.has(sp.Integral, sp.Derivative, sp.Piecewise) for q in (eqs[0].lhs, eqs[1].lhs)):
             return []
@@ -463,18 +481,45 @@ class AsymmetricLineContact:
         see the module docstring for the regimes."""
         if theta is not None and moment is not None:
             raise DomainError("give the tilt theta or the moment M, not both (a tilt fixes the moment)")
+        dps = checked_dps(dps)
+        Pv = _given("P", P, positive=True)
+        given = ("moment", _given("moment", moment)) if moment is not None else \
+            ("theta", _given("theta", 0 if theta is None else theta))
         with workdps(dps + 10):
-            Pv = to_mpf(user_value(P))
-            if not Pv > 0:
-                raise DomainError(f"the load must be positive, got P = {P}")
+            Pv = to_mpf(Pv)
             n = self.core.numbers(**values)
-            given = ("moment", to_mpf(user_value(moment))) if moment is not None else \
-                ("theta", to_mpf(user_value(0 if theta is None else theta)))
+            given = (given[0], to_mpf(given[1]))
             state = _solve(self, n, Pv, given, values)
+            _check_compressive(state)
         return state
 
 
 # ---------------------------------------------------------------------- solves
+#: interior points of the contact where a state's pressure must be >= 0
+CHECK_POINTS = 101
+
+
+def _check_compressive(state, points=CHECK_POINTS):
+    """p >= 0 inside the contact (no adhesion here: a tensile pressure means
+    the one-interval solution is not the contact, e.g. a profile not convex
+    over it that touches in two places); InadmissibleProfileError otherwise.
+    A flat punch's pressure is its corner factors' (checked by the regimes)."""
+    if state._flat():
+        return
+    L, Rt = float(state.left), float(state.right)
+    xs = np.linspace(L, Rt, points + 2)[1:-1]
+    p = state.pressure(xs)
+    scale = max(float(np.max(np.abs(p))), 1e-300)
+    bad = ~(p >= -1e-9 * scale)
+    if bad.any():
+        xb = xs[bad][0]
+        raise InadmissibleProfileError(
+            f"{state.contact.name} at P = {mpmath.nstr(state.load, 8)}: the one-interval contact "
+            f"[{mpmath.nstr(state.left, 8)}, {mpmath.nstr(state.right, 8)}] has a tensile pressure near x = {xb:.6g} "
+            f"(p = {float(p[bad][0]):.4g}); without adhesion the profile must be convex enough over the contact: "
+            f"it touches in more than one interval here (not solved)")
+
+
 def _solve_ends(eqs):
     """(e, a) solutions of the two equations with a > 0 (where SymPy can tell):
     a(e) from the load first, then e from the tilt or moment."""
