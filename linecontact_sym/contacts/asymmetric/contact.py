@@ -416,6 +416,14 @@ class AsymmetricLineContact:
         from ..base import contact_kind
         return contact_kind("rolling").over_asymmetric(self, friction)
 
+    def viscoelastic(self, material):
+        """Refused: a viscoelastic asymmetric contact (tilt, moment, punch) is
+        not solved; the viscoelastic contacts are the symmetric ones
+        (``LineContact(f).viscoelastic(material)``)."""
+        raise DomainError(f"{self.name}: viscoelastic contacts are solved for symmetric profiles without walls "
+                          f"(LineContact(f).viscoelastic(material)); an asymmetric contact, a tilt, a moment or "
+                          f"a flat punch with walls is not supported on a viscoelastic half-plane")
+
     @classmethod
     def from_symmetric(cls, contact) -> "AsymmetricLineContact":
         """The symmetric contact's profile on the whole line (:func:`whole_line`)."""
