@@ -38,6 +38,7 @@ from ...core.budget import DEFAULT_BUDGET
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, InadmissibleProfileError, NoEquilibriumError, ProfileError
 from ...core.precision import checked_dps, workdps
+from ...core.roots import Outside, root_in_bracket
 from ...parsing import user_value
 from ..base import checked_value
 from .core import OffsetContact
@@ -177,7 +178,7 @@ class AsymmetricState:
         """p(x) (0 outside [left, right]): an mpf for a number, a float64
         array for an array (closed forms; the quadrature route pointwise)."""
         if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
-            xs = checked_value("x", np.asarray(x), None)
+            xs = np.asarray(checked_value("x", np.asarray(x), None), dtype=float)
             inside = (xs > float(self.left)) & (xs < float(self.right))
             out = np.zeros_like(xs)
             if self._flat():
@@ -185,8 +186,11 @@ class AsymmetricState:
                 return out
             fn = self._fn("pressure")
             if fn is not None:
-                with np.errstate(all="ignore"):
-                    out[inside] = np.real(fn[0](xs[inside].astype(complex), *self._args("numpy")))
+                try:
+                    with np.errstate(all="ignore"):
+                        out[inside] = np.real(fn[0](xs[inside].astype(complex), *self._args("numpy")))
+                except (ValueError, TypeError):    # NumPy's select over a Piecewise of the centre: pointwise
+                    out[inside] = np.nan
                 # near |x - e| = eps the float64 closed form cancels: those points at mpmath
                 bad = inside & ~np.isfinite(out)
                 for ep in self._mirror():
@@ -338,6 +342,28 @@ class LevelState(AsymmetricState):
                                        **self.values)
 
 
+#: points near the origin where a profile without parameters must be real (within the walls)
+REAL_PROBES = (-sp.Rational(1, 2), -sp.Rational(1, 8), sp.Rational(1, 8), sp.Rational(1, 2))
+
+
+def _check_real(f, walls):
+    """A profile without parameters must be real near the origin (sqrt(x),
+    log(x) are not on x < 0): a ProfileError before any derivation."""
+    xs = [v for v in f.free_symbols if v.name == "x"]
+    if len(f.free_symbols) != 1 or not xs:
+        return
+    for v in REAL_PROBES:
+        if not walls[0] < v < walls[1]:
+            continue
+        try:
+            val = complex(sp.N(f.xreplace({xs[0]: v}), 20))
+        except (TypeError, ValueError):
+            continue
+        if not math.isfinite(val.real) or abs(val.imag) > 1e-12 * max(1.0, abs(val.real)):
+            raise ProfileError(f"the profile {f} is not real at x = {v} (f = {sp.N(f.xreplace({xs[0]: v}), 6)}): "
+                               f"an asymmetric profile is given real on the whole line (within the walls)")
+
+
 def _given(name, v, positive=False):
     """A load, tilt, moment or point as a user gives it: a finite real number
     (:func:`~linecontact_sym.contacts.base.checked_value`: text through the
@@ -396,6 +422,7 @@ class AsymmetricLineContact:
             if not (lo.is_real and hi.is_real and bool(hi > lo)):
                 raise ProfileError(f"the walls must be real numbers left < right, got {walls!r}")
             self.walls = (lo, hi)
+        _check_real(f, self.walls)
         self.name = name or str(f)
         self.core = OffsetContact(f, params, name=self.name, budget=budget, verify=verify, points=points)
         self.profile = f
@@ -497,8 +524,12 @@ class AsymmetricLineContact:
             Pv = to_mpf(Pv)
             n = self.core.numbers(**values)
             given = (given[0], to_mpf(given[1]))
-            state = _solve(self, n, Pv, given, values)
-            _check_compressive(state)
+            try:
+                state = _solve(self, n, Pv, given, values)
+                _check_compressive(state)
+            except Outside:
+                raise ProfileError(f"the profile {self.profile} is not real (or not finite) over the contact the "
+                                   f"load {P} needs: give a profile real on the whole line") from None
         return state
 
 
@@ -524,8 +555,8 @@ def _check_compressive(state, points=CHECK_POINTS):
         raise InadmissibleProfileError(
             f"{state.contact.name} at P = {mpmath.nstr(state.load, 8)}: the one-interval contact "
             f"[{mpmath.nstr(state.left, 8)}, {mpmath.nstr(state.right, 8)}] has a tensile pressure near x = {xb:.6g} "
-            f"(p = {float(p[bad][0]):.4g}); without adhesion the profile must be convex enough over the contact: "
-            f"it touches in more than one interval here (not solved)")
+            f"(p = {float(p[bad][0]):.4g}); without adhesion the profile must be convex enough over the contact "
+            f"(a dent or a flat: it touches in more than one interval, or the contact runs along the flat; not solved)")
 
 
 def _solve_ends(eqs):
@@ -569,7 +600,7 @@ def _bracket_root(fn, x0, step, lo=-mpmath.inf, hi=mpmath.inf, tries=80):
                 return c
             if (fc > 0) != (f0 > 0):
                 a_, b_ = (x0, c) if c > x0 else (c, x0)
-                return mpmath.findroot(fn, (a_, b_), solver="anderson")
+                return root_in_bracket(fn, a_, b_)
         right, left = right + s, left - s
         s *= 2
     raise NoEquilibriumError("no root found by stepping out (the load or tilt is out of reach of this profile)")
@@ -595,7 +626,7 @@ def _bracket_positive(fn, a0, amax=mpmath.inf):
         raise NoEquilibriumError("no half-width found for this load")
     if fhi == 0:
         return hi
-    return mpmath.findroot(fn, (lo, hi), solver="anderson")
+    return root_in_bracket(fn, lo, hi)
 
 
 def _state(contact, n, e, a, theta, P0, regime, P, values):
