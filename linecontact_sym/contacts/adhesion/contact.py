@@ -100,6 +100,13 @@ class AdhesiveContact(ContactOn):
         from ..viscoelastic.contact import ViscoelasticLineContact
         return ViscoelasticLineContact(self, material)
 
+    def rolling(self, friction=None):
+        """Refused: steady rolling with adhesion is outside the model (Carter's
+        reduction needs the frictionless, non-adhesive pressure)."""
+        raise DomainError("rolling with adhesion is outside the model: steady rolling (Carter's reduction) is "
+                          "solved over the frictionless contact without adhesion (contact.rolling(mu) on the "
+                          "LineContact itself)")
+
     def __init__(self, contact, law: CohesiveLaw, values=None):
         if not isinstance(law, CohesiveLaw):
             raise DomainError(f"an adhesive contact needs a CohesiveLaw, got {law!r}")

@@ -37,8 +37,10 @@ from ...core import symbols as S
 from ...core.budget import DEFAULT_BUDGET
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, InadmissibleProfileError, NoEquilibriumError, ProfileError
-from ...core.precision import workdps
+from ...core.precision import checked_dps, workdps
+from ...core.roots import Outside, root_in_bracket
 from ...parsing import user_value
+from ..base import checked_value
 from .core import OffsetContact
 
 __all__ = ["AsymmetricLineContact", "AsymmetricState", "flat_punch", "whole_line"]
@@ -176,7 +178,7 @@ class AsymmetricState:
         """p(x) (0 outside [left, right]): an mpf for a number, a float64
         array for an array (closed forms; the quadrature route pointwise)."""
         if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
-            xs = np.asarray(x, dtype=float)
+            xs = np.asarray(checked_value("x", np.asarray(x), None), dtype=float)
             inside = (xs > float(self.left)) & (xs < float(self.right))
             out = np.zeros_like(xs)
             if self._flat():
@@ -184,8 +186,11 @@ class AsymmetricState:
                 return out
             fn = self._fn("pressure")
             if fn is not None:
-                with np.errstate(all="ignore"):
-                    out[inside] = np.real(fn[0](xs[inside].astype(complex), *self._args("numpy")))
+                try:
+                    with np.errstate(all="ignore"):
+                        out[inside] = np.real(fn[0](xs[inside].astype(complex), *self._args("numpy")))
+                except (ValueError, TypeError):    # NumPy's select over a Piecewise of the centre: pointwise
+                    out[inside] = np.nan
                 # near |x - e| = eps the float64 closed form cancels: those points at mpmath
                 bad = inside & ~np.isfinite(out)
                 for ep in self._mirror():
@@ -194,7 +199,7 @@ class AsymmetricState:
             else:
                 out[inside] = [float(self.pressure(v)) for v in xs[inside]]
             return out
-        xv = to_mpf(x)
+        xv = x if isinstance(x, mpmath.mpf) and mpmath.isfinite(x) else to_mpf(_given("x", x))
         if not self.left < xv < self.right:
             return mpmath.mpf(0)
         if self._flat():
@@ -337,6 +342,43 @@ class LevelState(AsymmetricState):
                                        **self.values)
 
 
+#: points near the origin where a profile without parameters must be real (within the walls)
+REAL_PROBES = (-sp.Rational(1, 2), -sp.Rational(1, 8), sp.Rational(1, 8), sp.Rational(1, 2))
+
+
+def _check_real(f, walls):
+    """A profile without parameters must be real near the origin (sqrt(x),
+    log(x) are not on x < 0): a ProfileError before any derivation."""
+    xs = [v for v in f.free_symbols if v.name == "x"]
+    if len(f.free_symbols) != 1 or not xs:
+        return
+    for v in REAL_PROBES:
+        if not walls[0] < v < walls[1]:
+            continue
+        try:
+            val = complex(sp.N(f.xreplace({xs[0]: v}), 20))
+        except (TypeError, ValueError):
+            continue
+        if not math.isfinite(val.real) or abs(val.imag) > 1e-12 * max(1.0, abs(val.real)):
+            raise ProfileError(f"the profile {f} is not real at x = {v} (f = {sp.N(f.xreplace({xs[0]: v}), 6)}): "
+                               f"an asymmetric profile is given real on the whole line (within the walls)")
+
+
+def _given(name, v, positive=False):
+    """A load, tilt, moment or point as a user gives it: a finite real number
+    (:func:`~linecontact_sym.contacts.base.checked_value`: text through the
+    parser, complex, NaN, inf refused), a SymPy expression with free symbols
+    left as it is (the closed ends); a DomainError naming it otherwise."""
+    if isinstance(v, sp.Basic) and v.free_symbols:
+        return v
+    val = checked_value(name, v, None)
+    if isinstance(val, np.ndarray):
+        raise DomainError(f"{name} = {v!r}: expected one number")
+    if positive and not val > 0:
+        raise DomainError(f"the load must be positive, got {name} = {v}")
+    return val
+
+
 def _finite(v):
     v = mpmath.mpf(v.real) if isinstance(v, mpmath.mpc) else mpmath.mpf(v)
     if not mpmath.isfinite(v):
@@ -380,6 +422,7 @@ class AsymmetricLineContact:
             if not (lo.is_real and hi.is_real and bool(hi > lo)):
                 raise ProfileError(f"the walls must be real numbers left < right, got {walls!r}")
             self.walls = (lo, hi)
+        _check_real(f, self.walls)
         self.name = name or str(f)
         self.core = OffsetContact(f, params, name=self.name, budget=budget, verify=verify, points=points)
         self.profile = f
@@ -399,6 +442,14 @@ class AsymmetricLineContact:
         (through the kind registry: the rolling layer stands on this package)."""
         from ..base import contact_kind
         return contact_kind("rolling").over_asymmetric(self, friction)
+
+    def viscoelastic(self, material):
+        """Refused: a viscoelastic asymmetric contact (tilt, moment, punch) is
+        not solved; the viscoelastic contacts are the symmetric ones
+        (``LineContact(f).viscoelastic(material)``)."""
+        raise DomainError(f"{self.name}: viscoelastic contacts are solved for symmetric profiles without walls "
+                          f"(LineContact(f).viscoelastic(material)); an asymmetric contact, a tilt, a moment or "
+                          f"a flat punch with walls is not supported on a viscoelastic half-plane")
 
     @classmethod
     def from_symmetric(cls, contact) -> "AsymmetricLineContact":
@@ -452,10 +503,10 @@ class AsymmetricLineContact:
         if theta is not None and moment is not None:
             raise DomainError("give the tilt theta or the moment M, not both")
         core = self.core
-        given = lambda v: v if isinstance(v, sp.Basic) else user_value(v)   # noqa: E731 (text: the parser, no eval)
-        load = given(load)
-        target = (core.tilt(), S.tilt if theta is None else given(theta)) if moment is None else \
-            (core.moment(), given(moment))
+        load = _given("P", load)
+        theta = None if theta is None else sp.sympify(_given("theta", theta), strict=True)
+        moment = None if moment is None else sp.sympify(_given("moment", moment), strict=True)
+        target = (core.tilt(), S.tilt if theta is None else theta) if moment is None else (core.moment(), moment)
         eqs = [sp.Eq(core.force(), load), sp.Eq(*target)]
         if any(q.has(sp.Integral, sp.Derivative, sp.Piecewise) for q in (eqs[0].lhs, eqs[1].lhs)):
             return []
@@ -474,14 +525,20 @@ class AsymmetricLineContact:
         see the module docstring for the regimes."""
         if theta is not None and moment is not None:
             raise DomainError("give the tilt theta or the moment M, not both (a tilt fixes the moment)")
+        dps = checked_dps(dps)
+        Pv = _given("P", P, positive=True)
+        given = ("moment", _given("moment", moment)) if moment is not None else \
+            ("theta", _given("theta", 0 if theta is None else theta))
         with workdps(dps + 10):
-            Pv = to_mpf(user_value(P))
-            if not Pv > 0:
-                raise DomainError(f"the load must be positive, got P = {P}")
+            Pv = to_mpf(Pv)
             n = self.core.numbers(**values)
-            given = ("moment", to_mpf(user_value(moment))) if moment is not None else \
-                ("theta", to_mpf(user_value(0 if theta is None else theta)))
-            state = _solve(self, n, Pv, given, values)
+            given = (given[0], to_mpf(given[1]))
+            try:
+                state = _solve(self, n, Pv, given, values)
+                _check_compressive(state)
+            except Outside:
+                raise ProfileError(f"the profile {self.profile} is not real (or not finite) over the contact the "
+                                   f"load {P} needs: give a profile real on the whole line") from None
         return state
 
 
@@ -540,6 +597,35 @@ def _admissible_ends(core, branches, values, dps: int = 30):
     return out
 
 
+#: interior points of the contact where a state's pressure must be >= 0: (closed forms, quadrature)
+CHECK_POINTS = (101, 21)
+
+
+def _check_compressive(state, points=CHECK_POINTS):
+    """p >= 0 inside the contact (no adhesion here: a tensile pressure means
+    the one-interval solution is not the contact, e.g. a profile not convex
+    over it that touches in two places); InadmissibleProfileError otherwise.
+    A flat punch's pressure is its corner factors' (checked by the regimes).
+    Closed forms: float64 at 101 points; the quadrature route (a quadrature
+    per point): 21 points at 15 digits (the sign only)."""
+    if state._flat():
+        return
+    closed = state._fn("pressure") is not None
+    L, Rt = float(state.left), float(state.right)
+    xs = np.linspace(L, Rt, points[0 if closed else 1] + 2)[1:-1]
+    with workdps(15):
+        p = state.pressure(xs)
+    scale = max(float(np.max(np.abs(p))), 1e-300)
+    bad = ~(p >= -1e-9 * scale)
+    if bad.any():
+        xb = xs[bad][0]
+        raise InadmissibleProfileError(
+            f"{state.contact.name} at P = {mpmath.nstr(state.load, 8)}: the one-interval contact "
+            f"[{mpmath.nstr(state.left, 8)}, {mpmath.nstr(state.right, 8)}] has a tensile pressure near x = {xb:.6g} "
+            f"(p = {float(p[bad][0]):.4g}); without adhesion the profile must be convex enough over the contact "
+            f"(a dent or a flat: it touches in more than one interval, or the contact runs along the flat; not solved)")
+
+
 def _solve_ends(eqs):
     """(e, a) solutions of the two equations with a > 0 (where SymPy can tell):
     a(e) from the load first (of a pair +-r of roots of a load even in a, the
@@ -586,7 +672,7 @@ def _bracket_root(fn, x0, step, lo=-mpmath.inf, hi=mpmath.inf, tries=80):
                 return c
             if (fc > 0) != (f0 > 0):
                 a_, b_ = (x0, c) if c > x0 else (c, x0)
-                return mpmath.findroot(fn, (a_, b_), solver="anderson")
+                return root_in_bracket(fn, a_, b_)
         right, left = right + s, left - s
         s *= 2
     raise NoEquilibriumError("no root found by stepping out (the load or tilt is out of reach of this profile)")
@@ -612,7 +698,7 @@ def _bracket_positive(fn, a0, amax=mpmath.inf):
         raise NoEquilibriumError("no half-width found for this load")
     if fhi == 0:
         return hi
-    return mpmath.findroot(fn, (lo, hi), solver="anderson")
+    return root_in_bracket(fn, lo, hi)
 
 
 def _state(contact, n, e, a, theta, P0, regime, P, values):

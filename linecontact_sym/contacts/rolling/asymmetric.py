@@ -23,7 +23,9 @@ from ...core import symbols as S
 from ...core.conversion import to_mpf
 from ...core.errors import DomainError, InadmissibleProfileError
 from ...core.precision import workdps
+from ...core.ranges import check_points
 from ...parsing import user_value
+from ..base import checked_value
 from . import state as st
 from .interval import X, SlopeNumbers
 
@@ -47,9 +49,12 @@ class AsymmetricRolling:
         vals = dict(values)
         if not self.mu.is_number:
             names = {s.name for s in self.mu.free_symbols}
-            mu = self.mu.xreplace({s: user_value(vals.pop(s.name)) for s in self.mu.free_symbols if s.name in vals})
+            mu = self.mu.xreplace({s: user_value(checked_value(s.name, vals.pop(s.name), s))
+                                   for s in self.mu.free_symbols if s.name in vals})
             if not mu.is_number:
                 raise DomainError(f"values needed for the friction coefficient's {sorted(names)}")
+            if not mu.is_positive:
+                raise DomainError(f"the friction coefficient must be positive, got mu = {mu}")
         else:
             mu = self.mu
         return mu, vals
@@ -67,6 +72,7 @@ class AsymmetricRolling:
         """The rolling state at the tangential force Q (|Q| < mu P) over the
         contact at the load P with the tilt ``theta`` (default 0) or the
         moment ``moment``: a :class:`~.state.RollingState`."""
+        Q = checked_value("Q", Q, None)          # a finite real number (1j, NaN, text: DomainError)
         mu_e, vals = self._split(values)
         normal = self.contact.contact_at(P, theta=theta, moment=moment, **vals)
         if normal.regime != "bounded":
@@ -102,6 +108,7 @@ class AsymmetricRolling:
 
     def creepage_curve(self, P, points: int = 41, theta=None, moment=None, **values):
         """(Q/(mu P), xi) at ``points`` stick half-widths (float64)."""
+        points = check_points(points, 2, "the creepage-force curve")
         mu_e, vals = self._split(values)
         normal = self.contact.contact_at(P, theta=theta, moment=moment, **vals)
         num = self._numbers(vals)

@@ -55,14 +55,15 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.conversion import rational, to_mpf
-from ...core.errors import BudgetExceeded, InadmissibleProfileError, ProfileError
+from ...core.errors import BudgetExceeded, DomainError, InadmissibleProfileError, ProfileError
+from ...core.ranges import check_points
 from ...core.precision import workdps
 from ...core.units import refuse_units
 from ...method.derivation import Derivation, fallback_step
 from ...method.rules import Step
 from ...method.verification import verify
 from ...numeric.functions import make_callable
-from ..base import ContactOn, Quantity
+from ..base import ContactOn, Quantity, checked_value
 from ..sampling import point_sampler
 from ..tangential import history as th
 from ..tangential.contact import MU_RANGE, TangentialLineContact
@@ -334,6 +335,9 @@ class RollingLineContact(ContactOn):
         (-0.2, 0.00024)
         """
         refuse_units({"Q": Q, **values}, "the rolling state", S.UNITS)
+        Q = checked_value("Q", Q, None)          # a finite real number (1j, NaN, text: DomainError)
+        if isinstance(Q, np.ndarray):
+            raise DomainError(f"Q = {Q!r}: one tangential force per state")
         with workdps(30):
             vals, law, A = th.numbers_at(self._t, values)
             mu = friction_at(self._t, vals)
@@ -377,7 +381,7 @@ class RollingLineContact(ContactOn):
                     extra = st.near_full_slip_digits(load, P)
                     with workdps(30 + extra):   # Q(u) flattens as Q -> mu P: Q itself to more digits
                         Qx = abs(to_mpf(sp.N(Qs, 40 + extra)))
-                        u = +st.solve_deficit(lambda uu: Ql(A, uu) - Qx, A)
+                        u = +st.solve_deficit(lambda uu: Ql(A, uu) - Qx, A, Qx / (mu * P))
                 tl = sp.lambdify((S.a, _u), ft.expr.xreplace({S.c_s: S.a - _u}).xreplace(vals), "mpmath")
                 xi = sign * mpmath.re(tl(A, u))
                 uf, cf, muf = float(u), float(A - u), float(mu)
@@ -404,6 +408,7 @@ class RollingLineContact(ContactOn):
         """The creepage-force curve (Q/(mu P), xi) at ``points`` stick
         half-widths from the whole contact (free rolling) to 0 (full slip),
         float64, without root finding (both are functions of c_s)."""
+        points = check_points(points, 2, "the creepage-force curve")
         with workdps(20):
             vals, law, A = th.numbers_at(self._t, values)
             mu, P = friction_at(self._t, vals), law.P(A)

@@ -12,6 +12,7 @@ import sympy as sp
 from ...core.errors import DomainError, GrossSlidingError, InadmissibleProfileError
 from ...core.precision import workdps
 from ...core.roots import root_in_bracket, root_in_log
+from ..base import checked_value
 
 #: points of the float64 admissibility grid over the contact
 CHECK_POINTS = 801
@@ -63,16 +64,16 @@ class RollingState:
 
     def normal_pressure(self, x):
         """p(x) of the normal contact (float64, 0 outside)."""
-        return self._normal(np.asarray(x, float))
+        return self._normal(points_of(x))
 
     def corrective(self, x):
         """mu p*(x): the corrective traction over the stick zone (float64, 0 outside)."""
-        return float(self.mu) * self._aux(np.asarray(x, float))
+        return float(self.mu) * self._aux(points_of(x))
 
     def traction(self, x):
         """q(x) = sign(Q) [mu p(x) - mu p*(x)] (float64): the shear traction on
         body 1, q > 0 for Q > 0; mu p in the slip zone."""
-        x = np.asarray(x, float)
+        x = points_of(x)
         return self.sign * (float(self.mu) * self.normal_pressure(x) - self.corrective(x))
 
     def plot(self, points: int = 401, ax=None, title=None):
@@ -82,6 +83,14 @@ class RollingState:
         x = np.linspace(float(self.left), float(self.right), points)
         return rolling_plots.traction(x, float(self.mu) * self.normal_pressure(x), self.traction(x),
                                       (float(self.s), float(self.right)), ax=ax, title=title)
+
+
+def points_of(x):
+    """Points x as a user gives them (a number, a list or an array): finite
+    real numbers as float64 (:func:`~linecontact_sym.contacts.base.checked_value`;
+    NaN, inf, complex, text: DomainError)."""
+    v = checked_value("x", np.asarray(x) if isinstance(x, (list, tuple)) else x, None)
+    return np.asarray(v if isinstance(v, np.ndarray) else float(v), float)
 
 
 def solve_stick(P_aux, right, a_n, load, dps=30, P_float=None):
@@ -130,16 +139,22 @@ def near_full_slip_digits(load, P) -> int:
     return max(0, int(-mpmath.log10(load / P) / 2)) + 2
 
 
-def solve_deficit(g, A):
+def solve_deficit(g, A, ratio=1):
     """The deficit u in (0, A] of the stick zone (its half-width c = A - u)
     where g(u) = Q(A, A - u) - |Q| changes sign (g(0+) < 0 < g(A)): solved
-    in ln u, so that a tiny deficit (free rolling) keeps its relative digits."""
+    in ln u, so that a tiny deficit (free rolling) keeps its relative digits.
+    ``ratio`` = |Q|/(mu P): the deficit is about A ratio/2 (Q is linear in u
+    at free rolling), so the bracket is sought down to A ratio 10^-dps; an
+    error, not its lower end, where none is found there."""
     hi = mpmath.mpf(A)
     lo = hi / 2
+    floor = hi * min(mpmath.mpf(ratio), 1) * mpmath.mpf(10)**(-mpmath.mp.dps)
     while g(lo) > 0:
         lo /= 2
-        if lo < hi * mpmath.mpf(10)**(-2 * mpmath.mp.dps):
-            return lo
+        if lo < floor:
+            raise InadmissibleProfileError(
+                f"no stick zone found at the leading edge: the tangential force of the stick zone stays above "
+                f"|Q| (|Q|/(mu P) = {mpmath.nstr(ratio, 5)}) down to a deficit a - c_s = {mpmath.nstr(lo, 5)}")
     if g(hi) < 0:
         raise InadmissibleProfileError("no stick zone found at the leading edge: the tangential force of the "
                                        "stick zone does not reach Q as the stick zone shrinks to nothing")
@@ -192,4 +207,4 @@ def number_of(v):
     return mpmath.mpf(sp.N(sp.sympify(v, strict=True), mpmath.mp.dps + 5)) if not isinstance(v, mpmath.mpf) else v
 
 
-__all__ = ["RollingState", "solve_stick", "solve_deficit", "check_admissible", "onset", "CHECK_POINTS"]
+__all__ = ["RollingState", "solve_stick", "solve_deficit", "check_admissible", "onset", "CHECK_POINTS", "points_of"]

@@ -176,14 +176,16 @@ class TangentialState:
 def numbers_at(t, values):
     """Keyword values -> (Symbol -> exact number) for the contact's variables,
     plus the half-width a (given, or from the normal load P)."""
+    from ..base import checked_value      # the one reading of a user's value: 1j, NaN, text refused
     by_name = {s.name: s for s in t.variables}
     vals = {}
     for k, v in values.items():
         if k in ("a", "P"):
+            checked_value(k, v, None)
             continue
         if k not in by_name:
             raise DomainError(f"unknown value {k!r}; expected {sorted(by_name)} and a or P")
-        vals[by_name[k]] = check_sign(by_name[k], to_sympy_number(v))     # R = -1 refused (core.ranges)
+        vals[by_name[k]] = check_sign(by_name[k], to_sympy_number(checked_value(k, v, by_name[k])))  # R = -1 refused
     missing = [s.name for s in t.variables if s not in vals]
     if missing:
         raise DomainError(f"values needed for {', '.join(missing)}")
