@@ -185,7 +185,7 @@ def numbers_at(t, values):
             continue
         if k not in by_name:
             raise DomainError(f"unknown value {k!r}; expected {sorted(by_name)} and a or P")
-        vals[by_name[k]] = check_sign(by_name[k], to_sympy_number(checked_value(k, v, by_name[k])))  # R = -1 refused
+        vals[by_name[k]] = check_sign(by_name[k], to_sympy_number(checked_value(k, v, None)))  # 1j, NaN, text; then R = -1 (core.ranges)
     missing = [s.name for s in t.variables if s not in vals]
     if missing:
         raise DomainError(f"values needed for {', '.join(missing)}")
