@@ -21,7 +21,7 @@ import sympy as sp
 from ...core import symbols as S
 from ...core.errors import DomainError, LineContactError
 from ...core.quadrature import relational_breakpoints
-from ...core.roots import Outside
+from ...core.roots import Outside, golden_minimum
 from ...parsing import to_sympy, user_value
 from ..base import checked_value
 from ..normal.equilibria import half_width_at
@@ -204,21 +204,9 @@ def scan_maximum(f, lo, hi, breaks, what, least=None):
     # refine the maximum on [grid[i-1], grid[i+1]]: golden section (a breakpoint there is a candidate)
     a_, b_ = grid[max(i - 1, 0)], grid[i + 1]
     cands = [g for g in (grid[i],) + tuple(b for b in breaks if a_ <= b <= b_)]
-    gr = (mpmath.sqrt(5) - 1) / 2
-    x1, x2 = b_ - gr * (b_ - a_), a_ + gr * (b_ - a_)
-    f1, f2 = f(x1), f(x2)
-    for _ in range(int(mpmath.mp.prec * 0.75)):
-        if f1 >= f2:
-            b_, x2, f2 = x2, x1, f1
-            x1 = b_ - gr * (b_ - a_)
-            f1 = f(x1)
-        else:
-            a_, x1, f1 = x1, x2, f2
-            x2 = a_ + gr * (b_ - a_)
-            f2 = f(x2)
-        if b_ - a_ < (abs(b_) + 1) * mpmath.mpf(2)**(-mpmath.mp.prec + 8):
-            break
-    cands.append((a_ + b_) / 2)
+    # the location to half the bits (all that values near a maximum fix): the value to all of them
+    tol = (b_ - a_) * mpmath.mpf(2)**(-(mpmath.mp.prec // 2))
+    cands.append(golden_minimum(lambda v: -f(v), a_, b_, tol=tol))
     return max(cands, key=f)
 
 
