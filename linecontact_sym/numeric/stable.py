@@ -31,6 +31,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import functools
+
 import sympy as sp
 
 from ..method.derivation import gammasimp_masked
@@ -190,6 +192,11 @@ class AcoshToAsinh(StableRule):
         return expr.replace(lambda e: isinstance(e, sp.acosh), do)
 
 
+#: the elementary functions a term may hold and still be compared with a target by value
+_ELEMENTARY = {sp.sin, sp.cos, sp.tan, sp.sinh, sp.cosh, sp.tanh, sp.exp, sp.log, sp.asin, sp.acos,
+               sp.atan, sp.asinh, sp.acosh, sp.atanh}
+
+
 class AsinhExcess(StableRule):
     """T - C asinh(u) = -C (u sqrt(1 + u^2) - asinh(u)) = -C asinh_excess(u) for a
     pair of terms of a sum with T = -C u sqrt(1 + u^2) (the ratio checked at random
@@ -213,12 +220,31 @@ class AsinhExcess(StableRule):
                         continue
                     u = h.args[0]
                     target = -C * u * sp.sqrt(1 + u**2)
+                    known = _ELEMENTARY | {type(f) for f in target.atoms(sp.Function)}
                     for j, tj in enumerate(terms):
-                        if j != i and _same_value(tj, target):
+                        # a term holding a function the target has not (an elliptic integral,
+                        # a Carlson R_J: its evalf is a quadrature) is not the target: not
+                        # evaluated at 24 points at 30 digits (the exact cylinder's tangential
+                        # slip spent minutes here)
+                        if j == i or {type(f) for f in tj.atoms(sp.Function)} - known:
+                            continue
+                        if _same_value(tj, target):
                             rest = [t for k, t in enumerate(terms) if k not in (i, j)]
                             return sp.Add(*rest, -C * asinh_excess(u))
             return e
         return expr.replace(lambda e: e.is_Add and e.has(sp.asinh), do)
+
+
+@functools.lru_cache(maxsize=4096)
+def _value_at(expr, point):
+    """expr at the point (pairs symbol, value) to 30 digits, as a complex; None
+    where SymPy cannot make it a number.  Remembered: the pair search of
+    :class:`AsinhExcess` compares every term of a sum with every target at the
+    same points."""
+    try:
+        return complex(sp.N(expr.xreplace(dict(point)), 30))
+    except (TypeError, ValueError):
+        return None
 
 
 def _same_value(p, q, tries: int = 24, agree: int = 2):
@@ -231,14 +257,16 @@ def _same_value(p, q, tries: int = 24, agree: int = 2):
     for _ in range(tries):
         vals = {s_: sp.Rational(rng.randint(5, 45), 100) for s_ in syms}
         vals = {s_: v * (1 + sp.Rational(k + 1, 7)) for k, (s_, v) in enumerate(vals.items())}
-        try:
-            pv, qv = complex(sp.N(p.xreplace(vals), 30)), complex(sp.N(q.xreplace(vals), 30))
-        except (TypeError, ValueError):
+        key = tuple(sorted(vals.items(), key=lambda kv: kv[0].name))
+        pv, qv = _value_at(p, key), _value_at(q, key)
+        if pv is None or qv is None:
             continue
         if pv.imag or qv.imag or qv == 0:
             continue
         if abs(pv / qv - 1) > 1e-12:
             misses += 1
+            if 2 * misses >= tries:          # hits > misses can no longer be reached
+                return False
         else:
             hits += 1
     return hits >= agree and hits > misses
