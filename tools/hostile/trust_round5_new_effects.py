@@ -25,55 +25,17 @@ from __future__ import annotations
 
 import argparse
 import math
-import signal
-import time
 
 import mpmath
 import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
+from round5_harness import refused, run_case  # tools/hostile/, beside this file
 
 x, a, t, E = lcs.x, lcs.a, lcs.t, lcs.E_star
 R = lcs.R
 NAN, INF = float("nan"), float("inf")
-
-
-class Hang(Exception):
-    pass
-
-
-def _alarm(signum, frame):
-    raise Hang()
-
-
-def run_case(fn, limit):
-    """(ok, why, seconds): fn() returns (ok, why); a hang past ``limit`` s or a foreign exception is not ok."""
-    signal.signal(signal.SIGALRM, _alarm)
-    signal.alarm(int(limit))
-    t0 = time.perf_counter()
-    try:
-        ok, why = fn()
-    except Hang:
-        ok, why = False, f"no answer within {limit} s"
-    except LineContactError as exc:
-        ok, why = False, f"refused where an answer exists: {type(exc).__name__}: {str(exc)[:140]}"
-    except Exception as exc:  # noqa: BLE001 -- the point of the sweep
-        ok, why = False, f"foreign {type(exc).__name__}: {str(exc)[:140]}"
-    finally:
-        signal.alarm(0)
-    return ok, why, time.perf_counter() - t0
-
-
-def refused(fn):
-    """A case whose right answer is a package error."""
-    def case():
-        try:
-            r = fn()
-        except LineContactError as exc:
-            return True, f"refused ({type(exc).__name__})"
-        return False, f"accepted (an answer where none holds): {str(r)[:100]}"
-    return case
 
 
 def close(got, ref, rtol=1e-8, what="value"):

@@ -19,8 +19,6 @@ enclosures, periodic.  About 3-6 minutes on a loaded 2-core machine.
 from __future__ import annotations
 
 import argparse
-import signal
-import time
 
 import mpmath
 import numpy as np
@@ -28,47 +26,11 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
+from round5_harness import refused, run_case  # tools/hostile/, beside this file
 
 x, a, E = lcs.x, lcs.a, lcs.E_star
 h, L, R, th = sp.symbols("h L R theta", positive=True)
 EPS = 2.0**-52
-
-
-class Hang(Exception):
-    pass
-
-
-def _alarm(signum, frame):
-    raise Hang()
-
-
-def run_case(fn, limit):
-    """(ok, why): fn() returns (ok, why); a hang past ``limit`` s or a foreign exception is not ok."""
-    signal.signal(signal.SIGALRM, _alarm)
-    signal.alarm(int(limit))
-    t0 = time.perf_counter()
-    try:
-        ok, why = fn()
-    except Hang:
-        ok, why = False, f"no answer within {limit} s"
-    except LineContactError as exc:
-        ok, why = False, f"refused: {type(exc).__name__}: {str(exc)[:120]}"
-    except Exception as exc:  # noqa: BLE001 -- the point of the sweep
-        ok, why = False, f"foreign {type(exc).__name__}: {str(exc)[:120]}"
-    finally:
-        signal.alarm(0)
-    return ok, why, time.perf_counter() - t0
-
-
-def refused(fn):
-    """A case whose right answer is a package error."""
-    def case():
-        try:
-            fn()
-        except LineContactError as exc:
-            return True, f"refused ({type(exc).__name__})"
-        return False, "accepted (an answer where none holds)"
-    return case
 
 
 def agree(u, v):
