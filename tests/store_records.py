@@ -5,6 +5,8 @@ reading can catch the change (tests of method/store.py's trust rules)."""
 import hashlib
 import json
 
+import pytest
+
 from linecontact_sym.method import store
 
 
@@ -24,3 +26,14 @@ def rewrite_derivations(d, fn):
                 payload = json.dumps(data, separators=(",", ":")).encode()
                 p.write_bytes(store._MAGIC + hashlib.sha256(payload).hexdigest().encode() + b"\n" + payload)
     return n
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    """An empty derivation cache of its own for the test (0700, the store's rule)."""
+    d = tmp_path / "cache"
+    d.mkdir(mode=0o700)
+    monkeypatch.setenv(store.CACHE_ENV, str(d))
+    store.clear_memory()
+    yield d
+    store.clear_memory()

@@ -21,7 +21,7 @@ import pytest
 import sympy as sp
 
 import linecontact_sym as lcs
-from store_records import rewrite_derivations
+from store_records import cache, rewrite_derivations  # noqa: F401 (cache: a fixture)
 from linecontact_sym.method import store
 
 x = lcs.x
@@ -106,16 +106,6 @@ def test_item7_the_key_covers_every_source_file(monkeypatch):
               "numeric/exports.py", "parsing/expressions.py", "method/transforms.py"):
         assert any(r.endswith("linecontact_sym/" + f) for r in read), f
     monkeypatch.setitem(store._state, "version", None)
-
-
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    d = tmp_path / "cache"
-    d.mkdir(mode=0o700)
-    monkeypatch.setenv(store.CACHE_ENV, str(d))
-    store.clear_memory()
-    yield d
-    store.clear_memory()
 
 
 def _rewrite(d, field, fn):

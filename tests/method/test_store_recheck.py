@@ -12,19 +12,9 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.method import store
-from store_records import rewrite_derivations
+from store_records import cache, rewrite_derivations  # noqa: F401 (cache: a fixture)
 
 h, L = sp.symbols("h L", positive=True)
-
-
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    d = tmp_path / "cache"
-    d.mkdir(mode=0o700)
-    monkeypatch.setenv(store.CACHE_ENV, str(d))
-    store.clear_memory()
-    yield d
-    store.clear_memory()
 
 
 def _sinusoid():
