@@ -41,6 +41,17 @@ def test_module_entry_point_runs():
     assert "pi/2" in proc.stdout
 
 
+def test_importing_the_main_module_runs_nothing(monkeypatch):
+    """Sphinx's autosummary imports every module to list it: an import of
+    linecontact_sym.__main__ that ran the CLI parsed the build's arguments
+    and ended the docs build in CI."""
+    import importlib
+    monkeypatch.setattr(sys, "argv", ["sphinx", "-q", "-E", "-b", "html"])
+    sys.modules.pop("linecontact_sym.__main__", None)
+    module = importlib.import_module("linecontact_sym.__main__")
+    assert callable(module.main)
+
+
 def test_entry_point_is_declared():
     text = (ROOT / "pyproject.toml").read_text()
     assert 'linecontact-sym = "linecontact_sym.cli:main"' in text
