@@ -362,6 +362,8 @@ def test_rolling_mode_of_derive_and_eval(capsys):
     assert code == 0
     got = json.loads(out)["quantities"]
     assert got["rolling.creepage"]["expr"] == "mu*(a - c_s)/R"
+    assert json.loads(out)["coupling"].startswith("beta = 0 assumed (elastically similar bodies)")
+    assert got["rolling.creepage"]["notes"][0] == json.loads(out)["coupling"]
     code, out, _ = run(capsys, "eval", "x**2/(2*R)", "rolling.creepage", "--at", "c_s=0.6", "--set", "a=1", "R=500",
                        "E_star=113888.9", "mu=0.3", "--json")
     assert code == 0 and float(json.loads(out)["rows"][0]["value"]) == pytest.approx(2.4e-4, rel=1e-25)

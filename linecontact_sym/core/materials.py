@@ -52,8 +52,8 @@ COUPLING_KEYWORDS = {
             "size of the neglected coupling, |beta| mu",
     "materials": "((E1, nu1), (E2, nu2)): the two bodies' Young's moduli (oo: a rigid body) and Poisson's "
                  "ratios, numbers, E in the unit of E_star; beta = dundurs_beta(E1, nu1, E2, nu2), and "
-                 "E* = reduced_modulus(E1, nu1, E2, nu2) fills E_star where a state is asked without it (an "
-                 "E_star that differs from it by more than 1e-9 relative is refused)",
+                 "E* = reduced_modulus(E1, nu1, E2, nu2) fills E_star where a state or a number is asked "
+                 "without it (an E_star that differs from it by more than 1e-9 relative is refused)",
 }
 
 #: The statement of a frictional result made without beta or materials.

@@ -343,6 +343,8 @@ def test_materials_state_the_neglected_coupling_once_and_change_no_number(cylind
     assert t.tangential_force == plain.tangential_force
     assert t.evaluate_at("tangential_force", a=1e-3, c_s=5e-4, R=0.01) == \
         plain.evaluate_at("tangential_force", a=1e-3, c_s=5e-4, R=0.01, E_star=t.coupling.E_star)
+    assert t.to_numeric("tangential_force", R=0.01)(a=1e-3, c_s=5e-4) == \
+        plain.to_numeric("tangential_force", R=0.01, E_star=float(t.coupling.E_star))(a=1e-3, c_s=5e-4)
 
 
 def test_a_contradicting_E_star_is_refused(cylinder_mu04):

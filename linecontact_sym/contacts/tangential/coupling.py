@@ -35,7 +35,9 @@ def read_coupling(friction, beta=None, materials=None, warn: bool = True) -> Cou
 class FrictionalCoupling:
     """Mixin of the frictional contacts (``self.coupling``, ``self.mu``):
     every derivation carries the coupling note first among its notes, and
-    numbers asked without E_star take the materials' E*."""
+    numbers asked without E_star (``evaluate``, ``evaluate_at``, the
+    parameters fixed by ``to_numeric``) take the materials' E*; an E_star
+    that contradicts them is refused."""
 
     coupling: Coupling = Coupling()
 
@@ -74,6 +76,9 @@ class FrictionalCoupling:
 
     def evaluate_at(self, quantity: str, dps: int = 30, **values):
         return super().evaluate_at(quantity, dps, **self._with_materials(quantity, values))
+
+    def to_numeric(self, quantity: str, backend: str = "numpy", dps: int = 30, check: bool = True, **params):
+        return super().to_numeric(quantity, backend, dps, check, **self._with_materials(quantity, params))
 
     def evaluate(self, quantity: str, rtol=None, certified: bool = False, dps=None, **values):
         return super().evaluate(quantity, rtol=rtol, certified=certified, dps=dps,
