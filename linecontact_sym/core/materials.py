@@ -33,6 +33,7 @@ Values may be numbers (checked: E > 0 or oo, -1 < nu <= 1/2, via
 from __future__ import annotations
 
 import warnings
+from dataclasses import dataclass
 
 import sympy as sp
 
@@ -181,33 +182,16 @@ def _material_pair(materials):
     return out
 
 
+@dataclass(frozen=True)
 class Coupling:
     """The two bodies as a frictional layer takes them (read by
     :func:`coupling` from the keywords of :data:`COUPLING_KEYWORDS`):
     ``beta`` (None: not given, 0 assumed), ``E_star`` (the materials' E*,
-    None without materials), ``materials`` (the four numbers or None)."""
+    None without materials), ``materials`` (E1, nu1, E2, nu2, or None)."""
 
-    __slots__ = ("beta", "E_star", "materials")
-
-    def __init__(self, beta=None, E_star=None, materials=None):
-        self.beta, self.E_star, self.materials = beta, E_star, materials
-
-    def __repr__(self):
-        if self.materials is not None:
-            return f"Coupling(materials={self.materials}, beta={self.beta}, E_star={self.E_star})"
-        return f"Coupling(beta={self.beta})"
-
-    def __eq__(self, other):
-        return isinstance(other, Coupling) and (self.beta, self.E_star) == (other.beta, other.E_star)
-
-    def __hash__(self):
-        return hash((self.beta, self.E_star))
-
-    def __getstate__(self):
-        return (self.beta, self.E_star, self.materials)
-
-    def __setstate__(self, state):
-        self.beta, self.E_star, self.materials = state
+    beta: sp.Expr | None = None
+    E_star: sp.Expr | None = None
+    materials: tuple | None = None
 
     @property
     def given(self) -> bool:
