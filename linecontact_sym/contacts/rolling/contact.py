@@ -71,7 +71,6 @@ from ..sampling import point_sampler
 from ..tangential import history as th
 from ..tangential.contact import MU_RANGE, TangentialLineContact
 from ..tangential.coupling import FrictionalCoupling
-from ..tangential.history import coupling_at
 from ..tangential.states import friction_at, tidy_root
 from . import state as st
 from .interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_profile, whole_line_slope
@@ -360,7 +359,7 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
             normal, aux, _, fclosed = self._float_parts(vals)
             Af, cf, ef = float(A), float(c), float(u)
             state = st.RollingState(Qm, P, mu, -A, A, A - 2 * c, c, xi, closed and fclosed, note=note,
-                                    coupling=coupling_at(self._t, vals),
+                                    coupling=th.coupling_at(self._t, vals),
                                     _normal=lambda x: normal(x, Af), _aux=lambda x: aux(x, ef, cf))
         if _check and c > 0 and Qm != 0:
             st.check_admissible(state, lambda x: num.J(x, ef, cf), lambda x: normal(x, Af),
