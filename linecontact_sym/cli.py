@@ -172,6 +172,63 @@ def _material(args):
     return getattr(M, name.strip())(**{k.name: v for k, v in vals.items()})
 
 
+#: the contact kinds whose results neglect the two bodies' coupling (--beta, --materials)
+FRICTIONAL_KINDS = ("tangential", "rolling")
+
+
+def _bodies(args) -> dict:
+    """The keywords ``beta`` / ``materials`` of ``--beta B`` and
+    ``--materials E1,nu1,E2,nu2`` (oo: a rigid body) for the frictional
+    layers ({} without either); read by
+    :func:`linecontact_sym.core.materials.coupling`."""
+    import sympy as sp
+    from .core.conversion import plain_number
+    from .core.materials import coupling
+    beta, mats = getattr(args, "beta", None), getattr(args, "materials", None)
+    out = {}
+    if beta is not None:
+        b = plain_number(beta)
+        if b is None:
+            raise LineContactError(f"--beta {beta!r}: a number in [-1/2, 1/2] (e.g. -0.2 or -2/7)")
+        out["beta"] = b
+    if mats is not None:
+        parts = [t.strip() for t in mats.split(",")]
+        nums = [sp.oo if t.lower() in ("oo", "inf", "rigid") else plain_number(t) for t in parts]
+        if len(parts) != 4 or any(v is None for v in nums):
+            raise LineContactError(f"--materials {mats!r}: four numbers E1,nu1,E2,nu2 (E = oo: a rigid body), "
+                                   f"e.g. 210e9,0.3,70e9,0.33")
+        out["materials"] = ((nums[0], nums[1]), (nums[2], nums[3]))
+    if out:
+        coupling(**out)            # checked here: a wrong beta, materials or a contradiction is a clear error
+    return out
+
+
+def _frictional(kind, c, bodies):
+    """The frictional contact of ``kind`` on ``c`` with the two bodies; its
+    DomainWarning (beta != 0) not repeated on stderr: the output states the
+    coupling (:func:`_coupling_line`)."""
+    import warnings
+    from .contacts.base import contact_kind
+    from .core.errors import DomainWarning
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DomainWarning)
+        return contact_kind(kind).from_frictionless(c, **bodies)
+
+
+def _coupling_line(contact, fixed=None) -> str:
+    """The statement of a frictional result on the command line (at the
+    friction coefficient of ``fixed`` where it gives one)."""
+    return f"coupling: {_coupling_note(contact, fixed)}"
+
+
+def _coupling_note(contact, fixed=None):
+    mu = (fixed or {}).get("mu")
+    if mu is not None and not contact.mu.is_number:
+        from .parsing import user_value
+        return contact.coupling.note(contact.mu.xreplace({S.mu: user_value(mu)}))
+    return contact.coupling_note
+
+
 def _history(args, which):
     """The --history (a(t)) or --load (P(t)) expression in t."""
     text = getattr(args, which, None)
@@ -318,10 +375,15 @@ def cmd_derive(args):
         registry = type(ad).quantities()
         todo += [((registry[q].aliases or (q,))[0], ad, q) for q in adhesive   # only as asked (issue 22);
                  if q in quantities or args.quantities is None]     # by default all five, the pull-off P_min too
+    bodies = _bodies(args)
+    if bodies and not getattr(args, "rolling", False):
+        raise LineContactError("--beta/--materials describe the two bodies of a frictional contact: use them "
+                               "with --rolling")
+    rolling = None
     if getattr(args, "rolling", False):   # steady rolling with traction (Carter for this profile)
-        from .contacts.base import contact_kind
-        rolling = contact_kind("rolling").from_frictionless(c)
+        rolling = _frictional("rolling", c, bodies)
         todo += [(f"rolling.{q}", rolling, q) for q in ("tangential_force", "creepage", "stick_half_width")]
+        out["coupling"] = str(rolling.coupling_note)
     bar = Progress(len(todo), "deriving", enabled=not args.quiet, min_total=2)
     for key, contact, q in todo:
         bar.start(key)
@@ -338,7 +400,7 @@ def cmd_derive(args):
     bar.close()
     if args.json:
         args.format = "json"
-    if args.format == "json":
+    if args.format == "json":      # the rolling derivations carry the coupling note first among their notes
         _emit_json({**out, "quantities": {k: (_derivation_dict(v) if not isinstance(v, Exception)
                                               else {"error": str(v)}) for k, v in out["quantities"].items()}})
     elif args.format == "latex":
@@ -357,6 +419,9 @@ def cmd_derive(args):
             print()
             print(f"[{k}]")
             print(str(v) if not isinstance(v, Exception) else f"error: {v}")
+        if rolling is not None:
+            print()
+            print(_coupling_line(rolling))
     return EXIT_OK
 
 
@@ -454,13 +519,21 @@ def cmd_eval(args):
                                f"{MAX_EVAL_POINTS} per call")
     names = list(grids)
     fixed = {k.name: v for k, v in values.items()}
+    bodies = _bodies(args)
+    frictional = None              # the frictional contact whose results neglect the bodies' coupling (said)
+    if not state and mat is None and q not in own and _registry()[q][0] in FRICTIONAL_KINDS:
+        frictional = _frictional(_registry()[q][0], c, bodies)
+    elif bodies:
+        raise LineContactError("--beta/--materials describe the two bodies of a frictional contact: use them "
+                               "with a tangential.* or rolling.* quantity")
     rows = []
     for combo in itertools.product(*[grids[nm] for nm in names]):
         point = dict(zip(names, combo))
         allv = {**fixed, **point}
         try:
             v = (_eval_state(c, q, allv, args) if state else
-                 _eval_one(c, q, allv, args.dps) if mat is None else _viscoelastic_eval(c, q, mat, args, allv))
+                 _eval_one(c, q, allv, args.dps, frictional) if mat is None else
+                 _viscoelastic_eval(c, q, mat, args, allv))
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": mpmath.nstr(v, args.dps)})
         except LineContactError as exc:
             rows.append({**{k: str(vv) for k, vv in point.items()}, "value": None, "error": str(exc)})
@@ -468,7 +541,8 @@ def cmd_eval(args):
             _err(f"{q}{' at ' + at if at else ''}: {_cli_hint(str(exc))}")   # on stderr too, not only in the table
     if args.json:
         _emit_json({"profile": str(prof), "quantity": q, "set": {k: str(v) for k, v in fixed.items()},
-                    "dps": args.dps, "rows": rows})
+                    "dps": args.dps, "rows": rows,
+                    **({"coupling": str(_coupling_note(frictional, fixed))} if frictional is not None else {})})
     else:
         head = "  ".join(f"{n:>12}" for n in names) + f"  {q}"
         if _has_unit(list(args.set or []) + list(args.at or [])):
@@ -478,6 +552,8 @@ def cmd_eval(args):
         print(head)
         for r in rows:
             print("  ".join(f"{r[n]:>12}" for n in names) + "  " + (r["value"] or f"error: {r['error']}"))
+        if frictional is not None:
+            print(_coupling_line(frictional, fixed))
     return EXIT_OK if all(r.get("value") is not None for r in rows) else EXIT_INPUT
 
 
@@ -493,7 +569,7 @@ def _own_quantities(c) -> dict:
     return out
 
 
-def _eval_one(c, q, values, dps):
+def _eval_one(c, q, values, dps, frictional=None):
     from .contacts.base import contact_kind
     own = _own_quantities(c)
     if q in own:                       # the contact's own quantity, on the contact itself
@@ -501,7 +577,7 @@ def _eval_one(c, q, values, dps):
         quantity = type(c).quantities()[name]
     else:
         kind, name, quantity = _registry()[q]
-        contact = contact_kind(kind).from_frictionless(c)
+        contact = frictional if frictional is not None else contact_kind(kind).from_frictionless(c)
     if quantity.method:  # a(P), c_s(Q): the load is the last argument, passed first
         load_name = quantity.arguments[-1]
         if load_name not in values:
@@ -616,6 +692,17 @@ def cmd_check(args):
 
 
 # ------------------------------------------------------------------ parser
+def bodies_options(sp_):
+    """--beta, --materials (derive --rolling; eval of tangential.* and rolling.*): the keywords of
+    :data:`linecontact_sym.core.materials.COUPLING_KEYWORDS`."""
+    from .core.materials import COUPLING_KEYWORDS
+    sp_.add_argument("--beta", default=None, metavar="B", help="with tangential/rolling results: "
+                     + COUPLING_KEYWORDS["beta"] + " (without --beta or --materials: beta = 0 assumed, said)")
+    sp_.add_argument("--materials", default=None, metavar="E1,nu1,E2,nu2", help="with tangential/rolling "
+                     "results, the two elastic bodies (oo: rigid; not --material, the viscoelastic one): "
+                     + COUPLING_KEYWORDS["materials"].split(": ", 1)[1])
+
+
 def viscoelastic_options(sp_):
     """--material, --relaxation, --history, --load (derive and eval)."""
     sp_.add_argument("--material", metavar="NAME:K=V,...", help="a viscoelastic half-plane: "
@@ -682,6 +769,7 @@ def build_parser() -> argparse.ArgumentParser:
     pd.add_argument("--rolling", action="store_true", help="also steady rolling with traction (rolling in +x, "
                     "the stick zone [a - 2 c_s, a] at the leading edge): the tangential force Q(a, c_s), the "
                     "creepage xi(a, c_s) and the stick half-width c_s(Q) (Carter for the cylinder)")
+    bodies_options(pd)
     viscoelastic_options(pd)
     pd.add_argument("--law", default=None, help="the cohesive law of --adhesion (registered: jkr, maugis_dugdale; "
                     "default jkr); naming one implies --adhesion")
@@ -710,6 +798,7 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE", help="fixed values, e.g. R=1 E_star=1")
     pe.add_argument("--symbols", nargs="+", action="extend", metavar="NAME", help=sym_help)
     pe.add_argument("--dps", type=_dps, default=30, help="significant digits, 1 to 1000 (default 30)")
+    bodies_options(pe)
     viscoelastic_options(pe)
     pe.add_argument("--period", default=None, metavar="L", help="a periodic array of period L (the profile given "
                     "on 0 <= x <= L/2; L a number or a symbol given by --set)")

@@ -362,6 +362,8 @@ def test_rolling_mode_of_derive_and_eval(capsys):
     assert code == 0
     got = json.loads(out)["quantities"]
     assert got["rolling.creepage"]["expr"] == "mu*(a - c_s)/R"
+    assert json.loads(out)["coupling"].startswith("beta = 0 assumed (elastically similar bodies)")
+    assert got["rolling.creepage"]["notes"][0] == json.loads(out)["coupling"]
     code, out, _ = run(capsys, "eval", "x**2/(2*R)", "rolling.creepage", "--at", "c_s=0.6", "--set", "a=1", "R=500",
                        "E_star=113888.9", "mu=0.3", "--json")
     assert code == 0 and float(json.loads(out)["rows"][0]["value"]) == pytest.approx(2.4e-4, rel=1e-25)
@@ -530,3 +532,25 @@ def test_derive_adhesion_prints_the_wedges_pull_off(capsys):
     q = json.loads(out)["quantities"]
     assert code == 0 and q["pull_off_force"]["expr"] == "-pi*gamma/(2*tan(theta))"
     assert q["adhesion_force"]["expr"] == "pi*gamma/(2*tan(theta))"
+
+
+def test_tangential_and_rolling_output_states_the_coupling(capsys):
+    """eval of a tangential quantity prints the coupling (beta = 0 assumed; with
+    --materials the size |beta| mu at the --set mu, E_star filled from the
+    materials); derive --rolling ends with it; --beta beside a frictionless
+    quantity is refused."""
+    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "tangential.tangential_force", "--at", "c_s=0.5",
+                       "--set", "a=1", "R=1", "mu=0.3", "E_star=1")
+    assert code == 0 and "coupling: beta = 0 assumed (elastically similar bodies)" in out
+    code, out, err = run(capsys, "eval", "x**2/(2*R)", "tangential.tangential_force", "--at", "c_s=0.5",
+                         "--set", "a=1", "R=1", "mu=0.3", "--materials", "oo,0,0.91,0.3", "--json")
+    got = json.loads(out)
+    # a rigid cylinder on nu = 0.3: E* = 0.91/(1 - 0.09) = 1, |beta| = 0.4/1.4 = 2/7; Q = 0.3 pi (1 - 1/4)/4
+    assert code == 0 and float(got["rows"][0]["value"]) == pytest.approx(0.3 * mpmath.pi * 0.75 / 4, rel=1e-25)
+    assert "|beta| mu = 0.0857" in got["coupling"] and "Warning" not in err
+    code, out, _ = run(capsys, "eval", "x**2/(2*R)", "tangential.tangential_force", "--at", "c_s=0.5",
+                       "--set", "a=1", "R=1", "mu=0.3", "E_star=2", "--materials", "oo,0,0.91,0.3")
+    assert code == 2 and "contradicts the materials" in out
+    code, _, err = run(capsys, "eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1",
+                       "--beta", "0.1")
+    assert code == 2 and "frictional" in err

@@ -215,3 +215,62 @@ def test_rounded_punch_against_the_bem():
                     b=0.3)
     assert not st.closed and float(st.P) == pytest.approx(P, rel=3e-5)
     compare(st, sol, xi, s_tol=2e-3, xi_tol=1e-4)
+
+
+# ---------------------------------------------------------------- the two bodies (issue 39, item 4)
+def test_rolling_states_the_coupling_and_keeps_its_numbers():
+    """carter2d (mu = 0.3, c_s = 0.6): without the bodies the state says
+    "beta = 0 assumed"; with beta = -2/7 (a rigid roller on nu = 0.3:
+    -(1 - 2 nu)/(2 (1 - nu)) by hand) one DomainWarning for the contact,
+    the note |beta| mu = 0.3 * 2/7 on every state and derivation, and the
+    same numbers."""
+    import warnings
+    from linecontact_sym.core.errors import DomainWarning
+    c = lcs.parabola(verify=False)
+    kw = dict(a=1, E_star=113888.9, R=500)
+    Q = 0.64 * 0.3 * 178.8962657827113
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        plain = c.rolling(0.3)
+        s0 = plain.state_at(Q=Q, **kw)
+    assert s0.coupling.startswith("beta = 0 assumed (elastically similar bodies)") and "beta = 0 assumed" in repr(s0)
+    nu = 0.3
+    beta = -(1 - 2 * nu) / (2 * (1 - nu))
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        r = c.rolling(0.3, beta=beta)
+        states = [r.state_at(Q=q, **kw) for q in (Q, Q / 2, -Q)]
+        curve = r.creepage_curve(points=5, **kw)
+    assert len([w for w in seen if issubclass(w.category, DomainWarning)]) == 1
+    for st in states:
+        assert float(st.coupling.size) == pytest.approx(abs(beta) * 0.3, rel=1e-14) and "0.0857" in repr(st)
+    assert r.derivation("creepage").notes[0] == r.coupling_note and "beta=" in repr(r)
+    s1 = states[0]
+    assert (s1.c_s, s1.s, s1.creepage, s1.P) == (s0.c_s, s0.s, s0.creepage, s0.P)
+    xs = np.linspace(-1, 1, 11)
+    assert np.array_equal(s1.traction(xs), s0.traction(xs))
+    assert all(np.array_equal(u, v) for u, v in zip(curve, plain.creepage_curve(points=5, **kw)))
+    assert r.creepage == plain.creepage
+
+
+def test_asymmetric_rolling_takes_the_materials():
+    """The tilted parabola (Hertz shifted by R theta) rolling with a rigid
+    roller on an incompressible body (beta = 0 exactly: no warning) and on
+    nu = 0.25 (E* = E/(1 - nu^2) filled from the materials, by hand)."""
+    import warnings
+    from linecontact_sym.core.errors import DomainError, DomainWarning
+    R = sp.Symbol("R", positive=True)
+    c = lcs.LineContact(lcs.x_real**2 / (2 * R), symmetric=False, verify=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r0 = c.rolling(0.3, materials=((float("inf"), 0), (0.75, 0.5)))      # E* = 0.75/(1 - 1/4) = 1
+        st0 = r0.state_at(Q=0.64 * 0.3 * np.pi / 4, P=np.pi / 4, theta=0.2, R=1)
+    assert "uncouple exactly" in st0.coupling and st0.coupling.size == 0
+    assert float(st0.creepage) == pytest.approx(0.3 * 0.4, rel=1e-14)          # Carter at E* = 1 (as above)
+    with pytest.warns(DomainWarning, match="neglected"):
+        r1 = c.rolling(0.3, materials=((float("inf"), 0), (0.9375, 0.25)))   # E* = 0.9375/(1 - 1/16) = 1
+    st1 = r1.state_at(Q=0.64 * 0.3 * np.pi / 4, P=np.pi / 4, theta=0.2, R=1)
+    assert float(st1.coupling.size) == pytest.approx(0.3 * 0.5 / 1.5, rel=1e-14)   # (1 - 2 nu)/(2 (1 - nu)) mu
+    assert (st1.s, st1.creepage) == (st0.s, st0.creepage)
+    with pytest.raises(DomainError, match="contradicts the materials"):
+        r1.state_at(Q=0.1, P=np.pi / 4, theta=0.2, R=1, E_star=2)

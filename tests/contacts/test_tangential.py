@@ -268,3 +268,96 @@ def test_claims_file_holds():
     result = check_paper(paper, budget=20, only=only)
     assert [r.status for r in result.results] == ["holds"] * 3
     assert min(r.digits for r in result.results) >= 30
+
+
+# ---------------------------------------------------------------- the two bodies (issue 39, item 4)
+STEEL, ALUMINIUM = (210e9, 0.3), (70e9, 0.33)
+
+
+def _domain_warnings(seen):
+    from linecontact_sym.core.errors import DomainWarning
+    return [w for w in seen if issubclass(w.category, DomainWarning)]
+
+
+@pytest.fixture(scope="module")
+def cylinder_mu04():
+    """The cylinder and its tangential contact at mu = 0.4 without the bodies
+    (its derivations shared by the tests below)."""
+    import warnings
+    c = lcs.parabola(verify=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")          # no warning without the bodies
+        return c, c.tangential(0.4)
+
+
+def test_every_tangential_result_states_the_coupling(cylinder_mu04):
+    """Without the bodies: "beta = 0 assumed" on the state, the unloading
+    state, the fretting cycle, the derivations and the repr; no warning."""
+    import warnings
+    _, t = cylinder_mu04
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        st = t.state(0.1, E_star=1, R=1, a=0.8)
+        un = t.unload(0.1, -0.05, E_star=1, R=1, a=0.8)
+        cy = t.cycle(0.1, points=5, E_star=1, R=1, a=0.8)
+    for r in (st, un, cy):
+        assert r.coupling.startswith("beta = 0 assumed (elastically similar bodies)") and r.coupling.size == 0
+    assert "beta = 0 assumed" in repr(st) and "beta = 0 assumed" in repr(cy)
+    assert t.derivation("tangential_force").notes[0] == t.coupling_note
+    assert "Dundurs" in t.derivation("tangential_force").notes[-1]           # the conditions stay last
+
+
+def test_materials_state_the_neglected_coupling_once_and_change_no_number(cylinder_mu04):
+    """Steel on aluminium: one DomainWarning per contact (not per state), the
+    note's |beta| mu on every result (beta by hand from Dundurs' shear moduli
+    and kappa = 3 - 4 nu), E_star filled from the materials (E* by hand), and
+    the numbers of every state identical to those made without the bodies."""
+    import warnings
+    nu1, nu2 = STEEL[1], ALUMINIUM[1]
+    G1, G2 = STEEL[0] / (2 * (1 + nu1)), ALUMINIUM[0] / (2 * (1 + nu2))
+    k1, k2 = 3 - 4 * nu1, 3 - 4 * nu2
+    beta = (G2 * (k1 - 1) - G1 * (k2 - 1)) / (G2 * (k1 + 1) + G1 * (k2 + 1))
+    E_hand = 1 / ((1 - nu1**2) / STEEL[0] + (1 - nu2**2) / ALUMINIUM[0])
+    c, plain = cylinder_mu04
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        t = c.tangential(0.4, materials=(STEEL, ALUMINIUM))
+        st = t.state(1e6, R=0.01, a=1e-3)                       # E_star from the materials
+        un = t.unload(1e6, 5e5, R=0.01, a=1e-3)
+        cy = t.cycle(1e6, points=5, R=0.01, a=1e-3)
+    assert len(_domain_warnings(seen)) == 1
+    assert "materials=((210000000000, 3/10), (70000000000, 33/100))" in repr(t)
+    for r in (st, un, cy):
+        assert float(r.coupling.size) == pytest.approx(abs(beta) * 0.4, rel=1e-13)
+        assert "neglected" in r.coupling and f"{abs(beta) * 0.4:.3g}" in r.coupling
+    assert "0.0467" in repr(st)
+    # the same numbers as the contact without the bodies at E_star = E* (by hand)
+    st0 = plain.state(1e6, E_star=E_hand, R=0.01, a=1e-3)
+    assert float(st.P) == pytest.approx(float(st0.P), rel=1e-14) and float(st.c) == pytest.approx(float(st0.c), rel=1e-14)
+    st1 = plain.state(1e6, E_star=t.coupling.E_star, R=0.01, a=1e-3)   # at the same E*: identical
+    xs = np.linspace(-1e-3, 1e-3, 9)
+    assert (st.P, st.c, st.a, st.mu) == (st1.P, st1.c, st1.a, st1.mu)
+    assert np.array_equal(st.traction(xs), st1.traction(xs))
+    cy1 = plain.cycle(1e6, points=5, E_star=t.coupling.E_star, R=0.01, a=1e-3)
+    assert cy.W == cy1.W and np.array_equal(cy.delta, cy1.delta)
+    assert t.tangential_force == plain.tangential_force
+    assert t.evaluate_at("tangential_force", a=1e-3, c_s=5e-4, R=0.01) == \
+        plain.evaluate_at("tangential_force", a=1e-3, c_s=5e-4, R=0.01, E_star=t.coupling.E_star)
+    assert t.to_numeric("tangential_force", R=0.01)(a=1e-3, c_s=5e-4) == \
+        plain.to_numeric("tangential_force", R=0.01, E_star=float(t.coupling.E_star))(a=1e-3, c_s=5e-4)
+
+
+def test_a_contradicting_E_star_is_refused(cylinder_mu04):
+    c, _ = cylinder_mu04
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        t = c.tangential(0.4, materials=(STEEL, ALUMINIUM))
+    with pytest.raises(DomainError, match="contradicts the materials.*58605"):
+        t.state(2e6, E_star=210e9, R=0.01, a=1e-3)
+    with pytest.raises(DomainError, match="contradicts the materials"):
+        t.evaluate_at("tangential_force", a=1e-3, c_s=5e-4, R=0.01, E_star=1)
+    with pytest.raises(DomainError, match="contradicts the materials"):
+        c.tangential(0.4, beta=0, materials=(STEEL, ALUMINIUM))
+    with pytest.raises(DomainError, match=r"\[-1/2, 1/2\]"):
+        c.tangential(0.4, beta=-0.6)

@@ -100,7 +100,7 @@ class AdhesiveContact(ContactOn):
         from ..viscoelastic.contact import ViscoelasticLineContact
         return ViscoelasticLineContact(self, material)
 
-    def rolling(self, friction=None):
+    def rolling(self, friction=None, **bodies):
         """Refused: steady rolling with adhesion is outside the model (Carter's
         reduction needs the frictionless, non-adhesive pressure)."""
         raise DomainError("rolling with adhesion is outside the model: steady rolling (Carter's reduction) is "

@@ -436,12 +436,14 @@ class AsymmetricLineContact:
     def params(self):
         return self.core.params
 
-    def rolling(self, friction=S.mu):
+    def rolling(self, friction=S.mu, *, beta=None, materials=None):
         """Steady rolling with traction over this contact (issue 40):
         :class:`~linecontact_sym.contacts.rolling.asymmetric.AsymmetricRolling`
-        (through the kind registry: the rolling layer stands on this package)."""
+        (through the kind registry: the rolling layer stands on this package);
+        ``beta`` or ``materials``: the two bodies
+        (:data:`~linecontact_sym.core.materials.COUPLING_KEYWORDS`)."""
         from ..base import contact_kind
-        return contact_kind("rolling").over_asymmetric(self, friction)
+        return contact_kind("rolling").over_asymmetric(self, friction, beta=beta, materials=materials)
 
     def viscoelastic(self, material):
         """Refused: a viscoelastic asymmetric contact (tilt, moment, punch) is

@@ -399,19 +399,23 @@ class LineContact(Contact):
         from ..adhesion.contact import adhesive_contact
         return adhesive_contact(self, law, *args, **params)
 
-    def tangential(self, friction=S.mu):
+    def tangential(self, friction=S.mu, *, beta=None, materials=None):
         """The partial-slip tangential form of this contact under Coulomb
         friction mu at constant normal load (Cattaneo-Mindlin-Ciavarella-Jaeger),
-        see :mod:`linecontact_sym.contacts.tangential.contact`."""
+        see :mod:`linecontact_sym.contacts.tangential.contact`; ``beta`` or
+        ``materials=((E1, nu1), (E2, nu2))``: the two bodies, whose neglected
+        coupling every result states
+        (:data:`~linecontact_sym.core.materials.COUPLING_KEYWORDS`)."""
         from ..tangential.contact import TangentialLineContact
-        return TangentialLineContact(self, friction)
+        return TangentialLineContact(self, friction, beta=beta, materials=materials)
 
-    def rolling(self, friction=S.mu):
+    def rolling(self, friction=S.mu, *, beta=None, materials=None):
         """Steady rolling with traction under Coulomb friction mu (rolling in
         +x, the stick zone at the leading edge; Carter for the cylinder), see
-        :mod:`linecontact_sym.contacts.rolling.contact`."""
+        :mod:`linecontact_sym.contacts.rolling.contact`; ``beta`` or
+        ``materials`` as for :meth:`tangential`."""
         from ..base import contact_kind   # by the registry: the rolling contact stands on the asymmetric core,
-        return contact_kind("rolling")(self, friction)   # which builds LineContacts (no import cycle)
+        return contact_kind("rolling")(self, friction, beta=beta, materials=materials)   # (no import cycle)
 
     def viscoelastic(self, material):
         """This contact on a linear viscoelastic half-plane (Lee-Radok, Ting), see

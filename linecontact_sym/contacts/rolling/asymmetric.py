@@ -26,6 +26,7 @@ from ...core.precision import workdps
 from ...core.ranges import check_points
 from ...parsing import user_value
 from ..base import checked_value
+from ..tangential.coupling import read_coupling
 from . import state as st
 from .interval import X, SlopeNumbers
 
@@ -33,20 +34,26 @@ from .interval import X, SlopeNumbers
 class AsymmetricRolling:
     """Steady rolling in +x over an asymmetric contact (numbers)."""
 
-    def __init__(self, contact, friction=S.mu):
+    def __init__(self, contact, friction=S.mu, *, beta=None, materials=None):
         m = user_value(friction)
         if not isinstance(m, sp.Expr) or (m.is_number and not m.is_positive):
             raise DomainError(f"the friction coefficient must be positive, got {friction}")
         self.contact = contact
         self.mu = m
+        self.coupling = read_coupling(m, beta, materials)   # its DomainWarning (beta != 0): once, here
         self.slope = sp.diff(contact.profile, X)
         self._cache = {}
 
     def __repr__(self):
-        return f"rolling over {self.contact!r}, mu={self.mu}"
+        return f"rolling over {self.contact!r}, mu={self.mu}{self.coupling.keywords()}"
+
+    @property
+    def coupling_note(self):
+        """What the states say about the neglected coupling (at the contact's mu)."""
+        return self.coupling.note(self.mu)
 
     def _split(self, values):
-        vals = dict(values)
+        vals = self.coupling.values(dict(values))     # E_star from the materials where not given
         if not self.mu.is_number:
             names = {s.name for s in self.mu.free_symbols}
             mu = self.mu.xreplace({s: user_value(checked_value(s.name, vals.pop(s.name), s))
@@ -99,6 +106,7 @@ class AsymmetricRolling:
             xi = sign * mu * (num.tilt(Rt - c, c) - th_n) if Qm != 0 else mpmath.mpf(0)
             ef, cf, enf, anf = float(Rt - c), float(c), float(e_n), float(a_n)
             state = st.RollingState(Qm, Pv, mu, L, Rt, Rt - 2 * c, c, xi, False,
+                                    coupling=self.coupling.note(mu_e),
                                     _normal=lambda x: num.pressure(x, enf, anf),
                                     _aux=lambda x: num.pressure(x, ef, cf))
         if _check and c > 0 and Qm != 0:

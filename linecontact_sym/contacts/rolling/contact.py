@@ -6,7 +6,10 @@ Setting and conventions
 -----------------------
 * plane strain, half-plane approximation, steady state, elastically similar
   bodies (or Dundurs' beta neglected: the traction leaves the pressure
-  unchanged), Coulomb friction mu, constant normal load P;
+  unchanged; ``rolling(mu, beta=...)`` or ``materials=...`` have every
+  result state the neglected coupling |beta| mu, else "beta = 0 assumed",
+  :mod:`linecontact_sym.contacts.tangential.coupling`), Coulomb friction
+  mu, constant normal load P;
 * **rolling in +x**: the contact moves in +x over both bodies; in its frame
   the material flows in -x, enters at the *leading edge* (the right end c of
   the contact [-b, c]) and leaves at the trailing edge -b;
@@ -67,6 +70,7 @@ from ..base import ContactOn, Quantity, checked_value
 from ..sampling import point_sampler
 from ..tangential import history as th
 from ..tangential.contact import MU_RANGE, TangentialLineContact
+from ..tangential.coupling import FrictionalCoupling
 from ..tangential.states import friction_at, tidy_root
 from . import state as st
 from .interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_profile, whole_line_slope
@@ -79,7 +83,7 @@ CONDITIONS = ("valid for: plane strain; steady rolling in +x; elastically simila
               "(checked at numbers: convex profiles)")
 
 
-class RollingLineContact(ContactOn):
+class RollingLineContact(FrictionalCoupling, ContactOn):
     """Steady rolling with traction over a frictionless
     :class:`~linecontact_sym.contacts.normal.contact.LineContact` (see the
     module docstring for the reduction and the sign conventions).
@@ -105,25 +109,27 @@ class RollingLineContact(ContactOn):
                                 "force Q: the root of P(a - c_s, c_s) = P(a) - |Q|/mu", arguments=("a", "Q"),
                                 method=True, latex=r"c_{\mathrm{s}}", unit="m")
 
-    def __init__(self, contact, friction=S.mu):
-        self._t = TangentialLineContact(contact, friction)     # the friction's checks and the numbers' reading
+    def __init__(self, contact, friction=S.mu, *, beta=None, materials=None):
+        # the friction's and the bodies' checks (its DomainWarning where beta != 0) and the numbers' reading
+        self._t = TangentialLineContact(contact, friction, beta=beta, materials=materials)
         self.contact = contact
         self.mu = self._t.mu
+        self.coupling = self._t.coupling
         self._cache = {}
 
     @classmethod
-    def from_frictionless(cls, contact):
-        return cls(contact, S.mu)
+    def from_frictionless(cls, contact, *, beta=None, materials=None):
+        return cls(contact, S.mu, beta=beta, materials=materials)
 
     @staticmethod
-    def over_asymmetric(contact, friction=S.mu):
+    def over_asymmetric(contact, friction=S.mu, *, beta=None, materials=None):
         """Rolling over an asymmetric contact (numbers):
         :class:`~.asymmetric.AsymmetricRolling`."""
         from .asymmetric import AsymmetricRolling
-        return AsymmetricRolling(contact, friction)
+        return AsymmetricRolling(contact, friction, beta=beta, materials=materials)
 
     def __repr__(self):
-        return f"RollingLineContact({self.contact.profile.expr}, mu={self.mu})"
+        return f"RollingLineContact({self.contact.profile.expr}, mu={self.mu}{self.coupling.keywords()})"
 
     @property
     def variables(self):
@@ -353,6 +359,7 @@ class RollingLineContact(ContactOn):
             normal, aux, _, fclosed = self._float_parts(vals)
             Af, cf, ef = float(A), float(c), float(u)
             state = st.RollingState(Qm, P, mu, -A, A, A - 2 * c, c, xi, closed and fclosed, note=note,
+                                    coupling=th.coupling_at(self._t, vals),
                                     _normal=lambda x: normal(x, Af), _aux=lambda x: aux(x, ef, cf))
         if _check and c > 0 and Qm != 0:
             st.check_admissible(state, lambda x: num.J(x, ef, cf), lambda x: normal(x, Af),

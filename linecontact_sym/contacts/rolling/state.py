@@ -34,6 +34,9 @@ class RollingState:
     closed        True where the numbers came from closed forms of the engine
     checked       what the admissibility check covered (a sentence)
     note          why closed forms were not used at this state ("" if they were or there are none)
+    coupling      what the state neglects of the two bodies' mismatch: "beta = 0 assumed
+                  (elastically similar bodies)", or |beta| mu where beta was given
+                  (:mod:`linecontact_sym.contacts.tangential.coupling`; the numbers are the same)
     """
 
     Q: object
@@ -47,6 +50,7 @@ class RollingState:
     closed: bool
     checked: str = ""
     note: str = ""
+    coupling: str = ""
     _normal: object = field(default=None, repr=False)
     _aux: object = field(default=None, repr=False)
 

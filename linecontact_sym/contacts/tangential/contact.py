@@ -9,7 +9,11 @@ Setting and conditions of validity (every result below)
   (Goodman approximation): only then does the shear traction leave the
   pressure unchanged.  A rigid indenter on a half-plane (Popov's
   E* = E/(1 - nu^2)) is "similar" only for nu = 1/2; otherwise
-  |beta| = (1 - 2 nu)/(2 (1 - nu)) (0.29 for nu = 0.3) is neglected;
+  |beta| = (1 - 2 nu)/(2 (1 - nu)) (0.29 for nu = 0.3) is neglected.
+  ``tangential(mu, beta=...)`` or ``materials=((E1, nu1), (E2, nu2))``
+  (:data:`~linecontact_sym.core.materials.COUPLING_KEYWORDS`) have every
+  result state the neglected coupling |beta| mu; without them the results
+  say "beta = 0 assumed" (:mod:`.coupling`).  The numbers are the same;
 * Coulomb friction with one coefficient mu (static = kinetic);
 * the normal load P (half-width a) is held constant while Q varies;
 * a symmetric profile and a compact contact |x| < a whose frictionless solution
@@ -98,6 +102,7 @@ from ...core.ranges import check_points, check_value
 from ...parsing import user_value
 from . import history
 from . import states
+from .coupling import FrictionalCoupling, read_coupling
 from ..base import ContactOn, Quantity
 
 #: range of the friction coefficient at the verification points
@@ -123,7 +128,7 @@ LOADING = ((1, S.c_s),)
 UNLOADING = ((1, S.c_s), (-2, S.c_r))
 
 
-class TangentialLineContact(ContactOn):
+class TangentialLineContact(FrictionalCoupling, ContactOn):
     """Partial-slip tangential line contact (Coulomb friction, constant normal
     load) built from a frictionless :class:`~.contact.LineContact`; see
     the module docstring for the formulas and their conditions.
@@ -133,6 +138,12 @@ class TangentialLineContact(ContactOn):
     contact : LineContact
     friction : sympy expression or number, default ``lcs.mu``
         Coulomb coefficient mu > 0.
+    beta, materials : keyword-only, optional
+        the two bodies (Dundurs' beta, or ((E1, nu1), (E2, nu2))), see
+        :data:`~linecontact_sym.core.materials.COUPLING_KEYWORDS`: the
+        numbers stay Goodman's (beta neglected); every result states the
+        neglected coupling |beta| mu (a DomainWarning here where beta != 0),
+        or "beta = 0 assumed" where neither is given.
 
     Examples
     --------
@@ -174,7 +185,7 @@ class TangentialLineContact(ContactOn):
                               arguments=("a", "c_s", "c_r", "x"), domain="inside", latex=r"s_{\mathrm{u}}(x)",
                               unit="m")
 
-    def __init__(self, contact, friction=S.mu):
+    def __init__(self, contact, friction=S.mu, *, beta=None, materials=None):
         contact.check_effect(self.kind)             # not on a periodic array yet (normal.periodic)
         if isinstance(friction, str):
             raise DomainError("the friction coefficient is a string; strings are not evaluated. "
@@ -191,16 +202,18 @@ class TangentialLineContact(ContactOn):
             raise DomainError(f"the profile uses {sorted(map(str, clash))}, reserved by the tangential contact")
         self.contact = contact
         self.mu = m
+        self.coupling = read_coupling(m, beta, materials)   # its DomainWarning (beta != 0): once, here
         self._msyms = tuple(sorted(m.free_symbols - set(contact.params) - {S.E_star}, key=lambda s: s.name))
         self._cache: dict = {}
 
     @classmethod
-    def from_frictionless(cls, contact):
-        """``contact.tangential(mu)`` with the symbolic friction coefficient."""
-        return cls(contact, S.mu)
+    def from_frictionless(cls, contact, *, beta=None, materials=None):
+        """``contact.tangential(mu)`` with the symbolic friction coefficient
+        (and the two bodies, if given)."""
+        return cls(contact, S.mu, beta=beta, materials=materials)
 
     def __repr__(self):
-        return f"TangentialLineContact({self.contact.profile.expr}, mu={self.mu})"
+        return f"TangentialLineContact({self.contact.profile.expr}, mu={self.mu}{self.coupling.keywords()})"
 
     @property
     def variables(self):
@@ -346,7 +359,7 @@ class TangentialLineContact(ContactOn):
             # derived for the package's Q, then written in the user's own symbol
             self._cache[key] = states.derive_stick_half_width(self, S.Q, budget) if Qv == S.Q else \
                 states.in_terms_of(self, self._stick_half_width(S.Q, budget), Qv)
-        return self._cache[key]
+        return self.noted(self._cache[key])
 
     def _derive_stick_half_width(self):
         return self._stick_half_width(S.Q)

@@ -118,6 +118,9 @@ class TangentialState:
     c       stick half-width of the monotone part (at the turning point on a reversal)
     c_r     stick half-width of the reversal (None on the loading branch)
     Q_max   the turning point (None on the loading branch)
+    coupling  what the state neglects of the two bodies' mismatch: "beta = 0
+            assumed (elastically similar bodies)", or |beta| mu where beta
+            was given (:mod:`.coupling`; the numbers are Goodman's either way)
     """
 
     branch: str
@@ -130,6 +133,7 @@ class TangentialState:
     Q_max: object = None
     values: dict = field(default_factory=dict, repr=False)
     contact: object = field(default=None, repr=False)
+    coupling: str = ""
 
     @property
     def terms(self):
@@ -177,6 +181,7 @@ def numbers_at(t, values):
     """Keyword values -> (Symbol -> exact number) for the contact's variables,
     plus the half-width a (given, or from the normal load P)."""
     from ..base import checked_value      # the one reading of a user's value: 1j, NaN, text refused
+    values = t.coupling.values(values)          # E_star from the materials where not given (a contradiction refused)
     by_name = {s.name: s for s in t.variables}
     vals = {}
     for k, v in values.items():
@@ -246,7 +251,13 @@ def stick_half_width_at(t, Qv, values) -> TangentialState:
                                     f"{mpmath.nstr(mu * Pa, 8)}: the contact slides as a whole (no partial slip)")
         branch = "loading" if load > tol else "gross sliding onset"
         return TangentialState(branch, Qm, Pa, A, mu, _stick(t, law, load if load > tol else 0, vals, A),
-                               values={s.name: v for s, v in vals.items()}, contact=t)
+                               values={s.name: v for s, v in vals.items()}, contact=t,
+                               coupling=coupling_at(t, vals))
+
+
+def coupling_at(t, vals):
+    """The coupling note of a state of ``t`` at the values (mu as a number)."""
+    return t.coupling.note(t.mu.xreplace(vals))
 
 
 def reversal(t, Q_max, Q, values, branch) -> TangentialState:
@@ -261,7 +272,7 @@ def reversal(t, Q_max, Q, values, branch) -> TangentialState:
         dQ = Qx - Qm if branch == "unloading" else Qx + Qm
         vals, law, _ = numbers_at(t, values)
         c_r = _stick(t, law, top.P - dQ / (2 * top.mu), vals, top.a)
-        return TangentialState(branch, Qm, top.P, top.a, top.mu, top.c, c_r, Qx, top.values, t)
+        return TangentialState(branch, Qm, top.P, top.a, top.mu, top.c, c_r, Qx, top.values, t, top.coupling)
 
 
 def to_sympy_number(v):
@@ -280,6 +291,8 @@ class FrettingCycle:
     Q, delta   the closed loop (unloading then reloading branch); delta is the
                rigid shift with reference length a (a convention: another
                reference length shears the loop, its area stays W)
+    coupling   the neglected coupling of the two bodies (as
+               :class:`TangentialState`'s)
     """
 
     Q_amplitude: object
@@ -290,6 +303,7 @@ class FrettingCycle:
     W: object
     Q: np.ndarray
     delta: np.ndarray
+    coupling: str = ""
 
     @property
     def loop_area(self) -> float:
@@ -322,7 +336,7 @@ def cycle(t, Q_amplitude, points, values) -> FrettingCycle:
     Q = np.concatenate([Qd, -Qd[1:-1]])
     delta = np.concatenate([down, -down[1:-1]])
     W = evaluate("dissipated_energy", [top.c])[0]
-    return FrettingCycle(QA, top.P, A, top.mu, top.c, float(W), Q, delta)
+    return FrettingCycle(QA, top.P, A, top.mu, top.c, float(W), Q, delta, top.coupling)
 
 
 def bem(t, n, values):
@@ -336,4 +350,4 @@ def bem(t, n, values):
 
 
 __all__ = ["numbers_at", "ONSET_RTOL", "FloatNormal", "TangentialState", "FrettingCycle", "stick_half_width_at", "reversal",
-           "cycle", "bem", "to_sympy_number"]
+           "cycle", "bem", "to_sympy_number", "coupling_at"]
