@@ -220,14 +220,39 @@ def pytest_collection_modifyitems(config, items):
 # Built once per test session (tests/docs_site.py): the build executes every
 # notebook, tests/test_docs.py reads its pages and tests/test_notebooks.py its
 # executed notebooks.  Their tests are one xdist group ("docs", --dist loadgroup
-# in pyproject.toml), so one worker builds it, once.
+# in pyproject.toml), so one worker normally asks for it; a second worker that
+# asks anyway (xdist has run the group's tests on two workers in CI) waits for
+# the first one's build and reads it: two builds at once in the one docs/ folder
+# removed each other's generated API pages (docs/conf.py starts docs/reference
+# afresh), a red CI.  The lock and the build's result are in the folder all
+# workers of the session share (the parent of each worker's basetemp).
 @pytest.fixture(scope="session")
 def docs_site(tmp_path_factory):
     pytest.importorskip("sphinx")
     pytest.importorskip("myst_nb")
     pytest.importorskip("ipykernel")
+    import json
+    import os
+    import subprocess
     import docs_site as site
-    out = tmp_path_factory.mktemp("docs")
-    proc = site.build(out)
+    base = tmp_path_factory.getbasetemp()
+    root = (base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base) / "docs_site"
+    root.mkdir(exist_ok=True)
+    out, result = root / "docs", root / "result.json"
+    try:
+        import fcntl
+    except ImportError:         # no POSIX locks (Windows): one build per worker, as xdist groups them
+        fcntl = None
+    with open(root / "lock", "w") as lock:
+        if fcntl is not None:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+        if not result.exists():
+            out.mkdir(exist_ok=True)
+            proc = site.build(out)
+            result.write_text(json.dumps({"returncode": proc.returncode, "stdout": proc.stdout,
+                                          "stderr": proc.stderr}), encoding="utf-8")
+    done = json.loads(result.read_text(encoding="utf-8"))
+    proc = subprocess.CompletedProcess(args=["sphinx"], returncode=done["returncode"], stdout=done["stdout"],
+                                       stderr=done["stderr"])
     assert proc.returncode == 0, proc.stderr[-5000:]
     return out, proc
