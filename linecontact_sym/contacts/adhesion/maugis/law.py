@@ -61,7 +61,7 @@ from ...sampling import point_sampler
 from . import choice as maugis_choice
 from .choice import ModelChoice
 from .derive import dugdale_parts
-from .limits import jkr_limit
+from .limits import JKRLimit, limit_model, limit_pull_off
 from .numbers import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
@@ -419,7 +419,7 @@ class MaugisDugdaleContact(AdhesiveContact):
             from ...normal.equilibria import SEARCH_BUDGET, searching_until
             vals = self._numeric_values(values)
             with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
-                lim = jkr_limit(self, vals, dps)
+                lim = limit_pull_off(self, vals, dps)
             if lim is not None:
                 return lim
         return super().pull_off_at(dps, budget, **values)
@@ -427,7 +427,7 @@ class MaugisDugdaleContact(AdhesiveContact):
     def _pull_off_checked(self, vals, dps):
         from ...normal.equilibria import within_search_budget
         with within_search_budget():
-            lim = jkr_limit(self, vals, dps)
+            lim = limit_pull_off(self, vals, dps)
         return lim if lim is not None else super()._pull_off_checked(vals, dps)
 
     def displacement_control(self):

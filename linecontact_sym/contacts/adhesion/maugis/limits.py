@@ -105,10 +105,71 @@ def _slope_bound(md, vals, lo, width):
     return max(mpmath.mpf(y.upper().str(30, radius=False)), mpmath.mpf(0))
 
 
-def jkr_limit(md, vals: dict, dps: int):
-    """The pull-off of the Maugis-Dugdale contact ``md`` at ``vals`` ({Symbol: value}) as its JKR
-    limit, a :class:`PullOff` whose note states the bound, where the bound (module docstring) is
-    below the digits asked; else None."""
+class JKRLimit:
+    """The JKR limit of one Maugis-Dugdale contact at values, once it is reached (:func:`limit_model`):
+    what every Maugis-Dugdale quantity needs to answer from the JKR law with a stated bound --
+    the JKR pull-off ``po``, the zone length ``delta``, the Maugis parameter ``lam``, the bound ``B``
+    of the pull-off (module docstring) and, at any half-width, :meth:`force_bound` and :meth:`zone`."""
+
+    model = "JKR limit"
+
+    def __init__(self, md, vals, dps, po, E, w, sig, B_lo, B_up):
+        self.md, self.vals, self.dps, self.po = md, vals, dps, po
+        self.E, self.w, self.sig = E, w, sig
+        self.delta = mpmath.pi * E * w / (4 * sig**2)
+        self.B_lo, self.B_up, self.B = B_lo, B_up, max(B_lo, B_up)
+        self.lam = mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * po.half_width / self.delta)
+        self.jvals = {s.name: v for s, v in vals.items() if s in set(md.jkr.variables)}
+
+    @property
+    def jkr_law(self):
+        """The JKR force law at these values (the package's JKR layer: its closed form where the engine has one)."""
+        return self.md.jkr._law({s: v for s, v in self.vals.items() if s in set(self.md.jkr.variables)}, "closed")
+
+    def _k(self, A):
+        F1 = _slope_bound(self.md, fixed_values(self.vals), A, self.delta / mpmath.log(2) * (1 + mpmath.mpf(10)**-3))
+        return None if F1 is None else mpmath.pi * self.E * F1 / (4 * self.sig)
+
+    def force_bound(self, A):
+        """|P_MD(a) - P_JKR(a)| <= this at the half-width A (module docstring: below, 2 sigma_0 delta psi(a/delta)
+        with psi <= min(1/ln 2, KPSI sqrt(delta/a)); above, sqrt(2 pi a w E*) (1 - (1 + k)^(-1/2)) with k from an
+        Arb bound of f' on [a, a + delta/ln 2]); None where Arb cannot bound f'."""
+        with workdps(self.dps + 15):
+            A = mpmath.mpf(A)
+            k = self._k(A)
+            if k is None:
+                return None
+            lo = 2 * self.sig * self.delta * min(1 / mpmath.log(2), KPSI * mpmath.sqrt(self.delta / A))
+            jt = mpmath.sqrt(2 * mpmath.pi * A * self.w * self.E)
+            return max(lo, jt * k / ((1 + mpmath.sqrt(1 + k)) * mpmath.sqrt(1 + k)))
+
+    def zone(self, A):
+        """(c_lo, c_hi) enclosing c_D at the half-width A: c_D - a >= delta/(1 + k) (above) and
+        D(c_D/a) <= delta/a (g0 >= 0), i.e. c_D <= a M(delta/a); None where Arb cannot bound f'."""
+        with workdps(self.dps + 15 + max(0, int(mpmath.log10(mpmath.mpf(A) / self.delta)))):
+            A = mpmath.mpf(A)
+            k = self._k(A)
+            if k is None:
+                return None
+            t = self.delta / A
+            lo, hi = mpmath.mpf(0), 2 * t          # D(1 + e) >= e - e^2/6 > t at e = 2 t (t small)
+            while dugdale_D(1 + hi) < t:
+                hi *= 2
+            for _ in range(mpmath.mp.prec + 20):
+                mid = (lo + hi) / 2
+                if dugdale_D(1 + mid) < t:
+                    lo = mid
+                else:
+                    hi = mid
+            return A + self.delta / (1 + k), A * (1 + hi)
+
+    def describe(self):
+        return (f"the JKR limit of the Maugis-Dugdale law (lambda = {mpmath.nstr(self.lam, 6)}, zone length delta = "
+                f"pi E* w/(4 sigma_0^2) = {mpmath.nstr(self.delta, 6)}; maugis.limits)")
+
+
+def _reached(md, vals: dict, dps: int):
+    """:class:`JKRLimit` where the bound of the pull-off (module docstring) is below 10**-(dps+1) of it; else None."""
     fixed = fixed_values(vals)
     try:
         jv = {s.name: v for s, v in vals.items() if s in set(md.jkr.variables)}
@@ -135,20 +196,54 @@ def jkr_limit(md, vals: dict, dps: int):
         k = mpmath.pi * E * F1 / (4 * sig)
         jt = mpmath.sqrt(2 * mpmath.pi * aJ * w * E)
         B_up = jt * k / ((1 + mpmath.sqrt(1 + k)) * mpmath.sqrt(1 + k))   # jt (1 - (1 + k)^(-1/2)), no cancellation
-        B = max(B_lo, B_up)
-        tol = mpmath.mpf(10)**-(dps + 1)
-        if not B <= tol * abs(PJ):
+        if not max(B_lo, B_up) <= mpmath.mpf(10)**-(dps + 1) * abs(PJ):
             return None
+        return JKRLimit(md, vals, dps, po, E, w, sig, B_lo, B_up)
+
+
+def limit_model(md, vals: dict, dps: int):
+    """THE decision, for every Maugis-Dugdale quantity at values (pull-off, half_width, branches, states,
+    force_at), whether a limit model answers to ``dps`` digits: a :class:`JKRLimit` (sigma_0 -> oo) or a
+    :class:`DugdaleLimit` (sigma_0 -> 0, :mod:`.dugdale`), else None (the full Maugis-Dugdale solve).
+    Decided once per values and digits (cached on the contact)."""
+    cache = md._caches()
+    key = ("_limit_model", tuple(sorted((k.name, str(v)) for k, v in vals.items())), dps)
+    if key not in cache:
+        from .dugdale import dugdale_reached
+        lim = dugdale_reached(md, vals, dps)
+        cache[key] = lim if lim is not None else _reached(md, vals, dps)
+    return cache[key]
+
+
+def limit_pull_off(md, vals: dict, dps: int):
+    """The pull-off from the limit model :func:`limit_model` picks (its note says which), or None."""
+    lim = limit_model(md, vals, dps)
+    if lim is None:
+        return None
+    return jkr_limit(md, vals, dps) if isinstance(lim, JKRLimit) else lim.pull_off()
+
+
+def jkr_limit(md, vals: dict, dps: int):
+    """The pull-off of the Maugis-Dugdale contact ``md`` at ``vals`` ({Symbol: value}) as its JKR
+    limit, a :class:`PullOff` whose note states the bound, where :func:`limit_model` says the JKR
+    limit is reached; else None."""
+    lim = limit_model(md, vals, dps)
+    if not isinstance(lim, JKRLimit):
+        return None
+    po, B = lim.po, lim.B
+    with workdps(dps + 15):
+        PJ, aJ = po.force, po.half_width
+        tol = mpmath.mpf(10)**-(dps + 1)
         if po.kind == "stationary":    # the minimum moves by ~ sqrt(2 (B_lo + B_up)/P'')
-            law = md.jkr._law({s: v for s, v in vals.items() if s in set(md.jkr.variables)}, "closed")
+            law = lim.jkr_law
             h = aJ * mpmath.mpf(10)**-((dps + 15) // 3)
             P2 = (law.dP(aJ + h) - law.dP(aJ - h)) / (2 * h)
             if not P2 > 0:
                 return None
-            da = mpmath.sqrt(2 * (B_lo + B_up) / P2)
+            da = mpmath.sqrt(2 * (lim.B_lo + lim.B_up) / P2)
         else:                          # a kink or the range's end: the same half-width (P_MD, P_JKR share P0's kinks)
             da = mpmath.mpf(0)
-        lam = mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * aJ / delta)
+        lam = lim.lam
         if not da <= tol * aJ:
             return _refined(md, vals, dps, po, B, da, lam)
         note = (f"the JKR limit of the Maugis-Dugdale law (lambda = {mpmath.nstr(lam, 6)}): |P_MD,min - P_JKR,min| "
@@ -186,4 +281,4 @@ def _refined(md, vals, dps, po, B, da, lam):
     return PullOff(+Pm, -Pm, +A, "stationary", None, po.minima, note)
 
 
-__all__ = ["jkr_limit", "zone_excess", "dugdale_D", "KPSI"]
+__all__ = ["jkr_limit", "limit_model", "limit_pull_off", "JKRLimit", "zone_excess", "dugdale_D", "KPSI"]

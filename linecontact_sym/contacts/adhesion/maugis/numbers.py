@@ -125,6 +125,37 @@ def profile_end(f):
         return None
 
 
+def profile_rise_end(f1):
+    """Where the profile stops rising: the first x at which f' turns negative (mpf at 30 digits;
+    1 - cos(x) at x = pi), found on the doubling grid 2**k, k = -60..200, and refined by bisection
+    of the sign of f'; None where f' >= 0 at every grid point.  A cohesive zone ending beyond it
+    would leave the uniqueness of c_D (module docstring: g0 rises where f does): the gap condition
+    has a root in every rise of the profile, and a zone reaching over a trough (where the profile
+    comes back towards the other surface) is not one Dugdale zone."""
+    with workdps(30):
+        good = None
+        for k in range(-60, 201):
+            X = mpmath.mpf(2)**k
+            try:
+                v = f1(X)
+            except (Outside, *UNDEFINED):
+                continue
+            if v < 0:
+                if good is None:
+                    return None       # falling from the start: not a contact profile, refused elsewhere
+                lo, hi = good, X
+                for _ in range(120):
+                    mid = (lo + hi) / 2
+                    try:
+                        falling = f1(mid) < 0
+                    except (Outside, *UNDEFINED):
+                        falling = True
+                    lo, hi = (lo, mid) if falling else (mid, hi)
+                return lo
+            good = X
+        return None
+
+
 def _rounded(n):
     """``n`` working digits rounded up to a multiple of 10: mpmath's Gauss-Legendre nodes are cached per
     precision, and a solve whose digits vary with c_D by one or two would recompute them at each call."""
@@ -257,6 +288,11 @@ class MDLaw:
         pf = {k: v for k, v in fixed.items() if k != S.E_star}
         self._f = _real(_lam(md.profile.expr.xreplace(pf), (x,)))
         self.x_end = profile_end(self._f)
+        self.x_rise = profile_rise_end(_real(_lam(sp.diff(md.profile.expr.xreplace(pf), x), (x,))))
+        if self.x_rise is not None and (self.x_end is None or self.x_rise < self.x_end):
+            self.x_end, self.end_kind = self.x_rise, "rise"
+        else:
+            self.end_kind = "domain"
         if self.closed:
             P = md.force_expr.xreplace(fixed)
             G = md.gap_c_expr.xreplace(fixed) - self.h0expr
@@ -334,9 +370,23 @@ class MDLaw:
         if self.x_end is None:
             return None
         if not A < self.x_end:
-            raise DomainError(f"the half-width a = {mpmath.nstr(A, 8)} reaches the end of the profile's real "
-                              f"domain x = {mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
+            what = "the crest where the profile stops rising" if self.end_kind == "rise" else \
+                "the end of the profile's real domain"
+            raise DomainError(f"the half-width a = {mpmath.nstr(A, 8)} reaches {what}, x = "
+                              f"{mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
         return (self.x_end - A) * (1 - mpmath.mpf(10)**-(mpmath.mp.dps - 5))
+
+    def _beyond_end(self, where):
+        """The message of a cohesive zone that would have to reach past :attr:`x_end`."""
+        if self.end_kind == "rise":
+            return (f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, where the profile "
+                    f"stops rising (f' < 0 beyond, f there = {mpmath.nstr(self._f(self.x_end), 6)}){where}: the gap "
+                    f"there is still below h0 = w/sigma_0 = {mpmath.nstr(self.h0(), 6)}; beyond a crest the gap "
+                    f"condition has a root in every rise of the profile and one Dugdale zone no longer describes "
+                    f"the contact (a larger sigma_0 or a smaller work of adhesion keeps the zone before the crest)")
+        return (f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, beyond which "
+                f"the profile is not real{where}: the gap there is still below h0 = w/sigma_0 "
+                f"(a larger sigma_0 or a smaller work of adhesion keeps it inside)")
 
     def _solve_s(self, F, dF, s0, tol, s_max=None, A=None, with_slope=False, near=False):
         """Root of the increasing F on 0 < s < s_max from the guess s0: bracket
@@ -390,10 +440,7 @@ class MDLaw:
             while F(hi) <= 0:
                 if s_max is not None and hi >= s_max:
                     where = f" at a = {mpmath.nstr(A, 8)}" if A is not None else " as a -> 0+"
-                    raise DomainError(
-                        f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, beyond which "
-                        f"the profile is not real{where}: the gap there is still below h0 = w/sigma_0 "
-                        f"(a larger sigma_0 or a smaller work of adhesion keeps it inside)")
+                    raise DomainError(self._beyond_end(where))
                 lo, hi = hi, hi * 4 if s_max is None else min(hi * 4, s_max)
                 n += 1
                 if n > 2000:
