@@ -215,6 +215,74 @@ def limit_model(md, vals: dict, dps: int):
     return cache[key]
 
 
+class HalfWidths(tuple):
+    """The equilibrium half-widths of a Maugis-Dugdale contact at a load (a tuple, as ``half_width`` gives
+    everywhere: stable first), with ``model`` (which model answered: 'Maugis-Dugdale' or 'JKR limit')
+    and ``note`` (how, and the bound where a limit answered)."""
+
+    def __new__(cls, roots, model, note=""):
+        out = super().__new__(cls, roots)
+        out.model, out.note = model, note
+        return out
+
+
+def jkr_equilibria(lim: JKRLimit, load, dps: int):
+    """The equilibria [(a, stable)] of the Maugis-Dugdale law at ``load`` from the JKR law's (the package's
+    JKR layer), with a note, where the JKR limit ``lim`` places each within 10**-(dps+1) a of JKR's:
+    |P_MD - P_JKR| <= B(a) (:meth:`JKRLimit.force_bound`) moves a root by at most B/|P_JKR'| (both laws
+    continuous: P_JKR -+ B bracket a root of P_MD), and the load is clear of every JKR extremum by more
+    than twice its bound and of the MD law's P(0+) in [-2 sigma_0 delta/ln 2, 0) (where the two laws could
+    differ in their number of roots); else None (then the full Maugis-Dugdale solve)."""
+    from ...normal.equilibria import equilibria, landscape
+    jlaw = lim.jkr_law
+    roots = equilibria(jlaw, load, dps)
+    if not roots:
+        return None
+    tol = mpmath.mpf(10)**-(dps + 1)
+    worst = mpmath.mpf(0)
+    with workdps(dps + 15):
+        L = mpmath.mpf(sp.N(load, dps + 20))
+        if abs(L) <= 4 * lim.sig * lim.delta / mpmath.log(2):
+            return None
+        for a, _ in roots:
+            B, d = lim.force_bound(a), abs(jlaw.dP(a))
+            if B is None or not d > 0 or not B / d <= tol * a:
+                return None
+            worst = max(worst, B / d / a)
+        for e in landscape(jlaw).extrema:
+            B = lim.force_bound(e.half_width)
+            if B is None or not abs(e.force - L) > 2 * B:
+                return None
+    note = (f"{lim.describe()}: each half-width is JKR's, moved by at most B(a)/|dP_JKR/da| <= "
+            f"{mpmath.nstr(worst, 3)} a (|P_MD - P_JKR| <= B(a), the bounds of the cohesive zone); below the "
+            f"10**-{dps} asked, so only the JKR law was evaluated")
+    return roots, note
+
+
+def jkr_state(lim: JKRLimit, law, A, dps: int):
+    """The :class:`~.numbers.MDState` at the half-width A from the JKR limit ``lim``: P and dP/da of the JKR
+    law, c_D the middle of the zone's enclosure (:meth:`JKRLimit.zone`), where the force bound is below
+    10**-(dps+1) |P| and the enclosure of c_D - a below 10**-(dps+1) of it (the pressure and the gap then
+    hold dps digits: they depend on c_D - a); else None (the inner solve)."""
+    tol = mpmath.mpf(10)**-(dps + 1)
+    B, z = lim.force_bound(A), lim.zone(A)
+    if B is None or z is None:
+        return None
+    jlaw = lim.jkr_law
+    with workdps(dps + 15 + max(0, int(mpmath.log10(mpmath.mpf(A) / lim.delta)))):
+        A = mpmath.mpf(A)
+        c_lo, c_hi = z
+        P, dP = jlaw.P(A), jlaw.dP(A)
+        scale = abs(P) + mpmath.sqrt(2 * mpmath.pi * A * lim.w * lim.E)
+        if not (B <= tol * scale and c_hi - c_lo <= tol * (c_lo - A)):
+            return None
+        C = (c_lo + c_hi) / 2
+        note = (f"{lim.describe()}: P and dP/da of the JKR law, |P_MD - P_JKR| <= {mpmath.nstr(B, 3)}; c_D - a in "
+                f"[{mpmath.nstr(c_lo - A, 12)}, {mpmath.nstr(c_hi - A, 12)}] (bounds of the cohesive zone from the "
+                f"gap condition), dP/da within O(1/lambda) relative; below the 10**-{dps} asked, no inner solve")
+        return law.state_at(A, C, +P, +dP, dps, "JKR limit", note)
+
+
 def limit_pull_off(md, vals: dict, dps: int):
     """The pull-off from the limit model :func:`limit_model` picks (its note says which), or None."""
     lim = limit_model(md, vals, dps)
@@ -281,4 +349,4 @@ def _refined(md, vals, dps, po, B, da, lam):
     return PullOff(+Pm, -Pm, +A, "stationary", None, po.minima, note)
 
 
-__all__ = ["jkr_limit", "limit_model", "limit_pull_off", "JKRLimit", "zone_excess", "dugdale_D", "KPSI"]
+__all__ = ["jkr_limit", "limit_model", "limit_pull_off", "jkr_equilibria", "jkr_state", "HalfWidths", "JKRLimit", "zone_excess", "dugdale_D", "KPSI"]

@@ -56,6 +56,10 @@ class MDState:
     gap_check  where g0 is not closed: the gap at c_D recomputed through the one
                reference integrator (a RefValue: an Arb enclosure where Arb can,
                ``gap_check.method``), to compare with h0; else None
+    model      which model answered: 'Maugis-Dugdale' (the inner solve) or 'JKR limit'
+               (:func:`.limits.limit_model`: force and slope from the JKR law, c_D from the
+               bounds of the zone, each within 10**-(dps+1) by the bound ``note`` states)
+    note       how the state was obtained
     """
 
     a: mpmath.mpf
@@ -67,6 +71,8 @@ class MDState:
     gap: object = field(repr=False, default=None)
     closed: dict = field(repr=False, default_factory=dict)
     gap_check: object = field(repr=False, default=None)
+    model: str = "Maugis-Dugdale"
+    note: str = field(repr=False, default="")
 
     @property
     def m(self):
@@ -611,20 +617,31 @@ class MDLaw:
 
     def state(self, A, dps: int) -> MDState:
         P, dP, C = self.checked_P_and_slope(A, dps)
+        return self.state_at(A, C, P, dP, dps, check=True)
+
+    def state_at(self, A, C, P, dP, dps: int, model="Maugis-Dugdale", note="", check=False) -> MDState:
+        """The :class:`MDState` of the half-widths A and C = c_D with the load P and slope dP; its pressure and
+        gap evaluated at dps + 10 digits plus those that c_D - a costs (a zone 1e-200 of a wide at sigma_0 =
+        10**100: c_D^2 - a^2 vanished at dps + 10 digits and the pressure was the adhesionless one).
+        ``check``: the gap at c_D recomputed by the reference integrator where g0 is not closed."""
         with workdps(dps + 10):
             A = mpmath.mpf(A)
             h0 = self.h0()
-        law, sig = self, mpmath.mpf(sp.N(self.sigma0, dps + 20))
+        zone = mpmath.fsub(C, A, exact=True)      # c_D - a without rounding: it may be 1e-200 of c_D
+        with workdps(30):
+            lost = max(0, int(mpmath.log10(C / zone))) if zone > 0 else 0
+        work = dps + 10 + lost
+        law, sig = self, mpmath.mpf(sp.N(self.sigma0, work + 10))
 
         def pressure(x):
-            with workdps(dps + 10):
+            with workdps(work):
                 x = abs(mpmath.mpf(x))
                 if x < A:
                     return +law._p_in(x, A, C)
                 return -sig if x <= C else mpmath.mpf(0)
 
         def gap(x):
-            with workdps(dps + 10):
+            with workdps(work):
                 x = abs(mpmath.mpf(x))
                 if x <= A:
                     return mpmath.mpf(0)
@@ -634,7 +651,7 @@ class MDLaw:
                 # Dugdale punches of width t in (a, min(x, c_D)): -(2/(pi E*)) int acosh(x/t) g_D(t) dt,
                 # t = c_D sin(phi) removes the endpoint singularity of g_D at c_D; x/t >= 1 on the whole
                 # range (t <= min(x, c_D)): a ratio rounded below 1 at the end is 1 (the real branch of acosh)
-                E = mpmath.mpf(sp.N(law.E, dps + 20))
+                E = mpmath.mpf(sp.N(law.E, work + 10))
                 lo, hi = mpmath.asin(A / C), mpmath.asin(top / C)
 
                 def integrand(ph):
@@ -642,7 +659,8 @@ class MDLaw:
                     return mpmath.acosh(max(x / t, 1)) * (-2 * sig * t)
                 I = mpmath.quad(integrand, [lo, hi])
                 return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
-        return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts), self.certified_gap(A, C, dps))
+        return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts),
+                       self.certified_gap(A, C, dps) if check else None, model, note)
 
 
 __all__ = ["MDLaw", "MDState"]
