@@ -31,17 +31,25 @@ profile (the zone's elastic compliance over the profile's slope at c0; for
 the parabola eps = 0.354 lambda^(3/2) at R = E* = 1, w = 1/100).
 
 **Where it answers (the switch, measured).**  The full Maugis-Dugdale
-pull-off against P(0+) at w = 1/100, E* = 1, dps 15 (the parabola, x^3 and
-R (cosh(x/R) - 1), R = 1): relative difference 3.2e-3, 1.1e-4, 3.0e-3 at
-lambda = 1; 1.1e-7, 1.2e-13, 6.6e-8 at lambda = 0.5; 1.1e-15, (infimum),
-1.4e-16 at lambda = 0.3; below 1e-21 (the full search reports the infimum
-P(0+) itself) for lambda <= 0.2.  The estimate above gave 9.7e-8 and 1.0e-15
-for the parabola's 1.1e-7 and 1.1e-15 (its minimum at a = 3.5e-4 and
-4.8e-8, predicted 3.5e-4 and 4.8e-8), and 2.3e-3 for 3.2e-3 at lambda = 1
-(eps = 0.34, where the expansion in eps degrades).  The limit answers where
-eps <= :data:`EPS_SWITCH` (0.15: the estimate within 15 % there) and
-:data:`SAFETY` times the estimate is below 10**-(dps+1): then P(0+), one root
-of Z0 (the engine's closed condition), is the pull-off to the digits asked.
+pull-off (the generic search of P(a)) against P(0+), at w = 1/100, E* = 1,
+dps 15, R = b = 1, lambda from sigma0_for (relative difference measured /
+estimated by :func:`estimate`):
+
+    lambda           1                  0.5                0.3
+    parabola    3.19e-3 / 3.27e-3  1.1e-7  / 1.1e-7   1.11e-15 / 1.11e-15
+    x^3         1.11e-4 / 1.12e-4  1.24e-13 / 1.24e-13     (infimum)
+    cosh        3.03e-3 / 3.10e-3  6.6e-8  / 6.6e-8   1.38e-16 / 1.38e-16
+    rounded punch 1.92e-9 / 1.92e-9      (infimum)         (infimum)
+
+("infimum": the full search itself reports P(0+), its minimum below 10**-21
+of it; so at every lambda <= 0.2 of the four); the predicted a_min agreed
+with the full search's minimum to 3 digits in every row (the parabola at
+lambda = 0.5: 3.51e-4 and 3.5136e-4).  eps = 0.343, 0.125, 0.058 for the
+parabola's three columns.  The limit answers where eps <= :data:`EPS_SWITCH`
+(0.15: where the expansion was checked to a few per cent; no other minimum
+of P(a) was found there in any of the four) and :data:`SAFETY` times the
+estimate is below 10**-(dps+1): then P(0+), one root of Z0 (the engine's
+closed condition), is the pull-off to the digits asked.
 
 **The scaling.**  P_min = -2 sigma_0 c0 is degenerate as sigma_0 -> 0: where
 the profile carries the gap (f(c0) ~ h0, the rigid limit f(c_r) = h0 of
@@ -106,46 +114,55 @@ class DugdaleLimit:
         return PullOff(+self.force, -self.force, mpmath.mpf(0), "infimum", None, (), note)
 
 
+def estimate(law, dps: int):
+    """(c0, eps, P(0+), a_min, rel) of the numeric law ``law`` (:class:`~.numbers.MDLaw`) at dps digits:
+    the zone of a vanishing contact, the parameter eps, the load P(0+) = -2 sigma_0 c0, where the minimum
+    of P(a) lies and its estimated depth below P(0+), relative (module docstring); rel None where the
+    estimate does not apply (Z0' <= 0, P0 not ~ a^n with n >= 1 near a_min)."""
+    with workdps(dps + 15):
+        c0 = law.c0(dps + 5)
+        E = mpmath.mpf(sp.N(law.E, dps + 20))
+        sig = mpmath.mpf(sp.N(law.sigma0, dps + 20))
+        Zc = law._Z0c(c0)
+        force = law._P0lim(c0)
+        if not (Zc > 0 and force < 0):
+            return c0, None, force, None, None
+        eps = 4 * sig / (mpmath.pi * E * Zc)
+        a_min = 2 * c0 * mpmath.exp(-1 / eps)
+        a_r = min(c0 / 1000, a_min)
+        P0r = law._P0(a_r)
+        if P0r > 0:
+            n = a_r * law._dP0(a_r) / P0r
+            if not n >= 1:          # P0 ~ a^n with n >= 1 below a_r is what the estimate extrapolates
+                return c0, eps, force, a_min, None
+            t1 = P0r / n * (a_min / a_r)**n
+        else:
+            t1 = mpmath.mpf(0)      # a flat centre: P0 = 0 below a_r
+        rel = eps * (t1 + sig * a_min**2 / (2 * c0)) / abs(force)
+        return c0, eps, force, a_min, rel
+
+
 def dugdale_reached(md, vals: dict, dps: int):
     """A :class:`DugdaleLimit` where the Dugdale limit gives the pull-off to ``dps`` digits (module
     docstring: eps <= EPS_SWITCH and SAFETY x the estimated depth below 10**-(dps+1)); else None."""
     try:
         law = md.numeric_law(**{s.name: v for s, v in vals.items()})
+        c0, eps, force, a_min, rel = estimate(law, dps)
+        if eps is None or rel is None or not eps <= EPS_SWITCH:
+            return None
         with workdps(dps + 15):
-            c0 = law.c0(dps + 5)
-            E = mpmath.mpf(sp.N(law.E, dps + 20))
-            sig = mpmath.mpf(sp.N(law.sigma0, dps + 20))
-            Zc = law._Z0c(c0)
-            if not Zc > 0:
-                return None
-            eps = 4 * sig / (mpmath.pi * E * Zc)
-            if not 0 < eps <= EPS_SWITCH:
-                return None
-            force = law._P0lim(c0)
-            if not force < 0:
-                return None
-            a_min = 2 * c0 * mpmath.exp(-1 / eps)
-            a_r = min(c0 / 1000, a_min)
-            P0r = law._P0(a_r)
-            if P0r > 0:
-                n = a_r * law._dP0(a_r) / P0r
-                if not n >= 1:          # P0 ~ a^n with n >= 1 below a_r is what the estimate extrapolates
-                    return None
-                t1 = P0r / n * (a_min / a_r)**n
-            else:
-                t1 = mpmath.mpf(0)      # a flat centre: P0 = 0 below a_r
-            rel = eps * (t1 + sig * a_min**2 / (2 * c0)) / abs(force)
             if not SAFETY * rel <= mpmath.mpf(10)**-(dps + 1):
                 return None
-            h0 = law.h0()
+            E = mpmath.mpf(sp.N(law.E, dps + 20))
+            sig = mpmath.mpf(sp.N(law.sigma0, dps + 20))
             fc = law._f(c0)
             f1 = law._Z0c(c0) - 4 * mpmath.log(2) * sig / (mpmath.pi * E)
             n_f = c0 * f1 / fc if fc > 0 else None
-            return DugdaleLimit(c0, force, eps, a_min, rel, n_f, fc / h0, dps)
+            return DugdaleLimit(c0, force, eps, a_min, rel, n_f, fc / law.h0(), dps)
     except (LineContactError, Outside, ValueError, ZeroDivisionError):
         # no zone of a vanishing contact within the profile (DomainError), a value outside the law's
         # domain: not this limit; the full solve says what holds
         return None
 
 
-__all__ = ["DugdaleLimit", "dugdale_reached", "EPS_SWITCH", "SAFETY"]
+__all__ = ["DugdaleLimit", "dugdale_reached", "estimate", "EPS_SWITCH", "SAFETY"]
