@@ -466,10 +466,11 @@ class MaugisDugdaleContact(AdhesiveContact):
 
     # ------------------------------------------------------------ pull-off: the JKR limit first
     def pull_off_at(self, dps: int = 30, budget=None, **values):
-        """The generic pull-off (:meth:`AdhesiveContact.pull_off_at`), except where the Maugis
-        parameter is so large that the JKR pull-off agrees with this law's to more than ``dps``
-        digits by a stated bound (:func:`.limits.jkr_limit`): then that one, without the
-        Maugis-Dugdale search (sigma_0 = 10**100 or 1e300: the JKR pull-off, at once)."""
+        """The generic pull-off (:meth:`AdhesiveContact.pull_off_at`), except where a limit model
+        answers to ``dps`` digits (:func:`.limits.limit_model`, the one decision of every MD quantity):
+        the JKR limit, where the Maugis parameter is so large that the JKR pull-off agrees with this
+        law's by a stated bound (sigma_0 = 10**100 or 1e300: the JKR pull-off, at once), or the Dugdale
+        limit P(0+) (:mod:`.dugdale`: sigma_0 = 1e-300); the note says which."""
         from ...normal.cases import case_of
         if case_of(self, values) is self:
             from ....core.budget import checked_budget

@@ -45,6 +45,16 @@ evaluated -- model only what the problem needs.  Where only the force is
 within the bound, the minimum is refined on this law in the bracket
 a_J +- 4 da alone (a few inner solves).  Elsewhere None: the
 Maugis-Dugdale search runs (under its budget).
+
+**One decision for every quantity.**  :func:`limit_model` decides, once per
+values and digits, which model answers: the Dugdale limit (sigma_0 -> 0,
+:mod:`.dugdale`), this JKR limit (:class:`JKRLimit`, reached where the bound of
+the pull-off is below the digits asked), or neither.  The pull-off, the
+equilibria (``half_width``, ``branches``: :func:`jkr_equilibria`, each root
+moved by at most B(a)/|P_JKR'(a)|, with B(a) the two bounds above taken at a)
+and the states (``state``, ``force_at``: :func:`jkr_state`, c_D enclosed by
+a + delta/(1 + k) <= c_D <= a M(delta/a)) all ask it; each result says which
+model answered (its note, ``HalfWidths.model``, ``MDState.model``).
 """
 from __future__ import annotations
 
@@ -113,13 +123,13 @@ class JKRLimit:
 
     model = "JKR limit"
 
-    def __init__(self, md, vals, dps, po, E, w, sig, B_lo, B_up):
+    def __init__(self, md, vals, dps, po, E, w, sig):
         self.md, self.vals, self.dps, self.po = md, vals, dps, po
+        self.fixed = fixed_values(vals)
         self.E, self.w, self.sig = E, w, sig
         self.delta = mpmath.pi * E * w / (4 * sig**2)
-        self.B_lo, self.B_up, self.B = B_lo, B_up, max(B_lo, B_up)
+        self.B_lo = self.B_up = self.B = None       # the bounds of the pull-off, set by _reached
         self.lam = mpmath.sqrt(mpmath.mpf(2)**(mpmath.mpf(5) / 3) * po.half_width / self.delta)
-        self.jvals = {s.name: v for s, v in vals.items() if s in set(md.jkr.variables)}
 
     @property
     def jkr_law(self):
@@ -127,8 +137,16 @@ class JKRLimit:
         return self.md.jkr._law({s: v for s, v in self.vals.items() if s in set(self.md.jkr.variables)}, "closed")
 
     def _k(self, A):
-        F1 = _slope_bound(self.md, fixed_values(self.vals), A, self.delta / mpmath.log(2) * (1 + mpmath.mpf(10)**-3))
+        F1 = _slope_bound(self.md, self.fixed, A, self.delta / mpmath.log(2) * (1 + mpmath.mpf(10)**-3))
         return None if F1 is None else mpmath.pi * self.E * F1 / (4 * self.sig)
+
+    def above(self, A):
+        """B_up(A) = sqrt(2 pi a w E*) (1 - (1 + k)^(-1/2)) >= P_MD(a) - P_JKR(a) (module docstring), or None."""
+        k = self._k(A)
+        if k is None:
+            return None
+        jt = mpmath.sqrt(2 * mpmath.pi * A * self.w * self.E)
+        return jt * k / ((1 + mpmath.sqrt(1 + k)) * mpmath.sqrt(1 + k))   # jt (1 - (1 + k)^(-1/2)), no cancellation
 
     def force_bound(self, A):
         """|P_MD(a) - P_JKR(a)| <= this at the half-width A (module docstring: below, 2 sigma_0 delta psi(a/delta)
@@ -136,12 +154,10 @@ class JKRLimit:
         Arb bound of f' on [a, a + delta/ln 2]); None where Arb cannot bound f'."""
         with workdps(self.dps + 15):
             A = mpmath.mpf(A)
-            k = self._k(A)
-            if k is None:
+            up = self.above(A)
+            if up is None:
                 return None
-            lo = 2 * self.sig * self.delta * min(1 / mpmath.log(2), KPSI * mpmath.sqrt(self.delta / A))
-            jt = mpmath.sqrt(2 * mpmath.pi * A * self.w * self.E)
-            return max(lo, jt * k / ((1 + mpmath.sqrt(1 + k)) * mpmath.sqrt(1 + k)))
+            return max(2 * self.sig * self.delta * min(1 / mpmath.log(2), KPSI * mpmath.sqrt(self.delta / A)), up)
 
     def zone(self, A):
         """(c_lo, c_hi) enclosing c_D at the half-width A: c_D - a >= delta/(1 + k) (above) and
@@ -182,23 +198,19 @@ def _reached(md, vals: dict, dps: int):
         E = mpmath.mpf(sp.N(fixed[S.E_star], dps + 20))
         w = mpmath.mpf(sp.N(md.w.xreplace(fixed), dps + 20))
         sig = mpmath.mpf(sp.N(md.sigma0.xreplace(fixed), dps + 20))
-        delta = mpmath.pi * E * w / (4 * sig**2)
-        two_sd = 2 * sig * delta
+        lim = JKRLimit(md, vals, dps, po, E, w, sig)
+        two_sd = 2 * sig * lim.delta
         PJ, aJ = po.force, po.half_width
         r = -PJ - two_sd / mpmath.log(2)
         if not r > 0:
             return None
         a1 = r**2 / (2 * mpmath.pi * w * E)
-        B_lo = two_sd * KPSI * mpmath.sqrt(delta / a1)
-        F1 = _slope_bound(md, fixed, aJ, delta / mpmath.log(2) * (1 + mpmath.mpf(10)**-3))
-        if F1 is None:
+        B_lo = two_sd * KPSI * mpmath.sqrt(lim.delta / a1)
+        B_up = lim.above(aJ)
+        if B_up is None or not max(B_lo, B_up) <= mpmath.mpf(10)**-(dps + 1) * abs(PJ):
             return None
-        k = mpmath.pi * E * F1 / (4 * sig)
-        jt = mpmath.sqrt(2 * mpmath.pi * aJ * w * E)
-        B_up = jt * k / ((1 + mpmath.sqrt(1 + k)) * mpmath.sqrt(1 + k))   # jt (1 - (1 + k)^(-1/2)), no cancellation
-        if not max(B_lo, B_up) <= mpmath.mpf(10)**-(dps + 1) * abs(PJ):
-            return None
-        return JKRLimit(md, vals, dps, po, E, w, sig, B_lo, B_up)
+        lim.B_lo, lim.B_up, lim.B = B_lo, B_up, max(B_lo, B_up)
+        return lim
 
 
 def limit_model(md, vals: dict, dps: int):
