@@ -62,7 +62,8 @@ import mpmath
 import sympy as sp
 
 from ....core import symbols as S
-from ....core.errors import NoPullOffError
+from ....core.errors import LineContactError, NoPullOffError
+from ....core.roots import Outside
 from ....core.precision import workdps
 from ...normal.force_law import PullOff
 from .numbers import fixed_values
@@ -223,8 +224,27 @@ def limit_model(md, vals: dict, dps: int):
     if key not in cache:
         from .dugdale import dugdale_reached
         lim = dugdale_reached(md, vals, dps)
-        cache[key] = lim if lim is not None else _reached(md, vals, dps)
+        cache[key] = lim if lim is not None else (_reached(md, vals, dps) if _may_reach(md, vals, dps) else None)
     return cache[key]
+
+
+def _may_reach(md, vals, dps):
+    """False where the JKR limit cannot hold dps digits, decided without the JKR pull-off: at the zone c0 of a
+    vanishing contact (one root of the engine's zero-width condition) k0 = pi E* f'(c0)/(4 sigma_0) is the k of
+    the upper bound (module docstring) there; B_up/sqrt(2 pi a w E*) ~ k/2 at a_J, and c0 ~ delta/ln 2 << a_J
+    with f' rising (f convex near the contact: every profile of the tests) gives k0 <= k(a_J); so k0 above
+    10**(2-dps) (a margin of 1000 on the 10**-(dps+1) asked) leaves the JKR pull-off unsearched.  True where
+    c0 cannot be had (the decision then falls to the bound itself)."""
+    try:
+        law = md.numeric_law(**{s.name: v for s, v in vals.items()})
+        with workdps(30):
+            c0 = law.c0(15)
+            E = mpmath.mpf(sp.N(law.E, 30))
+            sig = mpmath.mpf(sp.N(law.sigma0, 30))
+            f1 = law._Z0c(c0) - 4 * mpmath.log(2) * sig / (mpmath.pi * E)
+            return mpmath.pi * E * f1 / (4 * sig) <= mpmath.mpf(10)**(2 - dps)
+    except (LineContactError, Outside, ValueError, ZeroDivisionError):
+        return True
 
 
 class HalfWidths(tuple):
