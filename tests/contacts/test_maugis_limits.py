@@ -243,3 +243,7 @@ def test_cohesive_zone_stops_at_the_crest():
     md = lcs.LineContact(1 - sp.cos(lcs.x), verify=False).maugis_dugdale()
     with pytest.raises(DomainError, match="stops rising"):
         md.pull_off_at(15, E_star=1, gamma=1, sigma_0="1e-6")
+    # the rigid limit f(c_r) = h0 (maugis.check) doubled its bracket for ever on this bounded profile
+    from linecontact_sym.contacts.adhesion.maugis.check import rigid_limit
+    with pytest.raises(DomainError, match="stays below h0"):
+        rigid_limit(md, 15, E_star=1, gamma=1, sigma_0="1e-6")
