@@ -134,3 +134,116 @@ def test_pull_off_reference_has_a_budget(monkeypatch):
     vals = md._numeric_values(dict(R=1, E_star=1, gamma="1/100", sigma_0="1/4"))
     with pytest.raises(BudgetExceeded):
         pull_off.reference(md, vals, 45)
+
+
+# ---------------------------------------------------------------- round 5, second pass: every limit at once
+PARA = dict(R=1, E_star=1, gamma=1)
+
+
+@pytest.fixture(scope="module")
+def md_parabola():
+    return lcs.parabola(verify=False).maugis_dugdale()
+
+
+def _c0_parabola(sigma0, w, dps=40):
+    """The zone of a vanishing contact of x^2/2 (E* = 1), our own quadratic: c^2/2 + (4 ln2 sigma0/pi) c = w/sigma0."""
+    with mpmath.workdps(dps):
+        s, w = mpmath.mpf(sigma0), mpmath.mpf(w)
+        b = 4 * mpmath.log(2) * s / mpmath.pi
+        return -b + mpmath.sqrt(b * b + 2 * w / s)
+
+
+def test_dugdale_limit_of_the_pull_off(md_parabola):
+    """before: sigma_0 = 1e-300 searched P(a) (down to a = 1e-86; 57 s measured under load); after: the
+    Dugdale limit P(0+) = -2 sigma_0 c0 at once, the result saying so and stating the scaling (parabola:
+    sigma_0^(1/2)), equal to our own root of the quadratic."""
+    po = md_parabola.pull_off_at(15, **PARA, sigma_0=1e-300)
+    assert "the Dugdale limit" in po.note and "sigma_0^(1 - 1/n) -> 0 (n = 2.0" in po.note
+    c0 = _c0_parabola(mpmath.mpf(1e-300), 1)
+    assert abs(po.force + 2 * mpmath.mpf(1e-300) * c0) < 1e-15 * abs(po.force)
+    assert po.kind == "infimum" and po.half_width == 0
+
+
+def test_dugdale_limit_against_the_full_search(md_parabola):
+    """At lambda = 0.2 (sigma_0 = 0.0231, w = 1/100) the limit answers and equals the full search of P(a)
+    (equilibria.minimum on the law, which does not use it); at lambda = 0.5 its estimated error (1.1e-7,
+    the full search's 1.1e-7) keeps the full search."""
+    from linecontact_sym.contacts.adhesion.maugis.dugdale import dugdale_reached
+    v = dict(R=1, E_star=1, gamma="1/100", sigma_0="0.023106628721370856")
+    po = md_parabola.pull_off_at(15, **v)
+    assert "the Dugdale limit" in po.note
+    full = equilibria.minimum(md_parabola._law(md_parabola._numeric_values(v), "closed"), 15)
+    assert "Dugdale" not in full.note
+    assert abs(po.force - full.force) < 1e-15 * abs(full.force)
+    vals = md_parabola._numeric_values(dict(v, sigma_0="0.05776657180342713"))
+    assert dugdale_reached(md_parabola, vals, 15) is None
+
+
+def _jkr_roots_parabola(load, w):
+    """The two roots of pi a^2/4 - sqrt(2 pi a w) = load (E* = R = 1), by our own bisection on each side of
+    the minimum a* = (2 w/pi)^(1/3) of the JKR law."""
+    with mpmath.workdps(40):
+        P = lambda a: mpmath.pi * a**2 / 4 - mpmath.sqrt(2 * mpmath.pi * a * w) - load   # noqa: E731
+        am = (2 * mpmath.mpf(w) / mpmath.pi)**(mpmath.mpf(1) / 3)
+        out = []
+        for lo, hi in ((am, mpmath.mpf(100)), (mpmath.mpf(10)**-30, am)):
+            for _ in range(200):
+                mid = (lo + hi) / 2
+                if (P(mid) > 0) == (P(hi) > 0):
+                    hi = mid
+                else:
+                    lo = mid
+            out.append((lo + hi) / 2)
+        return out
+
+
+def test_half_width_and_state_at_the_jkr_limit(md_parabola):
+    """before: half_width at sigma_0 = 10**100 scanned the MD law (24 s measured; cosh 160 s), and the state's
+    pressure was the adhesionless one (c_D^2 - a^2 vanished at 25 digits: p(0) = 0.25 for JKR's -0.878);
+    after: the JKR roots and state from the one limit decision, saying so, against our own JKR numbers."""
+    v = dict(PARA, sigma_0=10**100)
+    hw = md_parabola.half_width(-1, 30, **v)
+    assert hw.model == "JKR limit" and "JKR limit" in hw.note
+    for got, ref in zip(hw, _jkr_roots_parabola(-1, 1)):
+        assert abs(got - ref) < 1e-28 * ref
+    br = md_parabola.branches(-1, 30, **v)
+    assert br.model == "JKR limit" and [s for _, s in br] == ["stable", "unstable"]
+    st = md_parabola.state(sp.Rational(1, 2), 15, **v)
+    assert st.model == "JKR limit"
+    with mpmath.workdps(30):
+        a, x = mpmath.mpf(1) / 2, mpmath.mpf("0.3")
+        # JKR: Hertz pressure minus the adhesive flat punch of load sqrt(2 pi a w) (Popov Eq. 31)
+        p_ref = mpmath.sqrt(a * a - x * x) / 2 - mpmath.sqrt(2 * mpmath.pi * a) / (mpmath.pi * mpmath.sqrt(a * a - x * x))
+        P_ref = mpmath.pi * a * a / 4 - mpmath.sqrt(2 * mpmath.pi * a)
+        assert abs(st.pressure(x) - p_ref) < 1e-14 * abs(p_ref)
+        assert abs(st.force - P_ref) < 1e-14 * abs(P_ref)
+        assert abs((st.c_D - a) - mpmath.pi / (4 * mpmath.mpf(10)**200)) < 1e-14 * (st.c_D - a)
+    assert md_parabola.force_at("0.5", 15, **v) == st.force
+
+
+def test_state_pressure_keeps_its_digits_at_a_large_maugis_parameter(md_parabola):
+    """The full solve (sigma_0 = 10**12: lambda ~ 2e12, JKR not within 15 digits): the pressure inside the
+    contact is JKR's to ~1/lambda; before, c_D^2 - a^2 ~ 1e-24 was taken at 25 digits (p(0) was off)."""
+    st = md_parabola.state(sp.Rational(1, 2), 15, **PARA, sigma_0=10**12)
+    assert st.model == "Maugis-Dugdale"
+    with mpmath.workdps(30):
+        a = mpmath.mpf(1) / 2
+        p_ref = a / 2 - mpmath.sqrt(2 * mpmath.pi * a) / (mpmath.pi * a)
+        assert abs(st.pressure(0) - p_ref) < 1e-9 * abs(p_ref)
+
+
+def test_cohesive_zone_stops_at_the_crest():
+    """before: 1 - cos(x) at sigma_0 = 1e-6 (h0 = 1e6, the profile at most 2) solved the gap condition at
+    c ~ 1e12, where it has a root in every period: 15-65 s, and the pull-off differed from run to run in the
+    7th digit (-2266180.07, -2266175.88); after: a DomainError naming the crest x = pi at once."""
+    from linecontact_sym.contacts.adhesion.maugis.numbers import profile_rise_end
+    with mpmath.workdps(30):
+        assert abs(profile_rise_end(lambda t: mpmath.sin(t)) - mpmath.pi) < 1e-25
+    assert profile_rise_end(lambda t: t) is None
+    md = lcs.LineContact(1 - sp.cos(lcs.x), verify=False).maugis_dugdale()
+    with pytest.raises(DomainError, match="stops rising"):
+        md.pull_off_at(15, E_star=1, gamma=1, sigma_0="1e-6")
+    # the rigid limit f(c_r) = h0 (maugis.check) doubled its bracket for ever on this bounded profile
+    from linecontact_sym.contacts.adhesion.maugis.check import rigid_limit
+    with pytest.raises(DomainError, match="stays below h0"):
+        rigid_limit(md, 15, E_star=1, gamma=1, sigma_0="1e-6")

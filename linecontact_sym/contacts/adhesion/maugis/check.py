@@ -32,7 +32,7 @@ import sympy as sp
 
 from ....core import symbols as S
 from ....core.conversion import to_mpf
-from ....core.errors import VerificationError
+from ....core.errors import DomainError, VerificationError
 from ....core.precision import workdps
 from ....numeric.flamant import flamant_displacement
 from ....numeric.arb_compile import ArbUnsupported, bound_acb
@@ -258,8 +258,13 @@ def rigid_limit(md, dps=30, **values):
         h0 = _mp(sp.N(md.h0.xreplace(vals), dps + 20))
         f = sp.lambdify(S.x, md.profile.expr.xreplace({k: v for k, v in vals.items() if k != S.E_star}), "mpmath")
         lo, hi = mpmath.mpf(0), mpmath.mpf(1)
-        while f(hi) < h0:
+        for _ in range(1100):
+            if not f(hi) < h0:
+                break
             hi *= 2
+        else:     # a bounded profile (1 - cos(x) at h0 > 2): it waited here for ever
+            raise DomainError(f"no rigid Dugdale limit of f(x) = {md.profile.expr}: the profile stays below h0 = "
+                              f"w/sigma_0 = {mpmath.nstr(h0, 8)} up to x = 2**1100 (f(c_r) = h0 has no root)")
         cr = mpmath.findroot(lambda x: f(x) - h0, (lo if f(lo) < h0 else hi / 2, hi), solver="anderson")
         return -2 * sig * cr
 

@@ -44,7 +44,7 @@ import mpmath
 import sympy as sp
 
 from ....core import symbols as S
-from ....core.conversion import float_values, point_value, rational
+from ....core.conversion import float_values, point_value, rational, to_mpf
 from ....core.errors import DomainError, NumericValuesRequired
 from ....core.roots import Outside
 from ....core.precision import workdps
@@ -61,7 +61,7 @@ from ...sampling import point_sampler
 from . import choice as maugis_choice
 from .choice import ModelChoice
 from .derive import dugdale_parts
-from .limits import jkr_limit
+from .limits import HalfWidths, JKRLimit, jkr_equilibria, jkr_state, limit_model, limit_pull_off
 from .numbers import MDLaw, MDState
 
 #: ranges of sigma_0 and of c_D/a - 1 at the verification points
@@ -404,22 +404,80 @@ class MaugisDugdaleContact(AdhesiveContact):
         else:
             with workdps(dps + 10):
                 A = mpmath.mpf(sp.N(e, dps + 20))
+        st = self._limit_state(law, A, dps, values)
+        if st is not None:
+            return st
         with _real_profile(self, values):
             return law.state(A, dps)
 
+    def _limit_state(self, law, A, dps, values):
+        """The state at A from the JKR limit (:func:`.limits.jkr_state`) where :func:`.limits.limit_model` says it
+        is reached and its bounds hold at A; else None.  Tried only where the zone length delta is below
+        10**-(dps+1) a (nothing to decide otherwise: the JKR law cannot hold dps digits)."""
+        with workdps(20):
+            if not law._delta() <= mpmath.mpf(10)**-(dps + 1) * A:
+                return None
+        lim = limit_model(self, self._numeric_values(values), dps)
+        return jkr_state(lim, law, A, dps) if isinstance(lim, JKRLimit) else None
+
+    # ------------------------------------------------------------ equilibria: the JKR limit first
+    def _equilibria(self, load, dps, values):
+        """([(a, stable)], model, note) at a numeric load: from the JKR law where :func:`.limits.limit_model`
+        says the JKR limit is reached and :func:`.limits.jkr_equilibria` bounds every root; else the generic
+        search on this law."""
+        from ...normal.equilibria import equilibria
+        vals = self._numeric_values(values)
+        lim = limit_model(self, vals, dps)
+        if isinstance(lim, JKRLimit):
+            got = jkr_equilibria(lim, load, dps)
+            if got is not None:
+                return got[0], "JKR limit", got[1]
+        return equilibria(self._law(vals, "closed"), load, dps), "Maugis-Dugdale", \
+            "the equilibria of the Maugis-Dugdale law (inner solve of c_D at each a)"
+
+    def _half_width(self, load=S.P, dps: int = 30, **values):
+        """Equilibrium half-widths at the load P, stable first (the generic :meth:`AdhesiveContact._half_width`);
+        at a numeric load a :class:`.limits.HalfWidths` (a tuple of mpf) whose ``model`` says which model
+        answered: the JKR limit (sigma_0 = 10**100: JKR's roots at once, with the bound) or the full law."""
+        e = to_sympy(load)
+        if e.free_symbols:
+            return super()._half_width(load, dps, **values)
+        from ....core.errors import NoEquilibriumError
+        from .. import branches as br
+        roots, model, note = self._equilibria(e, dps, values)
+        if not roots:
+            raise NoEquilibriumError(f"{self.profile.name!r}: no equilibrium at the load P = {e}, "
+                                     f"{br.why_no_equilibrium(self._law(self._numeric_values(values), 'closed'), e)}")
+        return HalfWidths([r for r, _ in roots], model, note)
+
+    def branches(self, load, dps: int = 30, **values):
+        """Like :meth:`half_width` with the stability: ((a, 'stable'|'unstable'), ...), a
+        :class:`.limits.HalfWidths` saying which model answered."""
+        roots, model, note = self._equilibria(to_sympy(load), dps, values)
+        return HalfWidths([(r, "stable" if st else "unstable") for r, st in roots], model, note)
+
+    def force_at(self, a, dps: int = 15, **values):
+        """P(a) at a numeric half-width: the JKR law's where the JKR limit holds it to ``dps`` digits
+        (:meth:`_limit_state`), else the generic :meth:`AdhesiveContact.force_at` (the inner solve)."""
+        law = self.numeric_law(**values)
+        A = to_mpf(to_sympy(a))
+        st = self._limit_state(law, A, dps, values) if A > 0 else None
+        return st.force if st is not None else super().force_at(a, dps, **values)
+
     # ------------------------------------------------------------ pull-off: the JKR limit first
     def pull_off_at(self, dps: int = 30, budget=None, **values):
-        """The generic pull-off (:meth:`AdhesiveContact.pull_off_at`), except where the Maugis
-        parameter is so large that the JKR pull-off agrees with this law's to more than ``dps``
-        digits by a stated bound (:func:`.limits.jkr_limit`): then that one, without the
-        Maugis-Dugdale search (sigma_0 = 10**100 or 1e300: the JKR pull-off, at once)."""
+        """The generic pull-off (:meth:`AdhesiveContact.pull_off_at`), except where a limit model
+        answers to ``dps`` digits (:func:`.limits.limit_model`, the one decision of every MD quantity):
+        the JKR limit, where the Maugis parameter is so large that the JKR pull-off agrees with this
+        law's by a stated bound (sigma_0 = 10**100 or 1e300: the JKR pull-off, at once), or the Dugdale
+        limit P(0+) (:mod:`.dugdale`: sigma_0 = 1e-300); the note says which."""
         from ...normal.cases import case_of
         if case_of(self, values) is self:
             from ....core.budget import checked_budget
             from ...normal.equilibria import SEARCH_BUDGET, searching_until
             vals = self._numeric_values(values)
             with searching_until(SEARCH_BUDGET if budget is None else checked_budget(budget)):
-                lim = jkr_limit(self, vals, dps)
+                lim = limit_pull_off(self, vals, dps)
             if lim is not None:
                 return lim
         return super().pull_off_at(dps, budget, **values)
@@ -427,7 +485,7 @@ class MaugisDugdaleContact(AdhesiveContact):
     def _pull_off_checked(self, vals, dps):
         from ...normal.equilibria import within_search_budget
         with within_search_budget():
-            lim = jkr_limit(self, vals, dps)
+            lim = limit_pull_off(self, vals, dps)
         return lim if lim is not None else super()._pull_off_checked(vals, dps)
 
     def displacement_control(self):

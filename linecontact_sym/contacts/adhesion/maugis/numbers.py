@@ -56,6 +56,10 @@ class MDState:
     gap_check  where g0 is not closed: the gap at c_D recomputed through the one
                reference integrator (a RefValue: an Arb enclosure where Arb can,
                ``gap_check.method``), to compare with h0; else None
+    model      which model answered: 'Maugis-Dugdale' (the inner solve) or 'JKR limit'
+               (:func:`.limits.limit_model`: force and slope from the JKR law, c_D from the
+               bounds of the zone, each within 10**-(dps+1) by the bound ``note`` states)
+    note       how the state was obtained
     """
 
     a: mpmath.mpf
@@ -67,6 +71,8 @@ class MDState:
     gap: object = field(repr=False, default=None)
     closed: dict = field(repr=False, default_factory=dict)
     gap_check: object = field(repr=False, default=None)
+    model: str = "Maugis-Dugdale"
+    note: str = field(repr=False, default="")
 
     @property
     def m(self):
@@ -122,6 +128,37 @@ def profile_end(f):
                 if good is None:
                     continue
                 return domain_end(f, good, X, iters=200)
+        return None
+
+
+def profile_rise_end(f1):
+    """Where the profile stops rising: the first x at which f' turns negative (mpf at 30 digits;
+    1 - cos(x) at x = pi), found on the doubling grid 2**k, k = -60..200, and refined by bisection
+    of the sign of f'; None where f' >= 0 at every grid point.  A cohesive zone ending beyond it
+    would leave the uniqueness of c_D (module docstring: g0 rises where f does): the gap condition
+    has a root in every rise of the profile, and a zone reaching over a trough (where the profile
+    comes back towards the other surface) is not one Dugdale zone."""
+    with workdps(30):
+        good = None
+        for k in range(-60, 201):
+            X = mpmath.mpf(2)**k
+            try:
+                v = f1(X)
+            except (Outside, *UNDEFINED):
+                continue
+            if v < 0:
+                if good is None:
+                    return None       # falling from the start: not a contact profile, refused elsewhere
+                lo, hi = good, X
+                for _ in range(120):
+                    mid = (lo + hi) / 2
+                    try:
+                        falling = f1(mid) < 0
+                    except (Outside, *UNDEFINED):
+                        falling = True
+                    lo, hi = (lo, mid) if falling else (mid, hi)
+                return lo
+            good = X
         return None
 
 
@@ -257,6 +294,11 @@ class MDLaw:
         pf = {k: v for k, v in fixed.items() if k != S.E_star}
         self._f = _real(_lam(md.profile.expr.xreplace(pf), (x,)))
         self.x_end = profile_end(self._f)
+        self.x_rise = profile_rise_end(_real(_lam(sp.diff(md.profile.expr.xreplace(pf), x), (x,))))
+        if self.x_rise is not None and (self.x_end is None or self.x_rise < self.x_end):
+            self.x_end, self.end_kind = self.x_rise, "rise"
+        else:
+            self.end_kind = "domain"
         if self.closed:
             P = md.force_expr.xreplace(fixed)
             G = md.gap_c_expr.xreplace(fixed) - self.h0expr
@@ -334,9 +376,23 @@ class MDLaw:
         if self.x_end is None:
             return None
         if not A < self.x_end:
-            raise DomainError(f"the half-width a = {mpmath.nstr(A, 8)} reaches the end of the profile's real "
-                              f"domain x = {mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
+            what = "the crest where the profile stops rising" if self.end_kind == "rise" else \
+                "the end of the profile's real domain"
+            raise DomainError(f"the half-width a = {mpmath.nstr(A, 8)} reaches {what}, x = "
+                              f"{mpmath.nstr(self.x_end, 8)}: no cohesive zone beyond it")
         return (self.x_end - A) * (1 - mpmath.mpf(10)**-(mpmath.mp.dps - 5))
+
+    def _beyond_end(self, where):
+        """The message of a cohesive zone that would have to reach past :attr:`x_end`."""
+        if self.end_kind == "rise":
+            return (f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, where the profile "
+                    f"stops rising (f' < 0 beyond, f there = {mpmath.nstr(self._f(self.x_end), 6)}){where}: the gap "
+                    f"there is still below h0 = w/sigma_0 = {mpmath.nstr(self.h0(), 6)}; beyond a crest the gap "
+                    f"condition has a root in every rise of the profile and one Dugdale zone no longer describes "
+                    f"the contact (a larger sigma_0 or a smaller work of adhesion keeps the zone before the crest)")
+        return (f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, beyond which "
+                f"the profile is not real{where}: the gap there is still below h0 = w/sigma_0 "
+                f"(a larger sigma_0 or a smaller work of adhesion keeps it inside)")
 
     def _solve_s(self, F, dF, s0, tol, s_max=None, A=None, with_slope=False, near=False):
         """Root of the increasing F on 0 < s < s_max from the guess s0: bracket
@@ -390,10 +446,7 @@ class MDLaw:
             while F(hi) <= 0:
                 if s_max is not None and hi >= s_max:
                     where = f" at a = {mpmath.nstr(A, 8)}" if A is not None else " as a -> 0+"
-                    raise DomainError(
-                        f"the cohesive zone would need to reach past x = {mpmath.nstr(self.x_end, 10)}, beyond which "
-                        f"the profile is not real{where}: the gap there is still below h0 = w/sigma_0 "
-                        f"(a larger sigma_0 or a smaller work of adhesion keeps it inside)")
+                    raise DomainError(self._beyond_end(where))
                 lo, hi = hi, hi * 4 if s_max is None else min(hi * 4, s_max)
                 n += 1
                 if n > 2000:
@@ -564,20 +617,31 @@ class MDLaw:
 
     def state(self, A, dps: int) -> MDState:
         P, dP, C = self.checked_P_and_slope(A, dps)
+        return self.state_at(A, C, P, dP, dps, check=True)
+
+    def state_at(self, A, C, P, dP, dps: int, model="Maugis-Dugdale", note="", check=False) -> MDState:
+        """The :class:`MDState` of the half-widths A and C = c_D with the load P and slope dP; its pressure and
+        gap evaluated at dps + 10 digits plus those that c_D - a costs (a zone 1e-200 of a wide at sigma_0 =
+        10**100: c_D^2 - a^2 vanished at dps + 10 digits and the pressure was the adhesionless one).
+        ``check``: the gap at c_D recomputed by the reference integrator where g0 is not closed."""
         with workdps(dps + 10):
             A = mpmath.mpf(A)
             h0 = self.h0()
-        law, sig = self, mpmath.mpf(sp.N(self.sigma0, dps + 20))
+        zone = mpmath.fsub(C, A, exact=True)      # c_D - a without rounding: it may be 1e-200 of c_D
+        with workdps(30):
+            lost = max(0, int(mpmath.log10(C / zone))) if zone > 0 else 0
+        work = dps + 10 + lost
+        law, sig = self, mpmath.mpf(sp.N(self.sigma0, work + 10))
 
         def pressure(x):
-            with workdps(dps + 10):
+            with workdps(work):
                 x = abs(mpmath.mpf(x))
                 if x < A:
                     return +law._p_in(x, A, C)
                 return -sig if x <= C else mpmath.mpf(0)
 
         def gap(x):
-            with workdps(dps + 10):
+            with workdps(work):
                 x = abs(mpmath.mpf(x))
                 if x <= A:
                     return mpmath.mpf(0)
@@ -587,7 +651,7 @@ class MDLaw:
                 # Dugdale punches of width t in (a, min(x, c_D)): -(2/(pi E*)) int acosh(x/t) g_D(t) dt,
                 # t = c_D sin(phi) removes the endpoint singularity of g_D at c_D; x/t >= 1 on the whole
                 # range (t <= min(x, c_D)): a ratio rounded below 1 at the end is 1 (the real branch of acosh)
-                E = mpmath.mpf(sp.N(law.E, dps + 20))
+                E = mpmath.mpf(sp.N(law.E, work + 10))
                 lo, hi = mpmath.asin(A / C), mpmath.asin(top / C)
 
                 def integrand(ph):
@@ -595,7 +659,8 @@ class MDLaw:
                     return mpmath.acosh(max(x / t, 1)) * (-2 * sig * t)
                 I = mpmath.quad(integrand, [lo, hi])
                 return +(law._g0(x, A) - 2 / (mpmath.pi * E) * I)
-        return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts), self.certified_gap(A, C, dps))
+        return MDState(A, C, P, dP, h0, pressure, gap, dict(self.closed_parts),
+                       self.certified_gap(A, C, dps) if check else None, model, note)
 
 
 __all__ = ["MDLaw", "MDState"]
