@@ -16,7 +16,7 @@ rewrites.  Every application is re-checked numerically (20 digits at random
 admissible points, 30-digit evaluation) before it is kept.
 
 Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCarlson`,
-:class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
+:class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`, :class:`AcoshExcess`,
 :class:`SquareDifferences`, :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinhExcess`, :class:`AsinToAtan`,
 :class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
 :class:`ExpTail`, :class:`FactorDifferences`.  The special functions they produce
@@ -44,7 +44,7 @@ from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
-           "GammaAbsorb", "GammaRatio", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinhExcess", "AsinToAtan", "AcosToAtan",
+           "GammaAbsorb", "GammaRatio", "AcoshExcess", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinhExcess", "AsinToAtan", "AcosToAtan",
            "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences",
            "is_rational_in_symbols"]
 
@@ -233,6 +233,73 @@ class AsinhExcess(StableRule):
                             return sp.Add(*rest, -C * asinh_excess(u))
             return e
         return expr.replace(lambda e: e.is_Add and e.has(sp.asinh), do)
+
+
+class AcoshExcess(StableRule):
+    """R + C acosh(w) = (R + C w sqrt(w^2 - 1)) - C asinh_excess(sqrt(w^2 - 1))
+    for a sum holding a term C acosh(w), w = n/d, the first part reduced
+    symbolically: with n = W D, d = D (D > 0) and W = sqrt(1 + r^2), r =
+    sqrt(w^2 - 1), R + C W r is a polynomial in r and sqrt(1 + r^2) whose
+    cancelling terms drop out exactly; kept where it has fewer terms than R.
+
+    The excess form of :class:`AsinhExcess` for any weights: the sin^4
+    array's gap h (t S^2 s + 2 t s^3 - 3 S^4 acosh(s/S))/2 (s = sin(pi x/L),
+    S = sin(pi a/L), t = sqrt(s^2 - S^2)) is h (2 s t^3 + 3 S^4
+    asinh_excess(t/S))/2, no two terms cancelling as t -> 0 (full contact, or
+    the contact edge); the sinusoid's pair is the case where R + C W r = 0.
+    Before :class:`SquareDifferences`, which then makes s^2 - S^2 a product."""
+
+    name = "acosh-excess"
+    heads = (sp.acosh,)
+
+    def apply(self, expr):
+        def do(e):
+            for term in e.args:
+                for ac in term.atoms(sp.acosh):
+                    new = _acosh_excess(e, term, ac)
+                    if new is not None:
+                        return new
+            return e
+        return expr.replace(lambda e: e.is_Add and e.has(sp.acosh), do)
+
+
+def _acosh_excess(e, term, ac):
+    """:class:`AcoshExcess` on the sum ``e`` for its term ``term`` = C ``ac``, or None."""
+    C = sp.cancel(term / ac)
+    if C.has(ac) or C.has(sp.acosh):
+        return None
+    n, d = sp.fraction(sp.together(ac.args[0]))
+    if not n.free_symbols or d.is_number:
+        return None
+    D, W, r = sp.Dummy("D", positive=True), sp.Dummy("W", positive=True), sp.Dummy("r", positive=True)
+    rest = e - term
+
+    inner = n.free_symbols | d.free_symbols
+
+    def in_r(v):
+        """v in r, sqrt(1 + r^2) and D, or None where v is not a function of w and d alone."""
+        v = v.xreplace({n: W * D, d: D})
+        if v.free_symbols & inner:
+            return None
+        # sqrt((W D - D)(W D + D)) -> D sqrt(W^2 - 1): each half-integer power's base expanded first
+        v = v.replace(lambda q: q.is_Pow and q.exp.is_Rational and q.exp.q == 2,
+                      lambda q: sp.Pow(sp.factor_terms(sp.expand(q.base)), q.exp))
+        v = sp.powdenest(sp.factor_terms(v), force=True)
+        return sp.expand(sp.powdenest(sp.expand(v.xreplace({W: sp.sqrt(1 + r**2)})), force=True))
+
+    R_r, T_r = in_r(rest), in_r(C * W * sp.sqrt(W**2 - 1))
+    if R_r is None or T_r is None:
+        return None
+    diff = sp.expand(R_r + T_r)
+    if diff.has(W) or (diff != 0 and len(sp.Add.make_args(diff)) >= len(sp.Add.make_args(R_r))):
+        return None     # nothing cancelled: the pair is not an excess
+    diff = sp.factor(diff)
+    # t = sqrt(n^2 - d^2) factored (sqrt(x - a) sqrt(x + a); sin(pi (x - a)/L) sin(pi (x + a)/L))
+    t = stable_sqrt(n**2 - d**2)
+    if t is None:
+        t = sp.sqrt(n**2 - d**2)
+    back = diff.xreplace({sp.sqrt(1 + r**2): W}).xreplace({W: n / d, r: t / d, D: d})
+    return back - C * asinh_excess(t / d)
 
 
 @functools.lru_cache(maxsize=4096)
@@ -536,7 +603,7 @@ class FactorDifferences(StableRule):
 
 
 #: the rules in the order :func:`stabilize` applies them
-RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), SquareDifferences(),
+RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AcoshExcess(), SquareDifferences(),
          AtanhToAsinh(), AcoshToAsinh(), AsinhExcess(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(),
          HalfAngle(), ExpTail(), FactorDifferences())
 
