@@ -19,8 +19,8 @@ Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCar
 :class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`, :class:`AcoshExcess`,
 :class:`SquareDifferences`, :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinhExcess`, :class:`AsinToAtan`,
 :class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
-:class:`ExpTail`, :class:`FactorDifferences`.  The special functions they produce
-(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``, ``exp_tail``) live in
+:class:`ExpTail`, :class:`FactorDifferences`, :class:`SinPiReduction`.  The special functions they produce
+(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``, ``exp_tail``, ``asinh_excess``, ``sin_pi_sum``) live in
 :mod:`linecontact_sym.numeric.special`.
 
 The result is a :class:`StableForm`: the rewritten expression and the list of
@@ -37,7 +37,7 @@ import sympy as sp
 
 from ..method.derivation import gammasimp_masked
 from .accuracy import expressions_agree
-from .special import asinh_excess, exp_tail, gamma_ratio, hyp2f1c
+from .special import asinh_excess, exp_tail, gamma_ratio, hyp2f1c, sin_pi_sum
 from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
                           n_terms, nonneg, square_differences, stable_sqrt, is_rational_in_symbols)
 from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
@@ -45,7 +45,7 @@ from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
            "GammaAbsorb", "GammaRatio", "AcoshExcess", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinhExcess", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences",
+           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences", "SinPiReduction",
            "is_rational_in_symbols"]
 
 
@@ -603,9 +603,48 @@ class FactorDifferences(StableRule):
 
 
 #: the rules in the order :func:`stabilize` applies them
+class SinPiReduction(StableRule):
+    """sin(pi u/L) = sin_pi_sum(L, u_1, ..., u_k) and cos(pi u/L) = sin_pi_sum(L,
+    u_1, ..., u_k, L/2) for u = u_1 + ... + u_k, each term a rational multiple of
+    a symbol, L > 0 a symbol or a number: :class:`~.special.sin_pi_sum` takes the
+    nearest multiple of L off the sum exactly.  A periodic array near full contact
+    (a -> L/2) has sin(pi (a + x)/L) at a + x -> L and cos(pi x/L) at x -> L/2,
+    where the sine of the rounded argument keeps only eps pi/|sin| of its size
+    (2e-9 relative at a = L/2 - 1e-7 L); last, after the rules that read sines."""
+
+    name = "sin-pi-reduction"
+    heads = (sp.sin, sp.cos)
+
+    def applies(self, expr) -> bool:
+        """A sine or cosine of pi times something occurs."""
+        return any(f.args[0].has(sp.pi) for f in expr.atoms(sp.sin, sp.cos))
+
+    def apply(self, expr):
+        def do(e):
+            parts = _pi_fraction(e.args[0])
+            if parts is None:
+                return e
+            L, terms = parts
+            return sin_pi_sum(L, *terms, *((L / 2,) if isinstance(e, sp.cos) else ()))
+        return expr.replace(lambda e: isinstance(e, (sp.sin, sp.cos)), do)
+
+
+def _pi_fraction(arg):
+    """(L, [u_1, ..., u_k]) for arg = pi (u_1 + ... + u_k)/L (see :class:`SinPiReduction`), else None."""
+    num, den = sp.fraction(sp.together(arg / sp.pi))
+    if not (den.is_positive and (den.is_Symbol or den.is_Rational)) or num.has(sp.pi):
+        return None
+    terms = sp.Add.make_args(sp.expand(num))
+    for t in terms:
+        c, v = t.as_coeff_Mul()
+        if not (c.is_Rational and v.is_Symbol):
+            return None
+    return den, terms
+
+
 RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AcoshExcess(), SquareDifferences(),
          AtanhToAsinh(), AcoshToAsinh(), AsinhExcess(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(),
-         HalfAngle(), ExpTail(), FactorDifferences())
+         HalfAngle(), ExpTail(), FactorDifferences(), SinPiReduction())
 
 
 # ====================================================================== driver
