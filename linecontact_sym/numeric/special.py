@@ -63,7 +63,7 @@ from ..core.precision import workdps, workprec
 sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess",
-           "sin_pi_sum", "np_sin_pi_sum",
+           "sin_pi_sum", "np_sin_pi_sum", "sin_pi_sum_scalar",
            "np_rf", "np_rd", "np_rg", "np_rj", "np_gamma_ratio", "np_hyp2f1c", "np_exp_tail", "exp_tail_scalar",
            "np_asinh_excess", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
 
@@ -569,24 +569,33 @@ def _two_sum(p, q):
     return s, (p - (s - v)) + (q - v)
 
 
-def np_sin_pi_sum(L, *terms):
-    """float64 sin(pi (t_1 + ... + t_k)/L): the terms summed with their rounding
-    errors carried (TwoSum), the nearest multiple k L taken off the leading part
-    (exact by Sterbenz's lemma where the sum is near k L, |k| <= 2: k L is exact),
-    the sine of the remainder r, |r| <= L/2, with the sign (-1)^k.  Near a
-    multiple of L the remainder is as accurate as the terms: sin(pi (a + x)/L) at
-    a + x = L - 2e-7 keeps every digit where sin(pi*(a + x)/L) keeps 9."""
-    L = np.asarray(L, dtype=float)
-    s = np.zeros(np.broadcast_shapes(L.shape, *[np.shape(t) for t in terms]))
-    err = np.zeros_like(s)
+def _sin_pi_sum(L, terms, rnd, sin):
+    """sin(pi (t_1 + ... + t_k)/L) on floats or arrays (``rnd``, ``sin``: round and
+    sine of the one or the other): the terms summed with their rounding errors
+    carried (TwoSum), the nearest multiple k L taken off the leading part (exact by
+    Sterbenz's lemma where the sum is near k L, |k| <= 2: k L is exact), the sine of
+    the remainder r, |r| <= L/2, with the sign (-1)^k."""
+    s = err = 0.0
     for t in terms:
-        s, e = _two_sum(s, np.asarray(t, dtype=float))
+        s, e = _two_sum(s, t)
         err = err + e
-    k = np.round((s + err) / L)
+    k = rnd((s + err) / L)
     hi, e = _two_sum(s, -k * L)
-    r = hi + (err + e)
-    out = np.where(np.mod(k, 2) == 0, 1.0, -1.0) * np.sin(np.pi * (r / L))
+    return (1 - 2 * (k % 2)) * sin(math.pi * ((hi + (err + e)) / L))
+
+
+def np_sin_pi_sum(L, *terms):
+    """float64 sin(pi (t_1 + ... + t_k)/L) (:func:`_sin_pi_sum`).  Near a multiple
+    of L the remainder is as accurate as the terms: sin(pi (a + x)/L) at a + x =
+    L - 2e-7 keeps every digit where sin(pi*(a + x)/L) keeps 9."""
+    out = np.asarray(_sin_pi_sum(np.asarray(L, dtype=float), [np.asarray(t, dtype=float) for t in terms],
+                                 np.round, np.sin), dtype=float)
     return out[()] if out.ndim == 0 else out
+
+
+def sin_pi_sum_scalar(L, *terms):
+    """:func:`np_sin_pi_sum` for Python floats (the scalar path)."""
+    return float(_sin_pi_sum(float(L), [float(t) for t in terms], round, math.sin))
 
 
 def np_exp_tail(n, z):

@@ -268,16 +268,17 @@ def test_sin_pi_reduction():
 
 
 def test_sin_pi_sum_primitive():
-    """np_sin_pi_sum against mpmath's sine of the exact sum (40 digits) near every
-    multiple of L in [-2L, 2L] and away from them, arrays and scalars; its mpmath
-    version; its derivative."""
-    from linecontact_sym.numeric.special import np_sin_pi_sum
+    """np_sin_pi_sum (and the scalar path's copy of its operations) against mpmath's
+    sine of the exact sum (40 digits) near every multiple of L in [-2L, 2L] and away
+    from them, arrays and scalars; its mpmath version; its derivative."""
+    from linecontact_sym.numeric.special import np_sin_pi_sum, sin_pi_sum_scalar
     rng = random.Random(5)
     for _ in range(200):
         k, L = rng.randint(-2, 2), rng.choice([1.0, 0.75, 3.0])
         a_ = rng.uniform(0, 1) * L
         x_ = k * L - a_ + rng.choice([1e-12, -3e-9, 1e-7, 0.3]) * L
         got = float(np_sin_pi_sum(L, a_, x_))
+        assert sin_pi_sum_scalar(L, a_, x_) == got            # the scalar path: the same operations
         with mpmath.workdps(40):
             ref = mpmath.sin(mpmath.pi * (mpmath.mpf(a_) + mpmath.mpf(x_)) / mpmath.mpf(L))
             assert abs(got - ref) <= 4 * EPS * abs(ref), (k, L, a_, x_, got, ref)
