@@ -24,8 +24,9 @@ EXTREME_GRID = {
     # b/a (worn cylinder flat half-width over contact half-width)
     "b_over_a": [1e-12, 1e-6, 0.1, 0.5, 0.9, 1 - 1e-6, 1 - 1e-12, 1.0, 1.5],
     # 2a/L of a periodic array (period L): from an isolated-like contact to full contact
-    # (force, pressure, and the sinusoid's gap up to full contact: rule asinh-excess; the
-    # gap's x/a runs over x_out up to the crest L/2, e.g. 1 + 1e-8 at 2a/L = 1 - 1e-7)
+    # (force, pressure, and the gaps up to full contact: rules asinh-excess, acosh-excess
+    # (the sin^4 array), sin-pi-reduction; the gap's x/a runs over x_out up to the crest
+    # L/2, e.g. 1 + 1e-8 at 2a/L = 1 - 1e-7)
     "a_over_half_L": [1e-12, 1e-8, 1e-4, 0.1, 0.5, 0.9, 1 - 1e-4, 1 - 1e-7, 1 - 1e-12],
     # 2M/(P w) of a flat punch of half-width w under the load P and the moment M: complete
     # contact (both corners) up to 1, one corner lifted beyond (asymmetric contacts)

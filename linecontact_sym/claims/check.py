@@ -100,30 +100,45 @@ def _capped(budget, cap):
 
 
 def _status_ok_loose(pr: PointResult) -> bool:
+    """Whether the printed form holds at a point in the sense the condition
+    search uses: the bisection and the verdict on the bound itself (the
+    bisection evaluates at 30 digits, where the 30 required of a random point
+    are not in reach; a point at the bound may be degenerate, e.g. a double
+    root, where the derived value is located to fewer digits)."""
     return pr.status in ("pass", "both_undefined") or (pr.status == "fail" and pr.digits >= 8)
 
 
-def _bisect_boundary(derived, printed, sym, v_fail, v_pass, base_vals, dps, iters=24):
-    """Locate the boundary between failing and passing values of one parameter."""
+def _holds_at(derived, printed, sym, value, base_vals) -> bool:
+    """:func:`_status_ok_loose` at ``base_vals`` with ``sym`` set to ``value`` (30 digits)."""
+    vals = dict(base_vals)
+    vals[sym] = value
+    return _status_ok_loose(evaluate_point(derived, printed, vals, "bisection", dps=30))
+
+
+def _between(v, lo, hi) -> bool:
+    return min(lo, hi) <= v <= max(lo, hi)
+
+
+def _bisect_boundary(derived, printed, sym, v_fail, v_pass, base_vals, iters=60, stop_at_nice=True):
+    """Locate the boundary between failing and passing values of one
+    parameter: the final bracket (lo, hi), lo on the failing side, hi on the
+    passing side.  With ``stop_at_nice`` it ends once both ends round to the
+    same simple rational (:func:`_nice`; every later midpoint would too: the
+    values rounding to one rational form an interval; :func:`_located_bound`
+    checks that rational), else at 1e-7 relative."""
     lo, hi = mpmath.mpf(v_fail), mpmath.mpf(v_pass)
     for _ in range(iters):
-        # the boundary is reported as _nice(b): once both ends of the bracket
-        # round to the same simple rational, every later midpoint does too
-        # (the values rounding to one rational form an interval)
         n_lo = _nice(lo)
-        if n_lo.is_Rational and n_lo == _nice(hi):
+        if stop_at_nice and n_lo.is_Rational and n_lo == _nice(hi):
+            break
+        if abs(hi - lo) < mpmath.mpf(10) ** -7 * max(1, abs(hi)):
             break
         mid = (lo + hi) / 2
-        vals = dict(base_vals)
-        vals[sym] = sp.Rational(str(mpmath.nstr(mid, 20)))
-        pr = evaluate_point(derived, printed, vals, "bisection", dps=30)
-        if _status_ok_loose(pr):
+        if _holds_at(derived, printed, sym, sp.Rational(str(mpmath.nstr(mid, 20))), base_vals):
             hi = mid
         else:
             lo = mid
-        if abs(hi - lo) < mpmath.mpf(10) ** -7 * max(1, abs(hi)):
-            break
-    return (lo + hi) / 2
+    return lo, hi
 
 
 def _nice(value):
@@ -138,9 +153,50 @@ def _nice(value):
     return best[0] if best else sp.Float(float(value), 6)
 
 
+def _located_bound(derived, printed, sym, fail_v, pass_v, base):
+    """The bound of a one-parameter condition: the simple rational both ends
+    of the bisection's bracket round to, unless the form still holds just
+    outside it (1e-6 relative: a bracket rounding to 1/7 may hold a boundary
+    0.145, and "fails outside gamma <= 1/7" would be false), else, the bisection
+    carried on to 1e-7, the shortest decimal (to 6 significant digits) in
+    its final bracket, else the bracket's passing end rounded to 6
+    significant digits towards the passing side (so that the range stated is
+    one where the form holds).  Just inside a simple rational is not probed:
+    the derived value may be out of numerical reach there (the pull-off of
+    c x^n as n -> 1/2+, not located below about n = 0.504) while the
+    bound is that rational; so a boundary a little inside a simple rational
+    (0.14 for 1/7) is still reported as the rational."""
+    lo, hi = _bisect_boundary(derived, printed, sym, fail_v, pass_v, base)
+    nice = _nice(lo)
+    up = pass_v > fail_v
+    if nice.is_Rational and nice == _nice(hi):
+        step = (1 if up else -1) * sp.Rational(1, 10**6) * max(1, abs(nice))
+        if not _holds_at(derived, printed, sym, nice - step, base):
+            return nice
+        lo, hi = _bisect_boundary(derived, printed, sym, lo, hi, base, stop_at_nice=False)
+    with workdps(30):
+        top = int(mpmath.floor(mpmath.log10(abs(hi)))) if hi != 0 else 0
+        for digits in range(1, 7):
+            e = top - digits + 1
+            # the decimal next to hi on the failing side: in the bracket, or none of this length is
+            k = int((mpmath.floor if up else mpmath.ceil)(hi / mpmath.mpf(10) ** e))
+            if _between(sp.Rational(k) * sp.Rational(10) ** e, lo, hi):
+                return sp.Rational(k) * sp.Rational(10) ** e
+        k = int((mpmath.ceil if up else mpmath.floor)(hi / mpmath.mpf(10) ** e))
+    return sp.Rational(k) * sp.Rational(10) ** e
+
+
+def _shown(bound):
+    """A bound as printed: a simple rational as it is, else 6 significant digits."""
+    if bound.is_Rational and bound.q <= 12:
+        return bound
+    return sp.Float(bound, 6)
+
+
 def _infer_parameter_condition(derived, printed, points, dps):
-    """A one-parameter range (p > v or p < v) separating the points where the
-    printed form holds from those where it fails; refined by bisection."""
+    """A one-parameter range (p > v, p >= v, p < v or p <= v) separating the
+    points where the printed form holds from those where it fails; refined
+    by bisection, the bound's strictness decided at the bound itself."""
     rand = [p for p in points if p.kind != "bisection" and not p.kind.startswith("special")]
     good = [p for p in rand if p.ok]
     bad = [p for p in rand if not p.ok]
@@ -160,13 +216,13 @@ def _infer_parameter_condition(derived, printed, points, dps):
         else:
             continue
         base = next(p for p in good if float(p.values[sym]) == pass_v).values
-        b = _bisect_boundary(derived, printed, sym, fail_v, pass_v, base, dps)
-        nice = _nice(b)
-        # at the boundary itself
+        bound = _located_bound(derived, printed, sym, fail_v, pass_v, base)
+        nice = _shown(bound)
+        # at the bound itself, by the test the bisection used
         vals = dict(base)
-        vals[sym] = nice if nice.is_Rational else sp.Rational(str(b))
+        vals[sym] = bound
         at = evaluate_point(derived, printed, vals, "boundary", dps=dps)
-        op = {(">", True): ">=", (">", False): ">", ("<", True): "<=", ("<", False): "<"}[(direction, at.ok)]
+        op = direction + ("=" if _status_ok_loose(at) else "")
         what = {"fail": "fails", "diverges": "the printed integral diverges",
                 "printed_undefined": "the printed form is undefined",
                 "derived_undefined": "the derived quantity does not exist"}

@@ -266,6 +266,8 @@ _SEVERAL = {
     "exp_tail": (_several(_arb_exp_tail, ((), ())), True),
     # w sqrt(1 + w^2) - asinh(w): the plain form on balls (rigorous; Arb's precision loop pays the cancellation)
     "asinh_excess": (_several(lambda w: w * (1 + w * w).sqrt() - w.asinh(), ((),)), False),
+    # sin(pi (t_1 + ... + t_k)/L): on balls the plain sine (Arb's precision loop pays the reduction)
+    "sin_pi_sum": (_several(lambda L, *t: (flint.acb.pi() * sum(t[1:], t[0]) / L).sin(), ()), True),
     "elliptic_pi2": (_several(flint.acb.elliptic_pi, (_ABOVE_ONE, _ABOVE_ONE)), True),
     "elliptic_f": (_several(flint.acb.elliptic_f, ((), ())), False),
     "elliptic_e2": (_several(flint.acb.elliptic_e_inc, ((), ())), False),

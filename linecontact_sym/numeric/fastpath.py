@@ -39,7 +39,7 @@ from .accuracy import FLOAT64_SAFE
 from .cache import IdentityCache
 from .exports import (fold_constants, is_guarded, mp_hyper_vec, to_scipy_names, cancellation_probe,
                       cancellation_sums, compile_callable, stable_form)
-from .special import exp_tail_scalar, np_asinh_excess, np_gamma_ratio, np_hyp2f1c
+from .special import exp_tail_scalar, np_asinh_excess, np_gamma_ratio, np_hyp2f1c, sin_pi_sum_scalar
 
 __all__ = ["ScalarKit", "scalar_kit", "scalar_plan", "vector_float64", "one_pass", "inline_point", "bound_checks",
            "STEP"]
@@ -61,6 +61,7 @@ def _scalar_funcs() -> dict:
         "hyp2f1c": lambda *a: float(np_hyp2f1c(*a)),
         "exp_tail": exp_tail_scalar,
         "asinh_excess": lambda w: float(np_asinh_excess(w)),
+        "sin_pi_sum": sin_pi_sum_scalar,
         "gamma": math.gamma, "loggamma": math.lgamma, "besseli": sc.iv, "besselj": sc.jv,
         # pFq beyond SciPy's 2F1/1F1/0F1 (a sin(x) profile's force law): mpmath, as in the NumPy export
         "_mphyper": lambda *a: float(mp_hyper_vec(*a)),

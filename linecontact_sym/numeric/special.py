@@ -63,6 +63,7 @@ from ..core.precision import workdps, workprec
 sc = lazy_module("scipy.special")     # loaded at the first float64 special function
 
 __all__ = ["carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj", "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess",
+           "sin_pi_sum", "np_sin_pi_sum", "sin_pi_sum_scalar",
            "np_rf", "np_rd", "np_rg", "np_rj", "np_gamma_ratio", "np_hyp2f1c", "np_exp_tail", "exp_tail_scalar",
            "np_asinh_excess", "mp_elliptic_pi", "NUMPY_FUNCS", "MPMATH_FUNCS"]
 
@@ -203,6 +204,30 @@ class asinh_excess(_StableFunction):
     contact, or at its contact edge)."""
     nargs = 1
     _mp = staticmethod(_mp_asinh_excess)
+
+
+def _mp_sin_pi_sum(L, *terms):
+    return mpmath.sin(mpmath.pi * mpmath.fsum(terms) / L)
+
+
+class sin_pi_sum(_StableFunction):
+    """sin(pi (t_1 + ... + t_k)/L), L > 0, the sum reduced modulo L with its
+    rounding error carried (float64: :func:`np_sin_pi_sum`): accurate where the
+    sum comes near a nonzero multiple of L (a periodic array near full contact:
+    sin(pi (a + x)/L) at a + x -> L, cos(pi x/L) = sin(pi (x + L/2)/L) at x -> L/2),
+    where sin of the rounded pi (a + x)/L keeps eps pi/|sin| of its size."""
+    _mp = staticmethod(_mp_sin_pi_sum)
+
+    def _eval_rewrite_as_sin(self, L, *terms, **kwargs):
+        return sp.sin(sp.pi * sp.Add(*terms) / L)
+
+    def fdiff(self, argindex=1):
+        L, terms = self.args[0], self.args[1:]
+        u = sp.Add(*terms)
+        c = sp.cos(sp.pi * u / L) * sp.pi
+        if argindex == 1:
+            return -c * u / L**2
+        return c / L
 
 
 class gamma_ratio(_StableFunction):
@@ -537,6 +562,42 @@ def np_asinh_excess(w):
     return out[()] if out.ndim == 0 else out
 
 
+def _two_sum(p, q):
+    """(p + q rounded, its rounding error) (Knuth's TwoSum: exact in float64)."""
+    s = p + q
+    v = s - p
+    return s, (p - (s - v)) + (q - v)
+
+
+def _sin_pi_sum(L, terms, rnd, sin):
+    """sin(pi (t_1 + ... + t_k)/L) on floats or arrays (``rnd``, ``sin``: round and
+    sine of the one or the other): the terms summed with their rounding errors
+    carried (TwoSum), the nearest multiple k L taken off the leading part (exact by
+    Sterbenz's lemma where the sum is near k L, |k| <= 2: k L is exact), the sine of
+    the remainder r, |r| <= L/2, with the sign (-1)^k."""
+    s = err = 0.0
+    for t in terms:
+        s, e = _two_sum(s, t)
+        err = err + e
+    k = rnd((s + err) / L)
+    hi, e = _two_sum(s, -k * L)
+    return (1 - 2 * (k % 2)) * sin(math.pi * ((hi + (err + e)) / L))
+
+
+def np_sin_pi_sum(L, *terms):
+    """float64 sin(pi (t_1 + ... + t_k)/L) (:func:`_sin_pi_sum`).  Near a multiple
+    of L the remainder is as accurate as the terms: sin(pi (a + x)/L) at a + x =
+    L - 2e-7 keeps every digit where sin(pi*(a + x)/L) keeps 9."""
+    out = np.asarray(_sin_pi_sum(np.asarray(L, dtype=float), [np.asarray(t, dtype=float) for t in terms],
+                                 np.round, np.sin), dtype=float)
+    return out[()] if out.ndim == 0 else out
+
+
+def sin_pi_sum_scalar(L, *terms):
+    """:func:`np_sin_pi_sum` for Python floats (the scalar path)."""
+    return float(_sin_pi_sum(float(L), [float(t) for t in terms], round, math.sin))
+
+
 def np_exp_tail(n, z):
     """float64 exp(z) - sum_{k<n} z^k/k! (``n`` a scalar integer): where the
     difference cancels (-max(30, 4n) < z < max(40, 2n + 20)) the series
@@ -607,7 +668,9 @@ NUMPY_LOGIC = {"logical_and": _BroadcastLogical(np.logical_and), "logical_or": _
 
 NUMPY_FUNCS = {"carlson_rf": np_rf, "carlson_rd": np_rd, "carlson_rg": np_rg, "carlson_rj": np_rj,
                "gamma_ratio": np_gamma_ratio,
-               "hyp2f1c": np_hyp2f1c, "exp_tail": np_exp_tail, "asinh_excess": np_asinh_excess}
+               "hyp2f1c": np_hyp2f1c, "exp_tail": np_exp_tail, "asinh_excess": np_asinh_excess,
+               "sin_pi_sum": np_sin_pi_sum}
 MPMATH_FUNCS = {"carlson_rf": _mp_rf, "carlson_rd": _mp_rd, "carlson_rg": _mp_rg, "carlson_rj": _mp_rj,
                 "gamma_ratio": _mp_gamma_ratio,
-                "hyp2f1c": _mp_hyp2f1c, "exp_tail": _mp_exp_tail, "asinh_excess": _mp_asinh_excess}
+                "hyp2f1c": _mp_hyp2f1c, "exp_tail": _mp_exp_tail, "asinh_excess": _mp_asinh_excess,
+                "sin_pi_sum": _mp_sin_pi_sum}

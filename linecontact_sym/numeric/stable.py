@@ -16,11 +16,11 @@ rewrites.  Every application is re-checked numerically (20 digits at random
 admissible points, 30-digit evaluation) before it is kept.
 
 Rules, in the order applied: :class:`EllipticPiToCarlson`, :class:`EllipticToCarlson`,
-:class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`,
+:class:`Hyp2f1Connection`, :class:`GammaAbsorb`, :class:`GammaRatio`, :class:`AcoshExcess`,
 :class:`SquareDifferences`, :class:`AtanhToAsinh`, :class:`AcoshToAsinh`, :class:`AsinhExcess`, :class:`AsinToAtan`,
 :class:`AcosToAtan`, :class:`Hyp2f1Complement`, :class:`Conjugate`, :class:`LogOfPower`, :class:`HalfAngle`,
-:class:`ExpTail`, :class:`FactorDifferences`.  The special functions they produce
-(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``, ``exp_tail``) live in
+:class:`ExpTail`, :class:`FactorDifferences`, :class:`SinPiReduction`.  The special functions they produce
+(``carlson_rf/rd/rg/rj``, ``gamma_ratio``, ``hyp2f1c``, ``exp_tail``, ``asinh_excess``, ``sin_pi_sum``) live in
 :mod:`linecontact_sym.numeric.special`.
 
 The result is a :class:`StableForm`: the rewritten expression and the list of
@@ -37,15 +37,15 @@ import sympy as sp
 
 from ..method.derivation import gammasimp_masked
 from .accuracy import expressions_agree
-from .special import asinh_excess, exp_tail, gamma_ratio, hyp2f1c
+from .special import asinh_excess, exp_tail, gamma_ratio, hyp2f1c, sin_pi_sum
 from .stable_base import (StableRule, complement_of, expand_around, fix_signs, has_sqrt, is_2f1,  # noqa: F401
                           n_terms, nonneg, square_differences, stable_sqrt, is_rational_in_symbols)
 from .stable_elliptic import EllipticPiToCarlson, EllipticToCarlson
 
 __all__ = ["stabilize", "StableForm", "StableRule", "RULES", "EllipticToCarlson", "EllipticPiToCarlson",
            "Hyp2f1Connection",
-           "GammaAbsorb", "GammaRatio", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinhExcess", "AsinToAtan", "AcosToAtan",
-           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences",
+           "GammaAbsorb", "GammaRatio", "AcoshExcess", "SquareDifferences", "AtanhToAsinh", "AcoshToAsinh", "AsinhExcess", "AsinToAtan", "AcosToAtan",
+           "Hyp2f1Complement", "Conjugate", "LogOfPower", "HalfAngle", "ExpTail", "FactorDifferences", "SinPiReduction",
            "is_rational_in_symbols"]
 
 
@@ -233,6 +233,73 @@ class AsinhExcess(StableRule):
                             return sp.Add(*rest, -C * asinh_excess(u))
             return e
         return expr.replace(lambda e: e.is_Add and e.has(sp.asinh), do)
+
+
+class AcoshExcess(StableRule):
+    """R + C acosh(w) = (R + C w sqrt(w^2 - 1)) - C asinh_excess(sqrt(w^2 - 1))
+    for a sum holding a term C acosh(w), w = n/d, the first part reduced
+    symbolically: with n = W D, d = D (D > 0) and W = sqrt(1 + r^2), r =
+    sqrt(w^2 - 1), R + C W r is a polynomial in r and sqrt(1 + r^2) whose
+    cancelling terms drop out exactly; kept where it has fewer terms than R.
+
+    The excess form of :class:`AsinhExcess` for any weights: the sin^4
+    array's gap h (t S^2 s + 2 t s^3 - 3 S^4 acosh(s/S))/2 (s = sin(pi x/L),
+    S = sin(pi a/L), t = sqrt(s^2 - S^2)) is h (2 s t^3 + 3 S^4
+    asinh_excess(t/S))/2, no two terms cancelling as t -> 0 (full contact, or
+    the contact edge); the sinusoid's pair is the case where R + C W r = 0.
+    Before :class:`SquareDifferences`, which then makes s^2 - S^2 a product."""
+
+    name = "acosh-excess"
+    heads = (sp.acosh,)
+
+    def apply(self, expr):
+        def do(e):
+            for term in e.args:
+                for ac in term.atoms(sp.acosh):
+                    new = _acosh_excess(e, term, ac)
+                    if new is not None:
+                        return new
+            return e
+        return expr.replace(lambda e: e.is_Add and e.has(sp.acosh), do)
+
+
+def _acosh_excess(e, term, ac):
+    """:class:`AcoshExcess` on the sum ``e`` for its term ``term`` = C ``ac``, or None."""
+    C = sp.cancel(term / ac)
+    if C.has(ac) or C.has(sp.acosh):
+        return None
+    n, d = sp.fraction(sp.together(ac.args[0]))
+    if not n.free_symbols or d.is_number:
+        return None
+    D, W, r = sp.Dummy("D", positive=True), sp.Dummy("W", positive=True), sp.Dummy("r", positive=True)
+    rest = e - term
+
+    inner = n.free_symbols | d.free_symbols
+
+    def in_r(v):
+        """v in r, sqrt(1 + r^2) and D, or None where v is not a function of w and d alone."""
+        v = v.xreplace({n: W * D, d: D})
+        if v.free_symbols & inner:
+            return None
+        # sqrt((W D - D)(W D + D)) -> D sqrt(W^2 - 1): each half-integer power's base expanded first
+        v = v.replace(lambda q: q.is_Pow and q.exp.is_Rational and q.exp.q == 2,
+                      lambda q: sp.Pow(sp.factor_terms(sp.expand(q.base)), q.exp))
+        v = sp.powdenest(sp.factor_terms(v), force=True)
+        return sp.expand(sp.powdenest(sp.expand(v.xreplace({W: sp.sqrt(1 + r**2)})), force=True))
+
+    R_r, T_r = in_r(rest), in_r(C * W * sp.sqrt(W**2 - 1))
+    if R_r is None or T_r is None:
+        return None
+    diff = sp.expand(R_r + T_r)
+    if diff.has(W) or (diff != 0 and len(sp.Add.make_args(diff)) >= len(sp.Add.make_args(R_r))):
+        return None     # nothing cancelled: the pair is not an excess
+    diff = sp.factor(diff)
+    # t = sqrt(n^2 - d^2) factored (sqrt(x - a) sqrt(x + a); sin(pi (x - a)/L) sin(pi (x + a)/L))
+    t = stable_sqrt(n**2 - d**2)
+    if t is None:
+        t = sp.sqrt(n**2 - d**2)
+    back = diff.xreplace({sp.sqrt(1 + r**2): W}).xreplace({W: n / d, r: t / d, D: d})
+    return back - C * asinh_excess(t / d)
 
 
 @functools.lru_cache(maxsize=4096)
@@ -536,9 +603,48 @@ class FactorDifferences(StableRule):
 
 
 #: the rules in the order :func:`stabilize` applies them
-RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), SquareDifferences(),
+class SinPiReduction(StableRule):
+    """sin(pi u/L) = sin_pi_sum(L, u_1, ..., u_k) and cos(pi u/L) = sin_pi_sum(L,
+    u_1, ..., u_k, L/2) for u = u_1 + ... + u_k, each term a rational multiple of
+    a symbol, L > 0 a symbol or a number: :class:`~.special.sin_pi_sum` takes the
+    nearest multiple of L off the sum exactly.  A periodic array near full contact
+    (a -> L/2) has sin(pi (a + x)/L) at a + x -> L and cos(pi x/L) at x -> L/2,
+    where the sine of the rounded argument keeps only eps pi/|sin| of its size
+    (2e-9 relative at a = L/2 - 1e-7 L); last, after the rules that read sines."""
+
+    name = "sin-pi-reduction"
+    heads = (sp.sin, sp.cos)
+
+    def applies(self, expr) -> bool:
+        """A sine or cosine of pi times something occurs."""
+        return any(f.args[0].has(sp.pi) for f in expr.atoms(sp.sin, sp.cos))
+
+    def apply(self, expr):
+        def do(e):
+            parts = _pi_fraction(e.args[0])
+            if parts is None:
+                return e
+            L, terms = parts
+            return sin_pi_sum(L, *terms, *((L / 2,) if isinstance(e, sp.cos) else ()))
+        return expr.replace(lambda e: isinstance(e, (sp.sin, sp.cos)), do)
+
+
+def _pi_fraction(arg):
+    """(L, [u_1, ..., u_k]) for arg = pi (u_1 + ... + u_k)/L (see :class:`SinPiReduction`), else None."""
+    num, den = sp.fraction(sp.together(arg / sp.pi))
+    if not (den.is_positive and (den.is_Symbol or den.is_Rational)) or num.has(sp.pi):
+        return None
+    terms = sp.Add.make_args(sp.expand(num))
+    for t in terms:
+        c, v = t.as_coeff_Mul()
+        if not (c.is_Rational and v.is_Symbol):
+            return None
+    return den, terms
+
+
+RULES = (EllipticPiToCarlson(), EllipticToCarlson(), Hyp2f1Connection(), GammaAbsorb(), GammaRatio(), AcoshExcess(), SquareDifferences(),
          AtanhToAsinh(), AcoshToAsinh(), AsinhExcess(), AsinToAtan(), AcosToAtan(), Hyp2f1Complement(), Conjugate(), LogOfPower(),
-         HalfAngle(), ExpTail(), FactorDifferences())
+         HalfAngle(), ExpTail(), FactorDifferences(), SinPiReduction())
 
 
 # ====================================================================== driver

@@ -186,6 +186,46 @@ def test_table_values_identified_with_exponents():
     assert wrong.status == FAILS and "DISAGREES" in " ".join(wrong.details)
 
 
+def _fold_claim(bound):
+    """A claim on a quantity with a fold at gamma = ``bound``: the stable
+    minimum of P(r) = (r - 1)^3/3 - (bound - gamma)(r - 1) at r = 1 + sqrt(bound
+    - gamma) while gamma <= bound, located by Newton's method on P'(r) until
+    |P'| < 10^-(dps+5) (at the fold the root is double: about dps/2 digits),
+    the range end r = 3 beyond it; printed: 1 + sqrt(bound - gamma)."""
+    from linecontact_sym.claims.derive import Derived
+    g = sp.Symbol("gamma", positive=True)
+    b = sp.Rational(bound)
+
+    def located(vals, dps):
+        with mpmath.workdps(dps + 10):
+            d = mpmath.mpf(b.p) / b.q - mpmath.mpf(vals[g].p) / vals[g].q
+            if d < 0:
+                return mpmath.mpf(3)
+            r = mpmath.mpf(2)
+            while abs((r - 1)**2 - d) >= mpmath.mpf(10) ** -(dps + 5):
+                r -= ((r - 1)**2 - d) / (2 * (r - 1))
+            return r
+
+    claim = SPEC.claim_from_dict({"label": "fold", "quantity": "pull_off_half_width", "profile": "1 - cos(x)",
+                                  "formula": f"1 + sqrt({bound} - gamma)", "ranges": {"gamma": [0.01, 0.5]},
+                                  "points": 6}, "test.toml")
+    derived = Derived(None, f"test: Newton at a fold at {bound}", closed_form=False, evaluator=located,
+                      variables=frozenset({g}))
+    return C.check_form(claim, claim.forms[0], derived, claim.forms[0].expr, symbolic=False)
+
+
+def test_condition_bound_where_the_form_holds_is_inclusive():
+    # at gamma = 1/7 the derived value is located to ~25 digits (a double root): the
+    # 30 a random point needs are out of reach, the bisection's test (>= 8) holds there
+    r = _fold_claim("1/7")
+    assert r.status == HOLDS_IF and r.condition == "gamma <= 1/7", r.condition
+    # the bound that is not a simple rational: the bracket rounds to 1/7, but the
+    # form holds past it, to 0.145 (and at 0.145)
+    r = _fold_claim("0.145")
+    assert r.status == HOLDS_IF and r.condition == "gamma <= 0.145000", r.condition
+    assert "outside gamma <= 0.145000: the printed form is undefined" in r.note
+
+
 def test_adhesive_claims_and_existence_bound():
     r = check({"quantity": "adhesion_force", "profile": "x*tan(theta)", "formula": "pi*gamma/(2*tan(theta))",
                "points": 2})

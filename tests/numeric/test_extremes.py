@@ -32,8 +32,11 @@ Documented exceptions (reported, with their own bounds):
   near full contact (t^2 ~ (x - a)(L - x - a)) exceeds kappa ~ 1/(x - a) +
   1/(L - x - a): rule ``asinh-excess`` makes the sinusoid's gap one term
   (2 h S^2 asinh_excess(t/S), checked on the full grid); the sin^4 array's
-  gap is a sum of such pairs with other weights (not rewritten): checked for
-  2a/L <= 0.9.
+  gap is a sum of such terms with other weights: rule ``acosh-excess`` makes it
+  h (2 s t^3 + 3 S^4 asinh_excess(t/S))/2 (full grid).  Near full contact
+  (a = L/2 - 1e-7 L) also without the kappa allowance: the sines whose argument
+  nears pi (sin(pi (a + x)/L), cos(pi x/L) at x -> L/2) by ``sin-pi-reduction``,
+  within 1e-12 relative at the edge, near 0 and at the trough.
 """
 from __future__ import annotations
 
@@ -160,13 +163,43 @@ def test_extreme_grid_periodic(name, quantity):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name, top", [("periodic sinusoid", 1.0), ("periodic sin4", 0.9)])
+@pytest.mark.parametrize("name, top", [("periodic sinusoid", 1.0), ("periodic sin4", 1.0)])
 def test_extreme_grid_periodic_gap(name, top):
-    """The sinusoid's gap up to full contact (2a/L = 1 - 1e-12): before the rule
-    asinh-excess it was off by 5 % (7e5 eps kappa) at 2a/L = 1 - 1e-7, x = (1 + 1e-8) a."""
+    """The gaps up to full contact (2a/L = 1 - 1e-12): before the rule asinh-excess the
+    sinusoid's was off by 5 % (7e5 eps kappa) at 2a/L = 1 - 1e-7, x = (1 + 1e-8) a;
+    before acosh-excess the sin^4 array's (checked to 2a/L = 0.9 then)."""
     recs = run_audit(name, "gap", lambda p: 2 * p["a"] / p["L"] <= top)
     bad = [r for r in recs if not r.ulps <= TOL]
     assert not bad, "\n".join(str(r) for r in bad[:5])
+
+
+#: near full contact, a = L/2 - 1e-7 L (L = h = E* = 1): the points of the relative rows
+NEAR_FULL = 0.5 - 1e-7
+NEAR_FULL_X = {"pressure": [NEAR_FULL * (1 - 1e-9), NEAR_FULL * (1 - 1e-6), 1e-8, 1e-3],
+               "gap": [NEAR_FULL * (1 + 1e-8), 0.5 - 1e-8, 0.5]}
+
+
+@pytest.mark.parametrize("name", ["periodic sinusoid", pytest.param("periodic sin4", marks=pytest.mark.slow)])
+@pytest.mark.parametrize("quantity", ["pressure", "gap"])
+def test_periodic_near_full_contact_relative(name, quantity):
+    """At a = L/2 - 1e-7 L, x at the contact edge and near 0 (the pressure), just
+    outside the edge and at the trough (the gap): the float64 export within 1e-12
+    relative of the same closed form at 50 digits at the float64 arguments, without a
+    condition-number allowance.  Before the rules acosh-excess (the sin^4 gap's acosh
+    against two terms of other weights) and sin-pi-reduction (sin(pi (a + x)/L) at
+    a + x -> L, cos(pi x/L) at x -> L/2: the sine of an argument rounded near pi): the
+    sin^4 gap 4.5e-3, the gaps 2.2e-9, the pressures 1.9e-10 at x = (1 - 1e-9) a."""
+    d = contact(name).derivation(quantity)
+    names = [s_.name for s_ in d.variables_all]
+    f64 = make_callable(d, "numpy")
+    fm = lambdify_mpmath(d.expr, d.variables_all, stable=False)
+    for xv in NEAR_FULL_X[quantity]:
+        vals = {"a": NEAR_FULL, "x": xv, "L": 1.0, "h": 1.0, "E_star": 1.0}
+        got = float(f64(**{n_: vals[n_] for n_ in names}))
+        with mpmath.workdps(50):
+            ref = fm(*[mpmath.mpf(vals[n_]) for n_ in names])
+            rel = float(abs((mpmath.mpf(got) - ref) / ref))
+        assert ref != 0 and rel <= 1e-12, (name, quantity, xv, got, ref, rel)
 
 
 # ---------------------------------------------------------------- asymmetric contacts

@@ -87,8 +87,9 @@ def check_rule(rule, expr, point, ranges, lost, kept, ref_point=None):
 def test_rules_are_named_documented_and_ordered():
     names = [r.name for r in ST.RULES]
     assert names == ["elliptic-pi/incomplete->carlson", "elliptic->carlson", "hyp2f1-connection", "gamma-absorb",
-                     "gamma-ratio", "square-differences", "atanh->asinh", "acosh->asinh", "asinh-excess", "asin->atan", "acos->atan",
-                     "hyp2f1-complement", "conjugate", "log-of-power", "half-angle", "exp-tail", "factor"]
+                     "gamma-ratio", "acosh-excess", "square-differences", "atanh->asinh", "acosh->asinh", "asinh-excess", "asin->atan", "acos->atan",
+                     "hyp2f1-complement", "conjugate", "log-of-power", "half-angle", "exp-tail", "factor",
+                     "sin-pi-reduction"]
     for r in ST.RULES:
         assert isinstance(r, ST.StableRule)
         assert type(r).__doc__ and "=" in type(r).__doc__, f"{r.name}: the docstring states no identity"
@@ -229,6 +230,66 @@ def test_asinh_excess():
     assert new.has(ST.asinh_excess) and not new.has(sp.asinh)
     other = 2 * x * t_ - a**2 * sp.asinh(t_ / a)
     assert rule.apply(other) == other
+
+
+def test_acosh_excess_any_weights():
+    """x t (a^2 + 2 x^2) - 3 a^4 acosh(x/a), t = sqrt((x - a)(x + a)): the sin^4 array's
+    gap in s = x, S = a, whose three terms cancel to 2 x t^3 + 2 t^3 a at the contact
+    edge (no single term is the partner of the acosh: asinh-excess's pair search finds
+    none): rewritten 2 x t^3 + 3 a^4 asinh_excess(t/a); at x = a (1 + 1e-12) the plain
+    float64 keeps a few digits, the rewritten one 8 eps.  The sinusoid's pair is the
+    case where nothing is left besides the excess; a sum where nothing cancels is left."""
+    rule = ST.AcoshExcess()
+    t_ = sp.sqrt((x - a) * (x + a))
+    expr = x * t_ * (a**2 + 2 * x**2) - 3 * a**4 * sp.acosh(x / a)
+    new = check_rule(rule, expr, {a: 1.0, x: 1 + 1e-12}, {a: (0.1, 0.9), x: (1.0, 2.0)}, lost=1e-6, kept=8 * EPS)
+    assert new.has(ST.asinh_excess) and not new.has(sp.acosh)
+    assert ST.AsinhExcess().apply(ST.AcoshToAsinh().apply(expr)).has(sp.asinh)     # the pair rule alone: not
+    assert rule.apply(x * t_ - a**2 * sp.acosh(x / a)) == a**2 * ST.asinh_excess(t_ / a)
+    other = 2 * x * t_ - a**2 * sp.acosh(x / a)
+    assert rule.apply(other) == other
+
+
+def test_sin_pi_reduction():
+    """sin(pi (a + x)/L) sin(pi (a - x)/L) cos(pi x/L): a periodic array's kernel near
+    full contact; at a = 1/2 - 1e-7, x = (1 - 1e-9) a (L = 1) the sine of the rounded
+    pi (a + x) (near pi) and the cosine near pi/2 keep ~9 digits, sin_pi_sum (the
+    multiple of L taken off the exact sum) 4 eps.  An argument that is not pi times a
+    sum of multiples of symbols over L is left alone."""
+    L = sp.Symbol("L", positive=True)
+    rule = ST.SinPiReduction()
+    expr = sp.sin(sp.pi * (a + x) / L) * sp.sin(sp.pi * (a - x) / L) * sp.cos(sp.pi * x / L)
+    av = 0.5 - 1e-7
+    new = check_rule(rule, expr, {a: av, x: av * (1 - 1e-9), L: 1.0}, {a: (0.1, 0.4), x: (0.0, 0.1), L: (1.0, 2.0)},
+                     lost=1e-10, kept=4 * EPS)
+    assert not new.has(sp.sin, sp.cos) and new.has(special.sin_pi_sum)
+    for other in (sp.sin(x), sp.sin(sp.pi * x**2 / L), sp.cos(sp.pi * sp.exp(x) / L)):
+        assert rule.apply(other) == other
+
+
+def test_sin_pi_sum_primitive():
+    """np_sin_pi_sum (and the scalar path's copy of its operations) against mpmath's
+    sine of the exact sum (40 digits) near every multiple of L in [-2L, 2L] and away
+    from them, arrays and scalars; its mpmath version; its derivative."""
+    from linecontact_sym.numeric.special import np_sin_pi_sum, sin_pi_sum_scalar
+    rng = random.Random(5)
+    for _ in range(200):
+        k, L = rng.randint(-2, 2), rng.choice([1.0, 0.75, 3.0])
+        a_ = rng.uniform(0, 1) * L
+        x_ = k * L - a_ + rng.choice([1e-12, -3e-9, 1e-7, 0.3]) * L
+        got = float(np_sin_pi_sum(L, a_, x_))
+        assert sin_pi_sum_scalar(L, a_, x_) == got            # the scalar path: the same operations
+        with mpmath.workdps(40):
+            ref = mpmath.sin(mpmath.pi * (mpmath.mpf(a_) + mpmath.mpf(x_)) / mpmath.mpf(L))
+            assert abs(got - ref) <= 4 * EPS * abs(ref), (k, L, a_, x_, got, ref)
+            assert abs(MPMATH_FUNCS["sin_pi_sum"](mpmath.mpf(L), mpmath.mpf(a_), mpmath.mpf(x_)) - ref) < \
+                mpmath.mpf(10)**-35 * max(abs(ref), mpmath.mpf(10)**-30)
+    arr = np_sin_pi_sum(1.0, np.array([0.25, 0.5]), 0.5)
+    assert arr.shape == (2,) and abs(arr[0] - math.sin(0.75 * math.pi)) < 4 * EPS and abs(arr[1]) < 1e-300
+    L = sp.Symbol("L", positive=True)
+    f = special.sin_pi_sum(L, a, x)
+    assert sp.simplify(sp.diff(f, a) - sp.diff(sp.sin(sp.pi * (a + x) / L), a)) == 0
+    assert sp.simplify(sp.diff(f, L) - sp.diff(sp.sin(sp.pi * (a + x) / L), L)) == 0
 
 
 def test_asinh_excess_primitive_against_the_plain_form():
@@ -516,4 +577,4 @@ def test_hyp2f1c_near_one(abc, zc):
 
 def test_numpy_and_mpmath_tables_cover_every_primitive():
     assert set(NUMPY_FUNCS) == set(MPMATH_FUNCS) == {"carlson_rf", "carlson_rd", "carlson_rg", "carlson_rj",
-                                                      "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess"}
+                                                      "gamma_ratio", "hyp2f1c", "exp_tail", "asinh_excess", "sin_pi_sum"}
