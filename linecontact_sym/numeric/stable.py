@@ -215,7 +215,13 @@ class AsinhExcess(StableRule):
             terms = list(e.args)
             for i, ti in enumerate(terms):
                 for h in ti.atoms(sp.asinh):
-                    C = sp.cancel(ti / h)
+                    # C = ti/h where h is a factor of the term (a product's factors read,
+                    # not cancel()ed: cancel of every term was a third of the pair search)
+                    factors = list(sp.Mul.make_args(ti))
+                    if h not in factors:
+                        continue
+                    factors.remove(h)
+                    C = sp.Mul(*factors)
                     if C.has(h):
                         continue
                     u = h.args[0]
@@ -302,12 +308,36 @@ def _acosh_excess(e, term, ac):
     return back - C * asinh_excess(t / d)
 
 
+@functools.lru_cache(maxsize=1024)
+def _mp_function(expr, syms):
+    """expr as an mpmath function of ``syms`` (SymPy's printer; None where a
+    function of the expression has no mpmath translation)."""
+    try:
+        return sp.lambdify(syms, expr, modules="mpmath")
+    except Exception:  # noqa: BLE001 - any printer failure: the slow path
+        return None
+
+
 @functools.lru_cache(maxsize=4096)
 def _value_at(expr, point):
     """expr at the point (pairs symbol, value) to 30 digits, as a complex; None
-    where SymPy cannot make it a number.  Remembered: the pair search of
+    where it is no number there.  Remembered: the pair search of
     :class:`AsinhExcess` compares every term of a sum with every target at the
-    same points."""
+    same points.  Evaluated by the expression's mpmath translation at 30
+    digits (compiled once per expression: xreplace and evalf at each point
+    were most of the pair search's time, the worn cylinder's fretting test
+    20 of its 30 s), else by evalf."""
+    import mpmath
+    from ..core.precision import workdps
+    syms = tuple(s_ for s_, _ in point)
+    fn = _mp_function(expr, syms)
+    if fn is not None:
+        try:
+            with workdps(30):
+                v = fn(*(mpmath.mpf(v_.p) / v_.q for _, v_ in point))
+                return complex(v)
+        except (TypeError, ValueError, ZeroDivisionError, OverflowError, NameError, AttributeError):
+            pass
     try:
         return complex(sp.N(expr.xreplace(dict(point)), 30))
     except (TypeError, ValueError):

@@ -156,8 +156,11 @@ class TangentialState:
             if self.c_r is not None:
                 args["c_r"] = float(self.c_r)
             sign = -1.0 if (self.branch == "reloading" or (self.c_r is None and self.Q < 0)) else 1.0
-            fn = make_callable(d, "numpy", 15, {**fixed, **args})   # stable form: no atanh(1) cancellation at a kink
-            return sign * np.real(fn(x=xs))
+            # the stable form (no atanh(1) cancellation at a kink), compiled once per
+            # contact and parameters: the half-widths are arguments, not constants
+            # folded in (each state compiled its own, most of a fretting test's time)
+            fn = make_callable(d, "numpy", 15, fixed)
+            return sign * np.real(fn(x=xs, **args))
         fl, A, mu = _float_normal(t, fixed), float(self.a), float(self.mu)
         out = np.zeros(xs.shape)
         for k, C in self.terms:
