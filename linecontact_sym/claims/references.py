@@ -30,6 +30,7 @@ import sympy as sp
 from ..core.conversion import to_basic, to_mpf
 from ..core.quadrature import EndpointGuard, endpoint_exponent, quad_dps, quad_segments, relational_breakpoints
 from ..core.precision import workdps
+from ..core.roots import root_in_bracket
 from ..core.errors import LineContactError
 from ..numeric.flamant import finite_at, flamant_arb, flamant_tanh_sinh, kernel_points, kernel_points_at, tanh_sinh
 from ..numeric.arb_compile import ArbUnsupported
@@ -495,8 +496,9 @@ def _quarter_decades(scale, dps):
 # TODO(registry): use contacts.force_law (the integrator replaces this third copy of a 1-D minimum finder)
 def numeric_minimum(P, dP, scale, dps=DPS):
     """(a*, P(a*)) of the smallest local minimum of P(a) for a > 0, located
-    from the sign change of dP/da (- to +) on a logarithmic grid; None when
-    P has no minimum (the pull-off does not exist)."""
+    from the sign change of dP/da (- to +) on a logarithmic grid (a kink of
+    P(a) where dP/da jumps from - to + included); None when P has no minimum
+    (the pull-off does not exist)."""
     with workdps(dps + 10):
         grid = _quarter_decades(mpmath.mpf(scale), dps + 10)
         prev = None
@@ -510,7 +512,11 @@ def numeric_minimum(P, dP, scale, dps=DPS):
                 prev = None
                 continue
             if prev is not None and prev[1] < 0 <= d:
-                root = mpmath.findroot(dP, (prev[0], av), solver="anderson")
+                # the package's bracketed root finder: a minimum at a kink of P(a),
+                # where dP/da jumps from - to + without a zero, is the limit of its
+                # bisection (findroot alone raised 'Could not find root' there: a
+                # pull-off claim on such a profile got 'does not hold')
+                root = root_in_bracket(dP, prev[0], av)
                 return root, P(root)
             prev = (av, d)
     return None

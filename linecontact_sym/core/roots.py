@@ -41,11 +41,18 @@ def real_value(v):
 
 def bisect(fn, lo, hi, iters: int = 60):
     """Bisection on a sign change of ``fn`` over [lo, hi] (``fn(lo)`` and
-    ``fn(hi)`` of opposite signs); returns the final bracket."""
+    ``fn(hi)`` of opposite signs); returns the final bracket.  A midpoint where
+    ``fn`` is no number at the working precision (a division by zero: the sign
+    change is a pole or an infinite slope there, as at a kink of a force law
+    whose derivative jumps to +oo) ends the bisection at that point, which is
+    where bisection converges either way."""
     flo = fn(lo)
     for _ in range(iters):
         mid = (lo + hi) / 2
-        fm = fn(mid)
+        try:
+            fm = fn(mid)
+        except (ZeroDivisionError, ValueError):
+            return mid, mid
         if (fm < 0) == (flo < 0):
             lo, flo = mid, fm
         else:
@@ -79,7 +86,11 @@ def root_in_bracket(g, lo, hi, width=None):
         u = mpmath.findroot(g, (lo, hi), solver="anderson", verify=False)
     except (ZeroDivisionError, ValueError):
         u = None
-    if u is None or isinstance(u, mpmath.mpc) or not (lo <= u <= hi) or not _is_root(g, u, lo, hi):
+    try:
+        bad = u is None or isinstance(u, mpmath.mpc) or not (lo <= u <= hi) or not _is_root(g, u, lo, hi)
+    except (ZeroDivisionError, ValueError):      # g is no number next to u: not confirmed, bisect
+        bad = True
+    if bad:
         lo, hi = bisect(g, lo, hi, iters=int(3.4 * mpmath.mp.dps) + 10)
         u = (lo + hi) / 2
     return u

@@ -255,6 +255,23 @@ def test_pull_off_force_is_the_negative_minimum_and_adhesion_force_its_opposite(
     assert all(c.target > 0 and c.printed < 0 for c in cex.comparisons)
 
 
+def test_pull_off_at_a_kink_of_the_force_law_holds():
+    """A flat with parabolic flanks from x = 1: P(a) has its minimum at the
+    kink a = 1, where dP/da jumps from - to + without a zero.  The checker's
+    independent minimum (a sign change of dP/da on a grid, then the bracketed
+    root finder) found no root there and the true formula got 'does not hold'.
+    Reference: P(1) of the punch of half-width 1 by Griffith, -sqrt(2 pi gamma E*)
+    (the parabolic flanks chosen so that the kink is the minimum)."""
+    claim = {"quantity": "pull_off_force", "profile": "Piecewise((0, x < 1), (sqrt(pi/14)*(x**2 - 1)/2, True))",
+             "formula": "-sqrt(2*pi*gamma*E_star)", "points": 2}
+    r = check(claim)
+    assert r.status == HOLDS, r.verdict
+    comps = r.targets[0].forms[0].points[0].comparisons
+    assert any("independent" in c.what and c.digits >= 25 for c in comps), comps
+    wrong = check({**claim, "formula": "-sqrt(pi*gamma*E_star)"})
+    assert wrong.status == FAILS, wrong.verdict
+
+
 def test_undecided_when_the_engine_fails(monkeypatch):
     def boom(*a, **k):
         raise RuntimeError("engine exploded")
