@@ -406,7 +406,7 @@ def test_cli_budget_refused(capsys):
     assert "expected seconds > 0" in capsys.readouterr().err
 
 
-def test_item9_cli_edges_are_input_errors(tmp_path, capsys):
+def test_cli_edges_are_input_errors(tmp_path, capsys):
     afile = tmp_path / "a-file"
     afile.write_text("x")
     t0 = time.perf_counter()
@@ -430,7 +430,7 @@ def _cli(args, **env):
 
 
 @pytest.mark.slow
-def test_item4_budget_environment_on_the_cli():
+def test_budget_environment_on_the_cli():
     args = ["eval", "x**2/(2*R)", "force", "--at", "a=1", "--set", "R=1", "E_star=1", "--dps", "12"]
     r = _cli(args, LINECONTACT_SYM_BUDGET="abc")
     assert r.returncode == 2 and "LINECONTACT_SYM_BUDGET" in r.stderr and "Traceback" not in r.stderr
@@ -441,7 +441,7 @@ def test_item4_budget_environment_on_the_cli():
 
 
 @pytest.mark.slow
-def test_item4_paper_jobs_are_capped_at_the_work(monkeypatch, tmp_path):
+def test_paper_jobs_are_capped_at_the_work(monkeypatch, tmp_path):
     from linecontact_sym import cli
     from linecontact_sym.claims import batch
     seen = []
@@ -452,7 +452,7 @@ def test_item4_paper_jobs_are_capped_at_the_work(monkeypatch, tmp_path):
     assert code == 0 and all(j <= 2 for j in seen)
 
 
-def test_item7_cli_eval_bad_value_on_stderr():
+def test_cli_eval_bad_value_on_stderr():
     import contextlib
     import io
     from linecontact_sym import cli

@@ -107,7 +107,7 @@ U_REF = math.pi * 210e9 * 1e-3**2 / (4 * 5e-3)       # Eq. (13) in SI: 32986722.
 
 
 @pytest.mark.slow
-def test_item5_exports_take_units_checked_or_not(par):
+def test_exports_take_units_checked_or_not(par):
     vals = dict(a=Q_(1, "mm"), R=Q_(5, "mm"), E_star=Q_(210, "GPa"))
     for check in (True, False):
         v = par.to_numeric("force", check=check)(**vals)
@@ -119,12 +119,12 @@ def test_item5_exports_take_units_checked_or_not(par):
     assert par.to_numeric("force")(a=1e-3, R=5e-3, E_star=210e9) == pytest.approx(U_REF, rel=1e-12)   # plain: SI
 
 
-def test_item5_half_width_takes_units(par):
+def test_half_width_takes_units(par):
     a = par.half_width(Q_(U_REF, "N/m"), R=Q_(5, "mm"), E_star=Q_(210, "GPa"))
     assert float(a.to("mm").magnitude) == pytest.approx(1.0, rel=1e-12)
 
 
-def test_item5_record_results_refuse_units_naming_them(par):
+def test_record_results_refuse_units_naming_them(par):
     with pytest.raises(DomainError, match="pint quantity"):
         par.tangential().state(Q_(0.1, "N/m"), E_star=1, R=1, mu=0.4, a=0.8)
     with pytest.raises(DomainError, match="pint quantity"):
@@ -132,7 +132,7 @@ def test_item5_record_results_refuse_units_naming_them(par):
 
 
 @pytest.mark.slow
-def test_item5_cli_set_with_units():
+def test_cli_set_with_units():
     """--set E_star=210GPa: converted to the declared SI unit (before: 'not a
     valid formula'); a wrong dimension is bad input naming the unit."""
     import contextlib

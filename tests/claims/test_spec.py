@@ -13,7 +13,7 @@ import linecontact_sym as lcs
 from linecontact_sym.core.errors import ClaimError
 
 
-def test_item9_printed_digits_of_a_toml_float(tmp_path):
+def test_printed_digits_of_a_toml_float(tmp_path):
     """before: formula = -0.08090 was read as the float -0.0809 (four
     digits): its interval was ten times too wide."""
     from linecontact_sym.claims.spec import load_paper, printed_spread, printed_variants

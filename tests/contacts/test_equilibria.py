@@ -43,7 +43,7 @@ def two_minima():
     return lcs.LineContact(TWO_MINIMA).adhesive(1)
 
 
-def test_item1_pull_off_is_the_global_minimum(two_minima):
+def test_pull_off_is_the_global_minimum(two_minima):
     """before: P = -1.3729 at the kink a = b, 'verified' to 30 digits;
     after: the deeper stationary minimum P = -1.75458..., both minima listed."""
     po = two_minima.pull_off_at(E_star=1)
@@ -58,7 +58,7 @@ def test_item1_pull_off_is_the_global_minimum(two_minima):
     assert kinds == [("kink", 0.3), ("stationary", round(float(a_ref), 6))]
 
 
-def test_item2_pull_off_inside_the_admissible_range():
+def test_pull_off_inside_the_admissible_range():
     """before: NoPullOffError 'still decreasing at a = 1.2e24' for 1 - cos(x);
     after: the stationary minimum inside a* = j_{0,1}, and a* itself."""
     ad = lcs.LineContact(1 - sp.cos(x), verify=False).adhesive(sp.Rational(1, 100))
@@ -83,7 +83,7 @@ def test_item2_pull_off_inside_the_admissible_range():
         assert abs(po.force - Pg(a_ref)) < mpmath.mpf(10)**-25 * abs(Pg(a_ref))
 
 
-def test_item3_every_equilibrium_at_a_load(two_minima):
+def test_every_equilibrium_at_a_load(two_minima):
     """before: half_width(-1.74) raised NoEquilibriumError and branches(-1.37)
     gave 2 of the 4 equilibria; after: all of them, each P(a) = load."""
     stable = two_minima.half_width(sp.Rational(-174, 100), E_star=1)
@@ -100,7 +100,7 @@ def test_item3_every_equilibrium_at_a_load(two_minima):
         two_minima.half_width(-2, E_star=1)
 
 
-def test_item4_wedge_typed_by_hand_keeps_its_closed_form():
+def test_wedge_typed_by_hand_keeps_its_closed_form():
     """before: 'no closed form (dP/da = 0 is transcendental here)', theta
     sampled in (0.5, 2.5); after: Eq. (36), theta sampled below pi/2."""
     c = lcs.LineContact(x * sp.tan(th))
@@ -113,7 +113,7 @@ def test_item4_wedge_typed_by_hand_keeps_its_closed_form():
 
 
 @pytest.mark.slow
-def test_item7_cos_bump_pull_off_gives_the_reason():
+def test_cos_bump_pull_off_gives_the_reason():
     """The cos bump's JKR pull-off at gamma = 1: its minimum lies at the end of
     the admissible range, where the two methods place that end differently (a
     VerificationError before): a NoPullOffError stating why there is none."""

@@ -24,13 +24,13 @@ MDV = dict(E_star=1, R=1, gamma=sp.Rational(1, 100))
 
 
 @pytest.mark.parametrize("sigma0", [sp.oo, 1 + 2j, sp.Symbol("q") + 1, sp.nan, -1, 0])
-def test_item6_md_sigma0_refused_at_the_entry(par, sigma0):
+def test_md_sigma0_refused_at_the_entry(par, sigma0):
     with pytest.raises(DomainError, match="sigma_0"):
         par.maugis_dugdale().pull_off_at(15, sigma_0=sigma0, **MDV)
 
 
 @pytest.mark.parametrize("rtol", [-0.1, float("nan"), "abc", 0])
-def test_item6_model_choice_refuses_a_bad_tolerance(par, rtol):
+def test_model_choice_refuses_a_bad_tolerance(par, rtol):
     t0 = time.perf_counter()
     with pytest.raises(DomainError, match="tolerance"):
         par.maugis_dugdale().model_choice(rtol, sigma_0=1, **MDV)
@@ -38,13 +38,13 @@ def test_item6_model_choice_refuses_a_bad_tolerance(par, rtol):
 
 
 @pytest.mark.slow
-def test_item6_md_force_export_refused_clearly(par):
+def test_md_force_export_refused_clearly(par):
     with pytest.raises(LineContactError, match="not one expression"):
         par.maugis_dugdale().to_numeric("force")
 
 
 @pytest.mark.slow
-def test_item6_md_numbers(par):
+def test_md_numbers(par):
     md = par.maugis_dugdale()
     v = md.at(sigma_0=1, **MDV).pull_off_force
     ref = md.pull_off_at(20, sigma_0=1, **MDV).force

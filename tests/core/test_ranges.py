@@ -19,7 +19,7 @@ def par():
     return lcs.parabola(verify=False)
 
 
-def test_item4_physical_ranges_in_one_place():
+def test_physical_ranges_in_one_place():
     c = lcs.parabola(verify=False)
     H = dict(a=1, R=1, E_star=1)
     sf = c.stresses()
@@ -70,7 +70,7 @@ def test_item4_physical_ranges_in_one_place():
 
 
 @pytest.mark.slow
-def test_item7_partial_slip_stick_beyond_a_refused(par):
+def test_partial_slip_stick_beyond_a_refused(par):
     c = sp.Symbol("c", positive=True)
     for sf, extra in ((par.stresses("partial_slip", stick=c, mu=0.3), {"c": sp.Rational(3, 2)}),
                       (par.stresses("partial_slip", stick=sp.Rational(3, 2), mu=0.3), {})):

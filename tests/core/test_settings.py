@@ -12,7 +12,7 @@ import linecontact_sym as lcs
 from linecontact_sym.core.errors import DomainError, LineContactError
 
 
-def test_item4_one_reader_for_budgets_jobs_tolerances():
+def test_one_reader_for_budgets_jobs_tolerances():
     from linecontact_sym.core.budget import checked_budget
     from linecontact_sym.core.errors import BudgetError
     from linecontact_sym.core.parallel import capped_jobs, jobs_count
@@ -34,7 +34,7 @@ def test_item4_one_reader_for_budgets_jobs_tolerances():
             check_tolerance(bad)
 
 
-def test_item4_an_executor_given_as_text_is_refused():
+def test_an_executor_given_as_text_is_refused():
     from linecontact_sym.core.parallel import map_ordered
     with pytest.raises(DomainError, match="executor"):
         map_ordered(abs, [1, -2], executor="processes")

@@ -58,7 +58,7 @@ def test_budget_covers_the_whole_derivation(monkeypatch):
     assert sp.simplify(full.expr - expected) == 0
 
 
-def test_item8_message_says_what_happened():
+def test_message_says_what_happened():
     """before: '(dP/da = 0 is transcendental here)'; after: what sympy.solve did.
     (Two power terms: one, c x**4, is now solved without sympy.solve, issue 22.)"""
     c = lcs.LineContact(S.c * x**4 + x**2 / 2)

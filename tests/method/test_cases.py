@@ -25,7 +25,7 @@ from linecontact_sym.method import transforms as T
 x, a, E, R = S.x, S.a, S.E_star, S.R
 
 
-def test_item5_parameter_case_of_a_piecewise_is_a_condition():
+def test_parameter_case_of_a_piecewise_is_a_condition():
     """before: P = 2 E* a^3 for every R, verified to 45 digits; round 2: the
     closed form carried R >= 1 and R < 1 was refused; after (issue 19, item
     3): every case is derived, P = 2 E* a^3 where R >= 1 and pi E* a^2/2
@@ -52,7 +52,7 @@ def cased():
     return lcs.LineContact(CASED, points=2)
 
 
-def test_item3_every_case_is_derived_and_every_path_agrees(cased):
+def test_every_case_is_derived_and_every_path_agrees(cased):
     """before: the force was pi*E_star*a**2/2 'holding for R >= 1'; R = 1/4
     was refused by evaluate_at and given pi/2 by Derivation.evalf and
     to_numeric(check=False).  At R = 1/4 the profile is 2 x^2: P(1) = pi."""
@@ -78,7 +78,7 @@ def test_item3_every_case_is_derived_and_every_path_agrees(cased):
     assert close(cased.evaluate_at("pressure", a=1, x=sp.Rational(1, 2), R=q, E_star=1), p_ref, 1e-15)
 
 
-def test_item3_other_kinds_see_the_right_case(cased):
+def test_other_kinds_see_the_right_case(cased):
     q = sp.Rational(1, 4)
     # tangential: Q = mu (P(a) - P(c)), P of the 2 x^2 profile = pi a^2 E*
     t = cased.tangential()
@@ -99,7 +99,7 @@ def test_item3_other_kinds_see_the_right_case(cased):
     assert close(sf.evaluate_at("sigma_z", dps=20, a=1, x=sp.Rational(1, 2), z=0, R=q, E_star=1), -p_ref, 1e-12)
 
 
-def test_item3_a_condition_that_fails_gives_no_number():
+def test_a_condition_that_fails_gives_no_number():
     """The exact cylinder holds for a < R: evalf refuses, the exports give NaN
     (check=False), and the contacts built on it refuse at once.  before:
     Derivation.evalf 'the quantity is complex', mpmath export a complex

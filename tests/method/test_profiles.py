@@ -16,7 +16,7 @@ from linecontact_sym.method.verification import VerificationRecord
 x, a = S.x, S.a
 
 
-def test_item9_inadmissible_profiles_and_values_refused():
+def test_inadmissible_profiles_and_values_refused():
     """before: -x**2 and x**2 - x**4 'verified to 45 digits' for negative
     loads, I*x**2 'verified at 0 points', x**2 + I*x an unevaluated Integral."""
     with pytest.raises(lcs.InadmissibleProfileError, match="decreases"):

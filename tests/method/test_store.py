@@ -35,7 +35,7 @@ def _write_record(path, key, payload: bytes):
     os.chmod(path, 0o600)
 
 
-def test_item7_records_are_data_never_code(tmp_path, monkeypatch):
+def test_records_are_data_never_code(tmp_path, monkeypatch):
     monkeypatch.setenv(store.CACHE_ENV, str(tmp_path))
     os.chmod(tmp_path, 0o700)
     store.clear_memory()
@@ -62,7 +62,7 @@ def test_item7_records_are_data_never_code(tmp_path, monkeypatch):
     assert not list(tmp_path.rglob("*.pickle"))
 
 
-def test_item7_a_cache_others_can_write_is_not_used(tmp_path, monkeypatch):
+def test_a_cache_others_can_write_is_not_used(tmp_path, monkeypatch):
     shared = tmp_path / "shared"
     shared.mkdir()
     os.chmod(shared, 0o777)
@@ -89,7 +89,7 @@ def test_item7_a_cache_others_can_write_is_not_used(tmp_path, monkeypatch):
         assert not list(own.rglob("*.json"))
 
 
-def test_item7_the_key_covers_every_source_file(monkeypatch):
+def test_the_key_covers_every_source_file(monkeypatch):
     """before: the hash globbed method/*.py and core/*.py only: an edit of a
     contact, a sampler or a reference served stale results."""
     from pathlib import Path
@@ -171,7 +171,7 @@ HUGE = ["Pow(Integer(10), Integer(1000000000))", "factorial(Integer(10000000))",
 
 
 @pytest.mark.parametrize("make", EVIL)
-def test_item1_string_arguments_never_reach_sympify(make, tmp_path):
+def test_string_arguments_never_reach_sympify(make, tmp_path):
     canary = tmp_path / "pwned"
     with pytest.raises(store.UntrustedRecord):
         store.from_srepr(make(canary))
@@ -179,14 +179,14 @@ def test_item1_string_arguments_never_reach_sympify(make, tmp_path):
 
 
 @pytest.mark.parametrize("text", HUGE)
-def test_item1_huge_literals_refused_before_anything_is_built(text):
+def test_huge_literals_refused_before_anything_is_built(text):
     t0 = time.perf_counter()
     with pytest.raises(store.UntrustedRecord):
         store.from_srepr(text)
     assert time.perf_counter() - t0 < 1.0
 
 
-def test_item1_the_data_a_derivation_writes_still_reads_back():
+def test_the_data_a_derivation_writes_still_reads_back():
     R, a = lcs.R, lcs.a
     for e in (sp.Piecewise((sp.atanh(x * sp.sqrt(a**2 - 1)), x < a), (0, True)), sp.Float("1.2345678901234567890123", 40),
               sp.elliptic_k(x**2 / a**2), sp.Integral(sp.sqrt(1 - x**2), (x, 0, a)), sp.gamma(sp.Rational(7, 3)),
@@ -197,7 +197,7 @@ def test_item1_the_data_a_derivation_writes_still_reads_back():
 
 
 @pytest.mark.slow
-def test_item1_planted_records_are_ignored_and_recomputed(cache):
+def test_planted_records_are_ignored_and_recomputed(cache):
     lcs.parabola(verify=False).derivation("force")
     canary = cache / "pwned"
     original = {}
@@ -213,7 +213,7 @@ def test_item1_planted_records_are_ignored_and_recomputed(cache):
 
 
 @pytest.mark.slow
-def test_item1_the_cli_never_runs_a_planted_record(cache):
+def test_the_cli_never_runs_a_planted_record(cache):
     canary = cache / "pwned"
     env = dict(os.environ, LINECONTACT_SYM_CACHE=str(cache), PYTHONPATH=ROOT)
     cmd = [sys.executable, "-m", "linecontact_sym", "eval", "x**2/(2*R)", "force", "--at", "a=0.875",
@@ -232,7 +232,7 @@ def test_item1_the_cli_never_runs_a_planted_record(cache):
                 "Pow(Symbol('a', positive=True), Integer(3)), Pow(Symbol('R', positive=True), Integer(-1)))",
     lambda old: f"Mul(Rational(1001, 1000), {old})",                     # a small change
 ])
-def test_item2_a_tampered_record_is_rechecked_and_recomputed(cache, tamper):
+def test_a_tampered_record_is_rechecked_and_recomputed(cache, tamper):
     lcs.parabola(verify=False).derivation("force")
     assert _rewrite(cache, "expr", tamper) == 1
     with pytest.warns(store.UntrustedCacheWarning, match="disagrees with the independent reference"):
@@ -245,7 +245,7 @@ def test_item2_a_tampered_record_is_rechecked_and_recomputed(cache, tamper):
 
 
 @pytest.mark.slow
-def test_item2_a_record_of_unexpected_shape_is_ignored(cache):
+def test_a_record_of_unexpected_shape_is_ignored(cache):
     """A record of the right key and checksum whose derivations are missing
     (an IndexError before): ignored with a warning, derived afresh."""
     lcs.parabola(verify=False).derivation("half_width")
@@ -266,7 +266,7 @@ def test_item2_a_record_of_unexpected_shape_is_ignored(cache):
 
 
 @pytest.mark.slow
-def test_item2_a_tampered_half_width_record_is_rechecked(cache):
+def test_a_tampered_half_width_record_is_rechecked(cache):
     """Records made outside derive() (the half-width a(P)) are re-checked too:
     a(P(a)) = a at a random admissible point."""
     lcs.parabola(verify=False).derivation("half_width")

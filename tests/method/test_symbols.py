@@ -22,7 +22,7 @@ NAMES = ["s", "t", "pi", "E", "I", "lambda_", "lambda", "gamma", "beta", "numpy"
 
 @settings(max_examples=6, deadline=None)
 @given(name=st.sampled_from(NAMES), shape=st.sampled_from(["parabola", "quartic"]))
-def test_item2_a_parameter_of_any_name_is_a_parameter(name, shape):
+def test_a_parameter_of_any_name_is_a_parameter(name, shape):
     """before: a parameter named s turned the parabola's pressure into the
     integral Integral(E_star/(2*sqrt(s**2 - x**2)), (s, x, a)) (the engine's
     integration variable captured it); a parameter named pi made every export
@@ -52,7 +52,7 @@ def test_item2_a_parameter_of_any_name_is_a_parameter(name, shape):
     assert close(c.to_numeric("pressure")(x=0.3, **fl), float(p_ref), 1e-12 * float(p_ref))
 
 
-def test_item2_stick_half_width_in_the_users_own_symbols():
+def test_stick_half_width_in_the_users_own_symbols():
     """before: stick_half_width(F) with a positive F returned the unsolved
     Eq(pi*E_star*c_s**2/(4*R), pi*E_star*a**2/(4*R) - F/mu)."""
     t = lcs.parabola(verify=False).tangential(sp.Symbol("m", positive=True))

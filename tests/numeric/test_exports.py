@@ -44,7 +44,7 @@ def _x_exports(worn, par):
 
 
 @pytest.mark.slow
-def test_item3_worn_cylinder_pressure_at_negative_x(worn):
+def test_worn_cylinder_pressure_at_negative_x(worn):
     """The issue's case: NaN at x = -0.6 before (the derived Piecewise reads
     b > x, x a positive symbol); the value at +0.6 is the one verified
     against the quadrature of the defining integral (evaluate_at)."""
@@ -64,7 +64,7 @@ def test_item3_worn_cylinder_pressure_at_negative_x(worn):
 
 
 @pytest.mark.slow
-def test_item3_every_x_export_on_both_signs(worn, par):
+def test_every_x_export_on_both_signs(worn, par):
     for c, q, vals, xv in _x_exports(worn, par):
         ref = float(c.evaluate_at(q, dps=20, x=xv, **vals))
         for check in (True, False):

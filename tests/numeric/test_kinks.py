@@ -19,7 +19,7 @@ x, R, th = S.x, S.R, S.theta
     (sp.Abs(x - 1) - 1 + 2 * x, 2, 2 + 2 * sp.sqrt(3)),     # f' = 1 | 3: P = a + 2 sqrt(a^2 - 1)
     (sp.Min(x**2, x), 2, 2 * sp.pi / 3),                     # f' = 2t | 1, integrated by hand
 ])
-def test_item6_hidden_kinks_are_breakpoints(profile, a_value, exact):
+def test_hidden_kinks_are_breakpoints(profile, a_value, exact):
     """before: 5.46404536... and 2.09442284... printed to 30 digits (4-5
     right), a NameError for the pressure; after: 30 correct digits."""
     c = lcs.LineContact(profile, verify=False)
@@ -29,7 +29,7 @@ def test_item6_hidden_kinks_are_breakpoints(profile, a_value, exact):
         assert abs(got - mpmath.mpf(sp.N(exact, 40))) < mpmath.mpf(10)**-29
 
 
-def test_item6_pressure_behind_abs_and_oscillation_refused():
+def test_pressure_behind_abs_and_oscillation_refused():
     c = lcs.LineContact(sp.Abs(x - 1) - 1 + 2 * x, verify=False)
     with mpmath.workdps(40):
         # P'(s) = 1 (s < 1), 1 + 2 s/sqrt(s^2 - 1) (s > 1); Eq. (12) by hand at a = 2, x = 1/2
@@ -41,7 +41,7 @@ def test_item6_pressure_behind_abs_and_oscillation_refused():
         lcs.LineContact(x * sp.sin(1 / x))
 
 
-def test_item7_error_estimate_covers_the_error_next_to_a_kink():
+def test_error_estimate_covers_the_error_next_to_a_kink():
     """before: float64 with estimated error 1.2e-13, actual 2.1e-11; after:
     the float64 quadrature is not trusted next to the integrand's switch."""
     c = lcs.worn_cylinder(verify=False)
@@ -52,14 +52,14 @@ def test_item7_error_estimate_covers_the_error_next_to_a_kink():
     assert abs(r.value - ref) <= r.error <= 1e-10 * abs(ref)
 
 
-def test_item10_inside_the_flat_is_zero_not_overflow():
+def test_inside_the_flat_is_zero_not_overflow():
     """before: OverflowError (kappa = inf where the pressure is 0)."""
     c = lcs.worn_cylinder(verify=False)
     r = c.evaluate("pressure", a=0.4, x=0.1, R=5.0, b=0.5, E_star=1.0, rtol=1e-10)
     assert r.value == 0 and r.error == 0
 
 
-def test_item11_pressure_of_a_piecewise_profile_to_30_digits():
+def test_pressure_of_a_piecewise_profile_to_30_digits():
     """Rounded wedge f = x^2/(2R) (x < R tan th), x tan th - R tan^2 th / 2:
     before: 28.6 correct digits of 30 at x = 3/10 (the quadrature lost
     digits next to the breakpoint); after: 30."""
