@@ -26,7 +26,6 @@ import argparse
 import hashlib
 import json
 import os
-import signal
 import subprocess
 import sys
 import tempfile
@@ -41,6 +40,16 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
+from harness import fresh_cache as _fresh_cache, isolated as _isolated, isolated_main  # tools/hostile/, beside this file
+
+
+def fresh_cache():
+    return _fresh_cache("lcs-sweep5-")
+
+
+def isolated(fn, timeout):
+    return _isolated(fn, timeout, "lcs-sweep5-")
+
 
 CASES: list = []
 x, a = lcs.x, lcs.a
@@ -71,15 +80,6 @@ def refused(fn):
 def close(v, ref, tol=1e-10):
     v = complex(getattr(v, "magnitude", v))
     return abs(v.imag) <= tol * max(1, abs(ref)) and abs(v.real - float(ref)) <= tol * max(1, abs(float(ref)))
-
-
-def fresh_cache():
-    from linecontact_sym.method import store
-    d = tempfile.mkdtemp(prefix="lcs-sweep5-")
-    os.chmod(d, 0o700)
-    os.environ[store.CACHE_ENV] = d
-    store.clear_memory()
-    return d
 
 
 # ------------------------------------------------------------------ the command line
@@ -506,72 +506,8 @@ def wedge_pull_off_text():
 
 
 # ------------------------------------------------------------------ run
-def isolated(fn, timeout):
-    """``(ok, why)`` of ``fn()`` run in a forked child killed after ``timeout`` seconds."""
-    r, w = os.pipe()
-    pid = os.fork()
-    if pid == 0:
-        os.close(r)
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                fresh_cache()
-                res = fn()
-            ok = bool(res[0] if isinstance(res, tuple) else res)
-            why = "" if ok else f"wrong result {str(res)[:120]}"
-        except Exception as exc:   # noqa: BLE001
-            ok, why = False, f"{type(exc).__name__}: {str(exc)[:120]}"
-        os.write(w, json.dumps((ok, why)).encode())
-        os._exit(0)
-    os.close(w)
-    deadline = time.monotonic() + timeout
-    import select
-    data = b""
-    while True:
-        left = deadline - time.monotonic()
-        if left <= 0:
-            os.kill(pid, signal.SIGKILL)
-            os.waitpid(pid, 0)
-            os.close(r)
-            return False, f"no answer within {timeout} s"
-        ready, _, _ = select.select([r], [], [], left)
-        if ready:
-            chunk = os.read(r, 65536)
-            if not chunk:
-                break
-            data += chunk
-    os.close(r)
-    os.waitpid(pid, 0)
-    return tuple(json.loads(data)) if data else (False, "the case died without an answer")
-
-
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--json", help="write the per-case results here")
-    ap.add_argument("--timeout", type=int, default=150)
-    ap.add_argument("--only", help="comma-separated group numbers, e.g. 1,4")
-    ap.add_argument("--match", help="only the cases whose name contains this text")
-    args = ap.parse_args()
-    only = set(args.only.split(",")) if args.only else None
-    out = {}
-    t_all = time.perf_counter()
-    for group, name, fn in CASES:
-        if only and group.split()[0] not in only or args.match and args.match not in name:
-            continue
-        t0 = time.perf_counter()
-        ok, why = isolated(fn, args.timeout)
-        out[f"{group} | {name}"] = {"ok": ok, "why": why, "seconds": round(time.perf_counter() - t0, 2)}
-        print(f"{'ok  ' if ok else 'FAIL'} {group:22s} {name[:60]:60s} {time.perf_counter() - t0:6.1f} s  {why}",
-              flush=True)
-    print()
-    for g in sorted({k.split(" | ")[0] for k in out}, key=lambda s: int(s.split()[0])):
-        rs = [v for k, v in out.items() if k.startswith(g + " |")]
-        print(f"{g:22s} cases {len(rs):3d}  ok {sum(r['ok'] for r in rs):3d}")
-    print(f"{'total':22s} cases {len(out):3d}  ok {sum(r['ok'] for r in out.values()):3d}   "
-          f"({time.perf_counter() - t_all:.0f} s)")
-    if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(out, fh, indent=1)
+    isolated_main(CASES, __doc__.splitlines()[0], 150, "lcs-sweep5-", 22, 60)
 
 
 if __name__ == "__main__":

@@ -26,7 +26,7 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
-from round5_harness import refused, run_case  # tools/hostile/, beside this file
+from harness import refused, run_case  # tools/hostile/, beside this file
 
 x, a, E = lcs.x, lcs.a, lcs.E_star
 h, L, R, th = sp.symbols("h L R theta", positive=True)

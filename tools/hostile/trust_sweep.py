@@ -32,6 +32,7 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
+from harness import summary  # tools/hostile/, beside this file
 
 x = lcs.x
 CASES: list = []
@@ -473,16 +474,7 @@ def main():
         out[f"{group} | {name}"] = {"ok": ok, "why": why, "seconds": round(time.perf_counter() - t0, 2)}
         print(f"{'ok  ' if ok else 'FAIL'} {group:24s} {name:40s} {time.perf_counter() - t0:6.1f} s  {why}",
               flush=True)
-    groups = sorted({g for g, _, _ in CASES})
-    print()
-    for g in groups:
-        rs = [v for k, v in out.items() if k.startswith(g + " |")]
-        print(f"{g:24s} cases {len(rs):3d}  ok {sum(r['ok'] for r in rs):3d}")
-    print(f"{'total':24s} cases {len(out):3d}  ok {sum(r['ok'] for r in out.values()):3d}   "
-          f"({time.perf_counter() - t_all:.0f} s)")
-    if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(out, fh, indent=1)
+    summary(out, 24, t_all, args.json)
 
 
 if __name__ == "__main__":

@@ -13,14 +13,12 @@ user's cache is read or written).
 """
 from __future__ import annotations
 
-import argparse
 import contextlib
 import hashlib
 import io
 import json
 import math
 import os
-import signal
 import subprocess
 import sys
 import tempfile
@@ -33,6 +31,16 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
+from harness import fresh_cache as _fresh_cache, isolated as _isolated, isolated_main  # tools/hostile/, beside this file
+
+
+def fresh_cache():
+    return _fresh_cache("lcs-sweep4-")
+
+
+def isolated(fn, timeout):
+    return _isolated(fn, timeout, "lcs-sweep4-")
+
 
 CASES: list = []
 x = lcs.x
@@ -70,14 +78,6 @@ def number_or_refused(fn, ref, tol=1e-10):
 
 
 # ------------------------------------------------------------------ a fresh cache directory per case
-def fresh_cache():
-    from linecontact_sym.method import store
-    d = tempfile.mkdtemp(prefix="lcs-sweep4-")
-    os.environ[store.CACHE_ENV] = d
-    store.clear_memory()
-    return d
-
-
 def rewrite_records(d, change):
     """Every record file under ``d``: its JSON payload passed through
     ``change(data) -> data`` and the checksum recomputed (an attacker who
@@ -504,72 +504,8 @@ def cos_bump_jkr_gamma_1():
 
 
 # ------------------------------------------------------------------ run
-def isolated(fn, timeout):
-    """``(ok, why)`` of ``fn()`` run in a forked child killed after ``timeout``
-    seconds (a literal that hangs the reader in C code ignores signals)."""
-    r, w = os.pipe()
-    pid = os.fork()
-    if pid == 0:
-        os.close(r)
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                fresh_cache()
-                ok = bool(fn())
-            res = (ok, "" if ok else "wrong result")
-        except Exception as exc:   # noqa: BLE001
-            res = (False, f"{type(exc).__name__}: {str(exc)[:120]}")
-        os.write(w, json.dumps(res).encode())
-        os._exit(0)
-    os.close(w)
-    deadline = time.monotonic() + timeout
-    import select
-    data = b""
-    while True:
-        left = deadline - time.monotonic()
-        if left <= 0:
-            os.kill(pid, signal.SIGKILL)
-            os.waitpid(pid, 0)
-            os.close(r)
-            return False, f"no answer within {timeout} s"
-        ready, _, _ = select.select([r], [], [], left)
-        if ready:
-            chunk = os.read(r, 65536)
-            if not chunk:
-                break
-            data += chunk
-    os.close(r)
-    os.waitpid(pid, 0)
-    return tuple(json.loads(data)) if data else (False, "the case died without an answer")
-
-
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--json", help="write the per-case results here")
-    ap.add_argument("--timeout", type=int, default=90)
-    ap.add_argument("--only", help="comma-separated group numbers, e.g. 1,2")
-    args = ap.parse_args()
-    only = set(args.only.split(",")) if args.only else None
-    out = {}
-    t_all = time.perf_counter()
-    for group, name, fn in CASES:
-        if only and group.split()[0] not in only:
-            continue
-        t0 = time.perf_counter()
-        ok, why = isolated(fn, args.timeout)
-        out[f"{group} | {name}"] = {"ok": ok, "why": why, "seconds": round(time.perf_counter() - t0, 2)}
-        print(f"{'ok  ' if ok else 'FAIL'} {group:26s} {name:32s} {time.perf_counter() - t0:6.1f} s  {why}",
-              flush=True)
-    groups = sorted({k.split(" | ")[0] for k in out})
-    print()
-    for g in groups:
-        rs = [v for k, v in out.items() if k.startswith(g + " |")]
-        print(f"{g:26s} cases {len(rs):3d}  ok {sum(r['ok'] for r in rs):3d}")
-    print(f"{'total':26s} cases {len(out):3d}  ok {sum(r['ok'] for r in out.values()):3d}   "
-          f"({time.perf_counter() - t_all:.0f} s)")
-    if args.json:
-        with open(args.json, "w") as fh:
-            json.dump(out, fh, indent=1)
+    isolated_main(CASES, __doc__.splitlines()[0], 90, "lcs-sweep4-", 26, 32)
 
 
 if __name__ == "__main__":
