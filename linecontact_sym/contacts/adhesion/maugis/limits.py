@@ -82,8 +82,15 @@ def zone_excess(u):
     m - 1; at the working precision): the Dugdale force in excess of JKR's at a = u delta, over
     2 sigma_0 delta, where the adhesionless gap is neglected (its largest value)."""
     u = mpmath.mpf(u)
-    t = 1 / u
-    lo, hi = mpmath.mpf(0), mpmath.mpf(1)
+    e = _dugdale_excess(1 / u, mpmath.mpf(1))
+    return u * mpmath.sqrt(e * (2 + e)) - mpmath.sqrt(2 * u)
+
+
+def _dugdale_excess(t, hi):
+    """The e > 0 with D(1 + e) = t (:func:`dugdale_D` increasing), by bisection
+    to the working precision from the bracket [0, hi] (doubled until it holds
+    the root); the upper end of the final bracket (D(1 + e) >= t)."""
+    lo = mpmath.mpf(0)
     while dugdale_D(1 + hi) < t:
         hi *= 2
     for _ in range(mpmath.mp.prec + 20):
@@ -92,8 +99,7 @@ def zone_excess(u):
             lo = mid
         else:
             hi = mid
-    e = hi
-    return u * mpmath.sqrt(e * (2 + e)) - mpmath.sqrt(2 * u)
+    return hi
 
 
 def _slope_bound(md, vals, lo, width):
@@ -169,15 +175,7 @@ class JKRLimit:
             if k is None:
                 return None
             t = self.delta / A
-            lo, hi = mpmath.mpf(0), 2 * t          # D(1 + e) >= e - e^2/6 > t at e = 2 t (t small)
-            while dugdale_D(1 + hi) < t:
-                hi *= 2
-            for _ in range(mpmath.mp.prec + 20):
-                mid = (lo + hi) / 2
-                if dugdale_D(1 + mid) < t:
-                    lo = mid
-                else:
-                    hi = mid
+            hi = _dugdale_excess(t, 2 * t)          # D(1 + e) >= e - e^2/6 > t at e = 2 t (t small)
             return A + self.delta / (1 + k), A * (1 + hi)
 
     def describe(self):
