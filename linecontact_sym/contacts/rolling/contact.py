@@ -165,12 +165,29 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
             e = Interval(whole_line_slope(self.contact)).integral(what)
         return e.xreplace({E_C: S.a - S.c_s, S.a: S.c_s})
 
+    def _core_numbers(self, fixed):
+        """The asymmetric core's numbers at these values where the core takes
+        the profile and its force laws close (P(e, a), theta(e, a) from the
+        engine's closed forms), else None (:class:`SlopeNumbers` then takes
+        the phi-quadrature)."""
+        if self._cache.get("_core_refused"):
+            return None
+        try:
+            off = self.offset
+            if not off.closed("force"):
+                return None
+        except ProfileError:          # more than one kink (the rounded punch, the worn cylinder)
+            self._cache["_core_refused"] = True
+            return None
+        return off.numbers(**{k.name: v for k, v in fixed.items()})
+
     def _numbers(self, vals) -> SlopeNumbers:
         fixed = {k: v for k, v in vals.items() if k in set(self.contact.variables)}
         key = ("_numbers", tuple(sorted((k.name, str(v)) for k, v in fixed.items())))
         if key not in self._cache:
             brs = [b.xreplace(fixed) for b in whole_line_breaks(self.contact)]
-            self._cache[key] = SlopeNumbers(self.interval.slope, fixed, to_mpf(sp.N(fixed[S.E_star], 40)), brs)
+            self._cache[key] = SlopeNumbers(self.interval.slope, fixed, to_mpf(sp.N(fixed[S.E_star], 40)), brs,
+                                            core=self._core_numbers(fixed))
         return self._cache[key]
 
     def _sampler(self):
@@ -185,7 +202,8 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
         return sample
 
     def _reference(self, what):
-        """The phi-integrals by quadrature at the point (mpmath)."""
+        """The phi-integrals by quadrature at the point (mpmath; never the
+        core's closed forms, which the verified expressions come from)."""
         def ref(vals, dps):
             with workdps(dps + 10):
                 num = self._numbers(vals)
@@ -193,9 +211,9 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
                 mu = friction_at(self._t, vals)
                 if what == "force":
                     Pa = to_mpf(sp.N(self.contact.derivation("force").expr.xreplace(vals), dps + 15)) \
-                        if self.contact.derivation("force").closed_form else num.P(0, A)
-                    return mu * (Pa - num.P(A - C, C))
-                return mu * num.tilt(A - C, C)
+                        if self.contact.derivation("force").closed_form else num.P_quad(0, A)
+                    return mu * (Pa - num.P_quad(A - C, C))
+                return mu * num.tilt_quad(A - C, C)
         return ref
 
     def _derive_quantity(self, name, expr):
