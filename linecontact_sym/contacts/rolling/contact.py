@@ -420,14 +420,16 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
             except (ValueError, TypeError, ZeroDivisionError, InadmissibleProfileError) as exc:
                 note = (f"the closed forms were not used at this state ({exc}); the numbers come from the "
                         f"quadrature of the same integrals")
+        # closed forms refused here: the quadrature of the integrals, not the core's closed forms again
+        P_mp, tilt_mp = (num.P_quad, num.tilt_quad) if note else (num.P, num.tilt)
         if at_onset:
             u = A
         else:
             extra = max(0, int(-mpmath.log10(abs(Qm) / (mu * P)))) + 2 + st.near_full_slip_digits(load, P)
             with workdps(30 + extra):
-                c = st.solve_stick(num.P, A, A, P - abs(Qm) / mu, 30 + extra, P_float=num.P_float)
+                c = st.solve_stick(P_mp, A, A, P - abs(Qm) / mu, 30 + extra, P_float=num.P_float)
                 u = A - c
-        return u, sign * mu * num.tilt(u, A - u), False, note
+        return u, sign * mu * tilt_mp(u, A - u), False, note
 
     def creepage_curve(self, points: int = 41, **values):
         """The creepage-force curve (Q/(mu P), xi) at ``points`` stick
