@@ -32,7 +32,8 @@ both ends (q continuous at s, q -> 0 at the contact edge c).  Hence, with the
 stick zone's centre e* = (s + c)/2 and half-width c_s = (c - s)/2 and the
 bounded interval solution P(e, a), theta(e, a) (the asymmetric core's
 ``OffsetContact.force()`` and ``tilt()``, derived by the engine; at numbers
-also by quadrature, :mod:`linecontact_sym.contacts.rolling.interval`):
+its ``numbers()`` where the force laws close, else by quadrature,
+:mod:`linecontact_sym.contacts.rolling.interval`):
 
     Q  = mu [P - P(e*, c_s)]          (fixes c_s: P(e*, c_s) = P - |Q|/mu)
     xi = mu [theta(e*, c_s) - theta_n] (theta_n = 0 for a symmetric contact)

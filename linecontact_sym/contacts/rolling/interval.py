@@ -1,9 +1,16 @@
 """The numbers of the bounded solution of a profile on a non-centred interval
 [e - a, e + a] that the rolling layer needs beyond the asymmetric core
 (:mod:`linecontact_sym.contacts.asymmetric`, whose ``force()`` and
-``tilt()`` give P(e, a) and theta(e, a) symbolically): the pressure in a
-stable closed form for polynomial slopes, the same quantities by direct
-quadrature at numbers, and the function J that carries the admissibility.
+``tilt()`` give P(e, a) and theta(e, a) symbolically, and whose
+``numbers()`` give them at the working precision: :class:`SlopeNumbers`
+takes them from there where the core's force laws close).  What the core
+lacks stays here: the pressure in a stable closed form for polynomial
+slopes (sqrt times a polynomial), float64 numbers at many points (P, theta,
+J, the pressure: the traction, the admissibility grid, the creepage curve),
+the defining phi-integrals by mpmath quadrature (profiles the core refuses,
+more than one kink, or leaves as Integrals; the rolling derivations'
+independent verification reference), and the function J that carries the
+admissibility.
 
 For a profile f on the whole line, tilt theta (gap f(x) - theta x - d) and
 contact [e - a, e + a], with x = e + a sin(phi):
