@@ -9,8 +9,9 @@ centre e* = right - c_s and half-width c_s:
 
     P(e*, c_s) = P - |Q|/mu,     xi = sign(Q) mu [theta(e*, c_s) - theta_n],
 
-P and theta by quadrature of the interval integrals
-(:mod:`.interval`), the traction mu p - mu p* at float64 points.  Numbers
+P and theta from the asymmetric core's numbers where its force laws close,
+else by quadrature of the interval integrals (:mod:`.interval`), the
+traction mu p - mu p* at float64 points.  Numbers
 only (the symbolic quantities in (a, c_s) are the symmetric contact's).
 """
 from __future__ import annotations
@@ -72,7 +73,10 @@ class AsymmetricRolling:
             subs = {p: user_value(vals[p.name]) for p in self.contact.params}
             brs = [sp.sympify(b, strict=True).xreplace(subs) for b in self.contact.core.kinks]
             E = to_mpf(sp.N(user_value(vals["E_star"]), 40))
-            self._cache[key] = SlopeNumbers(self.slope, subs, E, brs)
+            core = self.contact.core
+            # P(e, a), theta(e, a): the core's numbers (the engine's closed force laws) where they close
+            nums = core.numbers(**{v.name: vals[v.name] for v in core.variables}) if core.closed("force") else None
+            self._cache[key] = SlopeNumbers(self.slope, subs, E, brs, core=nums)
         return self._cache[key]
 
     def state_at(self, Q, P, theta=None, moment=None, _check=True, **values):

@@ -32,7 +32,8 @@ both ends (q continuous at s, q -> 0 at the contact edge c).  Hence, with the
 stick zone's centre e* = (s + c)/2 and half-width c_s = (c - s)/2 and the
 bounded interval solution P(e, a), theta(e, a) (the asymmetric core's
 ``OffsetContact.force()`` and ``tilt()``, derived by the engine; at numbers
-also by quadrature, :mod:`linecontact_sym.contacts.rolling.interval`):
+its ``numbers()`` where the force laws close, else by quadrature,
+:mod:`linecontact_sym.contacts.rolling.interval`):
 
     Q  = mu [P - P(e*, c_s)]          (fixes c_s: P(e*, c_s) = P - |Q|/mu)
     xi = mu [theta(e*, c_s) - theta_n] (theta_n = 0 for a symmetric contact)
@@ -165,12 +166,29 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
             e = Interval(whole_line_slope(self.contact)).integral(what)
         return e.xreplace({E_C: S.a - S.c_s, S.a: S.c_s})
 
+    def _core_numbers(self, fixed):
+        """The asymmetric core's numbers at these values where the core takes
+        the profile and its force laws close (P(e, a), theta(e, a) from the
+        engine's closed forms), else None (:class:`SlopeNumbers` then takes
+        the phi-quadrature)."""
+        if self._cache.get("_core_refused"):
+            return None
+        try:
+            off = self.offset
+            if not off.closed("force"):
+                return None
+        except ProfileError:          # more than one kink (the rounded punch, the worn cylinder)
+            self._cache["_core_refused"] = True
+            return None
+        return off.numbers(**{k.name: v for k, v in fixed.items()})
+
     def _numbers(self, vals) -> SlopeNumbers:
         fixed = {k: v for k, v in vals.items() if k in set(self.contact.variables)}
         key = ("_numbers", tuple(sorted((k.name, str(v)) for k, v in fixed.items())))
         if key not in self._cache:
             brs = [b.xreplace(fixed) for b in whole_line_breaks(self.contact)]
-            self._cache[key] = SlopeNumbers(self.interval.slope, fixed, to_mpf(sp.N(fixed[S.E_star], 40)), brs)
+            self._cache[key] = SlopeNumbers(self.interval.slope, fixed, to_mpf(sp.N(fixed[S.E_star], 40)), brs,
+                                            core=self._core_numbers(fixed))
         return self._cache[key]
 
     def _sampler(self):
@@ -185,7 +203,8 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
         return sample
 
     def _reference(self, what):
-        """The phi-integrals by quadrature at the point (mpmath)."""
+        """The phi-integrals by quadrature at the point (mpmath; never the
+        core's closed forms, which the verified expressions come from)."""
         def ref(vals, dps):
             with workdps(dps + 10):
                 num = self._numbers(vals)
@@ -193,9 +212,9 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
                 mu = friction_at(self._t, vals)
                 if what == "force":
                     Pa = to_mpf(sp.N(self.contact.derivation("force").expr.xreplace(vals), dps + 15)) \
-                        if self.contact.derivation("force").closed_form else num.P(0, A)
-                    return mu * (Pa - num.P(A - C, C))
-                return mu * num.tilt(A - C, C)
+                        if self.contact.derivation("force").closed_form else num.P_quad(0, A)
+                    return mu * (Pa - num.P_quad(A - C, C))
+                return mu * num.tilt_quad(A - C, C)
         return ref
 
     def _derive_quantity(self, name, expr):
@@ -402,14 +421,16 @@ class RollingLineContact(FrictionalCoupling, ContactOn):
             except (ValueError, TypeError, ZeroDivisionError, InadmissibleProfileError) as exc:
                 note = (f"the closed forms were not used at this state ({exc}); the numbers come from the "
                         f"quadrature of the same integrals")
+        # closed forms refused here: the quadrature of the integrals, not the core's closed forms again
+        P_mp, tilt_mp = (num.P_quad, num.tilt_quad) if note else (num.P, num.tilt)
         if at_onset:
             u = A
         else:
             extra = max(0, int(-mpmath.log10(abs(Qm) / (mu * P)))) + 2 + st.near_full_slip_digits(load, P)
             with workdps(30 + extra):
-                c = st.solve_stick(num.P, A, A, P - abs(Qm) / mu, 30 + extra, P_float=num.P_float)
+                c = st.solve_stick(P_mp, A, A, P - abs(Qm) / mu, 30 + extra, P_float=num.P_float)
                 u = A - c
-        return u, sign * mu * num.tilt(u, A - u), False, note
+        return u, sign * mu * tilt_mp(u, A - u), False, note
 
     def creepage_curve(self, points: int = 41, **values):
         """The creepage-force curve (Q/(mu P), xi) at ``points`` stick

@@ -1,9 +1,16 @@
 """The numbers of the bounded solution of a profile on a non-centred interval
 [e - a, e + a] that the rolling layer needs beyond the asymmetric core
 (:mod:`linecontact_sym.contacts.asymmetric`, whose ``force()`` and
-``tilt()`` give P(e, a) and theta(e, a) symbolically): the pressure in a
-stable closed form for polynomial slopes, the same quantities by direct
-quadrature at numbers, and the function J that carries the admissibility.
+``tilt()`` give P(e, a) and theta(e, a) symbolically, and whose
+``numbers()`` give them at the working precision: :class:`SlopeNumbers`
+takes them from there where the core's force laws close).  What the core
+lacks stays here: the pressure in a stable closed form for polynomial
+slopes (sqrt times a polynomial), float64 numbers at many points (P, theta,
+J, the pressure: the traction, the admissibility grid, the creepage curve),
+the defining phi-integrals by mpmath quadrature (profiles the core refuses,
+more than one kink, or leaves as Integrals; the rolling derivations'
+independent verification reference), and the function J that carries the
+admissibility.
 
 For a profile f on the whole line, tilt theta (gap f(x) - theta x - d) and
 contact [e - a, e + a], with x = e + a sin(phi):
@@ -110,11 +117,26 @@ class Interval:
 
 class SlopeNumbers:
     """The numbers of the bounded interval solution for a whole-line slope at
-    fixed parameter values: mpmath (P, theta at the working precision, split
-    at the slope's kinks) and float64 (J, the pressure and the gap's slope
-    at many points, Gauss-Legendre in phi split at the kinks)."""
+    fixed parameter values.
 
-    def __init__(self, slope, values: dict, E_star, breaks=()):
+    * ``P(e, a)``, ``tilt(e, a)`` (mpmath, the working precision): the
+      asymmetric core's numbers (``core``, an
+      :class:`~linecontact_sym.contacts.asymmetric.core.OffsetNumbers`: the
+      engine's closed force laws of the even part and the odd-part integral)
+      where the core takes the profile and closes them, else the defining
+      phi-integrals by quadrature (``P_quad``, ``tilt_quad``).
+    * ``P_quad``, ``tilt_quad``: those phi-integrals by mpmath quadrature,
+      split at the slope's kinks: the route for a profile the core refuses
+      (more than one kink: the rounded punch, the worn cylinder) or leaves as
+      Integrals (there the core's numbers build the engine's quadrature force
+      law at every centre e, measured 5-15x slower per (e, a) than this), and
+      the independent reference the rolling derivations are verified against.
+    * float64 (``P_float``, ``tilt_float``, ``J``, ``pressure``): Gauss-Legendre
+      in phi split at the kinks, at many points (the traction, the
+      admissibility grid, the creepage-force curve, the cross-check of a closed
+      state); the core has no float64 route."""
+
+    def __init__(self, slope, values: dict, E_star, breaks=(), core=None):
         s = slope.xreplace(values)
         if s.free_symbols - {X}:
             raise ProfileError(f"values needed for {sorted(map(str, s.free_symbols - {X}))}")
@@ -124,6 +146,8 @@ class SlopeNumbers:
         self.Ef = float(E_star)
         self.breaks = sorted(float(b) for b in breaks)
         self.mp_breaks = [mpmath.mpf(sp.N(b, 40)) for b in breaks]
+        #: the asymmetric core's numbers (None: the quadrature)
+        self.core = core
 
     def _cuts(self, e, a, brs):
         """phi where e + a sin(phi) crosses a kink, inside (-pi/2, pi/2)."""
@@ -139,16 +163,24 @@ class SlopeNumbers:
         pts = [-mpmath.pi / 2] + self._cuts(e, a, self.mp_breaks) + [mpmath.pi / 2]
         return mpmath.quad(fn, pts)
 
-    def tilt(self, e, a):
-        """theta(e, a) (mpmath)."""
+    def tilt_quad(self, e, a):
+        """theta(e, a) by quadrature of its phi-integral (mpmath)."""
         e, a = mpmath.mpf(e), mpmath.mpf(a)
         return self._quad(lambda p: mpmath.re(self.mp(e + a * mpmath.sin(p))), e, a) / mpmath.pi
 
-    def P(self, e, a):
-        """P(e, a) (mpmath)."""
+    def P_quad(self, e, a):
+        """P(e, a) by quadrature of its phi-integral (mpmath)."""
         e, a = mpmath.mpf(e), mpmath.mpf(a)
         return mpmath.mpf(self.E) * a / 2 * self._quad(
             lambda p: mpmath.re(self.mp(e + a * mpmath.sin(p))) * mpmath.sin(p), e, a)
+
+    def tilt(self, e, a):
+        """theta(e, a) (mpmath): the core's where given, else :meth:`tilt_quad`."""
+        return self.core.tilt(e, a) if self.core is not None else self.tilt_quad(e, a)
+
+    def P(self, e, a):
+        """P(e, a) (mpmath): the core's where given, else :meth:`P_quad`."""
+        return self.core.P(e, a) if self.core is not None else self.P_quad(e, a)
 
     # ------------------------------------------------------------ float64
     def _nodes(self, e, a):
