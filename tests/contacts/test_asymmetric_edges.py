@@ -88,3 +88,26 @@ def test_profile_not_real_refused_at_construction(f):
 def test_flat_punch_viscoelastic_refused():
     with pytest.raises(DomainError, match="symmetric"):
         lcs.flat_punch(1).viscoelastic(lcs.maxwell(E0=1, tau=1))
+
+
+def test_sign_check_pressure_of_a_bounded_state_without_closed_form():
+    """The admissibility check of a bounded state whose pressure has no closed
+    form takes p = (E*/2) sqrt(a^2 - s^2) J(x) in float64 (one Gauss-Legendre
+    rule over the divided difference of f') instead of the engine's nested
+    quadrature (the Gaussian bump's check: 100 s for 21 points).  Both routes
+    share nothing but f: they agree to 1e-12 inside the contact."""
+    import numpy as np
+    import sympy as sp
+    from linecontact_sym.contacts.asymmetric.contact import _bounded_pressure_float
+    from linecontact_sym.core.precision import workdps
+    xr = lcs.x_real
+    st = lcs.LineContact(sp.exp(xr) - 1 - xr, symmetric=False).contact_at(
+        P=sp.Rational(1, 2), theta=sp.Rational(1, 10), E_star=1)
+    assert st.regime == "bounded" and st._fn("pressure") is None
+    L, R = float(st.left), float(st.right)
+    xs = np.array([0.97 * L + 0.03 * R, 0.7 * L + 0.3 * R, float(st.e), 0.1 * L + 0.9 * R])
+    fast = _bounded_pressure_float(st)(xs)
+    with workdps(20):
+        ref = np.array([float(st.pressure(v)) for v in xs])
+    assert np.all(ref > 0)
+    assert np.max(np.abs(fast / ref - 1)) < 1e-12, (fast, ref)

@@ -1,5 +1,5 @@
 """The stick zone's bounded interval solution at numbers
-(contacts/rolling/interval.py): P(e, a) and theta(e, a) come from the
+(contacts/asymmetric/interval.py): P(e, a) and theta(e, a) come from the
 asymmetric core's numbers where the core takes the profile and closes its
 force laws, and agree there with the defining phi-integrals by quadrature
 (which share only the slope with the core's Chebyshev/Bessel closed forms);

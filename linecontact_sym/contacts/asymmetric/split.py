@@ -18,7 +18,7 @@ from ...core import symbols as S
 from ...core.budget import run_with_budget
 from ...core.errors import BudgetExceeded, ProfileError
 
-__all__ = ["even_part", "odd_part", "odd_integral", "antiderivative"]
+__all__ = ["even_part", "odd_part", "odd_integral", "antiderivative", "whole_line"]
 
 
 def _tidy(expr, s=S.x):
@@ -87,3 +87,15 @@ def odd_integral(f, x=S.x_real, e=S.e, s=S.x, seconds: float = 20.0):
     if H.has(sp.nan, sp.zoo):
         raise ProfileError(f"the antiderivative {F} of {f} is undefined on the line")
     return H
+
+
+def whole_line(f, x=S.x):
+    """A symmetric profile f(x), x >= 0 (the engine's x, mirrored), on the
+    whole line in the real x: f(x) itself where it is even in x (x^2, cosh),
+    else f(|x|)."""
+    fx = f.xreplace({x: S.x_real})
+    try:
+        even = sp.expand(fx - fx.xreplace({S.x_real: -S.x_real})) == 0
+    except Exception:   # an expression SymPy cannot expand: |x| is always right
+        even = False
+    return fx if even else f.xreplace({x: sp.Abs(S.x_real)})

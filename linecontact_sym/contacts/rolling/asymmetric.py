@@ -29,7 +29,7 @@ from ...parsing import user_value
 from ..base import checked_value
 from ..tangential.coupling import read_coupling
 from . import state as st
-from .interval import X, SlopeNumbers
+from ..asymmetric.interval import X, SlopeNumbers
 
 
 class AsymmetricRolling:

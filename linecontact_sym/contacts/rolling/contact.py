@@ -33,7 +33,7 @@ stick zone's centre e* = (s + c)/2 and half-width c_s = (c - s)/2 and the
 bounded interval solution P(e, a), theta(e, a) (the asymmetric core's
 ``OffsetContact.force()`` and ``tilt()``, derived by the engine; at numbers
 its ``numbers()`` where the force laws close, else by quadrature,
-:mod:`linecontact_sym.contacts.rolling.interval`):
+:mod:`linecontact_sym.contacts.asymmetric.interval`):
 
     Q  = mu [P - P(e*, c_s)]          (fixes c_s: P(e*, c_s) = P - |Q|/mu)
     xi = mu [theta(e*, c_s) - theta_n] (theta_n = 0 for a symmetric contact)
@@ -74,7 +74,7 @@ from ..tangential.contact import MU_RANGE, TangentialLineContact
 from ..tangential.coupling import FrictionalCoupling
 from ..tangential.states import friction_at, tidy_root
 from . import state as st
-from .interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_profile, whole_line_slope
+from ..asymmetric.interval import E_C, X, Interval, SlopeNumbers, whole_line_breaks, whole_line_profile, whole_line_slope
 
 #: the stick zone's deficit a - c_s (its centre e* for a symmetric contact)
 _u = sp.Dummy("u", positive=True)

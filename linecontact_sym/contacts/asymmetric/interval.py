@@ -1,5 +1,6 @@
 """The numbers of the bounded solution of a profile on a non-centred interval
-[e - a, e + a] that the rolling layer needs beyond the asymmetric core
+[e - a, e + a] that the rolling layer and the sign check of asymmetric states need beyond
+the asymmetric core
 (:mod:`linecontact_sym.contacts.asymmetric`, whose ``force()`` and
 ``tilt()`` give P(e, a) and theta(e, a) symbolically, and whose
 ``numbers()`` give them at the working precision: :class:`SlopeNumbers`
@@ -34,6 +35,7 @@ import sympy as sp
 
 from ...core import symbols as S
 from ...core.errors import ProfileError
+from .split import whole_line
 
 #: the centre of an interval and the real coordinate on the whole line (the asymmetric core's)
 E_C = S.e
@@ -46,9 +48,8 @@ GL_NODES = 64
 
 def whole_line_profile(contact):
     """f(x) on the whole line (in :data:`X`) for a symmetric contact of the
-    package: the asymmetric core's :func:`~linecontact_sym.contacts.asymmetric.contact.whole_line`
+    package: the asymmetric core's :func:`~linecontact_sym.contacts.asymmetric.split.whole_line`
     (f itself where it is even in x, else f(|x|))."""
-    from ..asymmetric.contact import whole_line
     return whole_line(contact.profile.expr)
 
 
