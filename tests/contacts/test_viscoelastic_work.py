@@ -70,11 +70,12 @@ def kv(eta):
     return lcs.parabola(verify=False).viscoelastic(lcs.kelvin_voigt(E=1, eta=eta))
 
 
-@pytest.mark.parametrize("eta, rtol", [(sp.Rational(1, 2), 5e-3), (sp.Rational(1, 20), 3e-2)])
+@pytest.mark.parametrize("eta, rtol", [(sp.Rational(1, 2), 5e-3), (sp.Rational(1, 20), 1e-3)])
 def test_kelvin_voigt_cycle_against_time_stepping(eta, rtol):
     """The dashpot's work over a load-unload cycle, 16 intervals (32 on the finer grid):
     within its own error estimate of the time-stepped reference, and the estimate small
-    (eta = 1/20: the creep time eta/E near the step 1/16, fewer digits)."""
+    (eta = 1/20: the creep time eta/E below the step 1/16; P linear and J* integrated exactly
+    on each step resolve it)."""
     ref = kv_work_reference(1.0, float(eta))
     W = kv(eta).dissipated_work(CYCLE, t_end=2, L=L, points=16, R=1)
     assert ref > 0 and W.points == 32
@@ -99,12 +100,12 @@ def test_error_estimate_covers_the_true_error_at_coarse_grids():
 def test_elastic_limit_eta_to_zero():
     """eta = 0 is elastic: no work over the closed cycle (the depth is the elastic one both
     ways); for small eta the work is linear in eta (the dashpot's share), and the time-stepped
-    reference agrees at eta = 1/100, where the creep time is far below the step of the grid."""
+    reference agrees at eta = 1/100, where the creep time is 1/25 of the step of the grid."""
     W0 = kv(0).dissipated_work(CYCLE, t_end=2, L=L, points=8, R=1)
     scale = pi_law(0.1)[0] * g(0.1)                 # P_max d_max
     assert abs(W0.value) <= 1e-14 * scale and W0.error <= 1e-14 * scale
-    w2 = kv(sp.Rational(1, 100)).dissipated_work(CYCLE, t_end=2, L=L, points=8, R=1)
-    w3 = kv(sp.Rational(1, 1000)).dissipated_work(CYCLE, t_end=2, L=L, points=8, R=1)
+    w2 = kv(sp.Rational(1, 100)).dissipated_work(CYCLE, t_end=2, L=L, points=4, R=1)
+    w3 = kv(sp.Rational(1, 1000)).dissipated_work(CYCLE, t_end=2, L=L, points=4, R=1)
     assert 0 < w3 < w2 < 1e-3 * scale * 1000
     assert abs(w2 / w3 / 10 - 1) < 0.02
     ref = kv_work_reference(1.0, 0.01)

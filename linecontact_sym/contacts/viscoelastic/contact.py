@@ -442,29 +442,51 @@ class ViscoelasticLineContact:
         raise DomainError(f"unknown plot {what!r}: 'history' or 'hysteresis'")
 
     def _creep_integral(self, m, h, n):
-        """J1(x, k) = int_0^x J*(u) du at the numbers of ``m`` (k: x = k h on the grid, else None):
-        SymPy's antiderivative of the creep function where it finds one (checked against the
-        quadrature at x = n h), else quadrature, step by step on the grid (mpf at the working precision)."""
+        """(J1, J2): J1(x) = int_0^x J*(u) du and J2(x) = int_0^x J1 at the numbers of ``m``,
+        as functions (x, k) with k the grid index when x = k h (else None), 0 for x <= 0:
+        SymPy's antiderivatives of the creep function where it finds them (checked against
+        quadrature at x = n h), else quadrature step by step on the grid (mpf at the working precision)."""
         m.J(h)                                  # the creep function derived (m.creep_expr)
-        key = ("J1", m.creep_expr)
+        key = ("J12", m.creep_expr)
         if key not in self._cache:
-            F = _creep_integral_expr(m, HISTORY_BUDGET / 4)
-            self._cache[key] = None if F is None else sp.lambdify(S.t, F, "mpmath")
-        F = self._cache[key]
-        if F is not None:
-            ref = mpmath.quad(m.J, [0, h * n])
-            if abs(F(h * n) - ref) <= abs(ref) * mpmath.mpf(10)**(-mpmath.mp.dps // 2):
-                return lambda x, k: mpmath.re(F(x))
-        cum = [mpmath.mpf(0)]
-        for k in range(1, n + 1):
-            cum.append(cum[-1] + mpmath.quad(m.J, [h * (k - 1), h * k]))
+            F = _creep_integral_expr(m.creep_expr, HISTORY_BUDGET / 8)
+            G = _creep_integral_expr(F, HISTORY_BUDGET / 8) if F is not None else None
+            self._cache[key] = None if G is None else (sp.lambdify(S.t, F, "mpmath"), sp.lambdify(S.t, G, "mpmath"))
+        FG = self._cache[key]
+        X = h * n
+        tol = mpmath.mpf(10)**(-mpmath.mp.dps // 2)
+        if FG is not None:
+            F, G = FG
+            r1 = mpmath.quad(m.J, [0, X])
+            r2 = mpmath.quad(lambda u: (X - u) * m.J(u), [0, X])
+            if abs(F(X) - r1) <= abs(r1) * tol and abs(G(X) - r2) <= abs(r2) * tol:
+                return (lambda x, k: mpmath.re(F(x)) if x > 0 else mpmath.mpf(0),
+                        lambda x, k: mpmath.re(G(x)) if x > 0 else mpmath.mpf(0))
+        c1, c2 = [mpmath.mpf(0)], [mpmath.mpf(0)]
+        for k in range(1, n + 1):        # J2(kh) = J2((k-1)h) + h J1((k-1)h) + int (kh - u) J(u) du over the step
+            c2.append(c2[-1] + h * c1[-1] + mpmath.quad(lambda u: (h * k - u) * m.J(u), [h * (k - 1), h * k]))
+            c1.append(c1[-1] + mpmath.quad(m.J, [h * (k - 1), h * k]))
+
+        def split(x):
+            k0 = min(int(mpmath.floor(x / h)), n)
+            return k0, x - h * k0
 
         def J1(x, k):
+            if x <= 0:
+                return mpmath.mpf(0)
             if k is not None:
-                return cum[k]
-            k0 = min(int(mpmath.floor(x / h)), n)
-            return cum[k0] + (mpmath.quad(m.J, [h * k0, x]) if x > h * k0 else 0)
-        return J1
+                return c1[k]
+            k0, r = split(x)
+            return c1[k0] + (mpmath.quad(m.J, [h * k0, x]) if r > 0 else 0)
+
+        def J2(x, k):
+            if x <= 0:
+                return mpmath.mpf(0)
+            if k is not None:
+                return c2[k]
+            k0, r = split(x)
+            return c2[k0] + r * c1[k0] + (mpmath.quad(lambda u: (x - u) * m.J(u), [h * k0, x]) if r > 0 else 0)
+        return J1, J2
 
     def dissipated_work(self, a_t, t_end, L, points: int = 200, **values) -> "DissipatedWork":
         """The work per unit length done by the indenter over (0, t_end],
@@ -523,21 +545,21 @@ class ViscoelasticLineContact:
             for tv, k, side in knots:
                 te = tv + side * eps              # a side of a jump: just before / after it
                 vals.append(hist.force_and_depth_level(te, log_w, loading=hist.loading(te)))
-            J1 = self._creep_integral(m, h, n2)
+            J1, J2 = self._creep_integral(m, h, n2)
             Jc = {}
 
             def J(i, j):
                 """J*(t_i - t_j)."""
                 if (i, j) not in Jc:
-                    Jc[(i, j)] = float(m.J(knots[i][0] - knots[j][0]))
+                    Jc[(i, j)] = m.J(knots[i][0] - knots[j][0])
                 return Jc[(i, j)]
 
-            def J1at(i, j):
-                """int_0^{t_i - t_j} J*."""
+            def Jk(f, i, j):
+                """J1 or J2 (``f``) at t_i - t_j (mpf, remembered: index differences on the grid)."""
                 ki, kj = knots[i][1], knots[j][1]
-                key = ("u", ki - kj) if None not in (ki, kj) else ("1", i, j)
+                key = (f, ki - kj) if None not in (ki, kj) else (f, i, j)
                 if key not in Jc:
-                    Jc[key] = J1(knots[i][0] - knots[j][0], None if key[0] == "1" else ki - kj)
+                    Jc[key] = f(knots[i][0] - knots[j][0], None if len(key) == 3 else ki - kj)
                 return Jc[key]
 
             def weight(i, j0, j1):
@@ -545,30 +567,59 @@ class ViscoelasticLineContact:
                 exactly: a creep time far below the step costs no accuracy); J*(t_i - t_j1) for a jump."""
                 length = knots[j1][0] - knots[j0][0]
                 if length == 0:
-                    return J(i, j1)
-                return float((J1at(i, j0) - J1at(i, j1)) / length)
-            Pv = np.array([float(p) for p, _ in vals])
-            Dv = np.array([float(d) for _, d in vals])
+                    return float(J(i, j1))
+                return float((Jk(J1, i, j0) - Jk(J1, i, j1)) / length)
+
+            def mean_depth(a, b, sel, D):
+                """(1/(t_b - t_a)) int_{t_a}^{t_b} d(t) dt, d = J* o dD with D linear between the knots
+                ``sel`` (up to b): the step responses integrated once more (J2), no quadrature."""
+                hab = knots[b][0] - knots[a][0]
+                out = (Jk(J1, b, sel[0]) - Jk(J1, a, sel[0])) * D[0]
+                for k in range(1, len(sel)):
+                    lo, hi = sel[k - 1], sel[k]
+                    if knots[hi][0] > knots[b][0]:
+                        break
+                    dD = D[k] - D[k - 1]
+                    if dD == 0:
+                        continue
+                    hj = knots[hi][0] - knots[lo][0]
+                    if hj == 0:
+                        out += dD * (Jk(J1, b, hi) - Jk(J1, a, hi))
+                    else:
+                        out += dD / hj * (Jk(J2, b, lo) - Jk(J2, a, lo) - Jk(J2, b, hi) + Jk(J2, a, hi))
+                return out / hab
+            Pv = [p for p, _ in vals]
+            Dv = [d for _, d in vals]
 
             def work(sel):
                 """W on the knots ``sel`` (indices, in time order): d_n = J*(t_n) D(0+) + sum over the
-                steps of dD times the mean of J*(t_n - s) over the step (D linear on each step)."""
+                steps of dD times the mean of J*(t_n - s) over the step (D linear on each step); on each
+                step P linear, int P dd = P_k d_k - P_{k-1} d_{k-1} - (P_k - P_{k-1}) mean(d) (exact for a
+                linear P, whatever d does inside the step: a creep time far below the step)."""
+                D = np.array([float(Dv[i]) for i in sel])
                 d = np.zeros(len(sel))
-                dD = np.diff(Dv[sel])
+                dD = np.diff(D)
                 for n, i in enumerate(sel):
                     w = [weight(i, sel[k - 1], sel[k]) for k in range(1, n + 1)]
-                    d[n] = J(i, sel[0]) * Dv[sel[0]] + np.dot(w, dD[:n])
-                P = Pv[sel]
-                return float(np.sum(0.5 * (P[1:] + P[:-1]) * np.diff(d)))
+                    d[n] = float(J(i, sel[0])) * D[0] + np.dot(w, dD[:n])
+                Dm = [Dv[i] for i in sel]
+                P = [float(Pv[i]) for i in sel]
+                W = 0.0
+                for k in range(1, len(sel)):
+                    dP = P[k] - P[k - 1]
+                    if knots[sel[k]][0] == knots[sel[k - 1]][0] or dP == 0:
+                        W += 0.5 * (P[k] + P[k - 1]) * (d[k] - d[k - 1])
+                    else:
+                        W += P[k] * d[k] - P[k - 1] * d[k - 1] - dP * float(mean_depth(sel[k - 1], sel[k], sel, Dm))
+                return W
             fine = list(range(len(knots)))
             coarse = [i for i, kn in enumerate(knots) if kn[1] is None or kn[1] % 2 == 0]
             Wf, Wc = work(fine), work(coarse)
         return DissipatedWork(Wf, abs(Wf - Wc), n2)
 
 
-def _creep_integral_expr(material, budget):
-    """int_0^t J*(u) du as a SymPy expression in t (None where SymPy finds none)."""
-    J = material.creep_expr
+def _creep_integral_expr(J, budget):
+    """int_0^t J(u) du as a SymPy expression in t (None where SymPy finds none)."""
     if J.has(sp.InverseLaplaceTransform, sp.LaplaceTransform):
         return None
     r = _integrate(J.subs(S.t, _s), _s, 0, S.t, budget)
