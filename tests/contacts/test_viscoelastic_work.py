@@ -32,6 +32,7 @@ import linecontact_sym as lcs
 from linecontact_sym.core.errors import DomainError
 
 t = lcs.t
+HALF = sp.Rational(1, 2)
 L = 10.0
 CYCLE = sp.Piecewise((t / 10, t <= 1), ((2 - t) / 10, t <= 2), (0, True))     # a(t): up to 1/10 at t = 1, down to 0 at t = 2
 
@@ -52,11 +53,14 @@ def g(a):
     return a * a / 2 * math.log(2 * L / a) + a * a / 4 if a > 0 else 0.0
 
 
-def kv_work_reference(E, eta):
-    """W = int P dd over the cycle by time-stepping eta d' + E d = D (see the module docstring)."""
-    def rhs(loading):
+def kv_work_reference(E, eta, pieces=((0, 1, 0.0, 0.1), (1, 2, 0.1, -0.1))):
+    """W = int P dd over a piecewise-linear a(t) (``pieces``: t0, t1, a(t0), a'; growing, then
+    receding) by time-stepping eta d' + E d = D (see the module docstring)."""
+    def rhs(a0, t0, da):
+        loading = da > 0
+
         def f(s, y):
-            a, da = (s / 10, 0.1) if loading else ((2 - s) / 10, -0.1)
+            a = a0 + da * (s - t0)
             Y, dY = pi_law(a)
             dg = 2 / math.pi * dY * math.log(2 * L / a) if a > 0 else 0.0
             P = E * Y + (eta * dY * da if loading else 0.0)
@@ -65,12 +69,14 @@ def kv_work_reference(E, eta):
             return [dd, P * dd]
         return f
     assert all(abs(g(a) / g_quad(a) - 1) < 1e-12 for a in (1e-3, 0.05, 0.1))
-    up = solve_ivp(rhs(True), (0, 1), [0.0, 0.0], method="DOP853", rtol=1e-11, atol=1e-15)
-    down = solve_ivp(rhs(False), (1, 2), up.y[:, -1], method="DOP853", rtol=1e-11, atol=1e-15)
-    assert up.success and down.success
-    # Lee-Radok: while the contact grows the depth is the elastic one (a check of the reference itself)
-    assert abs(up.y[0, -1] / g(0.1) - 1) < 1e-8
-    return down.y[1, -1]
+    y = [0.0, 0.0]
+    for t0, t1, a0, da in pieces:
+        sol = solve_ivp(rhs(a0, t0, da), (t0, t1), y, method="DOP853", rtol=1e-11, atol=1e-15)
+        assert sol.success
+        y = sol.y[:, -1]
+        if da > 0:      # Lee-Radok: while the contact grows the depth is the elastic one (the reference checked)
+            assert abs(y[0] / g(a0 + da * (t1 - t0)) - 1) < 1e-8
+    return y[1]
 
 
 def kv(eta):
@@ -159,3 +165,13 @@ def test_maxwell_cycle_against_its_depth_identity():
     W = lcs.parabola(verify=False).viscoelastic(lcs.maxwell(E0=2, tau=1)).dissipated_work(
         CYCLE, t_end=2, L=L, points=16, R=1)
     assert ref > 0 and abs(W.value - ref) <= W.error < 2e-2 * ref, (W, ref)
+
+
+def test_kelvin_voigt_rate_change_while_loading():
+    """a(t) grows at two rates, then recedes: the dashpot's force and D jump at the kink
+    (t = 1/2) as well as at the maximum; both sides are knots.  Against the time-stepping."""
+    a_t = sp.Piecewise((t / 10, t <= HALF), (sp.Rational(1, 20) + (t - HALF) / 20, t <= 3 * HALF),
+                       (sp.Rational(1, 10) - (t - 3 * HALF) / 10, t <= 5 * HALF), (0, True))
+    ref = kv_work_reference(1.0, 0.25, ((0, 0.5, 0.0, 0.1), (0.5, 1.5, 0.05, 0.05), (1.5, 2.5, 0.1, -0.1)))
+    W = kv(HALF / 2).dissipated_work(a_t, t_end=5 * HALF, L=L, points=8, R=1)
+    assert abs(W.value - ref) <= W.error < 1e-2 * ref, (W, ref)
