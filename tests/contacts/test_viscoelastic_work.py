@@ -35,6 +35,8 @@ t = lcs.t
 HALF = sp.Rational(1, 2)
 L = 10.0
 CYCLE = sp.Piecewise((t / 10, t <= 1), ((2 - t) / 10, t <= 2), (0, True))     # a(t): up to 1/10 at t = 1, down to 0 at t = 2
+KINKED = sp.Piecewise((t / 10, t <= HALF), (sp.Rational(1, 20) + (t - HALF) / 20, t <= 3 * HALF),   # two rates, then down
+                      (sp.Rational(1, 10) - (t - 3 * HALF) / 10, t <= 5 * HALF), (0, True))
 
 
 def pi_law(a):
@@ -170,8 +172,16 @@ def test_maxwell_cycle_against_its_depth_identity():
 def test_kelvin_voigt_rate_change_while_loading():
     """a(t) grows at two rates, then recedes: the dashpot's force and D jump at the kink
     (t = 1/2) as well as at the maximum; both sides are knots.  Against the time-stepping."""
-    a_t = sp.Piecewise((t / 10, t <= HALF), (sp.Rational(1, 20) + (t - HALF) / 20, t <= 3 * HALF),
-                       (sp.Rational(1, 10) - (t - 3 * HALF) / 10, t <= 5 * HALF), (0, True))
     ref = kv_work_reference(1.0, 0.25, ((0, 0.5, 0.0, 0.1), (0.5, 1.5, 0.05, 0.05), (1.5, 2.5, 0.1, -0.1)))
-    W = kv(HALF / 2).dissipated_work(a_t, t_end=5 * HALF, L=L, points=8, R=1)
+    W = kv(HALF / 2).dissipated_work(KINKED, t_end=5 * HALF, L=L, points=8, R=1)
     assert abs(W.value - ref) <= W.error < 1e-2 * ref, (W, ref)
+
+
+def test_quadrature_fallback_agrees_with_the_antiderivatives(monkeypatch):
+    """Where SymPy finds no antiderivative of J* (a creep function without a closed form),
+    J1 and J2 come from quadrature on the grid: the same work (KV, a kink and a maximum off the grid)."""
+    from linecontact_sym.contacts.viscoelastic import contact as vc
+    closed = kv(HALF).dissipated_work(KINKED, t_end=5 * HALF, L=L, points=4, R=1)
+    monkeypatch.setattr(vc, "_creep_integral_expr", lambda J, budget: None)
+    quad_ = kv(HALF).dissipated_work(KINKED, t_end=5 * HALF, L=L, points=4, R=1)
+    assert abs(quad_ / closed - 1) < 1e-12 and abs(quad_.error / closed.error - 1) < 1e-9
