@@ -506,10 +506,11 @@ class ViscoelasticLineContact:
 
         Numbers: P and D by quadrature at each knot (a uniform grid of ``points``
         intervals on (0, t_end], plus the breakpoints of the history and its
-        maximum, both sides of them where they jump), d = J* o dD with D linear
-        between knots and J* integrated exactly over each step (quadrature: a
-        creep time far below the step costs no accuracy), W by the trapezoid of
-        P dd: a second-order rule.  It runs
+        maximum, both sides of them where they jump); between knots D and P are
+        linear and everything else exact: d = J* o dD with J* integrated once
+        (J1) and int P dd with it integrated twice (J2), SymPy's antiderivatives
+        of J* or quadrature, so a creep time far below the step (Kelvin-Voigt
+        with a small eta) costs no accuracy: a second-order rule.  It runs
         on ``points`` and on 2 ``points`` intervals (nested knots): the result is
         the finer value with ``error`` = |W(2 points) - W(points)|, about three
         times its true error for a second-order rule (a float: old code keeps
