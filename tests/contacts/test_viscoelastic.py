@@ -302,7 +302,7 @@ def test_dissipated_work_of_a_cycle():
     for Maxwell, linear in the relaxing part of an almost elastic SLS, and growing
     with L (a 2-D viscoelastic half-plane dissipates in its far field)."""
     cyc = lambda m, L: lcs.parabola(verify=False).viscoelastic(m).dissipated_work(  # noqa: E731
-        CYCLE, t_end=2, L=L, points=50, R=1)
+        CYCLE, t_end=2, L=L, points=25, R=1)
     W = cyc(lcs.maxwell(E0=2, tau=1), 10)
     assert W > 0 and cyc(lcs.maxwell(E0=2, tau=1), 100) > W
     w1 = cyc(lcs.standard_linear_solid(E0=1 + sp.Rational(1, 10**6), E_inf=1, tau=1), 10)

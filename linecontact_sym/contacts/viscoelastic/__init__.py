@@ -29,7 +29,7 @@ solved for a(t) (Ting).  Adhesion is outside Lee-Radok (a package error).
   (float64 / mpmath / Arb by rtol) and of its stable float64 exports.
 The material (E*(t), J*(t)) is :mod:`linecontact_sym.method.material`.
 """
-from .contact import ViscoelasticLineContact, ModelChoice
+from .contact import ViscoelasticLineContact, ModelChoice, DissipatedWork
 from .history import MultipleMaximaError
 
-__all__ = ["ViscoelasticLineContact", "ModelChoice", "MultipleMaximaError"]
+__all__ = ["ViscoelasticLineContact", "ModelChoice", "DissipatedWork", "MultipleMaximaError"]

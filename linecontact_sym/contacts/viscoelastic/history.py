@@ -310,6 +310,37 @@ class HalfWidthHistory:
         s1 = invert_increasing(self.a, A, mpmath.mpf(0), self.level.t_m)
         return self.level.G(s1, t)
 
+    def force_and_depth_level(self, t, log_w, loading=None):
+        """(P(t), D(t)): the force and the 'elastic depth' D(t) = (2/pi) sum over the
+        punches in contact at t of their force (E* units) times log_w(b), the depth
+        weight of a flat punch of half-width b (one inversion of a(t) for both);
+        ``loading`` forces the phase (the two sides of the maximum).  The Dirac part
+        eta delta(t) of E*(t) (Kelvin-Voigt) adds eta Y'(t) to the force and
+        eta Y'(t) log_w(a(t)) to D while the contact grows: the punch entering at t
+        (Y' = dPi(a(t))/dt), the limit of E*(t - s) -> eta delta(t - s) at s = t."""
+        num, m, lev = self.num, self.num.m, self.level
+        A = self.a(t)
+        if A <= 0:
+            return mpmath.mpf(0), mpmath.mpf(0)
+        loading = self.loading(t) if loading is None else loading
+        if loading:
+            num.dPi(A)                  # the edge's punch must push (refused otherwise), as in force()
+        Et = m.E(t)
+        P = Et * min(num.Pi(A), lev.Y0)
+        top = min(A, self.a0)
+        D = Et * mpmath.quad(lambda b: num.dPi(b) * log_w(b), [0, top]) if top > 0 else mpmath.mpf(0)
+        if A > self.a0:
+            s1 = t if loading else invert_increasing(self.a, A, mpmath.mpf(0), lev.t_m)
+            pts = lev.points(s1)
+            P += quad_pieces(lambda s: m.E(t - s) * lev.dY(s), pts)
+            D += quad_pieces(lambda s: m.E(t - s) * lev.dY(s) * log_w(self.a(s)) if self.a(s) > 0 else mpmath.mpf(0),
+                             pts)
+            if loading and m.eta != 0:
+                w = mpmath.mpf(sp.N(m.eta, mpmath.mp.dps + 5)) * lev.dY(t)
+                P += w
+                D += w * log_w(A)
+        return P, 2 * D / mpmath.pi
+
     def pressure(self, x, t):
         """p(x, t): the punches b in (|x|, a(t)), each with E*(t - t_b)."""
         num, m = self.num, self.num.m
