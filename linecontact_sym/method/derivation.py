@@ -533,13 +533,17 @@ def _integrate(problem, deadline, rules, check):
         if deadline.expired(0.05):
             attempts.append((rule.name, "budget used up"))
             break
+        seconds, cap = deadline.left(), rule.cap(problem)
+        capped = cap is not None and (seconds is None or cap < seconds)
         try:
-            results, started = run_stages([rule.run] + stages[1:], problem, seconds=deadline.left(), lazy=True)
+            results, started = run_stages([rule.run] + stages[1:], problem, seconds=cap if capped else seconds,
+                                          lazy=True)
         except NotApplicable as exc:
             attempts.append((rule.name, f"not applicable: {exc}"))
             continue
         except BudgetExceeded as exc:
-            attempts.append((rule.name, f"no result within {shown}" + (f" ({exc})" if exc.wall_guard else "")))
+            within = f"{cap:g} CPU s (the rule's cap here)" if capped else shown
+            attempts.append((rule.name, f"no result within {within}" + (f" ({exc})" if exc.wall_guard else "")))
             continue
         except DivergentIntegralError:
             raise

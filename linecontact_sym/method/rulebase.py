@@ -58,6 +58,11 @@ class Rule:
         """``None`` if the rule may apply, else the reason it does not (cheap)."""
         return None
 
+    def cap(self, problem: Problem) -> float | None:
+        """CPU seconds this rule may spend on ``problem`` at most (None: what
+        remains of the derivation's budget)."""
+        return None
+
     def run(self, problem: Problem) -> Step:  # pragma: no cover - abstract
         raise NotImplementedError
 

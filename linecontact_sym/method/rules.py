@@ -213,6 +213,10 @@ class ForcePiecewise(Rule):
         return Step(self.name, sp.Piecewise(*branches), (), ("piecewise, SymPy definite integrals per piece",))
 
 
+#: CPU seconds of SymPy's integrate on a linear part of an asymmetric contact (:meth:`ForceSympy.cap`)
+AUXILIARY_SYMPY_SECONDS = 4.0
+
+
 class ForceSympy(Rule):
     """Eq. (10*) by ``sympy.integrate`` (a single analytic piece)."""
 
@@ -220,6 +224,15 @@ class ForceSympy(Rule):
 
     def applies(self, problem):
         return "piecewise profile" if problem.profile.is_piecewise else None
+
+    def cap(self, problem):
+        """On a linear part of an asymmetric contact (``Profile.auxiliary``: the
+        even part and the odd part's integral about a centre e, a parameter)
+        SymPy's integrate gets :data:`AUXILIARY_SYMPY_SECONDS`: the parts that
+        close do so by the termwise rules before it, and where it cannot close
+        them (the Gaussian bump's exp(-s^2) cosh(2 e s)) it spent the whole
+        budget twice, 40 of a first contact_at's 45 s."""
+        return AUXILIARY_SYMPY_SECONDS if getattr(problem.profile, "auxiliary", False) else None
 
     def run(self, problem):
         integrand = t * problem.profile.pieces[0].derivative.subs(S.x, t) / sp.sqrt(S.a**2 - t**2)

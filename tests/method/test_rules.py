@@ -315,3 +315,30 @@ def test_join_limit_against_sympy_limit_and_its_refusals():
     assert not singular_at_a_equal_b(_logs_expanded_above(_join_limit(cancel, b, at), b))    # ... cancelled
     assert _join_limit(b * sp.log(b - x), b, at) is None                       # an infinite limit: not cancelling
     assert _join_limit(sp.log(b - x) * sp.elliptic_pi(x / a, b / a) - sp.log(b - x), b, at) is None
+
+
+def test_sympy_integrate_on_a_linear_part_of_an_asymmetric_contact_is_capped(monkeypatch):
+    """ForceSympy gets AUXILIARY_SYMPY_SECONDS on an auxiliary profile (the even
+    part or the odd part's integral of an asymmetric contact), the whole budget
+    on an indenter; a derivation whose integrate does not end says which cap
+    ended it (a busy integrate stands in for SymPy's failing one on the
+    Gaussian bump's parts, 20 s of CPU each before the cap)."""
+    import time
+    import linecontact_sym.method.rules as R
+    from linecontact_sym.method.derivation import integrate
+    e = sp.Symbol("e", real=True)
+    part = Profile(sp.exp(-e**2) - sp.exp(-e**2 - S.x**2) * sp.cosh(2 * e * S.x), {e: (-1, 1)},
+                   name="even part", auxiliary=True)
+    indenter = Profile(1 - sp.exp(-S.x**2))
+    assert ForceSympy().cap(Problem("force", part)) == R.AUXILIARY_SYMPY_SECONDS
+    assert ForceSympy().cap(Problem("force", indenter)) is None
+
+    def busy(*args, **kw):
+        t = time.process_time() + 60
+        while time.process_time() < t:
+            pass
+    monkeypatch.setattr(R.sp, "integrate", busy)
+    monkeypatch.setattr(R, "AUXILIARY_SYMPY_SECONDS", 0.5)
+    step, attempts = integrate(Problem("force", part), 20, rules=[ForceSympy()])
+    assert step is None
+    assert attempts == [("force_sympy", "no result within 0.5 CPU s (the rule's cap here)")], attempts
