@@ -328,3 +328,29 @@ def test_one_equivalent_stress_is_the_same_as_in_all():
         assert np.array_equal(fe(X, Z, k), every[k])
     with pytest.raises(DomainError, match="unknown stress quantity"):
         fe(X, Z, "sigma_q")
+
+
+def test_a_frictional_field_states_the_neglected_coupling_and_keeps_its_numbers():
+    """The stress field of a sliding contact is Goodman's approximation as the
+    tangential layer's results are: its derivations say 'beta = 0 assumed' or
+    |beta| mu for the bodies given (steel on aluminium: beta from Dundurs'
+    shear moduli by hand, -0.1167), one DomainWarning, the same numbers; the
+    frictionless field takes no bodies."""
+    import warnings
+    from linecontact_sym.core.errors import DomainError, DomainWarning
+    c = lcs.parabola(verify=False)
+    plain = c.stresses("sliding", verify=False)
+    assert plain.derivation("critical_friction").notes[0].startswith("beta = 0 assumed")
+    E1, n1, E2, n2 = 210e9, 0.3, 70e9, 0.33
+    G1, G2 = E1 / (2 * (1 + n1)), E2 / (2 * (1 + n2))
+    beta = 0.5 * ((1 - 2 * n1) / G1 - (1 - 2 * n2) / G2) / ((1 - n1) / G1 + (1 - n2) / G2)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        bodies = c.stresses("sliding", verify=False, materials=((E1, n1), (E2, n2)))
+    assert sum(issubclass(w.category, DomainWarning) for w in caught) == 1
+    note = bodies.derivation("critical_friction").notes[0]
+    assert f"{beta:.4f}" in note and "|beta| mu" in note, note
+    vals = dict(a=1, R=1, mu=0.3, nu=0.3, E_star=2)
+    assert bodies.maximum("von_mises", **vals).value == plain.maximum("von_mises", **vals).value
+    with pytest.raises(DomainError, match="frictional traction"):
+        c.stresses(verify=False, beta=0.1)

@@ -35,6 +35,7 @@ from . import build as B
 from . import extrema as X
 from . import field as F
 from ..base import ContactOn, Quantity
+from ..tangential.coupling import FrictionalCoupling, read_coupling
 from .kolosov import cauchy_transform, punch_integral, t
 from ...core.conversion import real_mpf, to_mpf
 from ...core.precision import workdps
@@ -54,7 +55,7 @@ def _mx(symbol, doc, latex, aliases=(), unit="Pa"):
     return Quantity(symbol, "McEwen (1949)", doc, arguments=("a",), latex=latex, aliases=aliases, unit=unit)
 
 
-class StressField(ContactOn):
+class StressField(FrictionalCoupling, ContactOn):
     """The stress field under a contact; see the module docstring.
 
     Examples
@@ -93,7 +94,7 @@ class StressField(ContactOn):
     _transient = ("_cache", "_laws", "_fields")
 
     def __init__(self, contact, tangential=None, mu=S.mu, nu=S.nu, stick=None, breaks=(), verify=True,
-                 points: int = 4):
+                 points: int = 4, beta=None, materials=None):
         contact.check_effect(self.kind)             # not on a periodic array yet (normal.periodic)
         if tangential not in (None, "sliding", "partial_slip") and not callable(tangential) \
                 and not isinstance(tangential, sp.Expr):
@@ -108,8 +109,21 @@ class StressField(ContactOn):
             check_value("mu", self.mu, zero_ok=tangential == "sliding")
         self.stick = None if stick is None else user_value(stick)
         self.breaks, self.verify, self.points = tuple(breaks), verify, points
+        # the two bodies (core.materials.COUPLING_KEYWORDS): a frictional field is
+        # Goodman's approximation as the tangential layer's results are, and says so
+        if tangential is None:
+            if beta is not None or materials is not None:
+                raise DomainError("beta= and materials= describe the coupling of a frictional traction; "
+                                  "the frictionless field has none (give tangential='sliding' or 'partial_slip')")
+        else:
+            self.coupling = read_coupling(self.mu, beta, materials)
         self._cache: dict = {}
         self._fields: dict = {}
+
+    @property
+    def coupling_note(self):
+        """What a frictional field neglects of the two bodies (None: frictionless)."""
+        return None if self.tangential is None else self.coupling.note(self.mu)
 
     @property
     def _zero_ok(self):
@@ -122,7 +136,7 @@ class StressField(ContactOn):
         return cls(contact)
 
     def __repr__(self):
-        return f"StressField({self.contact.profile.expr}, tangential={self.tangential!r})"
+        return f"StressField({self.contact.profile.expr}, tangential={self.tangential!r}{self.coupling.keywords()})"
 
     @property
     def variables(self):
@@ -401,7 +415,7 @@ class SlidingStressField(StressField):
         return cls(contact)
 
     def __repr__(self):
-        return f"SlidingStressField({self.contact.profile.expr}, mu={self.mu})"
+        return f"SlidingStressField({self.contact.profile.expr}, mu={self.mu}{self.coupling.keywords()})"
 
     def _derive_critical_friction(self):
         return _derive_critical(self, "critical_friction", "principal_shear")

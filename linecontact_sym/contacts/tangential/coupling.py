@@ -49,9 +49,10 @@ class FrictionalCoupling:
 
     def noted(self, d):
         """The derivation ``d`` with the coupling note first among its notes
-        (a copy: derivations remembered across contacts stay as they are)."""
+        (a copy: derivations remembered across contacts stay as they are);
+        ``d`` itself where there is no note (a frictionless stress field)."""
         note = self.coupling_note
-        if d.notes[:1] == (note,):
+        if note is None or d.notes[:1] == (note,):
             return d
         key = ("_noted", d.quantity)
         cache = self._caches()
