@@ -50,6 +50,23 @@ def refused(fn):
     return case
 
 
+def is_refused(fn) -> bool:
+    """True where ``fn()`` raises a package error; an AssertionError naming
+    what it gave otherwise (never a number, never a foreign exception).
+    :func:`refused` is the same test as a case of its own."""
+    try:
+        v = fn()
+    except LineContactError:
+        return True
+    raise AssertionError(f"gave {v!r} instead of an error")
+
+
+def close(v, ref, tol=1e-10) -> bool:
+    """``v`` (a number, complex, or a pint quantity's magnitude) within ``tol``
+    (relative, absolute below 1) of the real ``ref``, its imaginary part too."""
+    v = complex(getattr(v, "magnitude", v))
+    return abs(v.imag) <= tol * max(1, abs(ref)) and abs(v.real - float(ref)) <= tol * max(1, abs(float(ref)))
+
 def fresh_cache(prefix: str = "lcs-sweep-"):
     """A new, private derivation cache for the case about to run (the cache
     directory of the package's store, its memory cleared)."""

@@ -40,15 +40,7 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
-from harness import fresh_cache as _fresh_cache, isolated as _isolated, isolated_main  # tools/hostile/, beside this file
-
-
-def fresh_cache():
-    return _fresh_cache("lcs-sweep5-")
-
-
-def isolated(fn, timeout):
-    return _isolated(fn, timeout, "lcs-sweep5-")
+from harness import close, is_refused as refused, isolated_main  # tools/hostile/, beside this file
 
 
 CASES: list = []
@@ -66,20 +58,6 @@ def case(group, name=None):
 
 def add(group, name, fn):
     CASES.append((group, name, fn))
-
-
-def refused(fn):
-    """A clear package error (never a number, never a foreign exception)."""
-    try:
-        v = fn()
-    except LineContactError:
-        return True
-    raise AssertionError(f"gave {v!r} instead of an error")
-
-
-def close(v, ref, tol=1e-10):
-    v = complex(getattr(v, "magnitude", v))
-    return abs(v.imag) <= tol * max(1, abs(ref)) and abs(v.real - float(ref)) <= tol * max(1, abs(float(ref)))
 
 
 # ------------------------------------------------------------------ the command line

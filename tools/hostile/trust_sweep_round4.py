@@ -31,15 +31,11 @@ import sympy as sp
 
 import linecontact_sym as lcs
 from linecontact_sym.core.errors import LineContactError
-from harness import fresh_cache as _fresh_cache, isolated as _isolated, isolated_main  # tools/hostile/, beside this file
+from harness import close, fresh_cache as _fresh_cache, is_refused as refused, isolated_main  # tools/hostile/, beside this file
 
 
 def fresh_cache():
     return _fresh_cache("lcs-sweep4-")
-
-
-def isolated(fn, timeout):
-    return _isolated(fn, timeout, "lcs-sweep4-")
 
 
 CASES: list = []
@@ -51,20 +47,6 @@ def case(group, name=None):
         CASES.append((group, name or fn.__name__, fn))
         return fn
     return deco
-
-
-def refused(fn):
-    """A clear package error (never a number, never a foreign exception)."""
-    try:
-        v = fn()
-    except LineContactError:
-        return True
-    raise AssertionError(f"gave {v!r} instead of an error")
-
-
-def close(v, ref, tol=1e-10):
-    v = complex(v)
-    return abs(v.imag) <= tol * max(1, abs(ref)) and abs(v.real - float(ref)) <= tol * max(1, abs(float(ref)))
 
 
 def number_or_refused(fn, ref, tol=1e-10):
