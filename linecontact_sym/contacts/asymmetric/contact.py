@@ -41,7 +41,7 @@ from ...core.precision import checked_dps, workdps
 from ...core.roots import Outside, root_in_bracket
 from ...parsing import user_value
 from ..base import checked_value
-from .core import OffsetContact, kinks
+from .core import OffsetContact
 from .split import whole_line
 
 __all__ = ["AsymmetricLineContact", "AsymmetricState", "flat_punch", "whole_line"]
@@ -634,12 +634,18 @@ def _bounded_pressure_float(state):
         return None
     from .interval import SlopeNumbers
     contact = state.contact
-    try:
-        breaks = kinks(contact.profile)
-        vals = {v: state.values[v.name] for v in contact.core.params if v.name in state.values}
-        numbers = SlopeNumbers(sp.diff(contact.profile, S.x_real), vals, state.values["E_star"],
-                               [b.xreplace(vals) for b in breaks])
-    except (LineContactError, KeyError, TypeError, ValueError):
+    cache = contact._state_fns          # one per parameter values, beside the core's numbers (the slope compiled once)
+    key = ("slope numbers", tuple(sorted((k, str(v)) for k, v in state.values.items())))
+    if key not in cache:
+        core = contact.core
+        try:
+            vals = {v: state.values[v.name] for v in core.params if v.name in state.values}
+            cache[key] = SlopeNumbers(sp.diff(contact.profile, S.x_real), vals, state.values["E_star"],
+                                      [sp.sympify(b, strict=True).xreplace(vals) for b in core.kinks])
+        except (LineContactError, KeyError, TypeError, ValueError):
+            cache[key] = None
+    numbers = cache[key]
+    if numbers is None:
         return None
     e, a = state.e, state.a
     return lambda xs: numbers.pressure(xs, e, a)
